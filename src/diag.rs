@@ -1,0 +1,233 @@
+//! The one diagnostic type of adair and its one renderer (ariadne).
+//!
+//! Phases build `Diagnostic`s through named constructors and never print;
+//! only the CLI and the REPL call [`render`].
+
+use std::fmt::Write as _;
+
+/// Identifies one source text (a file, a stdlib unit or a REPL entry).
+pub type FileId = u32;
+
+/// Byte offsets into one source, with the source's id: the same type is used by
+/// the lexer, chumsky, the checker, the interpreter and ariadne.
+pub type Span = chumsky::span::SimpleSpan<usize, FileId>;
+
+pub fn span(file: FileId, start: usize, end: usize) -> Span {
+    Span {
+        start,
+        end,
+        context: file,
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Phase {
+    Lexical,
+    Syntax,
+    Name,
+    Type,
+    Unsupported,
+    Runtime,
+}
+
+impl Phase {
+    fn title(self) -> &'static str {
+        match self {
+            Phase::Lexical => "lexical error",
+            Phase::Syntax => "syntax error",
+            Phase::Name => "name error",
+            Phase::Type => "type error",
+            Phase::Unsupported => "not supported by AdaIR",
+            Phase::Runtime => "unhandled exception",
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagnostic {
+    pub phase: Phase,
+    pub message: String,
+    pub span: Span,
+    pub label: String,
+    pub hint: Option<String>,
+    /// Secondary places (for example the call chain of an exception).
+    pub notes: Vec<(Span, String)>,
+}
+
+impl Diagnostic {
+    pub fn new(phase: Phase, span: Span, message: impl Into<String>) -> Self {
+        Diagnostic {
+            phase,
+            message: message.into(),
+            span,
+            label: String::new(),
+            hint: None,
+            notes: Vec::new(),
+        }
+    }
+    pub fn with_label(mut self, label: impl Into<String>) -> Self {
+        self.label = label.into();
+        self
+    }
+    pub fn with_hint(mut self, hint: impl Into<String>) -> Self {
+        self.hint = Some(hint.into());
+        self
+    }
+    pub fn with_note(mut self, span: Span, text: impl Into<String>) -> Self {
+        self.notes.push((span, text.into()));
+        self
+    }
+
+    // --- lexical ---
+    pub fn stray_char(span: Span, c: char) -> Self {
+        Self::new(Phase::Lexical, span, format!("unexpected character `{c}`"))
+            .with_label("not part of any Ada token")
+    }
+    pub fn unterminated_string(span: Span) -> Self {
+        Self::new(Phase::Lexical, span, "unterminated string literal")
+            .with_label("this string has no closing `\"` on its line")
+            .with_hint("close the string with `\"`; write `\"\"` for a quote inside it")
+    }
+    pub fn single_quoted_string(span: Span, text: &str) -> Self {
+        Self::new(
+            Phase::Lexical,
+            span,
+            "string literal in single quotes",
+        )
+        .with_label("Ada strings use double quotes")
+        .with_hint(format!("write \"{text}\""))
+    }
+    pub fn bad_number(span: Span, why: impl Into<String>) -> Self {
+        Self::new(Phase::Lexical, span, format!("malformed numeric literal: {}", why.into()))
+    }
+
+    // --- syntax ---
+    pub fn syntax(span: Span, message: impl Into<String>) -> Self {
+        Self::new(Phase::Syntax, span, message)
+    }
+    pub fn unsupported(span: Span, what: &str) -> Self {
+        Self::new(Phase::Unsupported, span, format!("{what} is not supported by AdaIR"))
+            .with_label("outside the AdaIR subset")
+            .with_hint("see docs/differences.md for the supported subset of Ada 2012")
+    }
+
+    // --- names and types ---
+    pub fn name(span: Span, message: impl Into<String>) -> Self {
+        Self::new(Phase::Name, span, message)
+    }
+    pub fn ty(span: Span, message: impl Into<String>) -> Self {
+        Self::new(Phase::Type, span, message)
+    }
+
+    /// True for errors that happen before anything runs.
+    pub fn is_static(&self) -> bool {
+        self.phase != Phase::Runtime
+    }
+}
+
+/// All source texts of one run, indexed by [`FileId`].
+#[derive(Default, Clone, Debug)]
+pub struct Sources {
+    files: Vec<(String, String)>,
+}
+
+impl Sources {
+    pub fn add(&mut self, name: impl Into<String>, text: impl Into<String>) -> FileId {
+        self.files.push((name.into(), text.into()));
+        (self.files.len() - 1) as FileId
+    }
+    pub fn name(&self, id: FileId) -> &str {
+        self.files.get(id as usize).map(|f| f.0.as_str()).unwrap_or("?")
+    }
+    pub fn text(&self, id: FileId) -> &str {
+        self.files.get(id as usize).map(|f| f.1.as_str()).unwrap_or("")
+    }
+    /// 1-based line and column (in characters) of a byte offset.
+    pub fn line_col(&self, id: FileId, offset: usize) -> (usize, usize) {
+        let text = self.text(id);
+        let offset = offset.min(text.len());
+        let before = &text[..floor_char_boundary(text, offset)];
+        let line = before.matches('\n').count() + 1;
+        let col = before.rsplit('\n').next().map(|l| l.chars().count()).unwrap_or(0) + 1;
+        (line, col)
+    }
+}
+
+fn floor_char_boundary(s: &str, mut i: usize) -> usize {
+    while i > 0 && !s.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+struct Cache<'a>(&'a Sources, Vec<ariadne::Source<&'a str>>);
+
+impl<'a> ariadne::Cache<FileId> for Cache<'a> {
+    type Storage = &'a str;
+    fn fetch(&mut self, id: &FileId) -> Result<&ariadne::Source<&'a str>, impl std::fmt::Debug> {
+        self.1.get(*id as usize).ok_or("unknown source")
+    }
+    fn display<'b>(&self, id: &'b FileId) -> Option<impl std::fmt::Display + 'b> {
+        Some(self.0.name(*id).to_string())
+    }
+}
+
+fn clamp(sources: &Sources, s: Span) -> (FileId, std::ops::Range<usize>) {
+    let len = sources.text(s.context).len();
+    let start = s.start.min(len);
+    let end = s.end.clamp(start, len);
+    (s.context, start..end)
+}
+
+/// Renders diagnostics as ariadne reports, in colour only when asked.
+pub fn render(diags: &[Diagnostic], sources: &Sources, color: bool) -> String {
+    use ariadne::{Color, Config, IndexType, Label, Report, ReportKind};
+    let mut out = Vec::new();
+    let mut cache = Cache(sources, sources.files.iter().map(|(_, t)| ariadne::Source::from(t.as_str())).collect());
+    for d in diags {
+        let primary = clamp(sources, d.span);
+        let (line, col) = sources.line_col(d.span.context, d.span.start);
+        let mut report = Report::build(ReportKind::Error, primary.clone())
+            .with_config(
+                Config::default()
+                    .with_color(color)
+                    .with_index_type(IndexType::Byte),
+            )
+            .with_message(format!(
+                "{}: {} ({}:{}:{})",
+                d.phase.title(),
+                d.message,
+                sources.name(d.span.context),
+                line,
+                col
+            ));
+        let mut label = Label::new(primary).with_order(0);
+        if !d.label.is_empty() {
+            label = label.with_message(&d.label);
+        }
+        if color {
+            label = label.with_color(Color::Red);
+        }
+        report.add_label(label);
+        for (i, (s, text)) in d.notes.iter().enumerate() {
+            let mut l = Label::new(clamp(sources, *s)).with_message(text).with_order(i as i32 + 1);
+            if color {
+                l = l.with_color(Color::Blue);
+            }
+            report.add_label(l);
+        }
+        if let Some(h) = &d.hint {
+            report.set_help(h);
+        }
+        let _ = report.finish().write(&mut cache, &mut out);
+    }
+    String::from_utf8_lossy(&out).into_owned()
+}
+
+/// A one-line form of a diagnostic (`file:line:col: message`), for logs and tests.
+pub fn one_line(d: &Diagnostic, sources: &Sources) -> String {
+    let (line, col) = sources.line_col(d.span.context, d.span.start);
+    let mut s = String::new();
+    let _ = write!(s, "{}:{}:{}: {}: {}", sources.name(d.span.context), line, col, d.phase.title(), d.message);
+    s
+}

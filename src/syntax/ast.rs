@@ -1,0 +1,473 @@
+//! The abstract syntax tree, as parsed: names are still strings and
+//! `F (X)` is still ambiguous (call, index, conversion); the checker decides.
+
+use crate::diag::Span;
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Ident {
+    /// As written, for messages.
+    pub name: String,
+    /// Lower case, for look-up.
+    pub key: String,
+    pub span: Span,
+}
+
+impl Ident {
+    pub fn new(name: &str, span: Span) -> Self {
+        Ident {
+            name: name.to_string(),
+            key: name.to_ascii_lowercase(),
+            span,
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct CompilationUnit {
+    pub items: Vec<TopItem>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum TopItem {
+    With(Vec<Name>, Span),
+    Use(Vec<Name>, Span),
+    Decl(Decl),
+    Stmt(Stmt),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Decl {
+    pub kind: DeclKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum DeclKind {
+    Object {
+        names: Vec<Ident>,
+        constant: bool,
+        ty: SubtypeInd,
+        init: Option<Expr>,
+        /// An anonymous array type (`A : array (1 .. 3) of Float;`), named by `ty.mark`.
+        anon: Option<Box<TypeDef>>,
+    },
+    /// `K : constant := 2.5;`
+    Number { names: Vec<Ident>, value: Expr },
+    Type { name: Ident, def: TypeDef },
+    Subtype { name: Ident, ind: SubtypeInd },
+    Exception { names: Vec<Ident> },
+    /// A subprogram specification alone (forward declaration or imported).
+    SubprogramDecl { spec: SubprogramSpec, import: Option<String> },
+    SubprogramBody(Box<SubprogramBody>),
+    PackageSpec(Box<PackageSpec>),
+    PackageBody(Box<PackageBody>),
+    Use(Vec<Name>),
+    /// `X : T renames Y;` and friends are outside the subset; kept for messages.
+    Unsupported(&'static str),
+    TaskSpec(Box<TaskSpec>),
+    TaskBody(Box<TaskBody>),
+    /// `for E use at Addr;`
+    InterruptUse { entry: Ident, address: Expr },
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct SubtypeInd {
+    pub mark: Name,
+    pub constraint: Option<Constraint>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Constraint {
+    Range(Box<Expr>, Box<Expr>),
+    /// Index constraint: `String (1 .. 10)`, `Matrix (1 .. 3, 1 .. 4)`.
+    Index(Vec<DiscreteRange>),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum DiscreteRange {
+    Range(Expr, Expr),
+    /// A subtype name, possibly with a range constraint, or `T'Range`.
+    Subtype(SubtypeInd),
+    /// `A'Range` / `A'Range (N)`
+    Attr(Expr),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum TypeDef {
+    Enum(Vec<EnumLit>),
+    IntRange(Expr, Expr),
+    Float { digits: Expr, range: Option<(Expr, Expr)> },
+    Derived(SubtypeInd),
+    Array {
+        /// `Positive range <>` for unconstrained (Some(mark) each), or ranges.
+        index: ArrayIndex,
+        elem: SubtypeInd,
+    },
+    Record(Vec<Component>),
+    Access(SubtypeInd),
+    /// `type T;` incomplete declaration (for linked structures).
+    Incomplete,
+    Unsupported(&'static str),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum EnumLit {
+    Ident(Ident),
+    Char(char, Span),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ArrayIndex {
+    Unconstrained(Vec<Name>),
+    Constrained(Vec<DiscreteRange>),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Component {
+    pub names: Vec<Ident>,
+    pub ty: SubtypeInd,
+    pub default: Option<Expr>,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    In,
+    Out,
+    InOut,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Param {
+    pub names: Vec<Ident>,
+    pub mode: Mode,
+    pub ty: Name,
+    pub default: Option<Expr>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Designator {
+    Ident(Ident),
+    /// `"*"` and other operator symbols.
+    Op(String, Span),
+}
+
+impl Designator {
+    pub fn key(&self) -> String {
+        match self {
+            Designator::Ident(i) => i.key.clone(),
+            Designator::Op(o, _) => format!("\"{}\"", o.to_ascii_lowercase()),
+        }
+    }
+    pub fn span(&self) -> Span {
+        match self {
+            Designator::Ident(i) => i.span,
+            Designator::Op(_, s) => *s,
+        }
+    }
+    pub fn display(&self) -> String {
+        match self {
+            Designator::Ident(i) => i.name.clone(),
+            Designator::Op(o, _) => format!("\"{o}\""),
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct SubprogramSpec {
+    pub name: Designator,
+    pub params: Vec<Param>,
+    /// `Some` for functions.
+    pub ret: Option<Name>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct SubprogramBody {
+    pub spec: SubprogramSpec,
+    pub decls: Vec<Decl>,
+    pub body: Block,
+    pub end_name: Option<(String, Span)>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct PackageSpec {
+    pub name: Name,
+    pub decls: Vec<Decl>,
+    pub private: Vec<Decl>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct PackageBody {
+    pub name: Name,
+    pub decls: Vec<Decl>,
+    pub init: Option<Block>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct TaskSpec {
+    pub name: Ident,
+    pub entries: Vec<EntryDecl>,
+    pub is_type: bool,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct EntryDecl {
+    pub name: Ident,
+    pub params: Vec<Param>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct TaskBody {
+    pub name: Ident,
+    pub decls: Vec<Decl>,
+    pub body: Block,
+}
+
+/// `begin stmts [exception handlers] end`
+#[derive(Clone, Debug, PartialEq)]
+pub struct Block {
+    pub stmts: Vec<Stmt>,
+    pub handlers: Vec<Handler>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Handler {
+    pub occurrence: Option<Ident>,
+    /// Empty choices vector never happens; `others` is `None` in the list.
+    pub choices: Vec<Option<Name>>,
+    pub stmts: Vec<Stmt>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Stmt {
+    pub kind: StmtKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum StmtKind {
+    Null,
+    Assign(Expr, Expr),
+    /// A procedure call or entry call (a name, possibly with arguments).
+    Call(Expr),
+    If {
+        arms: Vec<(Expr, Vec<Stmt>)>,
+        els: Option<Vec<Stmt>>,
+    },
+    Case {
+        subject: Expr,
+        arms: Vec<CaseArm<Vec<Stmt>>>,
+    },
+    Loop {
+        label: Option<Ident>,
+        scheme: LoopScheme,
+        body: Vec<Stmt>,
+        end_label: Option<Ident>,
+    },
+    Exit {
+        label: Option<Ident>,
+        cond: Option<Expr>,
+    },
+    Return(Option<Expr>),
+    Block {
+        label: Option<Ident>,
+        decls: Vec<Decl>,
+        body: Block,
+    },
+    Raise {
+        name: Option<Name>,
+        message: Option<Expr>,
+    },
+    Delay(Expr),
+    Accept {
+        entry: Ident,
+        params: Vec<Param>,
+        body: Option<Block>,
+    },
+    Select(Vec<SelectAlt>),
+    /// A declaration among statements (script mode only).
+    Decl(Box<Decl>),
+    Error,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct SelectAlt {
+    pub guard: Option<Expr>,
+    pub kind: SelectKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum SelectKind {
+    Accept(Box<Stmt>, Vec<Stmt>),
+    Delay(Expr, Vec<Stmt>),
+    Terminate,
+    Else(Vec<Stmt>),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct CaseArm<T> {
+    pub choices: Vec<Choice>,
+    pub body: T,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Choice {
+    Expr(Expr),
+    Range(Expr, Expr),
+    Others(Span),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum LoopScheme {
+    Plain,
+    While(Expr),
+    For {
+        var: Ident,
+        reverse: bool,
+        range: DiscreteRange,
+    },
+}
+
+pub type Name = Expr;
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expr {
+    pub kind: ExprKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinOp {
+    And,
+    Or,
+    Xor,
+    AndThen,
+    OrElse,
+    Eq,
+    Ne,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    Add,
+    Sub,
+    Cat,
+    Mul,
+    Div,
+    Mod,
+    Rem,
+    Pow,
+}
+
+impl BinOp {
+    pub fn symbol(self) -> &'static str {
+        match self {
+            BinOp::And => "and",
+            BinOp::Or => "or",
+            BinOp::Xor => "xor",
+            BinOp::AndThen => "and then",
+            BinOp::OrElse => "or else",
+            BinOp::Eq => "=",
+            BinOp::Ne => "/=",
+            BinOp::Lt => "<",
+            BinOp::Le => "<=",
+            BinOp::Gt => ">",
+            BinOp::Ge => ">=",
+            BinOp::Add => "+",
+            BinOp::Sub => "-",
+            BinOp::Cat => "&",
+            BinOp::Mul => "*",
+            BinOp::Div => "/",
+            BinOp::Mod => "mod",
+            BinOp::Rem => "rem",
+            BinOp::Pow => "**",
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UnOp {
+    Neg,
+    Plus,
+    Not,
+    Abs,
+}
+
+impl UnOp {
+    pub fn symbol(self) -> &'static str {
+        match self {
+            UnOp::Neg => "-",
+            UnOp::Plus => "+",
+            UnOp::Not => "not",
+            UnOp::Abs => "abs",
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Assoc {
+    /// Empty for positional; several for `A | B => X`.
+    pub choices: Vec<Choice>,
+    pub value: Expr,
+    /// `<>` as the value (default component).
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExprKind {
+    Int(i128),
+    Real(f64),
+    Char(char),
+    Str(String),
+    Null,
+    Name(Ident),
+    /// `Prefix.Selector`
+    Select(Box<Expr>, Ident),
+    /// `Prefix.all`
+    Deref(Box<Expr>),
+    /// `Prefix (args)`: call, index, conversion or slice.
+    Apply(Box<Expr>, Vec<Arg>),
+    /// `Prefix'Attr` with optional arguments.
+    Attr(Box<Expr>, Ident, Vec<Expr>),
+    /// `T'(expr)` or `T'(aggregate)`.
+    Qualified(Box<Expr>, Box<Expr>),
+    Binary(BinOp, Box<Expr>, Box<Expr>),
+    Unary(UnOp, Box<Expr>),
+    /// `X [not] in A .. B` / `X [not] in T`
+    Membership {
+        negated: bool,
+        subject: Box<Expr>,
+        choices: Vec<Choice>,
+    },
+    Aggregate(Vec<Assoc>),
+    If {
+        arms: Vec<(Expr, Expr)>,
+        els: Option<Box<Expr>>,
+    },
+    Case {
+        subject: Box<Expr>,
+        arms: Vec<CaseArm<Expr>>,
+    },
+    /// `new T` / `new T'(...)`
+    Allocator(Box<Expr>, Option<Box<Expr>>),
+    /// `(Expr)` kept so that `(A)` is not taken for a one-element aggregate.
+    Paren(Box<Expr>),
+    Error,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Arg {
+    pub name: Option<Ident>,
+    pub value: Expr,
+    pub span: Span,
+}

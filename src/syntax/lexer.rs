@@ -1,0 +1,358 @@
+//! The lexer: logos finds the raw tokens, this module decides the tick
+//! ambiguity, evaluates literals and turns lexical errors into diagnostics
+//! while lexing goes on.
+
+use super::token::{Kw, Token};
+use crate::diag::{Diagnostic, FileId, Span, span};
+use logos::Logos;
+
+#[derive(Logos, Clone, Copy, Debug, PartialEq)]
+#[logos(skip r"[ \t\r\n\f\v]+")]
+#[logos(skip(r"--[^\n]*", allow_greedy = true))]
+enum Raw {
+    #[regex(r"[A-Za-z][A-Za-z0-9_]*")]
+    Word,
+    #[regex(r"[0-9][0-9_]*(\.[0-9][0-9_]*)?([eE][+-]?[0-9][0-9_]*)?")]
+    Decimal,
+    #[regex(r"[0-9][0-9_]*#[0-9A-Za-z_.]*#?([eE][+-]?[0-9][0-9_]*)?")]
+    Based,
+    #[regex(r#""([^"\n]|"")*""#)]
+    Str,
+    #[regex(r#""([^"\n]|"")*"#, priority = 1)]
+    UnterminatedStr,
+    #[token("'")]
+    Tick,
+    #[token("(")]
+    LParen,
+    #[token(")")]
+    RParen,
+    #[token(",")]
+    Comma,
+    #[token(";")]
+    Semi,
+    #[token(":")]
+    Colon,
+    #[token(".")]
+    Dot,
+    #[token("..")]
+    DotDot,
+    #[token(":=")]
+    Assign,
+    #[token("=>")]
+    Arrow,
+    #[token("<>")]
+    Box,
+    #[token("|")]
+    Bar,
+    #[token("!")]
+    Bang,
+    #[token("&")]
+    Amp,
+    #[token("+")]
+    Plus,
+    #[token("-")]
+    Minus,
+    #[token("*")]
+    Star,
+    #[token("**")]
+    StarStar,
+    #[token("/")]
+    Slash,
+    #[token("=")]
+    Eq,
+    #[token("/=")]
+    Ne,
+    #[token("<")]
+    Lt,
+    #[token("<=")]
+    Le,
+    #[token(">")]
+    Gt,
+    #[token(">=")]
+    Ge,
+}
+
+pub type Spanned = (Token, Span);
+
+/// Lexes a whole source. Always returns a token list (erroneous parts become
+/// [`Token::Error`] or a best guess) together with every lexical diagnostic.
+pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
+    let mut toks: Vec<Spanned> = Vec::new();
+    let mut diags = Vec::new();
+    let mut base = 0usize;
+    'restart: loop {
+        let mut lx = Raw::lexer(&src[base..]);
+        while let Some(r) = lx.next() {
+            let range = lx.span();
+            let (s, e) = (base + range.start, base + range.end);
+            let sp = span(file, s, e);
+            let text = &src[s..e];
+            let tok = match r {
+                Ok(Raw::Word) => {
+                    let lower = text.to_ascii_lowercase();
+                    if text.ends_with('_') || text.contains("__") {
+                        diags.push(
+                            Diagnostic::new(
+                                crate::diag::Phase::Lexical,
+                                sp,
+                                format!("identifier `{text}` has a misplaced underscore"),
+                            )
+                            .with_hint("an underscore must stand between two letters or digits"),
+                        );
+                    }
+                    match Kw::from_lower(&lower) {
+                        Some(k) => Token::Kw(k),
+                        None => Token::Ident(text.to_string()),
+                    }
+                }
+                Ok(Raw::Decimal) => match decimal(text) {
+                    Ok(t) => t,
+                    Err(why) => {
+                        diags.push(Diagnostic::bad_number(sp, why));
+                        Token::Error
+                    }
+                },
+                Ok(Raw::Based) => match based(text) {
+                    Ok(t) => t,
+                    Err(why) => {
+                        diags.push(Diagnostic::bad_number(sp, why));
+                        Token::Error
+                    }
+                },
+                Ok(Raw::Str) => Token::Str(text[1..text.len() - 1].replace("\"\"", "\"")),
+                Ok(Raw::UnterminatedStr) => {
+                    diags.push(Diagnostic::unterminated_string(sp));
+                    Token::Str(text[1..].replace("\"\"", "\""))
+                }
+                Ok(Raw::Tick) => {
+                    let attribute_mark = matches!(
+                        toks.last(),
+                        Some((Token::Ident(_) | Token::RParen | Token::Kw(Kw::All) | Token::Str(_), _))
+                    );
+                    if attribute_mark {
+                        Token::Tick
+                    } else {
+                        // A character literal 'c', or a misprinted string 'abc'.
+                        let rest = &src[e..];
+                        let mut chars = rest.char_indices();
+                        match (chars.next(), chars.next()) {
+                            (Some((_, c)), Some((i, '\''))) if c != '\n' => {
+                                let end = e + i + 1;
+                                toks.push((Token::Char(c), span(file, s, end)));
+                                base = end;
+                                continue 'restart;
+                            }
+                            _ => {
+                                let line_end = rest.find('\n').unwrap_or(rest.len());
+                                if let Some(close) = rest[..line_end].find('\'') {
+                                    let inner = &rest[..close];
+                                    let end = e + close + 1;
+                                    diags.push(Diagnostic::single_quoted_string(span(file, s, end), inner));
+                                    toks.push((Token::Str(inner.to_string()), span(file, s, end)));
+                                    base = end;
+                                    continue 'restart;
+                                }
+                                diags.push(
+                                    Diagnostic::new(crate::diag::Phase::Lexical, sp, "stray `'`")
+                                        .with_label("neither a character literal nor an attribute mark")
+                                        .with_hint("a character literal is written 'c'"),
+                                );
+                                Token::Error
+                            }
+                        }
+                    }
+                }
+                Ok(Raw::LParen) => Token::LParen,
+                Ok(Raw::RParen) => Token::RParen,
+                Ok(Raw::Comma) => Token::Comma,
+                Ok(Raw::Semi) => Token::Semi,
+                Ok(Raw::Colon) => Token::Colon,
+                Ok(Raw::Dot) => Token::Dot,
+                Ok(Raw::DotDot) => Token::DotDot,
+                Ok(Raw::Assign) => Token::Assign,
+                Ok(Raw::Arrow) => Token::Arrow,
+                Ok(Raw::Box) => Token::Box,
+                Ok(Raw::Bar) | Ok(Raw::Bang) => Token::Bar,
+                Ok(Raw::Amp) => Token::Amp,
+                Ok(Raw::Plus) => Token::Plus,
+                Ok(Raw::Minus) => Token::Minus,
+                Ok(Raw::Star) => Token::Star,
+                Ok(Raw::StarStar) => Token::StarStar,
+                Ok(Raw::Slash) => Token::Slash,
+                Ok(Raw::Eq) => Token::Eq,
+                Ok(Raw::Ne) => Token::Ne,
+                Ok(Raw::Lt) => Token::Lt,
+                Ok(Raw::Le) => Token::Le,
+                Ok(Raw::Gt) => Token::Gt,
+                Ok(Raw::Ge) => Token::Ge,
+                Err(()) => {
+                    let c = text.chars().next().unwrap_or('?');
+                    let mut d = Diagnostic::stray_char(sp, c);
+                    if c == '[' || c == ']' {
+                        d = d.with_hint("Ada indexes arrays with parentheses: A (I)");
+                    } else if c == '{' || c == '}' {
+                        d = d.with_hint("Ada has no braces: blocks are `begin ... end;`");
+                    }
+                    diags.push(d);
+                    continue;
+                }
+            };
+            toks.push((tok, sp));
+        }
+        break;
+    }
+    (toks, diags)
+}
+
+fn digits_ok(s: &str) -> bool {
+    !s.is_empty() && !s.starts_with('_') && !s.ends_with('_') && !s.contains("__")
+}
+
+fn decimal(text: &str) -> Result<Token, String> {
+    let (mant, exp) = match text.find(['e', 'E']) {
+        Some(i) => (&text[..i], Some(&text[i + 1..])),
+        None => (text, None),
+    };
+    let exp_val: i32 = match exp {
+        Some(e) => {
+            let digits = e.trim_start_matches(['+', '-']);
+            if !digits_ok(digits) {
+                return Err(format!("bad exponent in `{text}`"));
+            }
+            let v: i32 = digits.replace('_', "").parse().map_err(|_| format!("exponent too large in `{text}`"))?;
+            if e.starts_with('-') { -v } else { v }
+        }
+        None => 0,
+    };
+    if let Some((ip, fp)) = mant.split_once('.') {
+        if !digits_ok(ip) || !digits_ok(fp) {
+            return Err(format!("misplaced `_` in `{text}`"));
+        }
+        let s = format!("{}.{}e{}", ip.replace('_', ""), fp.replace('_', ""), exp_val);
+        s.parse::<f64>().map(Token::Real).map_err(|e| e.to_string())
+    } else {
+        if !digits_ok(mant) {
+            return Err(format!("misplaced `_` in `{text}`"));
+        }
+        if exp_val < 0 {
+            return Err(format!("an integer literal cannot have a negative exponent: `{text}`"));
+        }
+        let mut v: i128 = mant.replace('_', "").parse().map_err(|_| format!("`{text}` is too large"))?;
+        for _ in 0..exp_val {
+            v = v.checked_mul(10).ok_or_else(|| format!("`{text}` is too large"))?;
+        }
+        Ok(Token::Int(v))
+    }
+}
+
+fn based(text: &str) -> Result<Token, String> {
+    let mut parts = text.splitn(3, '#');
+    let base_s = parts.next().unwrap_or("");
+    let body = parts.next().unwrap_or("");
+    let tail = match parts.next() {
+        Some(t) => t,
+        None => return Err(format!("based literal `{text}` lacks its closing `#`")),
+    };
+    let base: u32 = base_s.replace('_', "").parse().map_err(|_| format!("bad base in `{text}`"))?;
+    if !(2..=16).contains(&base) {
+        return Err(format!("base {base} is not between 2 and 16"));
+    }
+    let exp_val: i32 = if tail.is_empty() {
+        0
+    } else {
+        let e = &tail[1..];
+        let digits = e.trim_start_matches(['+', '-']);
+        if !digits_ok(digits) {
+            return Err(format!("bad exponent in `{text}`"));
+        }
+        let v: i32 = digits.replace('_', "").parse().map_err(|_| format!("bad exponent in `{text}`"))?;
+        if e.starts_with('-') { -v } else { v }
+    };
+    let (ip, fp) = match body.split_once('.') {
+        Some((a, b)) => (a, Some(b)),
+        None => (body, None),
+    };
+    let digit = |c: char| -> Result<u32, String> {
+        c.to_digit(base)
+            .ok_or_else(|| format!("digit `{c}` is not valid in base {base}"))
+    };
+    if !digits_ok(ip) || fp.is_some_and(|f| !digits_ok(f)) {
+        return Err(format!("misplaced `_` or missing digits in `{text}`"));
+    }
+    match fp {
+        None => {
+            if exp_val < 0 {
+                return Err(format!("an integer literal cannot have a negative exponent: `{text}`"));
+            }
+            let mut v: i128 = 0;
+            for c in ip.chars().filter(|c| *c != '_') {
+                v = v
+                    .checked_mul(base as i128)
+                    .and_then(|v| v.checked_add(digit(c).ok()? as i128))
+                    .ok_or_else(|| format!("`{text}` is too large or has a bad digit"))?;
+                digit(c)?;
+            }
+            for _ in 0..exp_val {
+                v = v.checked_mul(base as i128).ok_or_else(|| format!("`{text}` is too large"))?;
+            }
+            Ok(Token::Int(v))
+        }
+        Some(fp) => {
+            let mut v = 0f64;
+            for c in ip.chars().filter(|c| *c != '_') {
+                v = v * base as f64 + digit(c)? as f64;
+            }
+            let mut scale = 1f64 / base as f64;
+            for c in fp.chars().filter(|c| *c != '_') {
+                v += digit(c)? as f64 * scale;
+                scale /= base as f64;
+            }
+            Ok(Token::Real(v * (base as f64).powi(exp_val)))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn toks(s: &str) -> Vec<Token> {
+        lex(s, 0).0.into_iter().map(|t| t.0).collect()
+    }
+
+    #[test]
+    fn literals() {
+        assert_eq!(toks("16#FF# 8#340# 2#1010_0001# 1_000 2E3"), vec![
+            Token::Int(255),
+            Token::Int(224),
+            Token::Int(161),
+            Token::Int(1000),
+            Token::Int(2000)
+        ]);
+        assert_eq!(toks("1.0E-3 16#F.8#"), vec![Token::Real(1.0e-3), Token::Real(15.5)]);
+    }
+
+    #[test]
+    fn tick_ambiguity() {
+        assert_eq!(toks("Character'('a')"), vec![
+            Token::Ident("Character".into()),
+            Token::Tick,
+            Token::LParen,
+            Token::Char('a'),
+            Token::RParen
+        ]);
+        assert_eq!(toks("X := ''';"), vec![
+            Token::Ident("X".into()),
+            Token::Assign,
+            Token::Char('\''),
+            Token::Semi
+        ]);
+    }
+
+    #[test]
+    fn errors_continue() {
+        let (t, d) = lex("A $ B 'abc' \"open", 0);
+        assert_eq!(d.len(), 3);
+        assert_eq!(t.len(), 4);
+    }
+}

@@ -1,0 +1,1264 @@
+//! The chumsky parser: tokens -> AST, with error recovery so that one run
+//! reports every syntax error of a file. Expressions use chumsky's Pratt
+//! parser for the adding, multiplying and highest-precedence operators.
+
+use super::ast::*;
+use super::token::{Kw, Token};
+use crate::diag::{Diagnostic, FileId, Span};
+use chumsky::input::ValueInput;
+use chumsky::pratt::{infix, left, none, prefix};
+use chumsky::prelude::*;
+
+type Ex<'t> = extra::Err<Rich<'t, Token, Span>>;
+
+/// Everything a parser function needs from its input.
+pub trait TokIn<'t>: ValueInput<'t, Token = Token, Span = Span> {}
+impl<'t, T: ValueInput<'t, Token = Token, Span = Span>> TokIn<'t> for T {}
+
+macro_rules! kw {
+    ($k:ident) => {
+        just(Token::Kw(Kw::$k))
+    };
+}
+
+fn ident<'t, I: TokIn<'t>>() -> impl Parser<'t, I, Ident, Ex<'t>> + Clone {
+    select! { Token::Ident(s) = e => Ident::new(&s, e.span()) }.labelled("identifier")
+}
+
+fn semi<'t, I: TokIn<'t>>() -> impl Parser<'t, I, Token, Ex<'t>> + Clone {
+    just(Token::Semi).labelled("`;`")
+}
+
+fn mk(kind: ExprKind, span: Span) -> Expr {
+    Expr { kind, span }
+}
+
+fn join(a: Span, b: Span) -> Span {
+    Span {
+        start: a.start.min(b.start),
+        end: a.end.max(b.end),
+        context: a.context,
+    }
+}
+
+/// An attribute designator: an identifier or one of the reserved words that
+/// are also attribute names.
+fn attr_name<'t, I: TokIn<'t>>() -> impl Parser<'t, I, Ident, Ex<'t>> + Clone {
+    select! {
+        Token::Ident(s) = e => Ident::new(&s, e.span()),
+        Token::Kw(Kw::Range) = e => Ident::new("Range", e.span()),
+        Token::Kw(Kw::Digits) = e => Ident::new("Digits", e.span()),
+        Token::Kw(Kw::Access) = e => Ident::new("Access", e.span()),
+        Token::Kw(Kw::Delta) = e => Ident::new("Delta", e.span()),
+    }
+    .labelled("attribute name")
+}
+
+/// The expression parser (and the name parser built from the same pieces).
+pub fn expr<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, Expr, Ex<'t>> {
+    recursive(|expr| {
+        let expr: Boxed<'t, 't, I, Expr, Ex<'t>> = expr.boxed();
+        let simple = simple_expr(expr.clone());
+        let range_tail = just(Token::DotDot).ignore_then(simple.clone());
+        let choice_p = kw!(Others)
+            .map_with(|_, e| Choice::Others(e.span()))
+            .or(simple
+                .clone()
+                .then(range_tail.clone().or_not())
+                .map(|(a, b)| match b {
+                    Some(b) => Choice::Range(a, b),
+                    None => Choice::Expr(a),
+                }))
+            .boxed();
+        let relop = select! {
+            Token::Eq => BinOp::Eq, Token::Ne => BinOp::Ne, Token::Lt => BinOp::Lt,
+            Token::Le => BinOp::Le, Token::Gt => BinOp::Gt, Token::Ge => BinOp::Ge,
+        };
+        #[derive(Clone)]
+    enum Tail {
+            Rel(BinOp, Expr),
+            In(bool, Vec<Choice>),
+        }
+        let relation = simple
+            .clone()
+            .then(
+                choice((
+                    relop.then(simple.clone()).map(|(o, b)| Tail::Rel(o, b)),
+                    kw!(Not)
+                        .or_not()
+                        .then_ignore(kw!(In))
+                        .then(choice_p.clone().separated_by(just(Token::Bar)).at_least(1).collect())
+                        .map(|(n, c)| Tail::In(n.is_some(), c)),
+                ))
+                .or_not(),
+            )
+            .map_with(|(a, t), e| match t {
+                None => a,
+                Some(Tail::Rel(o, b)) => mk(ExprKind::Binary(o, Box::new(a), Box::new(b)), e.span()),
+                Some(Tail::In(negated, choices)) => mk(
+                    ExprKind::Membership {
+                        negated,
+                        subject: Box::new(a),
+                        choices,
+                    },
+                    e.span(),
+                ),
+            })
+            .boxed();
+        let logop = choice((
+            kw!(And).then(kw!(Then)).to(BinOp::AndThen),
+            kw!(Or).then(kw!(Else)).to(BinOp::OrElse),
+            kw!(And).to(BinOp::And),
+            kw!(Or).to(BinOp::Or),
+            kw!(Xor).to(BinOp::Xor),
+        ));
+        relation
+            .clone()
+            .foldl_with(logop.then(relation).repeated(), |a, (op, b), e| {
+                mk(ExprKind::Binary(op, Box::new(a), Box::new(b)), e.span())
+            })
+            .labelled("expression")
+            .boxed()
+    })
+    .boxed()
+}
+
+/// A parenthesised part: `(expr)`, an aggregate, an `if`/`case` expression.
+fn paren_part<'t, I: TokIn<'t>>(
+    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+    simple: impl Parser<'t, I, Expr, Ex<'t>> + Clone + 't,
+) -> Boxed<'t, 't, I, Expr, Ex<'t>> {
+    let choice_p = kw!(Others)
+        .map_with(|_, e| Choice::Others(e.span()))
+        .or(simple
+            .clone()
+            .then(just(Token::DotDot).ignore_then(simple.clone()).or_not())
+            .map(|(a, b)| match b {
+                Some(b) => Choice::Range(a, b),
+                None => Choice::Expr(a),
+            }));
+    let value = expr.clone().or(just(Token::Box).map_with(|_, e| mk(ExprKind::Error, e.span())));
+    let assoc = choice_p
+        .clone()
+        .separated_by(just(Token::Bar))
+        .at_least(1)
+        .collect::<Vec<_>>()
+        .then_ignore(just(Token::Arrow))
+        .or_not()
+        .then(value)
+        .map_with(|(choices, value), e| Assoc {
+            choices: choices.unwrap_or_default(),
+            value,
+            span: e.span(),
+        });
+    let if_expr = kw!(If)
+        .ignore_then(expr.clone())
+        .then_ignore(kw!(Then))
+        .then(expr.clone())
+        .then(
+            kw!(Elsif)
+                .ignore_then(expr.clone())
+                .then_ignore(kw!(Then))
+                .then(expr.clone())
+                .repeated()
+                .collect::<Vec<_>>(),
+        )
+        .then(kw!(Else).ignore_then(expr.clone()).or_not())
+        .map_with(|(((c, t), mut rest), els), e| {
+            rest.insert(0, (c, t));
+            mk(
+                ExprKind::If {
+                    arms: rest,
+                    els: els.map(Box::new),
+                },
+                e.span(),
+            )
+        });
+    let case_expr = kw!(Case)
+        .ignore_then(expr.clone())
+        .then_ignore(kw!(Is))
+        .then(
+            kw!(When)
+                .ignore_then(choice_p.clone().separated_by(just(Token::Bar)).at_least(1).collect())
+                .then_ignore(just(Token::Arrow))
+                .then(expr.clone())
+                .map_with(|(choices, body), e| CaseArm {
+                    choices,
+                    body,
+                    span: e.span(),
+                })
+                .separated_by(just(Token::Comma))
+                .at_least(1)
+                .collect(),
+        )
+        .map_with(|(s, arms), e| {
+            mk(
+                ExprKind::Case {
+                    subject: Box::new(s),
+                    arms,
+                },
+                e.span(),
+            )
+        });
+    choice((
+        if_expr,
+        case_expr,
+        assoc
+            .separated_by(just(Token::Comma))
+            .at_least(1)
+            .collect::<Vec<_>>()
+            .map_with(|mut items, e| {
+                if items.len() == 1 && items[0].choices.is_empty() {
+                    let v = items.remove(0).value;
+                    mk(ExprKind::Paren(Box::new(v)), e.span())
+                } else {
+                    mk(ExprKind::Aggregate(items), e.span())
+                }
+            }),
+    ))
+    .delimited_by(just(Token::LParen), just(Token::RParen))
+    .map_with(|mut x, e| {
+        x.span = e.span();
+        x
+    })
+    .boxed()
+}
+
+/// Names: identifiers followed by selections, `.all`, argument lists,
+/// attributes and qualifications.
+fn name_with<'t, I: TokIn<'t>>(
+    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+    paren: Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, Expr, Ex<'t>> {
+    #[derive(Clone)]
+    enum Suffix {
+        Sel(Ident),
+        All,
+        Args(Vec<Arg>),
+        Attr(Ident, Vec<Expr>),
+        Qual(Expr),
+    }
+    let arg = ident()
+        .then_ignore(just(Token::Arrow))
+        .or_not()
+        .then(expr.clone().then(just(Token::DotDot).ignore_then(expr.clone()).or_not()))
+        .map_with(|(name, (v, hi)), e| {
+            let value = match hi {
+                // A slice `A (L .. H)`: kept as a one-element aggregate with a range choice.
+                Some(hi) => {
+                    let sp = join(v.span, hi.span);
+                    mk(
+                        ExprKind::Aggregate(vec![Assoc {
+                            choices: vec![Choice::Range(v, hi)],
+                            value: mk(ExprKind::Error, sp),
+                            span: sp,
+                        }]),
+                        sp,
+                    )
+                }
+                None => v,
+            };
+            Arg {
+                name,
+                value,
+                span: e.span(),
+            }
+        });
+    let op_symbol = select! { Token::Str(s) = e => Ident::new(&format!("\"{s}\""), e.span()) };
+    let suffix = choice((
+        just(Token::Dot).ignore_then(kw!(All)).to(Suffix::All),
+        just(Token::Dot).ignore_then(ident().or(op_symbol)).map(Suffix::Sel),
+        just(Token::Tick).ignore_then(paren.clone()).map(Suffix::Qual),
+        just(Token::Tick)
+            .ignore_then(attr_name())
+            .then(
+                expr.clone()
+                    .separated_by(just(Token::Comma))
+                    .at_least(1)
+                    .collect::<Vec<_>>()
+                    .delimited_by(just(Token::LParen), just(Token::RParen))
+                    .or_not(),
+            )
+            .map(|(a, args)| Suffix::Attr(a, args.unwrap_or_default())),
+        arg.separated_by(just(Token::Comma))
+            .at_least(1)
+            .collect::<Vec<_>>()
+            .delimited_by(just(Token::LParen), just(Token::RParen))
+            .map(Suffix::Args),
+    ));
+    let head = ident().map(|i| {
+        let sp = i.span;
+        mk(ExprKind::Name(i), sp)
+    });
+    head.foldl_with(suffix.repeated(), |p, s, e| {
+        let sp = e.span();
+        let b = Box::new(p);
+        match s {
+            Suffix::Sel(i) => mk(ExprKind::Select(b, i), sp),
+            Suffix::All => mk(ExprKind::Deref(b), sp),
+            Suffix::Args(a) => mk(ExprKind::Apply(b, a), sp),
+            Suffix::Attr(a, args) => mk(ExprKind::Attr(b, a, args), sp),
+            Suffix::Qual(x) => mk(ExprKind::Qualified(b, Box::new(x)), sp),
+        }
+    })
+    .labelled("name")
+    .boxed()
+}
+
+fn simple_expr<'t, I: TokIn<'t>>(
+    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, Expr, Ex<'t>> {
+    recursive(|simple| {
+        let simple: Boxed<'t, 't, I, Expr, Ex<'t>> = simple.boxed();
+        let paren = paren_part(expr.clone(), simple.clone());
+        let name = name_with(expr.clone(), paren.clone());
+        let literal = select! {
+            Token::Int(i) = e => mk(ExprKind::Int(i), e.span()),
+            Token::Real(r) = e => mk(ExprKind::Real(r), e.span()),
+            Token::Char(c) = e => mk(ExprKind::Char(c), e.span()),
+            Token::Str(s) = e => mk(ExprKind::Str(s), e.span()),
+            Token::Kw(Kw::Null) = e => mk(ExprKind::Null, e.span()),
+            Token::Error = e => mk(ExprKind::Error, e.span()),
+        };
+        // An operator symbol used as a function name: "*" (A, B).
+        let allocator = kw!(New).ignore_then(name.clone()).map_with(|n, e| {
+            let sp = e.span();
+            match n.kind {
+                ExprKind::Qualified(t, v) => mk(ExprKind::Allocator(t, Some(v)), sp),
+                _ => mk(ExprKind::Allocator(Box::new(n), None), sp),
+            }
+        });
+        let primary = choice((literal, allocator, name, paren)).labelled("expression").boxed();
+        primary
+            .pratt((
+                infix(none(6), just(Token::StarStar), |a: Expr, _, b: Expr, e| {
+                    mk(ExprKind::Binary(BinOp::Pow, Box::new(a), Box::new(b)), e.span())
+                }),
+                prefix(7, kw!(Abs), |_, a: Expr, e| mk(ExprKind::Unary(UnOp::Abs, Box::new(a)), e.span())),
+                prefix(7, kw!(Not), |_, a: Expr, e| mk(ExprKind::Unary(UnOp::Not, Box::new(a)), e.span())),
+                infix(
+                    left(4),
+                    select! { Token::Star => BinOp::Mul, Token::Slash => BinOp::Div, Token::Kw(Kw::Mod) => BinOp::Mod, Token::Kw(Kw::Rem) => BinOp::Rem },
+                    |a: Expr, op, b: Expr, e| mk(ExprKind::Binary(op, Box::new(a), Box::new(b)), e.span()),
+                ),
+                prefix(3, just(Token::Minus), |_, a: Expr, e| mk(ExprKind::Unary(UnOp::Neg, Box::new(a)), e.span())),
+                prefix(3, just(Token::Plus), |_, a: Expr, e| mk(ExprKind::Unary(UnOp::Plus, Box::new(a)), e.span())),
+                infix(
+                    left(2),
+                    select! { Token::Plus => BinOp::Add, Token::Minus => BinOp::Sub, Token::Amp => BinOp::Cat },
+                    |a: Expr, op, b: Expr, e| mk(ExprKind::Binary(op, Box::new(a), Box::new(b)), e.span()),
+                ),
+            ))
+            .boxed()
+    })
+    .boxed()
+}
+
+/// A bare name (for `with`, `use`, subtype marks, exception choices).
+pub fn name<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, Expr, Ex<'t>> {
+    ident()
+        .map(|i| {
+            let sp = i.span;
+            mk(ExprKind::Name(i), sp)
+        })
+        .foldl_with(just(Token::Dot).ignore_then(ident()).repeated(), |p, i, e| {
+            mk(ExprKind::Select(Box::new(p), i), e.span())
+        })
+        .labelled("name")
+        .boxed()
+}
+
+fn subtype_ind<'t, I: TokIn<'t>>(expr: Boxed<'t, 't, I, Expr, Ex<'t>>) -> Boxed<'t, 't, I, SubtypeInd, Ex<'t>> {
+    let simple = expr.clone();
+    let range_c = kw!(Range)
+        .ignore_then(simple.clone())
+        .then_ignore(just(Token::DotDot))
+        .then(simple.clone())
+        .map(|(a, b)| Constraint::Range(Box::new(a), Box::new(b)));
+    let dr = discrete_range(expr.clone());
+    let index_c = dr
+        .separated_by(just(Token::Comma))
+        .at_least(1)
+        .collect()
+        .delimited_by(just(Token::LParen), just(Token::RParen))
+        .map(Constraint::Index);
+    name()
+        .then(range_c.or(index_c).or_not())
+        .map_with(|(mark, constraint), e| SubtypeInd {
+            mark,
+            constraint,
+            span: e.span(),
+        })
+        .labelled("subtype")
+        .boxed()
+}
+
+fn discrete_range<'t, I: TokIn<'t>>(expr: Boxed<'t, 't, I, Expr, Ex<'t>>) -> Boxed<'t, 't, I, DiscreteRange, Ex<'t>> {
+    // `A .. B`, `T range A .. B`, `T`, `X'Range`: parse an expression first.
+    expr.clone()
+        .then(
+            choice((
+                just(Token::DotDot).ignore_then(expr.clone()).map(|b| (Some(b), None)),
+                kw!(Range)
+                    .ignore_then(expr.clone())
+                    .then_ignore(just(Token::DotDot))
+                    .then(expr.clone())
+                    .map(|(a, b)| (Some(a), Some(b))),
+            ))
+            .or_not(),
+        )
+        .map_with(|(a, rest), e| match rest {
+            Some((Some(b), None)) => DiscreteRange::Range(a, b),
+            Some((Some(lo), Some(hi))) => DiscreteRange::Subtype(SubtypeInd {
+                mark: a,
+                constraint: Some(Constraint::Range(Box::new(lo), Box::new(hi))),
+                span: e.span(),
+            }),
+            _ => match &a.kind {
+                ExprKind::Attr(_, at, _) if at.key == "range" => DiscreteRange::Attr(a),
+                _ => DiscreteRange::Subtype(SubtypeInd {
+                    mark: a,
+                    constraint: None,
+                    span: e.span(),
+                }),
+            },
+        })
+        .boxed()
+}
+
+/// Tokens that end a statement sequence (never the start of a statement).
+fn seq_end<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
+    select! {
+        Token::Kw(Kw::End) => (), Token::Kw(Kw::Elsif) => (), Token::Kw(Kw::Else) => (),
+        Token::Kw(Kw::When) => (), Token::Kw(Kw::Exception) => (), Token::Kw(Kw::Or) => (),
+        Token::Kw(Kw::Begin) => (), Token::Kw(Kw::Private) => (),
+    }
+}
+
+fn params<'t, I: TokIn<'t>>(expr: Boxed<'t, 't, I, Expr, Ex<'t>>) -> Boxed<'t, 't, I, Vec<Param>, Ex<'t>> {
+    let mode = choice((
+        kw!(In).then(kw!(Out)).to(Mode::InOut),
+        kw!(In).to(Mode::In),
+        kw!(Out).to(Mode::Out),
+    ))
+    .or_not()
+    .map(|m| m.unwrap_or(Mode::In));
+    ident()
+        .separated_by(just(Token::Comma))
+        .at_least(1)
+        .collect::<Vec<_>>()
+        .then_ignore(just(Token::Colon))
+        .then(mode)
+        .then(kw!(Access).or_not().ignore_then(name()))
+        .then(just(Token::Assign).ignore_then(expr).or_not())
+        .map_with(|(((names, mode), ty), default), e| Param {
+            names,
+            mode,
+            ty,
+            default,
+            span: e.span(),
+        })
+        .separated_by(semi())
+        .at_least(1)
+        .collect::<Vec<_>>()
+        .delimited_by(just(Token::LParen), just(Token::RParen))
+        .or_not()
+        .map(|p| p.unwrap_or_default())
+        .boxed()
+}
+
+fn subprogram_spec<'t, I: TokIn<'t>>(expr: Boxed<'t, 't, I, Expr, Ex<'t>>) -> Boxed<'t, 't, I, SubprogramSpec, Ex<'t>> {
+    let designator = ident()
+        .map(Designator::Ident)
+        .or(select! { Token::Str(s) = e => Designator::Op(s, e.span()) });
+    let proc = kw!(Procedure)
+        .ignore_then(designator.clone())
+        .then(params(expr.clone()))
+        .map_with(|(name, params), e| SubprogramSpec {
+            name,
+            params,
+            ret: None,
+            span: e.span(),
+        });
+    let func = kw!(Function)
+        .ignore_then(designator)
+        .then(params(expr))
+        .then_ignore(kw!(Return))
+        .then(name())
+        .map_with(|((name, params), ret), e| SubprogramSpec {
+            name,
+            params,
+            ret: Some(ret),
+            span: e.span(),
+        });
+    proc.or(func).boxed()
+}
+
+struct Parsers<'t, I: TokIn<'t>> {
+    decl: Boxed<'t, 't, I, Decl, Ex<'t>>,
+    stmt: Boxed<'t, 't, I, Stmt, Ex<'t>>,
+}
+
+fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
+    let mut decl: Recursive<chumsky::recursive::Indirect<'t, 't, I, Decl, Ex<'t>>> = Recursive::declare();
+    let mut stmt: Recursive<chumsky::recursive::Indirect<'t, 't, I, Stmt, Ex<'t>>> = Recursive::declare();
+    let expr = expr::<I>();
+    let st_ind = subtype_ind(expr.clone());
+    let drange = discrete_range(expr.clone());
+
+    // Statement sequences stop at the words that close them; a statement that
+    // fails to parse is skipped up to its `;` so that later errors are found too.
+    let stmts = seq_end()
+        .not()
+        .rewind()
+        .ignore_then(stmt.clone())
+        .repeated()
+        .collect::<Vec<_>>()
+        .boxed();
+    let decls = seq_end()
+        .not()
+        .rewind()
+        .ignore_then(decl.clone())
+        .repeated()
+        .collect::<Vec<_>>()
+        .boxed();
+
+    let handler = kw!(When)
+        .ignore_then(ident().then_ignore(just(Token::Colon)).or_not())
+        .then(
+            kw!(Others)
+                .to(None)
+                .or(name().map(Some))
+                .separated_by(just(Token::Bar))
+                .at_least(1)
+                .collect::<Vec<_>>(),
+        )
+        .then_ignore(just(Token::Arrow))
+        .then(stmts.clone())
+        .map_with(|((occurrence, choices), stmts), e| Handler {
+            occurrence,
+            choices,
+            stmts,
+            span: e.span(),
+        });
+    let block = kw!(Begin)
+        .ignore_then(stmts.clone())
+        .then(kw!(Exception).ignore_then(handler.clone().repeated().collect::<Vec<_>>()).or_not())
+        .then_ignore(kw!(End))
+        .map_with(|(stmts, handlers), e| Block {
+            stmts,
+            handlers: handlers.unwrap_or_default(),
+            span: e.span(),
+        })
+        .boxed();
+
+    let end_name = name()
+        .map(|n: Expr| (expr_text(&n), n.span))
+        .or(select! { Token::Str(s) = e => (format!("\"{s}\""), e.span()) })
+        .or_not();
+
+    // ---- statements ----
+    let label = ident().then_ignore(just(Token::Colon));
+    let choice_p = kw!(Others)
+        .map_with(|_, e| Choice::Others(e.span()))
+        .or(expr
+            .clone()
+            .then(just(Token::DotDot).ignore_then(expr.clone()).or_not())
+            .map(|(a, b)| match b {
+                Some(b) => Choice::Range(a, b),
+                None => Choice::Expr(a),
+            }))
+        .boxed();
+    let choices = choice_p.separated_by(just(Token::Bar)).at_least(1).collect::<Vec<_>>().boxed();
+
+    let if_stmt = kw!(If)
+        .ignore_then(expr.clone())
+        .then_ignore(kw!(Then))
+        .then(stmts.clone())
+        .then(
+            kw!(Elsif)
+                .ignore_then(expr.clone())
+                .then_ignore(kw!(Then))
+                .then(stmts.clone())
+                .repeated()
+                .collect::<Vec<_>>(),
+        )
+        .then(kw!(Else).ignore_then(stmts.clone()).or_not())
+        .then_ignore(kw!(End).then(kw!(If)).labelled("`end if`"))
+        .then_ignore(semi())
+        .map(|(((c, t), mut rest), els)| {
+            rest.insert(0, (c, t));
+            StmtKind::If { arms: rest, els }
+        });
+    let case_stmt = kw!(Case)
+        .ignore_then(expr.clone())
+        .then_ignore(kw!(Is))
+        .then(
+            kw!(When)
+                .ignore_then(choices.clone())
+                .then_ignore(just(Token::Arrow))
+                .then(stmts.clone())
+                .map_with(|(choices, body), e| CaseArm {
+                    choices,
+                    body,
+                    span: e.span(),
+                })
+                .repeated()
+                .at_least(1)
+                .collect::<Vec<_>>(),
+        )
+        .then_ignore(kw!(End).then(kw!(Case)).labelled("`end case`"))
+        .then_ignore(semi())
+        .map(|(subject, arms)| StmtKind::Case { subject, arms });
+    let scheme = choice((
+        kw!(While).ignore_then(expr.clone()).map(LoopScheme::While),
+        kw!(For)
+            .ignore_then(ident())
+            .then_ignore(kw!(In))
+            .then(kw!(Reverse).or_not())
+            .then(drange.clone())
+            .map(|((var, rev), range)| LoopScheme::For {
+                var,
+                reverse: rev.is_some(),
+                range,
+            }),
+    ))
+    .or_not()
+    .map(|s| s.unwrap_or(LoopScheme::Plain));
+    let loop_stmt = label
+        .clone()
+        .or_not()
+        .then(scheme)
+        .then_ignore(kw!(Loop))
+        .then(stmts.clone())
+        .then_ignore(kw!(End).then(kw!(Loop)).labelled("`end loop`"))
+        .then(ident().or_not())
+        .then_ignore(semi())
+        .map(|(((label, scheme), body), end_label)| StmtKind::Loop {
+            label,
+            scheme,
+            body,
+            end_label,
+        });
+    let block_stmt = label
+        .clone()
+        .or_not()
+        .then(kw!(Declare).ignore_then(decls.clone()).or_not())
+        .then(block.clone())
+        .then_ignore(ident().or_not())
+        .then_ignore(semi())
+        .map(|((label, decls), body)| StmtKind::Block {
+            label,
+            decls: decls.unwrap_or_default(),
+            body,
+        });
+    let exit_stmt = kw!(Exit)
+        .ignore_then(ident().or_not())
+        .then(kw!(When).ignore_then(expr.clone()).or_not())
+        .then_ignore(semi())
+        .map(|(label, cond)| StmtKind::Exit { label, cond });
+    let return_stmt = kw!(Return)
+        .ignore_then(expr.clone().or_not())
+        .then_ignore(semi())
+        .map(StmtKind::Return);
+    let raise_stmt = kw!(Raise)
+        .ignore_then(name().or_not())
+        .then(kw!(With).ignore_then(expr.clone()).or_not())
+        .then_ignore(semi())
+        .map(|(name, message)| StmtKind::Raise { name, message });
+    let delay_stmt = kw!(Delay)
+        .ignore_then(kw!(Until).or_not())
+        .ignore_then(expr.clone())
+        .then_ignore(semi())
+        .map(StmtKind::Delay);
+    let accept = kw!(Accept)
+        .ignore_then(ident())
+        .then(params(expr.clone()))
+        .then(
+            kw!(Do)
+                .ignore_then(stmts.clone())
+                .then(kw!(Exception).ignore_then(handler.clone().repeated().collect::<Vec<_>>()).or_not())
+                .then_ignore(kw!(End))
+                .then_ignore(ident().or_not())
+                .map_with(|(stmts, handlers), e| Block {
+                    stmts,
+                    handlers: handlers.unwrap_or_default(),
+                    span: e.span(),
+                })
+                .or_not(),
+        )
+        .then_ignore(semi())
+        .map_with(|((entry, params), body), e| Stmt {
+            kind: StmtKind::Accept { entry, params, body },
+            span: e.span(),
+        })
+        .boxed();
+    let select_alt = kw!(When)
+        .ignore_then(expr.clone())
+        .then_ignore(just(Token::Arrow))
+        .or_not()
+        .then(choice((
+            accept
+                .clone()
+                .then(stmts.clone())
+                .map(|(a, s)| SelectKind::Accept(Box::new(a), s)),
+            kw!(Delay)
+                .ignore_then(expr.clone())
+                .then_ignore(semi())
+                .then(stmts.clone())
+                .map(|(d, s)| SelectKind::Delay(d, s)),
+            kw!(Terminate).then(semi()).to(SelectKind::Terminate),
+        )))
+        .map_with(|(guard, kind), e| SelectAlt {
+            guard,
+            kind,
+            span: e.span(),
+        });
+    let select_stmt = kw!(Select)
+        .ignore_then(select_alt.clone().separated_by(kw!(Or)).at_least(1).collect::<Vec<_>>())
+        .then(
+            kw!(Else)
+                .ignore_then(stmts.clone())
+                .map_with(|s, e| SelectAlt {
+                    guard: None,
+                    kind: SelectKind::Else(s),
+                    span: e.span(),
+                })
+                .or_not(),
+        )
+        .then_ignore(kw!(End).then(kw!(Select)))
+        .then_ignore(semi())
+        .map(|(mut alts, els)| {
+            alts.extend(els);
+            StmtKind::Select(alts)
+        });
+    let goto = kw!(Goto)
+        .then(ident())
+        .then(semi())
+        .map_with(|_, e| StmtKind::Decl(Box::new(unsupported(e.span(), "`goto`"))));
+    let simple_stmt = expr
+        .clone()
+        .then(just(Token::Assign).ignore_then(expr.clone()).or_not())
+        .then_ignore(semi())
+        .map(|(target, value)| match value {
+            Some(v) => StmtKind::Assign(target, v),
+            None => StmtKind::Call(target),
+        });
+
+    // A declaration in statement position (script mode): `X : T := ...;` etc.
+    let decl_stmt = decl.clone().map(|d| StmtKind::Decl(Box::new(d)));
+
+    let stmt_kind = choice((
+        kw!(Null).then(semi()).to(StmtKind::Null),
+        if_stmt,
+        case_stmt,
+        loop_stmt,
+        block_stmt,
+        exit_stmt,
+        return_stmt,
+        raise_stmt,
+        delay_stmt,
+        accept.clone().map(|s| s.kind),
+        select_stmt,
+        goto,
+        // Declarations that start with an identifier and a colon, or a keyword.
+        ident()
+            .then(just(Token::Comma).or(just(Token::Colon)))
+            .rewind()
+            .ignore_then(decl_stmt.clone()),
+        select! { Token::Kw(Kw::Type | Kw::Subtype | Kw::Procedure | Kw::Function | Kw::Package | Kw::Use | Kw::Pragma | Kw::Task | Kw::Generic | Kw::Protected) => () }
+            .rewind()
+            .ignore_then(decl_stmt),
+        simple_stmt,
+    ))
+    .labelled("statement");
+    stmt.define(
+        stmt_kind
+            .map_with(|kind, e| Stmt { kind, span: e.span() })
+            .recover_with(skip_until(
+                any().ignored(),
+                semi().ignored(),
+                || Stmt {
+                    kind: StmtKind::Error,
+                    span: Span {
+                        start: 0,
+                        end: 0,
+                        context: 0,
+                    },
+                },
+            ))
+            .boxed(),
+    );
+
+    // ---- declarations ----
+    let names = ident().separated_by(just(Token::Comma)).at_least(1).collect::<Vec<_>>().boxed();
+    let init = just(Token::Assign).ignore_then(expr.clone()).or_not();
+    let enum_lit = ident()
+        .map(EnumLit::Ident)
+        .or(select! { Token::Char(c) = e => EnumLit::Char(c, e.span()) });
+    let array_def = kw!(Array)
+        .ignore_then(
+            choice((
+                name()
+                    .then_ignore(kw!(Range))
+                    .then_ignore(just(Token::Box))
+                    .separated_by(just(Token::Comma))
+                    .at_least(1)
+                    .collect::<Vec<_>>()
+                    .map(ArrayIndex::Unconstrained),
+                drange
+                    .clone()
+                    .separated_by(just(Token::Comma))
+                    .at_least(1)
+                    .collect::<Vec<_>>()
+                    .map(ArrayIndex::Constrained),
+            ))
+            .delimited_by(just(Token::LParen), just(Token::RParen)),
+        )
+        .then_ignore(kw!(Of))
+        .then_ignore(kw!(Aliased).or_not())
+        .then(st_ind.clone())
+        .map(|(index, elem)| TypeDef::Array { index, elem })
+        .boxed();
+    let component = names
+        .clone()
+        .then_ignore(just(Token::Colon))
+        .then_ignore(kw!(Aliased).or_not())
+        .then(st_ind.clone())
+        .then(init.clone())
+        .then_ignore(semi())
+        .map_with(|((names, ty), default), e| Component {
+            names,
+            ty,
+            default,
+            span: e.span(),
+        });
+    let record_body = kw!(Null)
+        .then(semi())
+        .to(Vec::new())
+        .or(component.repeated().at_least(1).collect::<Vec<_>>())
+        .delimited_by(kw!(Record), kw!(End).then(kw!(Record)))
+        .or(kw!(Null).then(kw!(Record)).to(Vec::new()));
+    let type_def = choice((
+        enum_lit
+            .separated_by(just(Token::Comma))
+            .at_least(1)
+            .collect::<Vec<_>>()
+            .delimited_by(just(Token::LParen), just(Token::RParen))
+            .map(TypeDef::Enum),
+        kw!(Range)
+            .ignore_then(expr.clone())
+            .then_ignore(just(Token::DotDot))
+            .then(expr.clone())
+            .map(|(a, b)| TypeDef::IntRange(a, b)),
+        kw!(Digits)
+            .ignore_then(expr.clone())
+            .then(
+                kw!(Range)
+                    .ignore_then(expr.clone())
+                    .then_ignore(just(Token::DotDot))
+                    .then(expr.clone())
+                    .or_not(),
+            )
+            .map(|(digits, range)| TypeDef::Float { digits, range }),
+        kw!(New).ignore_then(st_ind.clone()).map(TypeDef::Derived),
+        array_def.clone(),
+        record_body.clone().map(TypeDef::Record),
+        kw!(Tagged)
+            .then(record_body.clone())
+            .to(TypeDef::Unsupported("a tagged type")),
+        kw!(Abstract).then(kw!(Tagged)).then(record_body.clone()).to(TypeDef::Unsupported("an abstract tagged type")),
+        kw!(Limited).then(kw!(Private)).to(TypeDef::Unsupported("a private type")),
+        kw!(Private).to(TypeDef::Unsupported("a private type")),
+        kw!(Mod).ignore_then(expr.clone()).to(TypeDef::Unsupported("a modular type")),
+        kw!(Delta).ignore_then(expr.clone()).then(kw!(Range).then(expr.clone()).then(just(Token::DotDot)).then(expr.clone()).or_not()).to(TypeDef::Unsupported("a fixed-point type")),
+        kw!(Access)
+            .ignore_then(kw!(All).or(kw!(Constant)).or_not())
+            .ignore_then(st_ind.clone())
+            .map(TypeDef::Access),
+    ));
+    let type_decl = kw!(Type)
+        .ignore_then(ident())
+        .then(kw!(Is).ignore_then(type_def).or_not())
+        .then_ignore(semi())
+        .map(|(name, def)| DeclKind::Type {
+            name,
+            def: def.unwrap_or(TypeDef::Incomplete),
+        });
+    let subtype_decl = kw!(Subtype)
+        .ignore_then(ident())
+        .then_ignore(kw!(Is))
+        .then(st_ind.clone())
+        .then_ignore(semi())
+        .map(|(name, ind)| DeclKind::Subtype { name, ind });
+    #[derive(Clone)]
+    enum ObjTail {
+        Exception,
+        Number(Expr),
+        Object(bool, SubtypeInd, Option<Expr>),
+        AnonArray(bool, TypeDef, Span, Option<Expr>),
+        Renames,
+    }
+    let object_decl = names
+        .clone()
+        .then_ignore(just(Token::Colon))
+        .then(choice((
+            kw!(Exception).to(ObjTail::Exception),
+            kw!(Constant)
+                .ignore_then(just(Token::Assign))
+                .ignore_then(expr.clone())
+                .map(ObjTail::Number),
+            kw!(Constant)
+                .or_not()
+                .then_ignore(kw!(Aliased).or_not())
+                .then(array_def.clone().map_with(|d, e| (d, e.span())))
+                .then(init.clone())
+                .map(|((c, (d, sp)), i)| ObjTail::AnonArray(c.is_some(), d, sp, i)),
+            kw!(Aliased)
+                .or_not()
+                .ignore_then(kw!(Constant).or_not())
+                .then_ignore(kw!(Aliased).or_not())
+                .then(st_ind.clone())
+                .then(kw!(Renames).then(expr.clone()).or_not())
+                .then(init.clone())
+                .map(|(((c, t), ren), i)| {
+                    if ren.is_some() {
+                        ObjTail::Renames
+                    } else {
+                        ObjTail::Object(c.is_some(), t, i)
+                    }
+                }),
+        )))
+        .then_ignore(semi())
+        .map(|(names, tail)| match tail {
+            ObjTail::Exception => DeclKind::Exception { names },
+            ObjTail::Number(value) => DeclKind::Number { names, value },
+            ObjTail::Object(constant, ty, init) => DeclKind::Object {
+                names,
+                constant,
+                ty,
+                init,
+                anon: None,
+            },
+            ObjTail::AnonArray(constant, def, sp, init) => {
+                // An anonymous array type gets a hidden name of its own.
+                let tyname = Ident::new(&format!("{}'Type", names[0].name), sp);
+                DeclKind::Object {
+                    names,
+                    constant,
+                    ty: SubtypeInd {
+                        mark: mk(ExprKind::Name(tyname), sp),
+                        constraint: None,
+                        span: sp,
+                    },
+                    init,
+                    anon: Some(Box::new(def)),
+                }
+            }
+            ObjTail::Renames => DeclKind::Unsupported("a renaming declaration"),
+        });
+    let import_aspect = kw!(With)
+        .ignore_then(
+            ident()
+                .then(just(Token::Arrow).ignore_then(expr.clone()).or_not())
+                .separated_by(just(Token::Comma))
+                .at_least(1)
+                .collect::<Vec<_>>(),
+        )
+        .map(|aspects: Vec<(Ident, Option<Expr>)>| {
+            aspects.into_iter().find_map(|(k, v)| match (k.key.as_str(), v) {
+                ("external_name", Some(Expr { kind: ExprKind::Str(s), .. })) => Some(s),
+                _ => None,
+            })
+        });
+    #[derive(Clone)]
+    enum SubTail {
+        Unsupported(&'static str),
+        Decl(Option<String>),
+        Body(Vec<Decl>, Block, Option<(String, Span)>),
+    }
+    let spec = subprogram_spec(expr.clone());
+    let subprogram = spec
+        .clone()
+        .then(choice((
+            kw!(Is)
+                .ignore_then(kw!(Separate).or(kw!(Abstract)))
+                .then_ignore(semi())
+                .to(SubTail::Unsupported("a separate or abstract subprogram")),
+            kw!(Is)
+                .ignore_then(kw!(New))
+                .then(name())
+                .then(any().and_is(semi().not()).repeated())
+                .then_ignore(semi())
+                .to(SubTail::Unsupported("a generic instantiation")),
+            kw!(Is)
+                .ignore_then(decls.clone())
+                .then(block.clone())
+                .then(end_name.clone())
+                .then_ignore(semi())
+                .map(|((d, b), n)| SubTail::Body(d, b, n)),
+            import_aspect
+                .or_not()
+                .then_ignore(semi())
+                .map(|imp| SubTail::Decl(imp.flatten())),
+        )))
+        .map(|(spec, rest)| match rest {
+            SubTail::Unsupported(what) => DeclKind::Unsupported(what),
+            SubTail::Decl(import) => DeclKind::SubprogramDecl { spec, import },
+            SubTail::Body(decls, body, end_name) => DeclKind::SubprogramBody(Box::new(SubprogramBody {
+                spec,
+                decls,
+                body,
+                end_name,
+            })),
+        });
+    let package = kw!(Package)
+        .ignore_then(choice((
+            kw!(Body)
+                .ignore_then(name())
+                .then_ignore(kw!(Is))
+                .then(decls.clone())
+                .then(
+                    kw!(Begin)
+                        .ignore_then(stmts.clone())
+                        .then(kw!(Exception).ignore_then(handler.clone().repeated().collect::<Vec<_>>()).or_not())
+                        .map_with(|(stmts, handlers), e| Block {
+                            stmts,
+                            handlers: handlers.unwrap_or_default(),
+                            span: e.span(),
+                        })
+                        .or_not(),
+                )
+                .then_ignore(kw!(End))
+                .then_ignore(name().or_not())
+                .then_ignore(semi())
+                .map_with(|((name, decls), init), e| {
+                    DeclKind::PackageBody(Box::new(PackageBody {
+                        name,
+                        decls,
+                        init,
+                        span: e.span(),
+                    }))
+                }),
+            name()
+                .then_ignore(kw!(Is))
+                .then_ignore(kw!(New))
+                .then(any().and_is(semi().not()).repeated())
+                .then_ignore(semi())
+                .to(DeclKind::Unsupported("a generic instantiation")),
+            name()
+                .then_ignore(kw!(Is))
+                .then(decls.clone())
+                .then(kw!(Private).ignore_then(decls.clone()).or_not())
+                .then_ignore(kw!(End))
+                .then_ignore(name().or_not())
+                .then_ignore(semi())
+                .map_with(|((name, decls), private), e| {
+                    DeclKind::PackageSpec(Box::new(PackageSpec {
+                        name,
+                        decls,
+                        private: private.unwrap_or_default(),
+                        span: e.span(),
+                    }))
+                }),
+        )));
+    let use_decl = kw!(Use)
+        .ignore_then(kw!(Type).or(kw!(All).then(kw!(Type)).to(Token::Semi)).or_not())
+        .ignore_then(name().separated_by(just(Token::Comma)).at_least(1).collect::<Vec<_>>())
+        .then_ignore(semi())
+        .map(DeclKind::Use);
+    let pragma = kw!(Pragma)
+        .then(ident())
+        .then(any().and_is(semi().not()).repeated())
+        .then(semi())
+        .to(DeclKind::Unsupported("pragma"));
+    let entry_decl = kw!(Entry)
+        .ignore_then(ident())
+        .then(params(expr.clone()))
+        .then_ignore(semi())
+        .map_with(|(name, params), e| EntryDecl {
+            name,
+            params,
+            span: e.span(),
+        });
+    let interrupt_use = kw!(For)
+        .ignore_then(ident())
+        .then_ignore(kw!(Use))
+        .then_ignore(kw!(At))
+        .then(expr.clone())
+        .then_ignore(semi())
+        .map(|(entry, address)| DeclKind::InterruptUse { entry, address });
+    let task = kw!(Task).ignore_then(choice((
+        kw!(Body)
+            .ignore_then(ident())
+            .then_ignore(kw!(Is))
+            .then(decls.clone())
+            .then(block.clone())
+            .then_ignore(ident().or_not())
+            .then_ignore(semi())
+            .map(|((name, decls), body)| DeclKind::TaskBody(Box::new(TaskBody { name, decls, body }))),
+        kw!(Type)
+            .or_not()
+            .then(ident())
+            .then(
+                kw!(Is)
+                    .ignore_then(
+                        entry_decl
+                            .map(Some)
+                            .or(interrupt_use.clone().map(|_| None))
+                            .repeated()
+                            .collect::<Vec<_>>(),
+                    )
+                    .then_ignore(kw!(End))
+                    .then_ignore(ident().or_not())
+                    .or_not(),
+            )
+            .then_ignore(semi())
+            .map(|((is_type, name), entries)| {
+                DeclKind::TaskSpec(Box::new(TaskSpec {
+                    name,
+                    entries: entries.unwrap_or_default().into_iter().flatten().collect(),
+                    is_type: is_type.is_some(),
+                }))
+            }),
+    )));
+    let generic = kw!(Generic)
+        .then(
+            any()
+                .and_is(select! { Token::Kw(Kw::Procedure | Kw::Function | Kw::Package) => () }.not())
+                .repeated(),
+        )
+        .ignore_then(decl.clone())
+        .to(DeclKind::Unsupported("a generic unit"));
+    let protected = kw!(Protected)
+        .then(kw!(Type).or(kw!(Body)).or_not())
+        .then(ident())
+        .then(any().and_is(kw!(End).then(ident()).then(semi()).not()).repeated())
+        .then(kw!(End).then(ident()).then(semi()))
+        .to(DeclKind::Unsupported("a protected object"));
+
+    decl.define(
+        choice((
+            type_decl,
+            subtype_decl,
+            object_decl,
+            subprogram,
+            package,
+            use_decl,
+            pragma,
+            task,
+            interrupt_use,
+            generic,
+            protected,
+        ))
+        .map_with(|kind, e| Decl { kind, span: e.span() })
+        .labelled("declaration")
+        .recover_with(skip_until(any().ignored(), semi().ignored(), || Decl {
+            kind: DeclKind::Unsupported("<error>"),
+            span: Span {
+                start: 0,
+                end: 0,
+                context: 0,
+            },
+        }))
+        .boxed(),
+    );
+
+    Parsers {
+        decl: decl.boxed(),
+        stmt: stmt.boxed(),
+    }
+}
+
+fn unsupported(span: Span, what: &'static str) -> Decl {
+    Decl {
+        kind: DeclKind::Unsupported(what),
+        span,
+    }
+}
+
+/// The text of a (selected) name, for `end` names and messages.
+pub fn expr_text(e: &Expr) -> String {
+    match &e.kind {
+        ExprKind::Name(i) => i.name.clone(),
+        ExprKind::Select(p, i) => format!("{}.{}", expr_text(p), i.name),
+        _ => String::from("?"),
+    }
+}
+
+fn compilation<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, CompilationUnit, Ex<'t>> {
+    let p = parsers::<I>();
+    let with = kw!(Limited)
+        .or_not()
+        .ignore_then(kw!(With))
+        .ignore_then(name().separated_by(just(Token::Comma)).at_least(1).collect::<Vec<_>>())
+        .then_ignore(semi())
+        .map_with(|n, e| TopItem::With(n, e.span()));
+    let item = choice((
+        with,
+        // A library-level declaration or body; in script mode also a statement.
+        p.decl.clone().map(TopItem::Decl),
+        p.stmt.clone().map(TopItem::Stmt),
+    ));
+    item.repeated()
+        .collect::<Vec<_>>()
+        .then_ignore(end())
+        .map(|items| CompilationUnit { items })
+        .boxed()
+}
+
+/// Parses a token list. Returns the AST (possibly partial) and every syntax error.
+pub fn parse(tokens: &[(Token, Span)], file: FileId, src_len: usize) -> (Option<CompilationUnit>, Vec<Diagnostic>) {
+    let eoi = Span {
+        start: src_len,
+        end: src_len,
+        context: file,
+    };
+    let input = tokens.map(eoi, |(t, s)| (t, s));
+    let (out, errs) = compilation().parse(input).into_output_errors();
+    let diags = errs.into_iter().map(|e| rich_to_diag(e, eoi)).collect();
+    (out, diags)
+}
+
+/// True if the error list only says the input ended too early (for the REPL's
+/// continuation prompt).
+pub fn is_unfinished(diags: &[Diagnostic], src_len: usize) -> bool {
+    !diags.is_empty() && diags.iter().all(|d| d.phase == crate::diag::Phase::Syntax && d.span.start >= src_len && d.label == "end of input")
+}
+
+fn rich_to_diag(e: Rich<'_, Token, Span>, eoi: Span) -> Diagnostic {
+    use chumsky::error::RichReason;
+    let span = *e.span();
+    let found = match e.found() {
+        Some(t) => t.to_string(),
+        None => "end of input".to_string(),
+    };
+    match e.reason() {
+        RichReason::Custom(msg) => Diagnostic::syntax(span, msg.clone()),
+        _ => {
+            let mut expected: Vec<String> = e
+                .expected()
+                .map(|p| match p {
+                    chumsky::error::RichPattern::Token(t) => t.to_string(),
+                    chumsky::error::RichPattern::Label(l) => l.to_string(),
+                    chumsky::error::RichPattern::EndOfInput => "end of input".to_string(),
+                    other => other.to_string(),
+                })
+                .collect();
+            expected.sort();
+            expected.dedup();
+            let exp = match expected.len() {
+                0 => String::new(),
+                1 => format!(", expected {}", expected[0]),
+                _ => format!(", expected one of {}", expected.join(", ")),
+            };
+            let mut d = Diagnostic::syntax(span, format!("unexpected {found}{exp}"))
+                .with_label(if e.found().is_none() { "end of input".to_string() } else { format!("unexpected {found}") });
+            if expected.iter().any(|x| x == "`;`") {
+                d = d.with_hint("a statement or declaration ends with `;`");
+            }
+            let _ = eoi;
+            d
+        }
+    }
+}
