@@ -8,8 +8,7 @@ procedure Linked_List is
       Next  : Node_Ptr;
    end record;
    Head : Node_Ptr := null;
-   Tail : Node_Ptr;
-   P    : Node_Ptr;
+   Tail, P : Node_Ptr;
 
    procedure Push_Front (List : in out Node_Ptr; V : Integer) is
    begin
@@ -18,11 +17,7 @@ procedure Linked_List is
 
    function Length (List : Node_Ptr) return Natural is
    begin
-      if List = null then
-         return 0;
-      else
-         return 1 + Length (List.Next);
-      end if;
+      return (if List = null then 0 else 1 + Length (List.Next));
    end Length;
 
    function Sum (List : Node_Ptr) return Integer is
@@ -81,10 +76,4 @@ begin
    P.Next := P.Next.Next;
    Print (P);
    Put_Line ("Aliased: " & Boolean'Image (P = Head) & " " & Boolean'Image (P.Next.Next = P.Next.Next));
-   declare
-      Copy : constant Node := P.all;
-   begin
-      P.Value := 0;
-      Put_Line ("Copy.Value =" & Integer'Image (Copy.Value) & " P.Value =" & Integer'Image (P.Value));
-   end;
 end Linked_List;

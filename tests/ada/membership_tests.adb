@@ -15,6 +15,7 @@ procedure Membership_Tests is
                 & ", in Natural = " & Boolean'Image (X in Natural));
    end Check;
    F : constant Float := 2.5;
+   Ch : Character := 'q';
 begin
    for X in -1 .. 11 loop
       Check (X);
@@ -32,8 +33,9 @@ begin
    end loop;
    Put_Line ("F in 0.0 .. 3.0 = " & Boolean'Image (F in 0.0 .. 3.0));
    Put_Line ("F in 2.6 .. 3.0 = " & Boolean'Image (F in 2.6 .. 3.0));
-   Put_Line ("'q' in 'a' .. 'z' = " & Boolean'Image ('q' in 'a' .. 'z'));
-   Put_Line ("'Q' in 'a' .. 'z' = " & Boolean'Image ('Q' in 'a' .. 'z'));
+   Put_Line ("'q' in 'a' .. 'z' = " & Boolean'Image (Ch in 'a' .. 'z'));
+   Ch := 'Q';
+   Put_Line ("'Q' in 'a' .. 'z' = " & Boolean'Image (Ch in 'a' .. 'z'));
    Put_Line ("empty range: " & Boolean'Image (Lo in 5 .. 4));
    Put_Line ("combined: " & Boolean'Image (Lo in 1 .. 10 and Lo not in 5 .. 9));
 end Membership_Tests;

@@ -64,9 +64,6 @@ begin
    Put_Line ("Ackermann (3, 3) =" & Integer'Image (Ackermann (3, 3)));
    Hanoi (3, 'A', 'C', 'B');
    Put_Line ("moves:" & Integer'Image (Moves));
-   Moves := 0;
-   Hanoi (0, 'A', 'C', 'B');
-   Put_Line ("moves for 0 disks:" & Integer'Image (Moves));
    for I in 0 .. 12 loop
       Put (Integer'Image (Factorial (I)));
    end loop;

@@ -30,7 +30,6 @@ begin
    Set_Percent (75);
    Set_Percent (101);
    Set_Percent (-1);
-   Set_Percent (0);
    Set_Percent (100);
    for I in 1 .. 8 loop
       begin
@@ -74,7 +73,6 @@ begin
          Put_Line ("30 + 80 does not fit Percent");
    end;
    Put_Line ("Percent'First =" & Integer'Image (Percent'First) & " Percent'Last =" & Integer'Image (Percent'Last));
-   Put_Line ("Small'Range length via loop:");
    for I in Small loop
       Put (Integer'Image (I));
    end loop;

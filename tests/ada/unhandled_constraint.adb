@@ -11,6 +11,7 @@ procedure Unhandled_Constraint is
       end loop;
    end Fill;
 begin
+   Put_Line ("start");
    Put_Line ("filling 3");
    Fill (3);
    Put_Line ("filling 6");

@@ -1,0 +1,727 @@
+//! Declarations: types, subtypes, objects, numbers, exceptions, subprograms
+//! and packages.
+
+use super::*;
+use crate::syntax::ast::{DeclKind, TypeDef};
+
+impl Checker {
+    pub(super) fn decls(&mut self, decls: &[ast::Decl], out: &mut Vec<Stmt>) {
+        for d in decls {
+            self.decl(d, out);
+        }
+    }
+
+    pub(super) fn decl(&mut self, d: &ast::Decl, out: &mut Vec<Stmt>) {
+        match &d.kind {
+            DeclKind::Object {
+                names,
+                constant,
+                ty,
+                init,
+                anon,
+            } => {
+                if let Some(def) = anon
+                    && let ast::ExprKind::Name(tn) = &ty.mark.kind
+                {
+                    let t = self.type_def(tn, def, d.span);
+                    self.declare(&tn.name, Entity::Type(t));
+                }
+                let t = self.subtype_ind(ty);
+                self.object(names, *constant, t, init.as_ref(), d.span, out);
+            }
+            DeclKind::Number { names, value } => {
+                let ex = self.expr(value, None);
+                let v = match self.static_value(&ex) {
+                    Some(v) => v,
+                    None => {
+                        self.err(Diagnostic::ty(value.span, "a named number needs a static value").with_hint("give the constant a type: `K : constant Float := ...;`"));
+                        Static::Int(0)
+                    }
+                };
+                for n in names {
+                    self.declare_checked(n, Entity::Number(v.clone()));
+                }
+            }
+            DeclKind::Type { name, def } => {
+                // Completing an incomplete type keeps its id.
+                let prev = self.scopes.last().and_then(|s| s.names.get(&name.key)).and_then(|es| es.last().cloned());
+                if let Some(Entity::Type(old)) = prev
+                    && matches!(self.types.kind(old), TypeKind::Incomplete)
+                {
+                    let t = self.type_def(name, def, d.span);
+                    let mut info = self.types.get(t).clone();
+                    info.base = old;
+                    self.types.list[old as usize] = info;
+                    self.retarget_enum_lits(t, old);
+                    return;
+                }
+                if matches!(def, TypeDef::Incomplete) {
+                    let t = self.types.add(&name.name, TypeKind::Incomplete);
+                    self.declare_checked(name, Entity::Type(t));
+                    return;
+                }
+                let t = self.type_def(name, def, d.span);
+                self.declare_checked(name, Entity::Type(t));
+            }
+            DeclKind::Subtype { name, ind } => {
+                let of = self.subtype_ind(ind);
+                let t = self.types.add_subtype(&name.name, of);
+                self.declare_checked(name, Entity::Type(t));
+            }
+            DeclKind::Exception { names } => {
+                for n in names {
+                    let id = self.excs.len() as ExcId;
+                    self.excs.push(Exception { name: self.exc_name(&n.name) });
+                    self.declare_checked(n, Entity::Exc(id));
+                }
+            }
+            DeclKind::SubprogramDecl { spec, import } => {
+                let f = self.subprogram_decl(spec, true);
+                if let Some(f) = f {
+                    if let Some(name) = import {
+                        if !self.known_builtin(name) {
+                            self.err(Diagnostic::name(spec.span, format!("no builtin named \"{name}\"")));
+                        }
+                        self.imports[f as usize] = Some(name.clone());
+                    }
+                }
+            }
+            DeclKind::SubprogramBody(b) => self.subprogram_body(b),
+            DeclKind::PackageSpec(p) => self.package_spec(p, out),
+            DeclKind::PackageBody(p) => self.package_body(p, out),
+            DeclKind::Use(names) => self.use_clause(names),
+            DeclKind::Unsupported(what) => {
+                if *what == "<error>" || *what == "pragma" {
+                    return;
+                }
+                self.err(Diagnostic::unsupported(d.span, what));
+            }
+            DeclKind::TaskSpec(_) | DeclKind::TaskBody(_) | DeclKind::InterruptUse { .. } => {
+                self.err(
+                    Diagnostic::unsupported(d.span, "a task")
+                        .with_hint("tasks, rendezvous and interrupt entries are not implemented yet in this version of adair"),
+                );
+            }
+        }
+    }
+
+    fn retarget_enum_lits(&mut self, from: TypeId, to: TypeId) {
+        for s in &mut self.scopes {
+            for es in s.names.values_mut() {
+                for e in es.iter_mut() {
+                    if let Entity::EnumLit(t, _) = e
+                        && *t == from
+                    {
+                        *t = to;
+                    }
+                }
+            }
+        }
+    }
+
+    fn object(&mut self, names: &[ast::Ident], constant: bool, t: TypeId, init: Option<&ast::Expr>, span: Span, out: &mut Vec<Stmt>) {
+        let unconstrained_array = self.types.array(t).is_some_and(|a| a.2.is_none());
+        let init_ex = init.map(|e| {
+            let ex = self.expr(e, Some(t));
+            self.coerce(ex, t)
+        });
+        if init_ex.is_none() && unconstrained_array {
+            self.err(
+                Diagnostic::ty(span, format!("an object of the unconstrained array type `{}` needs bounds or an initial value", self.types.name(t)))
+                    .with_hint(format!("write `{} (1 .. N)` or give an initial value", self.types.name(t))),
+            );
+        }
+        if constant && init_ex.is_none() {
+            self.err(Diagnostic::ty(span, "a constant needs an initial value"));
+        }
+        let static_v = if constant {
+            init_ex.as_ref().and_then(|e| self.static_value(e)).filter(|_| self.types.is_scalar(t))
+        } else {
+            None
+        };
+        // An unconstrained array object takes the bounds of its initial value.
+        for n in names {
+            let var = self.new_slot();
+            let value = match &init_ex {
+                Some(e) => e.clone(),
+                None => Ex {
+                    kind: ExKind::Default(t),
+                    ty: t,
+                    span,
+                },
+            };
+            out.push(Stmt {
+                kind: StmtKind::Init(var, value),
+                span,
+            });
+            self.declare_checked(
+                n,
+                Entity::Var {
+                    var,
+                    ty: t,
+                    constant,
+                    value: static_v.clone(),
+                },
+            );
+        }
+    }
+
+    /// The type an expression of a subtype mark denotes, reporting errors.
+    pub(super) fn type_mark(&mut self, n: &ast::Expr) -> TypeId {
+        let es = self.denote(n, true);
+        match es.first() {
+            Some(Entity::Type(t)) => *t,
+            Some(_) => {
+                let text = crate::syntax::parser::expr_text(n);
+                self.err(Diagnostic::ty(n.span, format!("`{text}` is not a type")));
+                ERROR
+            }
+            None => ERROR,
+        }
+    }
+
+    pub(super) fn subtype_ind(&mut self, ind: &ast::SubtypeInd) -> TypeId {
+        let t = self.type_mark(&ind.mark);
+        match &ind.constraint {
+            None => t,
+            Some(ast::Constraint::Range(lo, hi)) => {
+                if !self.types.is_scalar(t) && t != ERROR {
+                    self.err(Diagnostic::ty(ind.span, format!("a range constraint needs a scalar type, not `{}`", self.types.name(t))));
+                    return t;
+                }
+                let name = self.types.name(t).to_string();
+                self.constrained_scalar(&name, t, lo, hi)
+            }
+            Some(ast::Constraint::Index(ranges)) => {
+                let Some((index, elem, bounds)) = self.types.array(t).map(|(i, e, b)| (i.to_vec(), e, b.is_some())) else {
+                    if t != ERROR {
+                        self.err(Diagnostic::ty(ind.span, format!("`{}` is not an array type and takes no index constraint", self.types.name(t))));
+                    }
+                    return t;
+                };
+                if bounds {
+                    self.err(Diagnostic::ty(ind.span, format!("`{}` is already constrained", self.types.name(t))));
+                    return t;
+                }
+                if ranges.len() != index.len() {
+                    self.err(Diagnostic::ty(ind.span, format!("`{}` has {} index(es), the constraint gives {}", self.types.name(t), index.len(), ranges.len())));
+                    return t;
+                }
+                let mut bs = Vec::new();
+                for (r, it) in ranges.iter().zip(&index) {
+                    let (lo, hi, _) = self.discrete_range(r, Some(*it));
+                    bs.push((lo, hi));
+                }
+                let name = self.types.name(t).to_string();
+                let st = self.types.add_subtype(&name, t);
+                self.types.list[st as usize].kind = TypeKind::Array {
+                    index,
+                    elem,
+                    bounds: Some(bs),
+                };
+                st
+            }
+        }
+    }
+
+    fn constrained_scalar(&mut self, name: &str, t: TypeId, lo: &ast::Expr, hi: &ast::Expr) -> TypeId {
+        let base = self.types.base(t);
+        let l = self.expr(lo, Some(base));
+        let l = self.coerce(l, base);
+        let h = self.expr(hi, Some(base));
+        let h = self.coerce(h, base);
+        let st = self.types.add_subtype(name, t);
+        self.set_range(st, l, h);
+        st
+    }
+
+    fn set_range(&mut self, st: TypeId, l: Ex, h: Ex) {
+        let (sl, sh) = (self.static_value(&l), self.static_value(&h));
+        let info = &mut self.types.list[st as usize];
+        info.static_range = None;
+        info.static_frange = None;
+        match (sl, sh) {
+            (Some(Static::Int(a)), Some(Static::Int(b))) => info.static_range = Some((a, b)),
+            (Some(Static::Real(a)), Some(Static::Real(b))) => info.static_frange = Some((a, b)),
+            _ => {}
+        }
+        info.range = Some((l, h));
+    }
+
+    /// A discrete range: returns low and high bound expressions and the type.
+    pub(super) fn discrete_range(&mut self, r: &ast::DiscreteRange, want: Option<TypeId>) -> (Ex, Ex, TypeId) {
+        match r {
+            ast::DiscreteRange::Range(a, b) => {
+                let t = match want {
+                    Some(t) => t,
+                    None => self.common_type(&[a, b], INTEGER),
+                };
+                let l = self.expr(a, Some(t));
+                let l = self.coerce(l, self.types.base(t));
+                let h = self.expr(b, Some(t));
+                let h = self.coerce(h, self.types.base(t));
+                if !self.types.is_discrete(t) && t != ERROR {
+                    self.err(Diagnostic::ty(a.span, format!("a discrete range is needed, `{}` is not discrete", self.types.name(t))).with_hint("ranges of loops and indices are integers or enumerations"));
+                }
+                (l, h, t)
+            }
+            ast::DiscreteRange::Subtype(ind) => {
+                let t = self.subtype_ind(ind);
+                if !self.types.is_discrete(t) && t != ERROR {
+                    self.err(Diagnostic::ty(ind.span, format!("`{}` is not a discrete type", self.types.name(t))));
+                }
+                let sp = ind.span;
+                (
+                    Ex {
+                        kind: ExKind::TypeFirst(t),
+                        ty: t,
+                        span: sp,
+                    },
+                    Ex {
+                        kind: ExKind::TypeLast(t),
+                        ty: t,
+                        span: sp,
+                    },
+                    t,
+                )
+            }
+            ast::DiscreteRange::Attr(e) => {
+                let ast::ExprKind::Attr(prefix, _, args) = &e.kind else {
+                    return (Ex::int(0), Ex::int(0), ERROR);
+                };
+                self.range_attr(prefix, args, e.span)
+            }
+        }
+    }
+
+    pub(super) fn type_def(&mut self, name: &ast::Ident, def: &TypeDef, span: Span) -> TypeId {
+        match def {
+            TypeDef::Enum(lits) => {
+                let images: Vec<String> = lits
+                    .iter()
+                    .map(|l| match l {
+                        ast::EnumLit::Ident(i) => i.name.to_uppercase(),
+                        ast::EnumLit::Char(c, _) => format!("'{c}'"),
+                    })
+                    .collect();
+                let n = images.len();
+                let t = self.types.add(&name.name, TypeKind::Enum(images));
+                self.types.list[t as usize].static_range = Some((0, n as i128 - 1));
+                for (i, l) in lits.iter().enumerate() {
+                    match l {
+                        ast::EnumLit::Ident(id) => self.declare_checked(id, Entity::EnumLit(t, i as i64)),
+                        ast::EnumLit::Char(c, _) => self.declare(&format!("'{c}'"), Entity::EnumLit(t, i as i64)),
+                    }
+                }
+                t
+            }
+            TypeDef::IntRange(lo, hi) => {
+                let l = self.expr(lo, Some(UNIV_INT));
+                let h = self.expr(hi, Some(UNIV_INT));
+                let t = self.types.add(&name.name, TypeKind::Integer);
+                match (self.static_value(&l), self.static_value(&h)) {
+                    (Some(Static::Int(a)), Some(Static::Int(b))) => {
+                        if a < INT_FIRST || b > INT_LAST {
+                            self.err(Diagnostic::ty(span, "integer types of AdaIR are 32-bit").with_hint(format!("the range must lie in {INT_FIRST} .. {INT_LAST}")));
+                        }
+                    }
+                    _ => self.err(Diagnostic::ty(span, "the range of an integer type must be static")),
+                }
+                let (l, h) = (Ex { ty: t, ..l }, Ex { ty: t, ..h });
+                self.set_range(t, l, h);
+                t
+            }
+            TypeDef::Float { digits, range } => {
+                let d = self.expr(digits, Some(UNIV_INT));
+                if self.static_value(&d).is_none() {
+                    self.err(Diagnostic::ty(digits.span, "`digits` needs a static integer"));
+                }
+                let t = self.types.add(&name.name, TypeKind::Float);
+                if let Some((lo, hi)) = range {
+                    let l = self.expr(lo, Some(UNIV_REAL));
+                    let h = self.expr(hi, Some(UNIV_REAL));
+                    let (l, h) = (Ex { ty: t, ..l }, Ex { ty: t, ..h });
+                    self.set_range(t, l, h);
+                }
+                t
+            }
+            TypeDef::Derived(ind) => {
+                let parent = self.subtype_ind(ind);
+                let mut info = self.types.get(parent).clone();
+                let id = self.types.list.len() as TypeId;
+                info.name = name.name.clone();
+                info.base = id;
+                if let TypeKind::Enum(_) = &info.kind {
+                    // Derived enumeration types get their own literals.
+                    let lits = self.types.enum_lits(parent).map(|l| l.to_vec()).unwrap_or_default();
+                    info.kind = TypeKind::Enum(lits.clone());
+                    self.types.list.push(info);
+                    for (i, l) in lits.iter().enumerate() {
+                        self.declare(l, Entity::EnumLit(id, i as i64));
+                    }
+                    return id;
+                }
+                let k = self.types.kind(parent).clone();
+                if let TypeKind::Array { bounds: None, .. } = &info.kind {
+                } else if matches!(info.kind, TypeKind::Array { .. }) {
+                } else {
+                    info.kind = k;
+                }
+                if let Some((l, h)) = &mut info.range {
+                    l.ty = id;
+                    h.ty = id;
+                }
+                self.types.list.push(info);
+                id
+            }
+            TypeDef::Array { index, elem } => {
+                let et = self.subtype_ind(elem);
+                if matches!(self.types.array(et), Some((_, _, None))) {
+                    self.err(Diagnostic::ty(elem.span, "array components must have a constrained type").with_hint("give the component type bounds, e.g. `String (1 .. 10)`"));
+                }
+                match index {
+                    ast::ArrayIndex::Unconstrained(marks) => {
+                        let idx: Vec<TypeId> = marks.iter().map(|m| self.type_mark(m)).collect();
+                        self.types.add(
+                            &name.name,
+                            TypeKind::Array {
+                                index: idx,
+                                elem: et,
+                                bounds: None,
+                            },
+                        )
+                    }
+                    ast::ArrayIndex::Constrained(ranges) => {
+                        let mut idx = Vec::new();
+                        let mut bs = Vec::new();
+                        for r in ranges {
+                            let (l, h, t) = self.discrete_range(r, None);
+                            let t = if self.types.is_universal(t) { INTEGER } else { t };
+                            idx.push(self.types.base(t));
+                            bs.push((l, h));
+                        }
+                        self.types.add(
+                            &name.name,
+                            TypeKind::Array {
+                                index: idx,
+                                elem: et,
+                                bounds: Some(bs),
+                            },
+                        )
+                    }
+                }
+            }
+            TypeDef::Record(components) => {
+                let mut fields: Vec<Field> = Vec::new();
+                for c in components {
+                    let t = self.subtype_ind(&c.ty);
+                    if matches!(self.types.array(t), Some((_, _, None))) {
+                        self.err(Diagnostic::ty(c.ty.span, "record components must have a constrained type"));
+                    }
+                    let default = c.default.as_ref().map(|d| {
+                        let ex = self.expr(d, Some(t));
+                        self.coerce(ex, t)
+                    });
+                    for n in &c.names {
+                        if fields.iter().any(|f| f.key == n.key) {
+                            self.err(Diagnostic::name(n.span, format!("component `{}` is declared twice", n.name)));
+                        }
+                        fields.push(Field {
+                            name: n.name.clone(),
+                            key: n.key.clone(),
+                            ty: t,
+                            default: default.clone(),
+                        });
+                    }
+                }
+                self.types.add(&name.name, TypeKind::Record(fields))
+            }
+            TypeDef::Access(ind) => {
+                let t = self.subtype_ind(ind);
+                self.types.add(&name.name, TypeKind::Access(t))
+            }
+            TypeDef::Incomplete => self.types.add(&name.name, TypeKind::Incomplete),
+            TypeDef::Unsupported(what) => {
+                self.err(Diagnostic::unsupported(span, what));
+                self.types.add(&name.name, TypeKind::Error)
+            }
+        }
+    }
+
+    // ---- subprograms ----
+
+    fn params(&mut self, ps: &[ast::Param]) -> Vec<Param> {
+        let mut out = Vec::new();
+        for p in ps {
+            let t = self.type_mark(&p.ty);
+            let default = p.default.as_ref().map(|d| {
+                let ex = self.expr(d, Some(t));
+                self.coerce(ex, t)
+            });
+            if default.is_some() && p.mode != ast::Mode::In {
+                self.err(Diagnostic::ty(p.span, "only `in` parameters can have default values"));
+            }
+            for n in &p.names {
+                out.push(Param {
+                    name: n.name.clone(),
+                    mode: p.mode,
+                    ty: t,
+                    default: default.clone(),
+                });
+            }
+        }
+        out
+    }
+
+    fn same_profile(&self, a: &Subprogram, params: &[Param], ret: Option<TypeId>) -> bool {
+        a.params.len() == params.len()
+            && a.params.iter().zip(params).all(|(x, y)| self.types.base(x.ty) == self.types.base(y.ty) && x.mode == y.mode)
+            && a.ret.map(|t| self.types.base(t)) == ret.map(|t| self.types.base(t))
+    }
+
+    /// Declares a subprogram (or finds its earlier declaration) and returns its id.
+    fn subprogram_decl(&mut self, spec: &ast::SubprogramSpec, declare_only: bool) -> Option<FuncId> {
+        let params = self.params(&spec.params);
+        let ret = spec.ret.as_ref().map(|r| self.type_mark(r));
+        let key = spec.name.key();
+        if let ast::Designator::Op(op, sp) = &spec.name {
+            let ok = ["+", "-", "*", "/", "**", "=", "<", "<=", ">", ">=", "&", "abs", "not", "and", "or", "xor", "mod", "rem"];
+            if !ok.contains(&op.to_ascii_lowercase().as_str()) {
+                self.err(Diagnostic::syntax(*sp, format!("\"{op}\" is not an operator symbol")));
+            }
+        }
+        // A body completes an earlier declaration with the same profile.
+        let existing: Vec<FuncId> = self
+            .scopes
+            .last()
+            .and_then(|s| s.names.get(&key))
+            .map(|es| es.iter().filter_map(|e| if let Entity::Func(f) = e { Some(*f) } else { None }).collect())
+            .unwrap_or_default();
+        let mut existing = existing;
+        if let Some((p, true)) = self.scopes.last().and_then(|s| s.package)
+            && let Some(es) = self.packages[p].names.get(&key)
+        {
+            existing.extend(es.iter().filter_map(|e| if let Entity::Func(f) = e { Some(*f) } else { None }));
+        }
+        for f in existing {
+            let sub = &self.funcs[f as usize];
+            if self.same_profile(sub, &params, ret) {
+                if declare_only || sub.body.is_some() || self.imports[f as usize].is_some() {
+                    self.err(Diagnostic::name(spec.span, format!("`{}` is already declared with this profile", spec.name.display())));
+                }
+                return Some(f);
+            }
+        }
+        let id = self.funcs.len() as FuncId;
+        self.funcs.push(Subprogram {
+            name: spec.name.display(),
+            params,
+            ret,
+            level: self.level + 1,
+            nslots: 0,
+            body: None,
+            span: spec.span,
+        });
+        self.imports.push(None);
+        match &spec.name {
+            ast::Designator::Ident(i) => self.declare_checked(i, Entity::Func(id)),
+            ast::Designator::Op(_, _) => self.declare(&key, Entity::Func(id)),
+        }
+        Some(id)
+    }
+
+    fn subprogram_body(&mut self, b: &ast::SubprogramBody) {
+        let Some(f) = self.subprogram_decl(&b.spec, false) else { return };
+        if let Some((end, sp)) = &b.end_name {
+            let name = b.spec.name.display();
+            if !end.eq_ignore_ascii_case(&name) {
+                self.err(Diagnostic::syntax(*sp, format!("`end {end};` does not match `{name}`")).with_hint(format!("write `end {name};`")));
+            }
+        }
+        let ret = self.funcs[f as usize].ret;
+        let params = self.funcs[f as usize].params.clone();
+        self.level += 1;
+        self.ctx.push(FuncCtx {
+            func: Some(f),
+            ret,
+            saw_return: false,
+            next_slot: 0,
+        });
+        self.push_scope();
+        self.unit_path.push(b.spec.name.display());
+        for p in &params {
+            let var = self.new_slot();
+            let id = ast::Ident::new(&p.name, b.spec.span);
+            self.declare(
+                &id.name,
+                Entity::Var {
+                    var,
+                    ty: p.ty,
+                    constant: p.mode == ast::Mode::In,
+                    value: None,
+                },
+            );
+        }
+        let mut elab = Vec::new();
+        self.decls(&b.decls, &mut elab);
+        let inner = self.block(&b.body);
+        elab.push(Stmt {
+            kind: StmtKind::Block(Box::new(inner)),
+            span: b.body.span,
+        });
+        self.unit_path.pop();
+        self.pop_scope();
+        let ctx = self.ctx.pop().expect("ctx");
+        self.level -= 1;
+        if ret.is_some() && !ctx.saw_return {
+            self.err(
+                Diagnostic::ty(b.spec.span, format!("function `{}` has no `return` statement", b.spec.name.display()))
+                    .with_hint("a function must return a value on every path: add `return Value;`"),
+            );
+        }
+        let sub = &mut self.funcs[f as usize];
+        sub.nslots = ctx.next_slot;
+        sub.body = Some(Rc::new(Body {
+            stmts: elab,
+            handlers: Vec::new(),
+        }));
+    }
+
+    fn package_spec(&mut self, p: &ast::PackageSpec, out: &mut Vec<Stmt>) {
+        let name = crate::syntax::parser::expr_text(&p.name);
+        let full = if self.level == 0 && self.unit_path.is_empty() {
+            name.clone()
+        } else {
+            format!("{}.{}", self.unit_path.join("."), name)
+        };
+        let idx = if self.level == 0 && self.unit_path.is_empty() {
+            self.package(&full)
+        } else {
+            let idx = self.packages.len();
+            self.packages.push(Package {
+                name: full.clone(),
+                names: HashMap::new(),
+                private: HashMap::new(),
+            });
+            if let ast::ExprKind::Name(id) = &p.name.kind {
+                self.declare_checked(id, Entity::Package(idx));
+            }
+            idx
+        };
+        self.push_scope();
+        self.scopes.last_mut().expect("scope").package = Some((idx, false));
+        // Child units see their parents' declarations.
+        if let Some((parent, _)) = full.rsplit_once('.')
+            && let Some(pi) = self.packages.iter().position(|x| x.name.eq_ignore_ascii_case(parent))
+        {
+            self.scopes.last_mut().expect("scope").uses.push(pi);
+        }
+        self.unit_path.extend(name.split('.').map(str::to_string));
+        self.decls(&p.decls, out);
+        self.scopes.last_mut().expect("scope").package = Some((idx, true));
+        self.decls(&p.private, out);
+        for _ in name.split('.') {
+            self.unit_path.pop();
+        }
+        self.pop_scope();
+    }
+
+    fn package_body(&mut self, p: &ast::PackageBody, out: &mut Vec<Stmt>) {
+        let name = crate::syntax::parser::expr_text(&p.name);
+        let idx = match self.denote(&p.name, false).first() {
+            Some(Entity::Package(i)) => *i,
+            _ => {
+                self.err(Diagnostic::name(p.name.span, format!("package body `{name}` has no package spec")).with_hint(format!("declare `package {name} is ... end {name};` first")));
+                return;
+            }
+        };
+        self.push_scope();
+        self.scopes.last_mut().expect("scope").package = Some((idx, true));
+        self.unit_path.extend(name.split('.').map(str::to_string));
+        self.decls(&p.decls, out);
+        if let Some(init) = &p.init {
+            let b = self.block(init);
+            out.push(Stmt {
+                kind: StmtKind::Block(Box::new(b)),
+                span: init.span,
+            });
+        }
+        for _ in name.split('.') {
+            self.unit_path.pop();
+        }
+        self.pop_scope();
+        // Every subprogram declared in the spec needs a body.
+        let missing: Vec<String> = self.packages[idx]
+            .names
+            .values()
+            .flatten()
+            .filter_map(|e| match e {
+                Entity::Func(f) if self.funcs[*f as usize].body.is_none() && self.imports[*f as usize].is_none() => Some(self.funcs[*f as usize].name.clone()),
+                _ => None,
+            })
+            .collect();
+        for m in missing {
+            self.err(Diagnostic::name(p.span, format!("package body `{name}` lacks a body for `{m}`")));
+        }
+    }
+
+    /// The value of a static expression, if it is one.
+    pub(super) fn static_value(&self, e: &Ex) -> Option<Static> {
+        use Static::*;
+        Some(match &e.kind {
+            ExKind::Int(v) => Int(*v as i128),
+            ExKind::Real(v) => Real(*v),
+            ExKind::IntNeg(a) => match self.static_value(a)? {
+                Int(v) => Int(-v),
+                _ => return None,
+            },
+            ExKind::FloatNeg(a) => match self.static_value(a)? {
+                Real(v) => Real(-v),
+                _ => return None,
+            },
+            ExKind::IntBin(op, a, b) => {
+                let (Int(x), Int(y)) = (self.static_value(a)?, self.static_value(b)?) else { return None };
+                Int(match op {
+                    IntOp::Add => x.checked_add(y)?,
+                    IntOp::Sub => x.checked_sub(y)?,
+                    IntOp::Mul => x.checked_mul(y)?,
+                    IntOp::Div => x.checked_div(y)?,
+                    IntOp::Rem => x.checked_rem(y)?,
+                    IntOp::Mod => {
+                        if y == 0 {
+                            return None;
+                        }
+                        x.rem_euclid(y) + if y < 0 && x.rem_euclid(y) != 0 { y } else { 0 }
+                    }
+                    IntOp::Pow => x.checked_pow(u32::try_from(y).ok()?)?,
+                })
+            }
+            ExKind::FloatBin(op, a, b) => {
+                let x = match self.static_value(a)? {
+                    Real(v) => v,
+                    Int(v) => v as f64,
+                };
+                let y = match self.static_value(b)? {
+                    Real(v) => v,
+                    Int(v) => v as f64,
+                };
+                Real(match op {
+                    FloatOp::Add => x + y,
+                    FloatOp::Sub => x - y,
+                    FloatOp::Mul => x * y,
+                    FloatOp::Div => x / y,
+                    FloatOp::PowI => x.powi(y as i32),
+                })
+            }
+            ExKind::IntToFloat(a) => match self.static_value(a)? {
+                Int(v) => Real(v as f64),
+                r => r,
+            },
+            ExKind::RangeCheck(a, _) => self.static_value(a)?,
+            ExKind::TypeFirst(t) => Int(self.types.discrete_bounds(*t)?.0),
+            ExKind::TypeLast(t) => Int(self.types.discrete_bounds(*t)?.1),
+            ExKind::Attr(AttrOp::Pos, a) => self.static_value(a.first()?)?,
+            _ => return None,
+        })
+    }
+}

@@ -1,0 +1,1683 @@
+//! Expressions: overload resolution by the possible types of each operand
+//! (bottom-up), then checking against the expected type (top-down).
+
+use super::*;
+use crate::syntax::ast::{BinOp, Choice, ExprKind, UnOp};
+
+fn bx(e: Ex) -> Box<Ex> {
+    Box::new(e)
+}
+
+impl Checker {
+    fn mk(&self, kind: ExKind, ty: TypeId, span: Span) -> Ex {
+        Ex { kind, ty, span }
+    }
+
+    fn err_ex(&self, span: Span) -> Ex {
+        Ex {
+            kind: ExKind::Error,
+            ty: ERROR,
+            span,
+        }
+    }
+
+    fn tname(&self, t: TypeId) -> String {
+        match self.types.kind(t) {
+            TypeKind::UnivInt => "universal integer (a literal)".into(),
+            TypeKind::UnivReal => "universal real (a literal)".into(),
+            TypeKind::AnyComposite => "an aggregate".into(),
+            TypeKind::Null => "null".into(),
+            _ => self.types.name(t).to_string(),
+        }
+    }
+
+    /// Converts a checked expression to the type `t`: reports a mismatch, fixes
+    /// the type of universal operands and adds the run-time checks Ada requires
+    /// (range of a constrained scalar subtype, length of a constrained array).
+    pub(super) fn coerce(&mut self, mut ex: Ex, t: TypeId) -> Ex {
+        if ex.ty == ERROR || t == ERROR {
+            return ex;
+        }
+        if !self.types.compatible(ex.ty, t) {
+            let mut d = Diagnostic::ty(ex.span, format!("expected `{}`, found {}", self.tname(t), self.found_desc(ex.ty)))
+                .with_label(format!("this has type `{}`", self.tname(ex.ty)));
+            let (tf, ti) = (self.types.is_float(t), self.types.is_integer(t));
+            if tf && self.types.is_integer(ex.ty) {
+                d = match &ex.kind {
+                    ExKind::Int(v) => d.with_hint(format!("write the literal as a real: `{v}.0`")),
+                    _ => d.with_hint(format!("convert it: `{} ({})`", self.types.name(t), self.snippet(ex.span))),
+                };
+            } else if ti && self.types.is_float(ex.ty) {
+                d = d.with_hint(format!("convert it: `{} ({})` (rounds to nearest, ties away from zero)", self.types.name(t), self.snippet(ex.span)));
+            }
+            self.err(d);
+            ex.ty = ERROR;
+            return ex;
+        }
+        if self.types.is_universal(ex.ty) || matches!(self.types.kind(ex.ty), TypeKind::Null | TypeKind::AnyComposite) {
+            ex.ty = t;
+        }
+        let info = self.types.get(t);
+        if self.types.is_scalar(t) && info.range.is_some() && ex.ty != t && t != INTEGER {
+            // Statically known to be in range: no check needed.
+            let inside = match (self.static_value(&ex), info.static_range, info.static_frange) {
+                (Some(Static::Int(v)), Some((l, h)), _) => l <= v && v <= h,
+                (Some(Static::Real(v)), _, Some((l, h))) => l <= v && v <= h,
+                _ => false,
+            };
+            let same_range = ex.ty != ERROR && self.types.get(ex.ty).static_range.is_some() && self.types.get(ex.ty).static_range == info.static_range;
+            if !inside && !same_range {
+                let span = ex.span;
+                return self.mk(ExKind::RangeCheck(bx(ex), t), t, span);
+            }
+            ex.ty = t;
+            return ex;
+        }
+        if let Some((_, _, Some(_))) = self.types.array(t)
+            && ex.ty != t
+        {
+            let span = ex.span;
+            return self.mk(ExKind::ArrayConvert(bx(ex), t), t, span);
+        }
+        ex
+    }
+
+    fn found_desc(&self, t: TypeId) -> String {
+        match self.types.kind(t) {
+            TypeKind::UnivInt => "an integer literal".into(),
+            TypeKind::UnivReal => "a real literal".into(),
+            TypeKind::AnyComposite => "an aggregate".into(),
+            TypeKind::Null => "`null`".into(),
+            _ => format!("`{}`", self.types.name(t)),
+        }
+    }
+
+    /// Chooses one type for several expressions that must share one.
+    pub(super) fn common_type(&mut self, es: &[&ast::Expr], default: TypeId) -> TypeId {
+        let mut univ = None;
+        for e in es {
+            for t in self.interps(e) {
+                if !self.types.is_universal(t) && !matches!(self.types.kind(t), TypeKind::Null | TypeKind::AnyComposite | TypeKind::Error) {
+                    if es.iter().all(|x| self.fits(x, t)) {
+                        return t;
+                    }
+                } else if univ.is_none() {
+                    univ = Some(t);
+                }
+            }
+        }
+        match univ {
+            Some(UNIV_REAL) => FLOAT,
+            Some(UNIV_INT) => default,
+            _ => default,
+        }
+    }
+
+    /// Can `e` have type `t`?
+    pub(super) fn fits(&mut self, e: &ast::Expr, t: TypeId) -> bool {
+        if t == ERROR {
+            return true;
+        }
+        match &e.kind {
+            ExprKind::Str(_) => self.types.array(t).is_some_and(|(i, el, _)| i.len() == 1 && self.types.base(el) == CHARACTER),
+            ExprKind::Aggregate(_) => matches!(self.types.kind(t), TypeKind::Array { .. } | TypeKind::Record(_)),
+            ExprKind::Allocator(..) | ExprKind::Null => self.types.is_access(t),
+            ExprKind::Paren(x) => self.fits(x, t),
+            ExprKind::If { arms, .. } => arms.first().is_none_or(|a| self.fits(&a.1, t)),
+            _ => {
+                let is = self.interps(e);
+                is.is_empty() || is.iter().any(|u| *u == ERROR || self.types.compatible(*u, t))
+            }
+        }
+    }
+
+    /// The types an expression could have (without reporting anything).
+    pub(super) fn interps(&mut self, e: &ast::Expr) -> Vec<TypeId> {
+        match &e.kind {
+            ExprKind::Int(_) => vec![UNIV_INT],
+            ExprKind::Real(_) => vec![UNIV_REAL],
+            ExprKind::Char(c) => {
+                let mut v = vec![CHARACTER];
+                for ent in self.lookup(&format!("'{c}'")) {
+                    if let Entity::EnumLit(t, _) = ent {
+                        v.push(t);
+                    }
+                }
+                v
+            }
+            ExprKind::Str(_) => vec![STRING],
+            ExprKind::Null => vec![NULL_T],
+            ExprKind::Aggregate(_) | ExprKind::Allocator(..) => vec![ANY_COMPOSITE],
+            ExprKind::Error => vec![ERROR],
+            ExprKind::Paren(x) => self.interps(x),
+            ExprKind::Name(_) => {
+                let es = self.denote(e, false);
+                self.entity_types(&es)
+            }
+            ExprKind::Select(p, id) => {
+                let pes = self.denote(p, false);
+                if matches!(pes.first(), Some(Entity::Package(_))) {
+                    let es = self.denote(e, false);
+                    return self.entity_types(&es);
+                }
+                let mut out = Vec::new();
+                for t in self.interps(p) {
+                    let t = self.types.designated(t).unwrap_or(t);
+                    if let Some(f) = self.types.fields(t).and_then(|fs| fs.iter().find(|f| f.key == id.key)) {
+                        out.push(f.ty);
+                    }
+                }
+                out
+            }
+            ExprKind::Deref(p) => self.interps(p).into_iter().filter_map(|t| self.types.designated(t)).collect(),
+            ExprKind::Apply(p, args) => {
+                let pes = match &p.kind {
+                    ExprKind::Name(_) | ExprKind::Select(..) => self.denote(p, false),
+                    _ => Vec::new(),
+                };
+                match pes.first() {
+                    Some(Entity::Type(t)) => vec![*t],
+                    Some(Entity::Func(_)) => {
+                        let fs: Vec<FuncId> = pes.iter().filter_map(|e| if let Entity::Func(f) = e { Some(*f) } else { None }).collect();
+                        let mut out = Vec::new();
+                        for f in fs {
+                            if let Some(r) = self.funcs[f as usize].ret
+                                && self.args_fit(f, args)
+                            {
+                                out.push(r);
+                            }
+                        }
+                        out
+                    }
+                    _ => {
+                        let mut out = Vec::new();
+                        for t in self.interps(p) {
+                            let t = self.types.designated(t).unwrap_or(t);
+                            if let Some((idx, el, _)) = self.types.array(t) {
+                                let slice = args.len() == 1 && is_range_arg(&args[0].value);
+                                out.push(if slice || idx.len() != args.len() { t } else { el });
+                            }
+                        }
+                        out
+                    }
+                }
+            }
+            ExprKind::Attr(p, a, _) => {
+                let pt = match self.denote_quiet_type(p) {
+                    Some(t) => Some(t),
+                    None => self.interps(p).first().copied(),
+                };
+                match a.key.as_str() {
+                    "image" => vec![STRING],
+                    "pos" | "length" | "digits" => vec![UNIV_INT],
+                    "first" | "last" => match pt {
+                        Some(t) => match self.types.array(self.types.designated(t).unwrap_or(t)) {
+                            Some((idx, _, _)) => vec![idx[0]],
+                            None => vec![t],
+                        },
+                        None => vec![],
+                    },
+                    _ => pt.into_iter().collect(),
+                }
+            }
+            ExprKind::Qualified(t, _) => match self.denote(t, false).first() {
+                Some(Entity::Type(t)) => vec![*t],
+                _ => vec![],
+            },
+            ExprKind::Binary(op, a, b) => match op {
+                BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge => vec![BOOLEAN],
+                BinOp::And | BinOp::Or | BinOp::Xor | BinOp::AndThen | BinOp::OrElse => vec![BOOLEAN],
+                BinOp::Cat => {
+                    let mut v: Vec<TypeId> = self.interps(a).into_iter().chain(self.interps(b)).filter(|t| self.types.is_array(*t)).collect();
+                    if v.is_empty() {
+                        v.push(STRING);
+                    }
+                    v
+                }
+                _ => {
+                    let mut out = self.user_op_types(op.symbol(), &[a, b]);
+                    let (l, r) = (self.interps(a), self.interps(b));
+                    for &x in &l {
+                        for &y in &r {
+                            if !self.types.is_numeric(x) || !(self.types.is_numeric(y) || y == ERROR) {
+                                continue;
+                            }
+                            if *op == BinOp::Pow {
+                                if self.types.is_integer(y) {
+                                    out.push(x);
+                                }
+                            } else if self.types.compatible(x, y) || self.types.compatible(y, x) {
+                                out.push(if self.types.is_universal(x) { y } else { x });
+                            } else if self.types.base(x) == DURATION && self.types.is_integer(y) && matches!(op, BinOp::Mul | BinOp::Div) {
+                                out.push(DURATION);
+                            } else if self.types.base(y) == DURATION && self.types.is_integer(x) && *op == BinOp::Mul {
+                                out.push(DURATION);
+                            }
+                        }
+                    }
+                    out
+                }
+            },
+            ExprKind::Unary(UnOp::Not, _) => vec![BOOLEAN],
+            ExprKind::Unary(_, a) => self.interps(a).into_iter().filter(|t| self.types.is_numeric(*t)).collect(),
+            ExprKind::Membership { .. } => vec![BOOLEAN],
+            ExprKind::If { arms, .. } => arms.first().map(|a| self.interps(&a.1)).unwrap_or_default(),
+            ExprKind::Case { arms, .. } => arms.first().map(|a| self.interps(&a.body)).unwrap_or_default(),
+        }
+    }
+
+    fn denote_quiet_type(&mut self, p: &ast::Expr) -> Option<TypeId> {
+        match &p.kind {
+            ExprKind::Name(_) | ExprKind::Select(..) => match self.denote(p, false).first() {
+                Some(Entity::Type(t)) => Some(*t),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
+    fn user_op_types(&mut self, sym: &str, args: &[&ast::Expr]) -> Vec<TypeId> {
+        let cands = self.op_funcs(sym, args.len());
+        let mut out = Vec::new();
+        for f in cands {
+            let ps: Vec<TypeId> = self.funcs[f as usize].params.iter().map(|p| p.ty).collect();
+            if args.iter().zip(&ps).all(|(a, t)| self.fits(a, *t))
+                && let Some(r) = self.funcs[f as usize].ret
+            {
+                out.push(r);
+            }
+        }
+        out
+    }
+
+    fn op_funcs(&self, sym: &str, arity: usize) -> Vec<FuncId> {
+        self.lookup(&format!("\"{sym}\""))
+            .into_iter()
+            .filter_map(|e| if let Entity::Func(f) = e { Some(f) } else { None })
+            .filter(|f| self.funcs[*f as usize].params.len() == arity)
+            .collect()
+    }
+
+    fn entity_types(&self, es: &[Entity]) -> Vec<TypeId> {
+        es.iter()
+            .filter_map(|e| match e {
+                Entity::Var { ty, .. } => Some(*ty),
+                Entity::Number(Static::Int(_)) => Some(UNIV_INT),
+                Entity::Number(Static::Real(_)) => Some(UNIV_REAL),
+                Entity::EnumLit(t, _) => Some(*t),
+                Entity::Func(f) => {
+                    let s = &self.funcs[*f as usize];
+                    if s.params.iter().all(|p| p.default.is_some()) { s.ret } else { None }
+                }
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// Maps actual arguments to the formals of `f`: one entry per formal,
+    /// `None` where the default applies. `Err` says why they do not match.
+    fn match_args<'a>(&self, f: FuncId, args: &'a [ast::Arg]) -> Result<Vec<Option<&'a ast::Arg>>, String> {
+        let sub = &self.funcs[f as usize];
+        let mut slots: Vec<Option<&ast::Arg>> = vec![None; sub.params.len()];
+        let mut named = false;
+        for (i, a) in args.iter().enumerate() {
+            match &a.name {
+                None => {
+                    if named {
+                        return Err("a positional argument cannot follow a named one".into());
+                    }
+                    if i >= slots.len() {
+                        return Err(format!("`{}` takes {} argument(s), {} given", sub.name, sub.params.len(), args.len()));
+                    }
+                    slots[i] = Some(a);
+                }
+                Some(n) => {
+                    named = true;
+                    match sub.params.iter().position(|p| p.name.eq_ignore_ascii_case(&n.name)) {
+                        Some(j) if slots[j].is_some() => return Err(format!("parameter `{}` is given twice", n.name)),
+                        Some(j) => slots[j] = Some(a),
+                        None => {
+                            let names: Vec<&str> = sub.params.iter().map(|p| p.name.as_str()).collect();
+                            return Err(format!("`{}` has no parameter named `{}` (its parameters: {})", sub.name, n.name, names.join(", ")));
+                        }
+                    }
+                }
+            }
+        }
+        for (s, p) in slots.iter().zip(&sub.params) {
+            if s.is_none() && p.default.is_none() {
+                return Err(format!("missing argument for parameter `{}` of `{}`", p.name, sub.name));
+            }
+        }
+        Ok(slots)
+    }
+
+    fn args_fit(&mut self, f: FuncId, args: &[ast::Arg]) -> bool {
+        let Ok(slots) = self.match_args(f, args) else { return false };
+        let tys: Vec<TypeId> = self.funcs[f as usize].params.iter().map(|p| p.ty).collect();
+        slots.iter().zip(tys).all(|(s, t)| s.is_none_or(|a| self.fits(&a.value, t)))
+    }
+
+    /// Resolves a call among candidate subprograms and checks its arguments.
+    pub(super) fn call(&mut self, cands: &[FuncId], args: &[ast::Arg], want: Option<TypeId>, procedure: bool, span: Span, name: &str) -> Option<(FuncId, Vec<Arg>)> {
+        let kind_ok: Vec<FuncId> = cands.iter().copied().filter(|f| self.funcs[*f as usize].ret.is_none() == procedure).collect();
+        if kind_ok.is_empty() {
+            let msg = if procedure {
+                format!("`{name}` is a function: its result must be used")
+            } else {
+                format!("`{name}` is a procedure and has no value")
+            };
+            let hint = if procedure { "assign the result: `X := F (...);`" } else { "call it as a statement: `P (...);`" };
+            self.err(Diagnostic::ty(span, msg).with_hint(hint));
+            return None;
+        }
+        let mut fitting: Vec<FuncId> = kind_ok.iter().copied().filter(|f| self.args_fit(*f, args)).collect();
+        if let Some(w) = want
+            && fitting.len() > 1
+        {
+            let by_ret: Vec<FuncId> = fitting.iter().copied().filter(|f| self.funcs[*f as usize].ret.is_some_and(|r| self.types.compatible(r, w))).collect();
+            if !by_ret.is_empty() {
+                fitting = by_ret;
+            }
+        }
+        let f = match fitting.first() {
+            Some(f) => *f,
+            None if kind_ok.len() == 1 => kind_ok[0],
+            None => {
+                let mut d = Diagnostic::ty(span, format!("no version of `{name}` accepts these arguments"));
+                let sigs: Vec<String> = kind_ok.iter().map(|f| self.signature(*f)).collect();
+                d = d.with_hint(format!("the candidates are:\n  {}", sigs.join("\n  ")));
+                self.err(d);
+                for a in args {
+                    self.expr(&a.value, None);
+                }
+                return None;
+            }
+        };
+        let slots = match self.match_args(f, args) {
+            Ok(s) => s,
+            Err(msg) => {
+                let sig = self.signature(f);
+                self.err(Diagnostic::ty(span, msg).with_hint(format!("`{sig}`")));
+                return None;
+            }
+        };
+        let params = self.funcs[f as usize].params.clone();
+        let mut out = Vec::new();
+        for (slot, p) in slots.into_iter().zip(&params) {
+            match slot {
+                None => out.push(Arg {
+                    mode: ast::Mode::In,
+                    value: p.default.clone().unwrap_or_else(|| self.err_ex(span)),
+                    back_check: None,
+                }),
+                Some(a) => {
+                    let ex = self.expr(&a.value, Some(p.ty));
+                    if p.mode == ast::Mode::In {
+                        let ex = self.coerce(ex, p.ty);
+                        out.push(Arg {
+                            mode: p.mode,
+                            value: ex,
+                            back_check: None,
+                        });
+                    } else {
+                        self.check_variable(&ex, a.value.span, &format!("the `{}` parameter `{}`", if p.mode == ast::Mode::Out { "out" } else { "in out" }, p.name));
+                        let actual_ty = ex.ty;
+                        if !self.types.compatible(actual_ty, p.ty) || self.types.is_universal(actual_ty) {
+                            let ex2 = self.coerce(ex.clone(), p.ty);
+                            let _ = ex2;
+                        }
+                        let back_check = (self.types.is_scalar(actual_ty) && actual_ty != p.ty && self.types.get(actual_ty).range.is_some() && actual_ty != INTEGER).then_some(actual_ty);
+                        let value = if p.mode == ast::Mode::InOut && self.types.is_scalar(p.ty) && self.types.get(p.ty).range.is_some() && p.ty != actual_ty && p.ty != INTEGER {
+                            // Copy-in of an `in out` value is checked against the formal's subtype.
+                            ex
+                        } else {
+                            ex
+                        };
+                        out.push(Arg { mode: p.mode, value, back_check });
+                    }
+                }
+            }
+        }
+        Some((f, out))
+    }
+
+    pub(super) fn signature(&self, f: FuncId) -> String {
+        let s = &self.funcs[f as usize];
+        let ps: Vec<String> = s
+            .params
+            .iter()
+            .map(|p| {
+                let mode = match p.mode {
+                    ast::Mode::In => "",
+                    ast::Mode::Out => "out ",
+                    ast::Mode::InOut => "in out ",
+                };
+                format!("{} : {mode}{}{}", p.name, self.types.name(p.ty), if p.default.is_some() { " := ..." } else { "" })
+            })
+            .collect();
+        let params = if ps.is_empty() { String::new() } else { format!(" ({})", ps.join("; ")) };
+        match s.ret {
+            Some(r) => format!("function {}{params} return {}", s.name, self.types.name(r)),
+            None => format!("procedure {}{params}", s.name),
+        }
+    }
+
+    /// Reports an error unless `ex` is a variable that may be assigned.
+    pub(super) fn check_variable(&mut self, ex: &Ex, span: Span, what: &str) {
+        let mut e = ex;
+        loop {
+            match &e.kind {
+                ExKind::Var(v) => {
+                    if let Some((name, constant)) = self.var_info(*v)
+                        && constant
+                    {
+                        self.err(
+                            Diagnostic::ty(span, format!("`{name}` is a constant or an `in` parameter and cannot be assigned"))
+                                .with_label(format!("used as {what}"))
+                                .with_hint("declare it as a variable, or make the parameter `in out`"),
+                        );
+                    }
+                    return;
+                }
+                ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _, _) => e = p,
+                ExKind::Deref(_) | ExKind::Error => return,
+                _ if ex.ty == ERROR => return,
+                _ => {
+                    self.err(Diagnostic::ty(span, format!("{what} must be a variable")).with_label("this is a value, not a variable"));
+                    return;
+                }
+            }
+        }
+    }
+
+    fn var_info(&self, v: Var) -> Option<(String, bool)> {
+        for s in self.scopes.iter().rev() {
+            for (k, es) in &s.names {
+                for e in es {
+                    if let Entity::Var { var, constant, .. } = e
+                        && *var == v
+                    {
+                        return Some((k.clone(), *constant));
+                    }
+                }
+            }
+        }
+        None
+    }
+
+    /// Checks an expression; `want` is the type the context expects, if known.
+    pub(super) fn expr(&mut self, e: &ast::Expr, want: Option<TypeId>) -> Ex {
+        let sp = e.span;
+        match &e.kind {
+            ExprKind::Int(v) => match i64::try_from(*v) {
+                Ok(v) => self.mk(ExKind::Int(v), UNIV_INT, sp),
+                Err(_) => {
+                    self.err(Diagnostic::ty(sp, "integer literal too large"));
+                    self.err_ex(sp)
+                }
+            },
+            ExprKind::Real(v) => self.mk(ExKind::Real(*v), UNIV_REAL, sp),
+            ExprKind::Char(c) => {
+                if let Some(w) = want
+                    && self.types.base(w) != CHARACTER
+                {
+                    for ent in self.lookup(&format!("'{c}'")) {
+                        if let Entity::EnumLit(t, pos) = ent
+                            && self.types.compatible(t, w)
+                        {
+                            return self.mk(ExKind::Int(pos), t, sp);
+                        }
+                    }
+                }
+                self.mk(ExKind::Int(*c as i64), CHARACTER, sp)
+            }
+            ExprKind::Str(s) => {
+                let ty = match want {
+                    Some(w) if self.fits(e, w) => w,
+                    _ => STRING,
+                };
+                let ty = if self.types.array(ty).is_some_and(|a| a.2.is_some()) { self.types.base(ty) } else { ty };
+                let ty = if self.types.array(ty).is_some() { self.unconstrained_of(ty) } else { STRING };
+                self.mk(ExKind::Str(Rc::from(s.as_str())), ty, sp)
+            }
+            ExprKind::Null => self.mk(ExKind::Null, NULL_T, sp),
+            ExprKind::Error => self.err_ex(sp),
+            ExprKind::Paren(x) => self.expr(x, want),
+            ExprKind::Name(_) => {
+                let es = self.denote(e, true);
+                self.entity_value(&es, want, sp, &crate::syntax::parser::expr_text(e))
+            }
+            ExprKind::Select(p, id) => {
+                let pes = match &p.kind {
+                    ExprKind::Name(_) | ExprKind::Select(..) => self.denote(p, false),
+                    _ => Vec::new(),
+                };
+                if matches!(pes.first(), Some(Entity::Package(_))) {
+                    let es = self.denote(e, true);
+                    return self.entity_value(&es, want, sp, &crate::syntax::parser::expr_text(e));
+                }
+                let pe = self.expr(p, None);
+                self.component(pe, id, sp)
+            }
+            ExprKind::Deref(p) => {
+                let pe = self.expr(p, None);
+                match self.types.designated(pe.ty) {
+                    Some(d) => self.mk(ExKind::Deref(bx(pe)), d, sp),
+                    None => {
+                        if pe.ty != ERROR {
+                            self.err(Diagnostic::ty(sp, format!("`.all` needs an access value, this is `{}`", self.tname(pe.ty))));
+                        }
+                        self.err_ex(sp)
+                    }
+                }
+            }
+            ExprKind::Apply(p, args) => self.apply(p, args, want, sp),
+            ExprKind::Attr(p, a, args) => self.attribute(p, a, args, want, sp),
+            ExprKind::Qualified(t, x) => {
+                let t = self.type_mark(t);
+                let ex = self.expr(x, Some(t));
+                self.coerce(ex, t)
+            }
+            ExprKind::Binary(op, a, b) => self.binary(*op, a, b, want, sp),
+            ExprKind::Unary(op, a) => self.unary(*op, a, want, sp),
+            ExprKind::Membership { negated, subject, choices } => {
+                let t = {
+                    let mut refs: Vec<&ast::Expr> = vec![subject];
+                    for c in choices {
+                        match c {
+                            Choice::Range(l, h) => {
+                                refs.push(l);
+                                refs.push(h);
+                            }
+                            Choice::Expr(x) if self.denote_quiet_type(x).is_none() => refs.push(x),
+                            _ => {}
+                        }
+                    }
+                    let ct = self.common_type(&refs, INTEGER);
+                    if let Some(Choice::Expr(x)) = choices.first()
+                        && let Some(tt) = self.denote_quiet_type(x)
+                        && {
+                            let first = self.interps(subject).first().copied().unwrap_or(ERROR);
+                            self.types.is_universal(first)
+                        }
+                    {
+                        tt
+                    } else {
+                        ct
+                    }
+                };
+                let s = self.expr(subject, Some(t));
+                let s = self.coerce(s, self.types.base(t));
+                let mut ranges = Vec::new();
+                for c in choices {
+                    match c {
+                        Choice::Range(l, h) => {
+                            let l = self.expr(l, Some(t));
+                            let l = self.coerce(l, self.types.base(t));
+                            let h = self.expr(h, Some(t));
+                            let h = self.coerce(h, self.types.base(t));
+                            ranges.push((l, h));
+                        }
+                        Choice::Expr(x) => {
+                            if let Some(tt) = self.denote_quiet_type(x) {
+                                if !self.types.compatible(tt, s.ty) {
+                                    self.err(Diagnostic::ty(x.span, format!("`{}` is not a subtype of `{}`", self.types.name(tt), self.tname(s.ty))));
+                                }
+                                ranges.push((self.mk(ExKind::TypeFirst(tt), tt, x.span), self.mk(ExKind::TypeLast(tt), tt, x.span)));
+                            } else {
+                                let v = self.expr(x, Some(t));
+                                let v = self.coerce(v, self.types.base(t));
+                                ranges.push((v.clone(), v));
+                            }
+                        }
+                        Choice::Others(os) => self.err(Diagnostic::syntax(*os, "`others` is not allowed in a membership test")),
+                    }
+                }
+                self.mk(ExKind::InRanges(bx(s), ranges, *negated), BOOLEAN, sp)
+            }
+            ExprKind::Aggregate(items) => match want {
+                Some(t) if t != ERROR && !self.types.is_universal(t) => self.aggregate(items, t, sp),
+                Some(_) => self.err_ex(sp),
+                None => {
+                    self.err(Diagnostic::ty(sp, "the type of this aggregate cannot be determined").with_hint("qualify it with its type: `T'(...)`"));
+                    self.err_ex(sp)
+                }
+            },
+            ExprKind::If { arms, els } => {
+                let t = match want {
+                    Some(w) if w != ERROR => w,
+                    _ => {
+                        let mut refs: Vec<&ast::Expr> = arms.iter().map(|a| &a.1).collect();
+                        if let Some(e) = els {
+                            refs.push(e);
+                        }
+                        self.common_type(&refs, INTEGER)
+                    }
+                };
+                let mut out = Vec::new();
+                for (c, v) in arms {
+                    let c = self.expr(c, Some(BOOLEAN));
+                    let c = self.coerce(c, BOOLEAN);
+                    let v = self.expr(v, Some(t));
+                    out.push((c, self.coerce(v, t)));
+                }
+                let els = match els {
+                    Some(x) => {
+                        let v = self.expr(x, Some(t));
+                        self.coerce(v, t)
+                    }
+                    None => {
+                        if self.types.base(t) != BOOLEAN {
+                            self.err(Diagnostic::ty(sp, "an `if` expression needs an `else` part unless it is Boolean"));
+                        }
+                        self.mk(ExKind::Int(1), BOOLEAN, sp)
+                    }
+                };
+                self.mk(ExKind::If(out, bx(els)), t, sp)
+            }
+            ExprKind::Case { subject, arms } => {
+                let t = match want {
+                    Some(w) if w != ERROR => w,
+                    _ => {
+                        let refs: Vec<&ast::Expr> = arms.iter().map(|a| &a.body).collect();
+                        self.common_type(&refs, INTEGER)
+                    }
+                };
+                let s = self.expr(subject, None);
+                let st = if self.types.is_universal(s.ty) { INTEGER } else { s.ty };
+                let s = self.coerce(s, st);
+                let choice_lists: Vec<&[Choice]> = arms.iter().map(|a| a.choices.as_slice()).collect();
+                let (ranges, others_at) = self.case_choices(st, &choice_lists, sp);
+                let mut out = Vec::new();
+                let mut others = None;
+                for (i, a) in arms.iter().enumerate() {
+                    let v = self.expr(&a.body, Some(t));
+                    let v = self.coerce(v, t);
+                    if Some(i) == others_at {
+                        others = Some(bx(v));
+                    } else {
+                        out.push((ranges[i].clone(), v));
+                    }
+                }
+                self.mk(ExKind::Case(bx(s), out, others), t, sp)
+            }
+            ExprKind::Allocator(tm, init) => {
+                let Some(w) = want.filter(|w| self.types.is_access(*w)) else {
+                    if want != Some(ERROR) {
+                        self.err(Diagnostic::ty(sp, "an allocator needs an access type from its context").with_hint("assign it to a variable of an access type"));
+                    }
+                    return self.err_ex(sp);
+                };
+                let d = self.types.designated(w).unwrap_or(ERROR);
+                let t = self.type_mark(tm);
+                if !self.types.compatible(t, d) {
+                    self.err(Diagnostic::ty(tm.span, format!("`{}` designates `{}`, not `{}`", self.types.name(w), self.types.name(d), self.types.name(t))));
+                }
+                let init = init.as_ref().map(|x| {
+                    let v = self.expr(x, Some(t));
+                    bx(self.coerce(v, t))
+                });
+                self.mk(ExKind::Alloc(init, t), w, sp)
+            }
+        }
+    }
+
+    /// An unconstrained array type with the same index and element types.
+    pub(super) fn unconstrained_of(&mut self, t: TypeId) -> TypeId {
+        match self.types.array(t) {
+            Some((idx, el, Some(_))) => {
+                let (idx, el) = (idx.to_vec(), el);
+                let name = self.types.name(t).to_string();
+                let base = self.types.base(t);
+                let n = self.types.add(&name, TypeKind::Array { index: idx, elem: el, bounds: None });
+                self.types.list[n as usize].base = base;
+                n
+            }
+            _ => t,
+        }
+    }
+
+    fn entity_value(&mut self, es: &[Entity], want: Option<TypeId>, sp: Span, text: &str) -> Ex {
+        let Some(first) = es.first() else { return self.err_ex(sp) };
+        match first {
+            Entity::Var { var, ty, value, .. } => match value {
+                Some(Static::Int(v)) => self.mk(ExKind::Int(*v as i64), *ty, sp),
+                Some(Static::Real(v)) => self.mk(ExKind::Real(*v), *ty, sp),
+                None => self.mk(ExKind::Var(*var), *ty, sp),
+            },
+            Entity::Number(Static::Int(v)) => match i64::try_from(*v) {
+                Ok(v) => self.mk(ExKind::Int(v), UNIV_INT, sp),
+                Err(_) => self.err_ex(sp),
+            },
+            Entity::Number(Static::Real(v)) => self.mk(ExKind::Real(*v), UNIV_REAL, sp),
+            Entity::EnumLit(..) | Entity::Func(_) => {
+                // Enumeration literals first, by the expected type; then parameterless functions.
+                for e in es {
+                    if let Entity::EnumLit(t, pos) = e
+                        && want.is_none_or(|w| self.types.compatible(*t, w))
+                    {
+                        return self.mk(ExKind::Int(*pos), *t, sp);
+                    }
+                }
+                let fs: Vec<FuncId> = es.iter().filter_map(|e| if let Entity::Func(f) = e { Some(*f) } else { None }).collect();
+                if fs.is_empty() {
+                    if let Some(Entity::EnumLit(t, pos)) = es.first() {
+                        return self.mk(ExKind::Int(*pos), *t, sp);
+                    }
+                    return self.err_ex(sp);
+                }
+                match self.call(&fs, &[], want, false, sp, text) {
+                    Some((f, args)) => {
+                        let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
+                        self.mk(ExKind::Call(f, args), r, sp)
+                    }
+                    None => self.err_ex(sp),
+                }
+            }
+            Entity::Type(t) => {
+                let n = self.types.name(*t).to_string();
+                self.err(Diagnostic::ty(sp, format!("the type `{n}` is not a value")).with_hint(format!("convert a value with `{n} (X)` or use an attribute like `{n}'First`")));
+                self.err_ex(sp)
+            }
+            Entity::Exc(_) => {
+                self.err(Diagnostic::ty(sp, format!("the exception `{text}` is not a value")).with_hint(format!("raise it with `raise {text};`")));
+                self.err_ex(sp)
+            }
+            Entity::Package(_) => {
+                self.err(Diagnostic::ty(sp, format!("the package `{text}` is not a value")));
+                self.err_ex(sp)
+            }
+        }
+    }
+
+    fn component(&mut self, mut pe: Ex, id: &ast::Ident, sp: Span) -> Ex {
+        if let Some(d) = self.types.designated(pe.ty) {
+            let psp = pe.span;
+            pe = self.mk(ExKind::Deref(bx(pe)), d, psp);
+        }
+        if pe.ty == ERROR {
+            return self.err_ex(sp);
+        }
+        match self.types.fields(pe.ty).map(|f| f.to_vec()) {
+            Some(fields) => match fields.iter().position(|f| f.key == id.key) {
+                Some(i) => {
+                    let t = fields[i].ty;
+                    self.mk(ExKind::Field(bx(pe), i as u32), t, sp)
+                }
+                None => {
+                    let names: Vec<&str> = fields.iter().map(|f| f.name.as_str()).collect();
+                    self.err(Diagnostic::name(id.span, format!("`{}` has no component `{}`", self.types.name(pe.ty), id.name)).with_hint(format!("its components are: {}", names.join(", "))));
+                    self.err_ex(sp)
+                }
+            },
+            None => {
+                self.err(Diagnostic::ty(id.span, format!("`.{}` needs a record, this is `{}`", id.name, self.tname(pe.ty))));
+                self.err_ex(sp)
+            }
+        }
+    }
+
+    fn apply(&mut self, p: &ast::Expr, args: &[ast::Arg], want: Option<TypeId>, sp: Span) -> Ex {
+        let pes = match &p.kind {
+            ExprKind::Name(_) => self.denote(p, true),
+            ExprKind::Select(q, _) => match &q.kind {
+                ExprKind::Name(_) | ExprKind::Select(..) if matches!(self.denote(q, false).first(), Some(Entity::Package(_))) => self.denote(p, true),
+                _ => Vec::new(),
+            },
+            _ => Vec::new(),
+        };
+        if matches!(&p.kind, ExprKind::Name(_)) && pes.is_empty() {
+            for a in args {
+                self.expr(&a.value, None);
+            }
+            return self.err_ex(sp);
+        }
+        match pes.first() {
+            Some(Entity::Type(t)) => {
+                let t = *t;
+                if args.len() != 1 || args[0].name.is_some() {
+                    self.err(Diagnostic::ty(sp, format!("a conversion to `{}` takes exactly one value", self.types.name(t))));
+                    return self.err_ex(sp);
+                }
+                self.conversion(t, &args[0].value, sp)
+            }
+            Some(Entity::Func(_)) => {
+                let fs: Vec<FuncId> = pes.iter().filter_map(|e| if let Entity::Func(f) = e { Some(*f) } else { None }).collect();
+                let name = crate::syntax::parser::expr_text(p);
+                match self.call(&fs, args, want, false, sp, &name) {
+                    Some((f, a)) => {
+                        let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
+                        self.mk(ExKind::Call(f, a), r, sp)
+                    }
+                    None => self.err_ex(sp),
+                }
+            }
+            Some(Entity::Exc(_) | Entity::Package(_)) => {
+                self.err(Diagnostic::ty(sp, format!("`{}` cannot be called or indexed", crate::syntax::parser::expr_text(p))));
+                self.err_ex(sp)
+            }
+            _ => {
+                let mut pe = self.expr(p, None);
+                if let Some(d) = self.types.designated(pe.ty) {
+                    let psp = pe.span;
+                    pe = self.mk(ExKind::Deref(bx(pe)), d, psp);
+                }
+                if pe.ty == ERROR {
+                    for a in args {
+                        self.expr(&a.value, None);
+                    }
+                    return self.err_ex(sp);
+                }
+                let Some((idx, el, _)) = self.types.array(pe.ty).map(|(i, e, b)| (i.to_vec(), e, b.is_some())) else {
+                    self.err(Diagnostic::ty(sp, format!("`{}` is neither an array nor a subprogram and cannot be indexed or called", self.snippet(p.span))).with_label(format!("this has type `{}`", self.tname(pe.ty))));
+                    return self.err_ex(sp);
+                };
+                if args.len() == 1 && is_range_arg(&args[0].value) {
+                    let ExprKind::Aggregate(items) = &args[0].value.kind else { return self.err_ex(sp) };
+                    let Some(Choice::Range(l, h)) = items[0].choices.first() else { return self.err_ex(sp) };
+                    let l = self.expr(l, Some(idx[0]));
+                    let l = self.coerce(l, self.types.base(idx[0]));
+                    let h = self.expr(h, Some(idx[0]));
+                    let h = self.coerce(h, self.types.base(idx[0]));
+                    let t = self.unconstrained_of(pe.ty);
+                    return self.mk(ExKind::Slice(bx(pe), bx(l), bx(h)), t, sp);
+                }
+                if args.len() != idx.len() {
+                    self.err(Diagnostic::ty(sp, format!("`{}` has {} dimension(s), {} index(es) given", self.types.name(pe.ty), idx.len(), args.len())));
+                    return self.err_ex(sp);
+                }
+                let mut ix = Vec::new();
+                for (a, it) in args.iter().zip(&idx) {
+                    if let Some(n) = &a.name {
+                        self.err(Diagnostic::syntax(n.span, "array indices cannot be named"));
+                    }
+                    let v = self.expr(&a.value, Some(*it));
+                    ix.push(self.coerce(v, self.types.base(*it)));
+                }
+                self.mk(ExKind::Index(bx(pe), ix), el, sp)
+            }
+        }
+    }
+
+    fn conversion(&mut self, t: TypeId, x: &ast::Expr, sp: Span) -> Ex {
+        let xi = self.interps(x);
+        let src = xi.iter().copied().find(|u| !self.types.is_universal(*u)).or(xi.first().copied()).unwrap_or(ERROR);
+        let want = if self.types.is_numeric(t) && self.types.is_numeric(src) { Some(src) } else { Some(t) };
+        let ex = self.expr(x, want);
+        if ex.ty == ERROR || t == ERROR {
+            return self.err_ex(sp);
+        }
+        let (tf, ti) = (self.types.is_float(t), self.types.is_integer(t));
+        let (sf, si) = (self.types.is_float(ex.ty), self.types.is_integer(ex.ty));
+        let inner = if tf && si {
+            self.mk(ExKind::IntToFloat(bx(ex)), self.types.base(t), sp)
+        } else if ti && sf {
+            self.mk(ExKind::FloatToInt(bx(ex)), self.types.base(t), sp)
+        } else if (tf && sf) || (ti && si) {
+            Ex { ty: self.types.base(t), ..ex }
+        } else if self.types.base(ex.ty) == self.types.base(t) {
+            ex
+        } else if let (Some((i1, e1, _)), Some((i2, e2, _))) = (self.types.array(ex.ty), self.types.array(t)) {
+            if i1.len() == i2.len() && self.types.base(e1) == self.types.base(e2) {
+                let tt = if self.types.array(t).is_some_and(|a| a.2.is_some()) { t } else { self.types.base(t) };
+                return self.mk(ExKind::ArrayConvert(bx(ex), tt), t, sp);
+            }
+            self.err(Diagnostic::ty(sp, format!("cannot convert `{}` to `{}`", self.tname(ex.ty), self.types.name(t))));
+            return self.err_ex(sp);
+        } else {
+            self.err(Diagnostic::ty(sp, format!("cannot convert `{}` to `{}`", self.tname(ex.ty), self.types.name(t))).with_hint("Ada converts only between numeric types, and between related types"));
+            return self.err_ex(sp);
+        };
+        let mut inner = inner;
+        inner.span = sp;
+        self.coerce(inner, t)
+    }
+
+    fn binary(&mut self, op: BinOp, a: &ast::Expr, b: &ast::Expr, want: Option<TypeId>, sp: Span) -> Ex {
+        match op {
+            BinOp::And | BinOp::Or | BinOp::Xor | BinOp::AndThen | BinOp::OrElse => {
+                let x = self.expr(a, Some(BOOLEAN));
+                let x = self.coerce(x, BOOLEAN);
+                let y = self.expr(b, Some(BOOLEAN));
+                let y = self.coerce(y, BOOLEAN);
+                let lop = match op {
+                    BinOp::And => LogicOp::And,
+                    BinOp::Or => LogicOp::Or,
+                    BinOp::Xor => LogicOp::Xor,
+                    BinOp::AndThen => LogicOp::AndThen,
+                    _ => LogicOp::OrElse,
+                };
+                return self.mk(ExKind::Logic(lop, bx(x), bx(y)), BOOLEAN, sp);
+            }
+            _ => {}
+        }
+        // User-defined operators (for example "*" on Frame, "-" on Time).
+        let user = self.op_funcs(op.symbol(), 2);
+        let user_fit: Vec<FuncId> = user
+            .into_iter()
+            .filter(|f| {
+                let ps: Vec<TypeId> = self.funcs[*f as usize].params.iter().map(|p| p.ty).collect();
+                self.fits(a, ps[0]) && self.fits(b, ps[1]) && want.is_none_or(|w| self.funcs[*f as usize].ret.is_some_and(|r| self.types.compatible(r, w)))
+            })
+            .collect();
+        let user_call = |this: &mut Self, f: FuncId| {
+            let args = [
+                ast::Arg { name: None, value: a.clone(), span: a.span },
+                ast::Arg { name: None, value: b.clone(), span: b.span },
+            ];
+            match this.call(&[f], &args, want, false, sp, op.symbol()) {
+                Some((f, args)) => {
+                    let r = this.funcs[f as usize].ret.unwrap_or(ERROR);
+                    this.mk(ExKind::Call(f, args), r, sp)
+                }
+                None => this.err_ex(sp),
+            }
+        };
+        match op {
+            BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge => {
+                let (li, ri) = (self.interps(a), self.interps(b));
+                let predefined_ok = li.iter().any(|x| ri.iter().any(|y| self.types.compatible(*x, *y) || self.types.compatible(*y, *x)));
+                if let Some(f) = user_fit.first()
+                    && (!predefined_ok || !li.iter().any(|t| self.types.is_scalar(*t) || self.types.is_array(*t)))
+                {
+                    return user_call(self, *f);
+                }
+                let t = self.common_type(&[a, b], INTEGER);
+                let x = self.expr(a, Some(t));
+                let y = self.expr(b, Some(t));
+                if x.ty != ERROR && y.ty != ERROR && !self.types.compatible(x.ty, y.ty) && !self.types.compatible(y.ty, x.ty) {
+                    self.mismatch(op, &x, &y, a, b, sp);
+                    return self.mk(ExKind::Error, BOOLEAN, sp);
+                }
+                let t = if self.types.is_universal(x.ty) { y.ty } else { x.ty };
+                let t = if self.types.is_universal(t) { if self.types.is_float(t) { FLOAT } else { INTEGER } } else { t };
+                let x = self.coerce(x, self.types.base(t));
+                let y = self.coerce(y, self.types.base(t));
+                if matches!(op, BinOp::Eq | BinOp::Ne) {
+                    return self.mk(ExKind::Eq(op == BinOp::Ne, bx(x), bx(y)), BOOLEAN, sp);
+                }
+                let ordered = self.types.is_scalar(t) || self.types.array(t).is_some_and(|(i, e, _)| i.len() == 1 && self.types.is_discrete(e));
+                if !ordered && t != ERROR {
+                    self.err(Diagnostic::ty(sp, format!("`{}` is not defined for `{}`", op.symbol(), self.tname(t))).with_hint("ordering is defined for scalars and strings"));
+                }
+                let c = match op {
+                    BinOp::Lt => CmpOp::Lt,
+                    BinOp::Le => CmpOp::Le,
+                    BinOp::Gt => CmpOp::Gt,
+                    _ => CmpOp::Ge,
+                };
+                self.mk(ExKind::Cmp(c, bx(x), bx(y)), BOOLEAN, sp)
+            }
+            BinOp::Cat => {
+                let t = match want {
+                    Some(w) if self.types.is_array(w) => self.unconstrained_of(w),
+                    _ => {
+                        let c: Vec<TypeId> = self.interps(a).into_iter().chain(self.interps(b)).filter(|t| self.types.is_array(*t)).collect();
+                        c.first().map(|t| self.unconstrained_of(*t)).unwrap_or(STRING)
+                    }
+                };
+                let el = self.types.array(t).map(|x| x.1).unwrap_or(ERROR);
+                let side = |this: &mut Self, e: &ast::Expr| -> (Ex, bool) {
+                    if this.fits(e, t) && !matches!(e.kind, ExprKind::Char(_)) {
+                        let x = this.expr(e, Some(t));
+                        (this.coerce(x, t), false)
+                    } else {
+                        let x = this.expr(e, Some(el));
+                        (this.coerce(x, el), true)
+                    }
+                };
+                let (x, xe) = side(self, a);
+                let (y, ye) = side(self, b);
+                self.mk(ExKind::Concat(bx(x), bx(y), xe, ye), t, sp)
+            }
+            _ => {
+                // Predefined arithmetic: both operands of one numeric type,
+                // except `**` (Integer exponent) and Duration * Integer.
+                let arith = self.arith_type(op, a, b, want);
+                match arith {
+                    Some(t) => self.arith(op, a, b, t, sp),
+                    None => {
+                        if let Some(f) = user_fit.first() {
+                            return user_call(self, *f);
+                        }
+                        let x = self.expr(a, None);
+                        let y = self.expr(b, None);
+                        if x.ty != ERROR && y.ty != ERROR {
+                            self.mismatch(op, &x, &y, a, b, sp);
+                        }
+                        self.err_ex(sp)
+                    }
+                }
+            }
+        }
+    }
+
+    fn mismatch(&mut self, op: BinOp, x: &Ex, y: &Ex, a: &ast::Expr, b: &ast::Expr, sp: Span) {
+        let (xt, yt) = (self.tname(x.ty), self.tname(y.ty));
+        let mut d = Diagnostic::ty(sp, format!("`{}` cannot combine `{}` and `{}`", op.symbol(), xt, yt)).with_label("Ada does not mix types implicitly");
+        let (xi, yi) = (self.types.is_integer(x.ty), self.types.is_integer(y.ty));
+        let (xf, yf) = (self.types.is_float(x.ty), self.types.is_float(y.ty));
+        let fname = |this: &Self, t: TypeId| if this.types.is_universal(t) { "Float".to_string() } else { this.types.name(t).to_string() };
+        if xi && yf {
+            d = d.with_hint(format!("convert the integer: `{} ({}) {} {}`", fname(self, y.ty), self.snippet(a.span), op.symbol(), self.snippet(b.span)));
+        } else if xf && yi {
+            d = d.with_hint(format!("convert the integer: `{} {} {} ({})`", self.snippet(a.span), op.symbol(), fname(self, x.ty), self.snippet(b.span)));
+        }
+        self.err(d);
+    }
+
+    fn arith_type(&mut self, op: BinOp, a: &ast::Expr, b: &ast::Expr, want: Option<TypeId>) -> Option<TypeId> {
+        let (li, ri) = (self.interps(a), self.interps(b));
+        if op == BinOp::Pow {
+            if !ri.iter().any(|t| self.types.is_integer(*t)) {
+                return None;
+            }
+            if let Some(w) = want
+                && self.types.is_numeric(w)
+                && self.fits(a, w)
+            {
+                return Some(w);
+            }
+            return li.iter().copied().find(|t| self.types.is_numeric(*t) && !self.types.is_universal(*t)).or(li.iter().copied().find(|t| self.types.is_numeric(*t)));
+        }
+        let int_only = matches!(op, BinOp::Mod | BinOp::Rem);
+        let ok = |this: &Self, t: TypeId| this.types.is_numeric(t) && (!int_only || this.types.is_integer(t));
+        if let Some(w) = want
+            && ok(self, w)
+            && !self.types.is_universal(w)
+            && self.fits(a, w)
+            && self.fits(b, w)
+        {
+            return Some(w);
+        }
+        for &t in li.iter().chain(ri.iter()) {
+            if ok(self, t) && !self.types.is_universal(t) && self.fits(a, t) && self.fits(b, t) {
+                return Some(t);
+            }
+        }
+        // Duration * Integer, Integer * Duration, Duration / Integer.
+        if matches!(op, BinOp::Mul | BinOp::Div) {
+            let dl = li.iter().any(|t| self.types.base(*t) == DURATION);
+            let dr = ri.iter().any(|t| self.types.base(*t) == DURATION);
+            let il = li.iter().any(|t| self.types.is_integer(*t));
+            let ir = ri.iter().any(|t| self.types.is_integer(*t));
+            if (dl && ir) || (op == BinOp::Mul && il && dr) {
+                return Some(DURATION + 1000);
+            }
+        }
+        if li.contains(&UNIV_INT) && ri.contains(&UNIV_INT) {
+            return Some(UNIV_INT);
+        }
+        if (li.contains(&UNIV_REAL) || li.contains(&UNIV_INT)) && (ri.contains(&UNIV_REAL) || ri.contains(&UNIV_INT)) && !int_only {
+            return Some(UNIV_REAL);
+        }
+        None
+    }
+
+    fn arith(&mut self, op: BinOp, a: &ast::Expr, b: &ast::Expr, t: TypeId, sp: Span) -> Ex {
+        if t == DURATION + 1000 {
+            // Duration scaled by an integer.
+            let (x, y) = if self.interps(a).iter().any(|t| self.types.base(*t) == DURATION) {
+                let x = self.expr(a, Some(DURATION));
+                let x = self.coerce(x, DURATION);
+                let y = self.expr(b, Some(INTEGER));
+                let y = self.coerce(y, INTEGER);
+                let ysp = y.span;
+                (x, self.mk(ExKind::IntToFloat(bx(y)), DURATION, ysp))
+            } else {
+                let x = self.expr(a, Some(INTEGER));
+                let x = self.coerce(x, INTEGER);
+                let y = self.expr(b, Some(DURATION));
+                let y = self.coerce(y, DURATION);
+                let xsp = x.span;
+                (self.mk(ExKind::IntToFloat(bx(x)), DURATION, xsp), y)
+            };
+            let fop = if op == BinOp::Mul { FloatOp::Mul } else { FloatOp::Div };
+            return self.mk(ExKind::FloatBin(fop, bx(x), bx(y)), DURATION, sp);
+        }
+        let base = self.types.base(t);
+        if op == BinOp::Pow {
+            let x = self.expr(a, Some(t));
+            let x = self.coerce(x, base);
+            let y = self.expr(b, Some(INTEGER));
+            let y = self.coerce(y, if self.types.is_float(t) { INTEGER } else { NATURAL });
+            return if self.types.is_float(t) {
+                self.mk(ExKind::FloatBin(FloatOp::PowI, bx(x), bx(y)), base, sp)
+            } else {
+                self.mk(ExKind::IntBin(IntOp::Pow, bx(x), bx(y)), base, sp)
+            };
+        }
+        let x = self.expr(a, Some(t));
+        let x = self.coerce(x, base);
+        let y = self.expr(b, Some(t));
+        let y = self.coerce(y, base);
+        if self.types.is_float(t) {
+            let fop = match op {
+                BinOp::Add => FloatOp::Add,
+                BinOp::Sub => FloatOp::Sub,
+                BinOp::Mul => FloatOp::Mul,
+                _ => FloatOp::Div,
+            };
+            self.mk(ExKind::FloatBin(fop, bx(x), bx(y)), base, sp)
+        } else {
+            let iop = match op {
+                BinOp::Add => IntOp::Add,
+                BinOp::Sub => IntOp::Sub,
+                BinOp::Mul => IntOp::Mul,
+                BinOp::Div => IntOp::Div,
+                BinOp::Mod => IntOp::Mod,
+                _ => IntOp::Rem,
+            };
+            self.mk(ExKind::IntBin(iop, bx(x), bx(y)), base, sp)
+        }
+    }
+
+    fn unary(&mut self, op: UnOp, a: &ast::Expr, want: Option<TypeId>, sp: Span) -> Ex {
+        if op == UnOp::Not {
+            let x = self.expr(a, Some(BOOLEAN));
+            let x = self.coerce(x, BOOLEAN);
+            return self.mk(ExKind::Not(bx(x)), BOOLEAN, sp);
+        }
+        let t = match want {
+            Some(w) if self.types.is_numeric(w) && self.fits(a, w) => w,
+            _ => {
+                let is = self.interps(a);
+                is.iter().copied().find(|t| self.types.is_numeric(*t) && !self.types.is_universal(*t)).or(is.first().copied()).unwrap_or(ERROR)
+            }
+        };
+        let x = self.expr(a, Some(t));
+        if x.ty == ERROR {
+            return x;
+        }
+        if !self.types.is_numeric(x.ty) {
+            self.err(Diagnostic::ty(sp, format!("`{}` needs a number, this is `{}`", op.symbol(), self.tname(x.ty))));
+            return self.err_ex(sp);
+        }
+        let ty = if self.types.is_universal(x.ty) { x.ty } else { self.types.base(x.ty) };
+        let x = if self.types.is_universal(x.ty) { x } else { self.coerce(x, ty) };
+        let float = self.types.is_float(ty);
+        let kind = match (op, float) {
+            (UnOp::Plus, _) => return Ex { span: sp, ..x },
+            (UnOp::Neg, false) => ExKind::IntNeg(bx(x)),
+            (UnOp::Neg, true) => ExKind::FloatNeg(bx(x)),
+            (UnOp::Abs, false) => ExKind::IntAbs(bx(x)),
+            _ => ExKind::FloatAbs(bx(x)),
+        };
+        self.mk(kind, ty, sp)
+    }
+
+    /// Static choices of a `case`: per arm, the ranges; and the index of the
+    /// `others` arm. Reports non-static, duplicate and missing choices.
+    pub(super) fn case_choices(&mut self, t: TypeId, arms: &[&[Choice]], sp: Span) -> (Vec<Vec<(i64, i64)>>, Option<usize>) {
+        if !self.types.is_discrete(t) && t != ERROR {
+            self.err(Diagnostic::ty(sp, format!("a `case` needs a discrete value, this is `{}`", self.tname(t))));
+        }
+        let mut out = Vec::new();
+        let mut others = None;
+        let mut all: Vec<(i64, i64, Span)> = Vec::new();
+        for (i, choices) in arms.iter().enumerate() {
+            let mut rs = Vec::new();
+            for c in choices.iter() {
+                let (lo, hi, csp) = match c {
+                    Choice::Others(s) => {
+                        if i + 1 != arms.len() || choices.len() != 1 {
+                            self.err(Diagnostic::syntax(*s, "`others` must be the only choice of the last alternative"));
+                        }
+                        others = Some(i);
+                        continue;
+                    }
+                    Choice::Expr(x) => {
+                        if let Some(tt) = self.denote_quiet_type(x) {
+                            match self.types.discrete_bounds(tt) {
+                                Some((l, h)) => (Some(Static::Int(l)), Some(Static::Int(h)), x.span),
+                                None => (None, None, x.span),
+                            }
+                        } else {
+                            let v = self.expr(x, Some(t));
+                            let v = self.coerce(v, self.types.base(t));
+                            let s = self.static_value(&v);
+                            (s.clone(), s, x.span)
+                        }
+                    }
+                    Choice::Range(l, h) => {
+                        let l = self.expr(l, Some(t));
+                        let l = self.coerce(l, self.types.base(t));
+                        let h = self.expr(h, Some(t));
+                        let h = self.coerce(h, self.types.base(t));
+                        let sp2 = Span { start: l.span.start, end: h.span.end, context: l.span.context };
+                        (self.static_value(&l), self.static_value(&h), sp2)
+                    }
+                };
+                match (lo, hi) {
+                    (Some(Static::Int(l)), Some(Static::Int(h))) => {
+                        let (l, h) = (l as i64, h as i64);
+                        if l <= h {
+                            if let Some(prev) = all.iter().find(|(a, b, _)| l <= *b && *a <= h) {
+                                let prev_sp = prev.2;
+                                self.err(Diagnostic::ty(csp, "this `case` choice is covered twice").with_note(prev_sp, "covered here already"));
+                            }
+                            all.push((l, h, csp));
+                        }
+                        rs.push((l, h));
+                    }
+                    _ => {
+                        if t != ERROR {
+                            self.err(Diagnostic::ty(csp, "a `case` choice must be static").with_hint("use literals, named numbers or constants with static values; use `if` for run-time values"));
+                        }
+                    }
+                }
+            }
+            out.push(rs);
+        }
+        if others.is_none() && t != ERROR && self.types.is_discrete(t) {
+            match self.types.discrete_bounds(t) {
+                Some((lo, hi)) => {
+                    all.sort_by_key(|x| x.0);
+                    let mut missing: Vec<(i128, i128)> = Vec::new();
+                    let mut next = lo;
+                    for (a, b, _) in &all {
+                        if (*a as i128) > next {
+                            missing.push((next, (*a as i128 - 1).min(hi)));
+                        }
+                        next = next.max(*b as i128 + 1);
+                    }
+                    if next <= hi {
+                        missing.push((next, hi));
+                    }
+                    let missing: Vec<(i128, i128)> = missing.into_iter().filter(|(a, b)| a <= b).collect();
+                    if !missing.is_empty() {
+                        let lits = self.types.enum_lits(t).map(|l| l.to_vec());
+                        let show = |v: i128| match &lits {
+                            Some(l) if self.types.base(t) != CHARACTER => l.get(v as usize).cloned().unwrap_or_default(),
+                            _ => v.to_string(),
+                        };
+                        let text: Vec<String> = missing.iter().take(8).map(|(a, b)| if a == b { show(*a) } else { format!("{} .. {}", show(*a), show(*b)) }).collect();
+                        self.err(
+                            Diagnostic::ty(sp, format!("this `case` does not cover every value of `{}`: missing {}", self.types.name(t), text.join(", ")))
+                                .with_hint("add the missing choices or a `when others =>` alternative"),
+                        );
+                    }
+                }
+                None => self.err(Diagnostic::ty(sp, format!("a `case` on `{}` needs `when others`", self.types.name(t)))),
+            }
+        }
+        (out, others)
+    }
+
+    fn aggregate(&mut self, items: &[ast::Assoc], t: TypeId, sp: Span) -> Ex {
+        if let Some(fields) = self.types.fields(t).map(|f| f.to_vec()) {
+            let mut vals: Vec<Option<Ex>> = vec![None; fields.len()];
+            let mut pos = 0;
+            for it in items {
+                if it.choices.is_empty() {
+                    if pos >= fields.len() {
+                        self.err(Diagnostic::ty(it.span, format!("too many components for `{}` ({} expected)", self.types.name(t), fields.len())));
+                        continue;
+                    }
+                    let v = self.expr(&it.value, Some(fields[pos].ty));
+                    vals[pos] = Some(self.coerce(v, fields[pos].ty));
+                    pos += 1;
+                    continue;
+                }
+                for c in &it.choices {
+                    let targets: Vec<usize> = match c {
+                        Choice::Others(_) => (0..fields.len()).filter(|i| vals[*i].is_none()).collect(),
+                        Choice::Expr(ast::Expr { kind: ExprKind::Name(n), .. }) => match fields.iter().position(|f| f.key == n.key) {
+                            Some(i) => vec![i],
+                            None => {
+                                self.err(Diagnostic::name(n.span, format!("`{}` has no component `{}`", self.types.name(t), n.name)));
+                                vec![]
+                            }
+                        },
+                        Choice::Expr(x) | Choice::Range(x, _) => {
+                            self.err(Diagnostic::syntax(x.span, "a record aggregate names its components"));
+                            vec![]
+                        }
+                    };
+                    for i in targets {
+                        if matches!(it.value.kind, ExprKind::Error) {
+                            // `Name => <>`: the component's default.
+                            let ft = fields[i].ty;
+                            vals[i] = Some(fields[i].default.clone().unwrap_or(Ex { kind: ExKind::Default(ft), ty: ft, span: it.span }));
+                            continue;
+                        }
+                        let v = self.expr(&it.value, Some(fields[i].ty));
+                        vals[i] = Some(self.coerce(v, fields[i].ty));
+                    }
+                }
+            }
+            let mut out = Vec::new();
+            for (i, v) in vals.into_iter().enumerate() {
+                match v {
+                    Some(v) => out.push(v),
+                    None => {
+                        self.err(Diagnostic::ty(sp, format!("the aggregate lacks component `{}` of `{}`", fields[i].name, self.types.name(t))));
+                        out.push(self.err_ex(sp));
+                    }
+                }
+            }
+            return self.mk(ExKind::RecordAgg(out), t, sp);
+        }
+        let Some((idx, el, bounds)) = self.types.array(t).map(|(i, e, b)| (i.to_vec(), e, b.cloned())) else {
+            self.err(Diagnostic::ty(sp, format!("an aggregate cannot have type `{}`", self.tname(t))));
+            return self.err_ex(sp);
+        };
+        // For several dimensions, components are rows of the remaining dimensions.
+        let comp_ty = if idx.len() > 1 {
+            let rest = TypeKind::Array {
+                index: idx[1..].to_vec(),
+                elem: el,
+                bounds: bounds.as_ref().map(|b| b[1..].to_vec()),
+            };
+            let name = format!("{} row", self.types.name(t));
+            self.types.add(&name, rest)
+        } else {
+            el
+        };
+        let mut positional = Vec::new();
+        let mut named = Vec::new();
+        let mut others = None;
+        for it in items {
+            let v = self.expr(&it.value, Some(comp_ty));
+            let v = self.coerce(v, comp_ty);
+            if it.choices.is_empty() {
+                positional.push(v);
+                continue;
+            }
+            let mut ranges = Vec::new();
+            for c in &it.choices {
+                match c {
+                    Choice::Others(_) => others = Some(bx(v.clone())),
+                    Choice::Expr(x) => {
+                        if let Some(tt) = self.denote_quiet_type(x) {
+                            ranges.push((self.mk(ExKind::TypeFirst(tt), tt, x.span), self.mk(ExKind::TypeLast(tt), tt, x.span)));
+                        } else {
+                            let i = self.expr(x, Some(idx[0]));
+                            let i = self.coerce(i, self.types.base(idx[0]));
+                            ranges.push((i.clone(), i));
+                        }
+                    }
+                    Choice::Range(l, h) => {
+                        let l = self.expr(l, Some(idx[0]));
+                        let l = self.coerce(l, self.types.base(idx[0]));
+                        let h = self.expr(h, Some(idx[0]));
+                        let h = self.coerce(h, self.types.base(idx[0]));
+                        ranges.push((l, h));
+                    }
+                }
+            }
+            if !ranges.is_empty() {
+                named.push((ranges, v));
+            }
+        }
+        if !positional.is_empty() && !named.is_empty() {
+            self.err(Diagnostic::syntax(sp, "an array aggregate is either positional or named, not both"));
+        }
+        if others.is_some() && bounds.is_none() {
+            self.err(Diagnostic::ty(sp, "`others` needs the bounds from the context").with_hint(format!("use a constrained subtype, e.g. `{} (1 .. 3)'(others => ...)`", self.types.name(t))));
+        }
+        // A static length check for positional aggregates of constrained types.
+        if let Some(b) = &bounds
+            && others.is_none()
+            && named.is_empty()
+            && let (Some(Static::Int(l)), Some(Static::Int(h))) = (self.static_value(&b[0].0), self.static_value(&b[0].1))
+        {
+            let len = (h - l + 1).max(0) as usize;
+            if positional.len() != len {
+                self.err(Diagnostic::ty(sp, format!("`{}` needs {} components in this dimension, the aggregate has {}", self.types.name(t), len, positional.len())));
+            }
+        }
+        let kind = if named.is_empty() {
+            ArrayAggKind::Positional(positional, others)
+        } else {
+            ArrayAggKind::Named(named, others)
+        };
+        self.mk(ExKind::ArrayAgg(ArrayAgg { ty: t, kind }), t, sp)
+    }
+
+    fn attribute(&mut self, p: &ast::Expr, a: &ast::Ident, args: &[ast::Expr], want: Option<TypeId>, sp: Span) -> Ex {
+        let key = a.key.as_str();
+        let type_prefix = self.denote_quiet_type(p);
+        let arg = |this: &mut Self, i: usize, t: Option<TypeId>| -> Ex {
+            match args.get(i) {
+                Some(x) => {
+                    let v = this.expr(x, t);
+                    match t {
+                        Some(t) => this.coerce(v, t),
+                        None => v,
+                    }
+                }
+                None => {
+                    this.err(Diagnostic::ty(sp, format!("`'{}` needs an argument", a.name)));
+                    this.err_ex(sp)
+                }
+            }
+        };
+        let dim = |this: &mut Self| -> u8 {
+            match args.first() {
+                None => 1,
+                Some(x) => {
+                    let v = this.expr(x, Some(UNIV_INT));
+                    match this.static_value(&v) {
+                        Some(Static::Int(n)) if n >= 1 => n as u8,
+                        _ => {
+                            this.err(Diagnostic::ty(x.span, "the dimension must be a static positive integer"));
+                            1
+                        }
+                    }
+                }
+            }
+        };
+        if let Some(t) = type_prefix {
+            let base = self.types.base(t);
+            let scalar = self.types.is_scalar(t);
+            match key {
+                "first" | "last" if scalar => {
+                    let k = if key == "first" { ExKind::TypeFirst(t) } else { ExKind::TypeLast(t) };
+                    return self.mk(k, t, sp);
+                }
+                "first" | "last" | "length" if self.types.array(t).is_some_and(|x| x.2.is_some()) => {
+                    let d = dim(self) as usize;
+                    let (idx, bounds) = self.types.array(t).map(|(i, _, b)| (i.to_vec(), b.cloned().unwrap_or_default())).unwrap_or_default();
+                    let Some((lo, hi)) = bounds.get(d - 1).cloned() else {
+                        self.err(Diagnostic::ty(sp, "no such dimension"));
+                        return self.err_ex(sp);
+                    };
+                    let it = idx[d - 1];
+                    return match key {
+                        "first" => Ex { ty: it, span: sp, ..lo },
+                        "last" => Ex { ty: it, span: sp, ..hi },
+                        _ => {
+                            let len = self.mk(ExKind::IntBin(IntOp::Add, bx(self.mk(ExKind::IntBin(IntOp::Sub, bx(hi), bx(lo)), UNIV_INT, sp)), bx(Ex::int(1))), UNIV_INT, sp);
+                            self.mk(ExKind::Attr(AttrOp::Max, vec![len, Ex::int(0)]), UNIV_INT, sp)
+                        }
+                    };
+                }
+                "image" if scalar => {
+                    let x = arg(self, 0, Some(base));
+                    return self.image(x, base, sp);
+                }
+                "value" if scalar => {
+                    let x = arg(self, 0, Some(STRING));
+                    let op = if self.types.is_float(t) {
+                        AttrOp::ValueFloat
+                    } else if self.types.is_integer(t) {
+                        AttrOp::ValueInt
+                    } else {
+                        AttrOp::ValueEnum(base)
+                    };
+                    let v = self.mk(ExKind::Attr(op, vec![x]), base, sp);
+                    return self.coerce(v, t);
+                }
+                "pos" if self.types.is_discrete(t) => {
+                    let x = arg(self, 0, Some(base));
+                    return self.mk(ExKind::Attr(AttrOp::Pos, vec![x]), UNIV_INT, sp);
+                }
+                "val" if self.types.is_discrete(t) => {
+                    let x = arg(self, 0, Some(UNIV_INT));
+                    let x = if self.types.is_universal(x.ty) { Ex { ty: INTEGER, ..x } } else { x };
+                    if !self.types.is_integer(x.ty) && x.ty != ERROR {
+                        self.err(Diagnostic::ty(x.span, "`'Val` needs an integer"));
+                    }
+                    if let (Some(Static::Int(v)), Some((l, h))) = (self.static_value(&x), self.types.discrete_bounds(t))
+                        && (v < l || v > h)
+                    {
+                        self.err(Diagnostic::ty(x.span, format!("{v} is not a position of `{}` (its positions are {l} .. {h})", self.types.name(t))).with_label("static value out of range"));
+                    }
+                    let v = self.mk(ExKind::Attr(AttrOp::Val, vec![x]), base, sp);
+                    return self.coerce_force_check(v, t);
+                }
+                "succ" | "pred" if self.types.is_discrete(t) => {
+                    let x = arg(self, 0, Some(base));
+                    let op = if key == "succ" { AttrOp::Succ } else { AttrOp::Pred };
+                    let v = self.mk(ExKind::Attr(op, vec![x]), base, sp);
+                    return self.coerce_force_check(v, base);
+                }
+                "min" | "max" if scalar => {
+                    let x = arg(self, 0, Some(base));
+                    let y = arg(self, 1, Some(base));
+                    let op = match (key, self.types.is_float(t)) {
+                        ("min", false) => AttrOp::Min,
+                        ("max", false) => AttrOp::Max,
+                        ("min", true) => AttrOp::FloatMin,
+                        _ => AttrOp::FloatMax,
+                    };
+                    return self.mk(ExKind::Attr(op, vec![x, y]), base, sp);
+                }
+                "floor" | "ceiling" | "truncation" | "rounding" if self.types.is_float(t) => {
+                    let x = arg(self, 0, Some(base));
+                    let op = match key {
+                        "floor" => AttrOp::Floor,
+                        "ceiling" => AttrOp::Ceiling,
+                        "truncation" => AttrOp::Truncation,
+                        _ => AttrOp::Rounding,
+                    };
+                    return self.mk(ExKind::Attr(op, vec![x]), base, sp);
+                }
+                "digits" if self.types.is_float(t) => return self.mk(ExKind::Int(if base == FLOAT { 6 } else { 15 }), UNIV_INT, sp),
+                "range" => {
+                    self.err(Diagnostic::ty(sp, "`'Range` can only be used as a range (in `for` loops, memberships and constraints)"));
+                    return self.err_ex(sp);
+                }
+                _ => {
+                    self.err(Diagnostic::ty(a.span, format!("`'{}` is not supported for the type `{}`", a.name, self.types.name(t))).with_hint("AdaIR supports First Last Range Length Image Value Pos Val Succ Pred Min Max"));
+                    return self.err_ex(sp);
+                }
+            }
+        }
+        // Attributes of objects.
+        let mut pe = self.expr(p, None);
+        if pe.ty == ERROR {
+            return self.err_ex(sp);
+        }
+        if let Some(d) = self.types.designated(pe.ty)
+            && self.types.is_array(d)
+        {
+            let psp = pe.span;
+            pe = self.mk(ExKind::Deref(bx(pe)), d, psp);
+        }
+        if let Some((idx, _, _)) = self.types.array(pe.ty).map(|(i, e, b)| (i.to_vec(), e, b.is_some())) {
+            let d = dim(self);
+            if d as usize > idx.len() {
+                self.err(Diagnostic::ty(sp, format!("`{}` has only {} dimension(s)", self.types.name(pe.ty), idx.len())));
+                return self.err_ex(sp);
+            }
+            let it = idx[d as usize - 1];
+            return match key {
+                "first" => self.mk(ExKind::Attr(AttrOp::ArrFirst(d), vec![pe]), it, sp),
+                "last" => self.mk(ExKind::Attr(AttrOp::ArrLast(d), vec![pe]), it, sp),
+                "length" => self.mk(ExKind::Attr(AttrOp::ArrLength(d), vec![pe]), UNIV_INT, sp),
+                "range" => {
+                    self.err(Diagnostic::ty(sp, "`'Range` can only be used as a range (in `for` loops, memberships and constraints)"));
+                    self.err_ex(sp)
+                }
+                _ => {
+                    self.err(Diagnostic::ty(a.span, format!("`'{}` is not supported on arrays", a.name)));
+                    self.err_ex(sp)
+                }
+            };
+        }
+        if key == "image" && self.types.is_scalar(pe.ty) {
+            let t = if self.types.is_universal(pe.ty) { if self.types.is_float(pe.ty) { FLOAT } else { INTEGER } } else { self.types.base(pe.ty) };
+            return self.image(pe, t, sp);
+        }
+        let _ = want;
+        self.err(Diagnostic::ty(a.span, format!("`'{}` is not supported here", a.name)).with_hint("AdaIR supports First Last Range Length Image Value Pos Val Succ Pred Min Max"));
+        self.err_ex(sp)
+    }
+
+    fn coerce_force_check(&mut self, v: Ex, t: TypeId) -> Ex {
+        let sp = v.span;
+        if self.types.get(t).range.is_some() || self.types.enum_lits(t).is_some() {
+            self.mk(ExKind::RangeCheck(bx(v), t), t, sp)
+        } else {
+            v
+        }
+    }
+
+    fn image(&mut self, x: Ex, t: TypeId, sp: Span) -> Ex {
+        let op = if self.types.is_float(t) {
+            AttrOp::ImageFloat
+        } else if self.types.is_integer(t) {
+            AttrOp::ImageInt
+        } else if self.types.base(t) == CHARACTER {
+            AttrOp::ImageChar
+        } else {
+            AttrOp::ImageEnum(self.types.base(t))
+        };
+        self.mk(ExKind::Attr(op, vec![x]), STRING, sp)
+    }
+
+    /// `X'Range` and `T'Range` as a discrete range.
+    pub(super) fn range_attr(&mut self, p: &ast::Expr, args: &[ast::Expr], sp: Span) -> (Ex, Ex, TypeId) {
+        let d = match args.first() {
+            None => 1u8,
+            Some(x) => {
+                let v = self.expr(x, Some(UNIV_INT));
+                match self.static_value(&v) {
+                    Some(Static::Int(n)) if n >= 1 => n as u8,
+                    _ => 1,
+                }
+            }
+        };
+        if let Some(t) = self.denote_quiet_type(p) {
+            if self.types.is_scalar(t) {
+                return (self.mk(ExKind::TypeFirst(t), t, sp), self.mk(ExKind::TypeLast(t), t, sp), t);
+            }
+            if let Some((idx, _, Some(b))) = self.types.array(t).map(|(i, e, b)| (i.to_vec(), e, b.cloned()))
+                && let Some((l, h)) = b.get(d as usize - 1)
+            {
+                return (l.clone(), h.clone(), idx[d as usize - 1]);
+            }
+            self.err(Diagnostic::ty(sp, format!("`{}'Range` needs a scalar or constrained array type", self.types.name(t))));
+            return (self.err_ex(sp), self.err_ex(sp), ERROR);
+        }
+        let mut pe = self.expr(p, None);
+        if let Some(dt) = self.types.designated(pe.ty) {
+            let psp = pe.span;
+            pe = self.mk(ExKind::Deref(bx(pe)), dt, psp);
+        }
+        match self.types.array(pe.ty).map(|(i, _, _)| i.to_vec()) {
+            Some(idx) if (d as usize) <= idx.len() => {
+                let it = idx[d as usize - 1];
+                (
+                    self.mk(ExKind::Attr(AttrOp::ArrFirst(d), vec![pe.clone()]), it, sp),
+                    self.mk(ExKind::Attr(AttrOp::ArrLast(d), vec![pe]), it, sp),
+                    it,
+                )
+            }
+            _ => {
+                if pe.ty != ERROR {
+                    self.err(Diagnostic::ty(sp, format!("`'Range` needs an array, this is `{}`", self.tname(pe.ty))));
+                }
+                (self.err_ex(sp), self.err_ex(sp), ERROR)
+            }
+        }
+    }
+}
+
+/// The slice form `A (L .. H)`, as the parser encodes it.
+fn is_range_arg(e: &ast::Expr) -> bool {
+    matches!(&e.kind, ExprKind::Aggregate(items) if items.len() == 1 && matches!(items[0].choices.as_slice(), [Choice::Range(..)]) && matches!(items[0].value.kind, ExprKind::Error))
+}

@@ -1,0 +1,287 @@
+//! The checked program: every name resolved to a slot, a subprogram index,
+//! a type id or a builtin; every operator to its typed form. The interpreter
+//! runs this and never looks a name up by string.
+
+use super::types::TypeId;
+use crate::diag::Span;
+use crate::syntax::ast::Mode;
+use std::rc::Rc;
+
+pub type FuncId = u32;
+pub type ExcId = u32;
+
+/// A variable: the static nesting level of the frame that owns it and its
+/// slot in that frame. Level 0 holds library-level (and script) objects.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Var {
+    pub level: u16,
+    pub slot: u32,
+}
+
+#[derive(Clone, Debug)]
+pub struct Ex {
+    pub kind: ExKind,
+    pub ty: TypeId,
+    pub span: Span,
+}
+
+impl Ex {
+    pub fn int(v: i64) -> Ex {
+        Ex {
+            kind: ExKind::Int(v),
+            ty: super::types::UNIV_INT,
+            span: Span {
+                start: 0,
+                end: 0,
+                context: 0,
+            },
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IntOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Mod,
+    Rem,
+    Pow,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FloatOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    /// Float ** Integer
+    PowI,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CmpOp {
+    Eq,
+    Ne,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LogicOp {
+    And,
+    Or,
+    Xor,
+    AndThen,
+    OrElse,
+}
+
+/// Attributes evaluated at run time.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AttrOp {
+    /// `A'First (N)`, `A'Last (N)`, `A'Length (N)` on an array value.
+    ArrFirst(u8),
+    ArrLast(u8),
+    ArrLength(u8),
+    /// `T'Image (X)` for the given scalar type kind.
+    ImageInt,
+    ImageFloat,
+    ImageEnum(TypeId),
+    ImageChar,
+    /// `T'Value (S)`
+    ValueInt,
+    ValueFloat,
+    ValueEnum(TypeId),
+    Succ,
+    Pred,
+    Min,
+    Max,
+    FloatMin,
+    FloatMax,
+    /// `T'Val (N)` with a range check against T.
+    Val,
+    /// `T'Pos (X)`
+    Pos,
+    /// Float'Floor etc.
+    Floor,
+    Ceiling,
+    Truncation,
+    Rounding,
+}
+
+#[derive(Clone, Debug)]
+pub enum ExKind {
+    Int(i64),
+    Real(f64),
+    /// A constant composite value (string literals).
+    Str(Rc<str>),
+    Null,
+    Var(Var),
+    /// Array component: prefix, indices.
+    Index(Box<Ex>, Vec<Ex>),
+    /// One-dimensional slice.
+    Slice(Box<Ex>, Box<Ex>, Box<Ex>),
+    Field(Box<Ex>, u32),
+    Deref(Box<Ex>),
+    Call(FuncId, Vec<Arg>),
+    IntBin(IntOp, Box<Ex>, Box<Ex>),
+    FloatBin(FloatOp, Box<Ex>, Box<Ex>),
+    /// Comparison of scalars (integers and enumeration positions, or floats).
+    Cmp(CmpOp, Box<Ex>, Box<Ex>),
+    /// Equality of any values (composites compared component-wise).
+    Eq(bool, Box<Ex>, Box<Ex>),
+    Logic(LogicOp, Box<Ex>, Box<Ex>),
+    Not(Box<Ex>),
+    IntNeg(Box<Ex>),
+    FloatNeg(Box<Ex>),
+    IntAbs(Box<Ex>),
+    FloatAbs(Box<Ex>),
+    /// Array concatenation (`&`); the flags say whether each side is one element.
+    Concat(Box<Ex>, Box<Ex>, bool, bool),
+    IntToFloat(Box<Ex>),
+    FloatToInt(Box<Ex>),
+    /// Checks that a scalar lies in the range of the type (`Constraint_Error`).
+    RangeCheck(Box<Ex>, TypeId),
+    /// Converts an array value to a constrained array subtype: checks the length
+    /// and slides the bounds.
+    ArrayConvert(Box<Ex>, TypeId),
+    Attr(AttrOp, Vec<Ex>),
+    /// `T'First`/`T'Last` of a scalar subtype: evaluated from the type table.
+    TypeFirst(TypeId),
+    TypeLast(TypeId),
+    /// Membership in ranges / subtypes (each choice: low, high).
+    InRanges(Box<Ex>, Vec<(Ex, Ex)>, bool),
+    /// Membership test against values (for `X in A | B`).
+    ArrayAgg(ArrayAgg),
+    RecordAgg(Vec<Ex>),
+    If(Vec<(Ex, Ex)>, Box<Ex>),
+    Case(Box<Ex>, Vec<(Vec<(i64, i64)>, Ex)>, Option<Box<Ex>>),
+    Alloc(Option<Box<Ex>>, TypeId),
+    /// Calls a builtin (predefined library or robot service) by index.
+    Builtin(u32, Vec<Arg>),
+    /// The default initial value of a type (records with defaults, arrays of them).
+    Default(TypeId),
+    /// Reads the current exception occurrence of a handler.
+    Error,
+}
+
+/// An array aggregate, with the array type that fixes its bounds.
+#[derive(Clone, Debug)]
+pub struct ArrayAgg {
+    pub ty: TypeId,
+    pub kind: ArrayAggKind,
+}
+
+#[derive(Clone, Debug)]
+pub enum ArrayAggKind {
+    /// Positional components, then an optional `others` value.
+    Positional(Vec<Ex>, Option<Box<Ex>>),
+    /// Named choices (ranges of indices) and an optional `others`.
+    Named(Vec<(Vec<(Ex, Ex)>, Ex)>, Option<Box<Ex>>),
+    /// A multi-dimensional aggregate: rows, each itself an aggregate of the
+    /// remaining dimensions (positional rows only, or named rows).
+    Rows(Vec<Ex>),
+}
+
+#[derive(Clone, Debug)]
+pub struct Arg {
+    pub mode: Mode,
+    pub value: Ex,
+    /// Range check applied when copying an `out` value back into the actual.
+    pub back_check: Option<TypeId>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Stmt {
+    pub kind: StmtKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub enum StmtKind {
+    Null,
+    /// Initialises a fresh variable (declaration elaboration).
+    Init(Var, Ex),
+    Assign(Ex, Ex),
+    Call(FuncId, Vec<Arg>),
+    Builtin(u32, Vec<Arg>),
+    If(Vec<(Ex, Vec<Stmt>)>, Vec<Stmt>),
+    Case(Ex, Vec<(Vec<(i64, i64)>, Vec<Stmt>)>, Option<Vec<Stmt>>),
+    Loop {
+        id: u32,
+        body: Vec<Stmt>,
+    },
+    While {
+        id: u32,
+        cond: Ex,
+        body: Vec<Stmt>,
+    },
+    For {
+        id: u32,
+        var: Var,
+        lo: Ex,
+        hi: Ex,
+        reverse: bool,
+        body: Vec<Stmt>,
+    },
+    Exit(u32, Option<Ex>),
+    Return(Option<Ex>),
+    Block(Box<Body>),
+    Raise(ExcId, Option<Ex>),
+    Reraise,
+    Delay(Ex),
+    /// A type whose constraints are evaluated at elaboration (dynamic bounds).
+    ElabType(TypeId),
+}
+
+/// Statements with exception handlers.
+#[derive(Clone, Debug)]
+pub struct Body {
+    pub stmts: Vec<Stmt>,
+    pub handlers: Vec<Handler>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Handler {
+    /// `None` = `others`.
+    pub choices: Option<Vec<ExcId>>,
+    pub occurrence: Option<Var>,
+    pub stmts: Vec<Stmt>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Param {
+    pub name: String,
+    pub mode: Mode,
+    pub ty: TypeId,
+    pub default: Option<Ex>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Subprogram {
+    pub name: String,
+    pub params: Vec<Param>,
+    pub ret: Option<TypeId>,
+    pub level: u16,
+    pub nslots: u32,
+    pub body: Option<Rc<Body>>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct Exception {
+    /// Full upper-case name as GNAT prints it (`MAIN.GRIPPER_JAM`).
+    pub name: String,
+}
+
+/// A whole checked program (or one REPL entry against kept state).
+#[derive(Clone, Debug, Default)]
+pub struct Program {
+    /// Statements elaborating and running the library level (level 0).
+    pub main: Vec<Stmt>,
+    /// Number of level-0 slots.
+    pub globals: u32,
+}

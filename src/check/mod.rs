@@ -1,0 +1,512 @@
+//! The checker: resolves every name, types every expression, resolves
+//! overloads and checks modes, before anything runs. Produces the IR of
+//! [`ir`], in which names are slots and subprogram indices.
+//!
+//! The checker keeps its state between calls, so that the REPL can check one
+//! entry at a time against everything declared before.
+
+mod decl;
+mod expr;
+pub mod ir;
+mod stmt;
+pub mod types;
+
+use crate::diag::{Diagnostic, Span};
+use crate::syntax::ast;
+use ir::*;
+use std::collections::HashMap;
+use std::rc::Rc;
+use types::*;
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Static {
+    Int(i128),
+    Real(f64),
+}
+
+#[derive(Clone, Debug)]
+pub enum Entity {
+    Var {
+        var: Var,
+        ty: TypeId,
+        constant: bool,
+        /// Static value of a constant, for case choices and static checks.
+        value: Option<Static>,
+    },
+    Number(Static),
+    Type(TypeId),
+    Func(FuncId),
+    EnumLit(TypeId, i64),
+    Exc(ExcId),
+    Package(usize),
+}
+
+#[derive(Default, Debug)]
+struct Scope {
+    names: HashMap<String, Vec<Entity>>,
+    uses: Vec<usize>,
+    /// The package whose spec (false) or body (true) this scope is.
+    package: Option<(usize, bool)>,
+}
+
+#[derive(Debug)]
+pub struct Package {
+    pub name: String,
+    names: HashMap<String, Vec<Entity>>,
+    /// Names of the package body (and private part), visible inside it only.
+    private: HashMap<String, Vec<Entity>>,
+}
+
+struct FuncCtx {
+    func: Option<FuncId>,
+    ret: Option<TypeId>,
+    saw_return: bool,
+    next_slot: u32,
+}
+
+/// Whether an import name names a builtin the runtime knows.
+pub type KnownBuiltin = fn(&str) -> bool;
+
+pub struct Checker {
+    pub types: Types,
+    pub funcs: Vec<Subprogram>,
+    /// Import name of each subprogram bound to a builtin.
+    pub imports: Vec<Option<String>>,
+    pub excs: Vec<Exception>,
+    pub packages: Vec<Package>,
+    scopes: Vec<Scope>,
+    level: u16,
+    ctx: Vec<FuncCtx>,
+    loops: Vec<(Option<String>, u32)>,
+    next_loop: u32,
+    in_handler: u32,
+    /// Enclosing unit names, for full exception names.
+    unit_path: Vec<String>,
+    pub diags: Vec<Diagnostic>,
+    texts: HashMap<u32, Rc<str>>,
+    known_builtin: KnownBuiltin,
+    /// Level-0 slot count so far.
+    pub globals: u32,
+    /// Script mode: the standard packages are use-visible at the top level.
+    pub script: bool,
+}
+
+pub const CONSTRAINT_ERROR: ExcId = 0;
+pub const PROGRAM_ERROR: ExcId = 1;
+pub const STORAGE_ERROR: ExcId = 2;
+pub const TASKING_ERROR: ExcId = 3;
+pub const NAME_ERROR: ExcId = 4;
+pub const USE_ERROR: ExcId = 5;
+pub const DATA_ERROR: ExcId = 6;
+pub const END_ERROR: ExcId = 7;
+
+impl Checker {
+    pub fn new(known_builtin: KnownBuiltin) -> Checker {
+        let mut c = Checker {
+            types: Types::standard(),
+            funcs: Vec::new(),
+            imports: Vec::new(),
+            excs: Vec::new(),
+            packages: Vec::new(),
+            scopes: vec![Scope::default()],
+            level: 0,
+            ctx: vec![FuncCtx {
+                func: None,
+                ret: None,
+                saw_return: false,
+                next_slot: 0,
+            }],
+            loops: Vec::new(),
+            next_loop: 0,
+            in_handler: 0,
+            unit_path: Vec::new(),
+            diags: Vec::new(),
+            texts: HashMap::new(),
+            known_builtin,
+            globals: 0,
+            script: false,
+        };
+        c.standard();
+        c
+    }
+
+    fn standard(&mut self) {
+        for (name, t) in [
+            ("Boolean", BOOLEAN),
+            ("Character", CHARACTER),
+            ("Integer", INTEGER),
+            ("Natural", NATURAL),
+            ("Positive", POSITIVE),
+            ("Float", FLOAT),
+            ("String", STRING),
+            ("Duration", DURATION),
+        ] {
+            self.declare(name, Entity::Type(t));
+        }
+        self.declare("False", Entity::EnumLit(BOOLEAN, 0));
+        self.declare("True", Entity::EnumLit(BOOLEAN, 1));
+        for (i, name) in [
+            "Constraint_Error",
+            "Program_Error",
+            "Storage_Error",
+            "Tasking_Error",
+            "Name_Error",
+            "Use_Error",
+            "Data_Error",
+            "End_Error",
+        ]
+        .iter()
+        .enumerate()
+        {
+            let full = if i >= 4 {
+                format!("ADA.IO_EXCEPTIONS.{}", name.to_uppercase())
+            } else {
+                name.to_uppercase()
+            };
+            self.excs.push(Exception { name: full });
+            if i < 4 {
+                self.declare(name, Entity::Exc(i as ExcId));
+            }
+        }
+        let dur = self.types.list.get_mut(DURATION as usize);
+        if let Some(d) = dur {
+            d.static_frange = Some((-86400.0 * 365.0 * 100.0, 86400.0 * 365.0 * 100.0));
+        }
+    }
+
+    /// Registers the text of a source so that hints can quote it.
+    pub fn add_text(&mut self, file: u32, text: &str) {
+        self.texts.insert(file, Rc::from(text));
+    }
+
+    fn snippet(&self, s: Span) -> String {
+        self.texts
+            .get(&s.context)
+            .and_then(|t| t.get(s.start..s.end))
+            .unwrap_or("?")
+            .to_string()
+    }
+
+    fn err(&mut self, d: Diagnostic) {
+        if !self.diags.iter().any(|x| x.span == d.span && x.message == d.message) {
+            self.diags.push(d);
+        }
+    }
+
+    // ---- scopes ----
+
+    fn push_scope(&mut self) {
+        self.scopes.push(Scope::default());
+    }
+    fn pop_scope(&mut self) {
+        self.scopes.pop();
+    }
+
+    fn declare(&mut self, name: &str, e: Entity) {
+        let key = name.to_ascii_lowercase();
+        let scope = self.scopes.last_mut().expect("scope");
+        match scope.package {
+            Some((p, false)) => self.packages[p].names.entry(key.clone()).or_default().push(e.clone()),
+            Some((p, true)) => self.packages[p].private.entry(key.clone()).or_default().push(e.clone()),
+            None => {}
+        }
+        scope.names.entry(key).or_default().push(e);
+    }
+
+    /// Declares a name, reporting a clash with a non-overloadable name of the
+    /// same declarative region.
+    fn declare_checked(&mut self, id: &ast::Ident, e: Entity) {
+        let overloadable = matches!(e, Entity::Func(_) | Entity::EnumLit(..));
+        if let Some(prev) = self.scopes.last().and_then(|s| s.names.get(&id.key)) {
+            let clash = prev.iter().any(|p| !(overloadable && matches!(p, Entity::Func(_) | Entity::EnumLit(..))));
+            if clash && !matches!(prev.last(), Some(Entity::Type(t)) if matches!(self.types.kind(*t), TypeKind::Incomplete)) {
+                self.err(Diagnostic::name(id.span, format!("`{}` is already declared in this scope", id.name)));
+            }
+        }
+        self.declare(&id.name, e);
+    }
+
+    /// All entities a simple name denotes here (innermost first; overloadable
+    /// names collect from all levels).
+    fn lookup(&self, key: &str) -> Vec<Entity> {
+        let mut found: Vec<Entity> = Vec::new();
+        for s in self.scopes.iter().rev() {
+            if let Some(es) = s.names.get(key) {
+                let overloadable = es.iter().all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));
+                if !overloadable {
+                    if found.is_empty() {
+                        return vec![es.last().cloned().expect("nonempty")];
+                    }
+                    break;
+                }
+                for e in es.iter().rev() {
+                    found.push(e.clone());
+                }
+            }
+            if let Some((p, true)) = s.package
+                && let Some(es) = self.packages[p].names.get(key)
+            {
+                let overloadable = es.iter().all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));
+                if !overloadable && found.is_empty() {
+                    return vec![es.last().cloned().expect("nonempty")];
+                }
+                found.extend(es.iter().rev().cloned());
+            }
+        }
+        if !found.is_empty() {
+            return found;
+        }
+        // Use-visible declarations of packages.
+        for s in self.scopes.iter().rev() {
+            for &p in &s.uses {
+                if let Some(es) = self.packages[p].names.get(key) {
+                    found.extend(es.iter().cloned());
+                }
+            }
+        }
+        // Non-overloadable use-visible names conflict: keep the first.
+        if found.len() > 1 && found.iter().any(|e| !matches!(e, Entity::Func(_) | Entity::EnumLit(..))) {
+            found.truncate(1);
+        }
+        found
+    }
+
+    fn visible_names(&self) -> Vec<String> {
+        let mut v: Vec<String> = Vec::new();
+        for s in &self.scopes {
+            v.extend(s.names.keys().cloned());
+            for &p in &s.uses {
+                v.extend(self.packages[p].names.keys().cloned());
+            }
+        }
+        v
+    }
+
+    /// Names in scope, for REPL completion.
+    pub fn completion_names(&self) -> Vec<String> {
+        let mut v = self.visible_names();
+        v.sort();
+        v.dedup();
+        v
+    }
+
+    fn suggest(&self, key: &str) -> Option<String> {
+        let mut best: Option<(usize, String)> = None;
+        for n in self.visible_names() {
+            let d = edit_distance(key, &n);
+            if d <= 2.max(key.len() / 4) && d > 0 && best.as_ref().is_none_or(|b| d < b.0) {
+                best = Some((d, n));
+            }
+        }
+        best.map(|b| b.1)
+    }
+
+    // ---- frames and slots ----
+
+    fn new_slot(&mut self) -> Var {
+        let ctx = self.ctx.last_mut().expect("ctx");
+        let slot = ctx.next_slot;
+        ctx.next_slot += 1;
+        if self.level == 0 {
+            self.globals = self.globals.max(slot + 1);
+        }
+        Var { level: self.level, slot }
+    }
+
+    fn new_loop(&mut self) -> u32 {
+        self.next_loop += 1;
+        self.next_loop
+    }
+
+    fn exc_name(&self, name: &str) -> String {
+        let mut s = String::new();
+        for p in &self.unit_path {
+            s.push_str(&p.to_uppercase());
+            s.push('.');
+        }
+        s.push_str(&name.to_uppercase());
+        s
+    }
+
+    /// Checks a whole compilation unit. `script` decides whether top-level
+    /// statements are allowed; returns the statements to run at level 0 and,
+    /// for a main-procedure program, the main subprogram.
+    pub fn check_unit(&mut self, unit: &ast::CompilationUnit) -> (Vec<Stmt>, Option<FuncId>) {
+        let mut out = Vec::new();
+        let has_stmts = unit.items.iter().any(|i| matches!(i, ast::TopItem::Stmt(_)));
+        let mut main = None;
+        for item in &unit.items {
+            match item {
+                ast::TopItem::With(names, _) => {
+                    for n in names {
+                        self.with_clause(n);
+                    }
+                }
+                ast::TopItem::Use(names, _) => self.use_clause(names),
+                ast::TopItem::Decl(d) => {
+                    if let ast::DeclKind::SubprogramBody(b) = &d.kind
+                        && b.spec.params.is_empty()
+                        && b.spec.ret.is_none()
+                        && !has_stmts
+                    {
+                        // Library-level procedure: the last one is the main program.
+                        let before = self.funcs.len();
+                        self.decl(d, &mut out);
+                        main = self.funcs_named(&b.spec.name.key(), before);
+                        continue;
+                    }
+                    self.decl(d, &mut out);
+                }
+                ast::TopItem::Stmt(s) => self.stmt(s, &mut out),
+            }
+        }
+        (out, main)
+    }
+
+    fn funcs_named(&self, key: &str, _after: usize) -> Option<FuncId> {
+        self.lookup(key).iter().find_map(|e| match e {
+            Entity::Func(f) if self.funcs[*f as usize].params.is_empty() => Some(*f),
+            _ => None,
+        })
+    }
+
+    /// `with P;`: the package must exist (standard or stdlib units are loaded
+    /// by the driver before the user's file).
+    fn with_clause(&mut self, n: &ast::Expr) {
+        if self.package_of(n, false).is_none() {
+            let text = crate::syntax::parser::expr_text(n);
+            self.err(
+                Diagnostic::name(n.span, format!("no library unit named `{text}`"))
+                    .with_hint("AdaIR provides Ada.Text_IO, Ada.Integer_Text_IO, Ada.Float_Text_IO, Ada.Numerics, Ada.Numerics.Elementary_Functions, Ada.Calendar, Ada.Exceptions and AdaIR"),
+            );
+        }
+    }
+
+    fn use_clause(&mut self, names: &[ast::Expr]) {
+        for n in names {
+            match self.package_of(n, true) {
+                Some(p) => {
+                    let s = self.scopes.last_mut().expect("scope");
+                    if !s.uses.contains(&p) {
+                        s.uses.push(p);
+                    }
+                }
+                None => {
+                    // `use type T;` and friends: accepted when T is a type.
+                    if !matches!(self.denote(n, true).first(), Some(Entity::Type(_))) {
+                        let text = crate::syntax::parser::expr_text(n);
+                        self.err(Diagnostic::name(n.span, format!("`{text}` is not a package")));
+                    }
+                }
+            }
+        }
+    }
+
+    fn package_of(&mut self, n: &ast::Expr, report: bool) -> Option<usize> {
+        match self.denote(n, report).first() {
+            Some(Entity::Package(p)) => Some(*p),
+            _ => None,
+        }
+    }
+
+    /// Finds the entities a name (identifier or selected name) denotes.
+    fn denote(&mut self, n: &ast::Expr, report: bool) -> Vec<Entity> {
+        match &n.kind {
+            ast::ExprKind::Name(id) => {
+                let es = self.lookup(&id.key);
+                if es.is_empty() && report {
+                    let mut d = Diagnostic::name(id.span, format!("`{}` is not declared", id.name))
+                        .with_label("undefined name");
+                    if let Some(s) = self.suggest(&id.key) {
+                        d = d.with_hint(format!("did you mean `{s}`?"));
+                    }
+                    self.err(d);
+                }
+                es
+            }
+            ast::ExprKind::Select(p, id) => {
+                let pes = self.denote(p, report);
+                match pes.first() {
+                    Some(Entity::Package(pk)) => {
+                        let pk = *pk;
+                        let mut es = self.packages[pk].names.get(&id.key).cloned().unwrap_or_default();
+                        // Inside the package itself, its private names are visible too.
+                        if es.is_empty() && self.scopes.iter().any(|s| s.package.is_some_and(|x| x.0 == pk)) {
+                            es = self.packages[pk].private.get(&id.key).cloned().unwrap_or_default();
+                        }
+                        if es.is_empty() && report {
+                            let pname = self.packages[pk].name.clone();
+                            let mut d = Diagnostic::name(id.span, format!("`{}` is not declared in `{pname}`", id.name));
+                            let cands: Vec<String> = self.packages[pk].names.keys().cloned().collect();
+                            if let Some(best) = cands.iter().filter(|c| edit_distance(&id.key, c) <= 2).min_by_key(|c| edit_distance(&id.key, c)) {
+                                d = d.with_hint(format!("did you mean `{pname}.{best}`?"));
+                            }
+                            self.err(d);
+                        }
+                        es
+                    }
+                    _ => Vec::new(),
+                }
+            }
+            _ => Vec::new(),
+        }
+    }
+
+    /// Creates a package (and its parents, for `Ada.Text_IO`), returning its index.
+    fn package(&mut self, full: &str) -> usize {
+        if let Some(i) = self.packages.iter().position(|p| p.name.eq_ignore_ascii_case(full)) {
+            return i;
+        }
+        let idx = self.packages.len();
+        self.packages.push(Package {
+            name: full.to_string(),
+            names: HashMap::new(),
+            private: HashMap::new(),
+        });
+        match full.rsplit_once('.') {
+            Some((parent, last)) => {
+                let p = self.package(parent);
+                self.packages[p].names.entry(last.to_ascii_lowercase()).or_default().push(Entity::Package(idx));
+            }
+            None => {
+                // Library-level packages are visible in the outermost scope.
+                self.scopes[0].names.entry(full.to_ascii_lowercase()).or_default().push(Entity::Package(idx));
+            }
+        }
+        idx
+    }
+
+    /// Makes a package's declarations directly visible at the top level
+    /// (script mode: Ada.Text_IO and friends without `with`/`use`).
+    pub fn use_everywhere(&mut self, full: &str) {
+        if let Some(i) = self.packages.iter().position(|p| p.name.eq_ignore_ascii_case(full))
+            && !self.scopes[0].uses.contains(&i)
+        {
+            self.scopes[0].uses.push(i);
+        }
+    }
+
+    /// Finishes a check: the level-0 statements and the slot count.
+    pub fn take_diags(&mut self) -> Vec<Diagnostic> {
+        std::mem::take(&mut self.diags)
+    }
+
+    pub fn known_builtin(&self, name: &str) -> bool {
+        (self.known_builtin)(name)
+    }
+}
+
+pub fn edit_distance(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.chars().collect();
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for i in 1..=a.len() {
+        let mut cur = vec![i; b.len() + 1];
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            cur[j] = (prev[j] + 1).min(cur[j - 1] + 1).min(prev[j - 1] + cost);
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}

@@ -1,0 +1,306 @@
+//! Statements and handled sequences.
+
+use super::*;
+use crate::syntax::ast::StmtKind as S;
+
+impl Checker {
+    pub(super) fn stmts(&mut self, ss: &[ast::Stmt]) -> Vec<Stmt> {
+        let mut out = Vec::new();
+        for s in ss {
+            self.stmt(s, &mut out);
+        }
+        out
+    }
+
+    /// A `begin ... exception ... end` block in its own scope.
+    pub(super) fn block(&mut self, b: &ast::Block) -> Body {
+        let stmts = self.stmts(&b.stmts);
+        let handlers = self.handlers(&b.handlers);
+        Body { stmts, handlers }
+    }
+
+    fn handlers(&mut self, hs: &[ast::Handler]) -> Vec<Handler> {
+        let mut out = Vec::new();
+        for h in hs {
+            let mut choices = Some(Vec::new());
+            for c in &h.choices {
+                match c {
+                    None => choices = None,
+                    Some(n) => match self.denote(n, true).first() {
+                        Some(Entity::Exc(e)) => {
+                            if let Some(v) = &mut choices {
+                                v.push(*e);
+                            }
+                        }
+                        Some(_) => {
+                            let t = crate::syntax::parser::expr_text(n);
+                            self.err(Diagnostic::name(n.span, format!("`{t}` is not an exception")));
+                        }
+                        None => {}
+                    },
+                }
+            }
+            self.push_scope();
+            let occurrence = h.occurrence.as_ref().map(|id| {
+                let var = self.new_slot();
+                self.declare(
+                    &id.name,
+                    Entity::Var {
+                        var,
+                        ty: OCCURRENCE,
+                        constant: true,
+                        value: None,
+                    },
+                );
+                var
+            });
+            self.in_handler += 1;
+            let stmts = self.stmts(&h.stmts);
+            self.in_handler -= 1;
+            self.pop_scope();
+            out.push(Handler { choices, occurrence, stmts });
+        }
+        out
+    }
+
+    fn cond(&mut self, e: &ast::Expr) -> Ex {
+        let c = self.expr(e, Some(BOOLEAN));
+        if c.ty != ERROR && self.types.base(c.ty) != BOOLEAN {
+            self.err(
+                Diagnostic::ty(e.span, format!("a condition must be Boolean, this is {}", if self.types.is_universal(c.ty) { "a number".to_string() } else { format!("`{}`", self.types.name(c.ty)) }))
+                    .with_hint("compare it: `X /= 0`"),
+            );
+            return c;
+        }
+        self.coerce(c, BOOLEAN)
+    }
+
+    pub(super) fn stmt(&mut self, s: &ast::Stmt, out: &mut Vec<Stmt>) {
+        let sp = s.span;
+        let kind = match &s.kind {
+            S::Null | S::Error => return,
+            S::Decl(d) => {
+                self.decl(d, out);
+                return;
+            }
+            S::Assign(target, value) => {
+                let t = self.expr(target, None);
+                self.check_variable(&t, target.span, "the target of an assignment");
+                let ty = t.ty;
+                let v = self.expr(value, Some(ty));
+                let v = self.coerce(v, ty);
+                StmtKind::Assign(t, v)
+            }
+            S::Call(e) => match self.call_stmt(e) {
+                Some(k) => k,
+                None => return,
+            },
+            S::If { arms, els } => {
+                let mut out_arms = Vec::new();
+                for (c, body) in arms {
+                    let c = self.cond(c);
+                    let b = self.scoped_stmts(body);
+                    out_arms.push((c, b));
+                }
+                let e = els.as_ref().map(|b| self.scoped_stmts(b)).unwrap_or_default();
+                StmtKind::If(out_arms, e)
+            }
+            S::Case { subject, arms } => {
+                let subj = self.expr(subject, None);
+                let st = if self.types.is_universal(subj.ty) { INTEGER } else { subj.ty };
+                let subj = self.coerce(subj, st);
+                let lists: Vec<&[ast::Choice]> = arms.iter().map(|a| a.choices.as_slice()).collect();
+                let (ranges, others_at) = self.case_choices(st, &lists, subject.span);
+                let mut outa = Vec::new();
+                let mut others = None;
+                for (i, a) in arms.iter().enumerate() {
+                    let b = self.scoped_stmts(&a.body);
+                    if Some(i) == others_at {
+                        others = Some(b);
+                    } else {
+                        outa.push((ranges[i].clone(), b));
+                    }
+                }
+                StmtKind::Case(subj, outa, others)
+            }
+            S::Loop { label, scheme, body, end_label } => {
+                if let (Some(l), Some(e)) = (label, end_label)
+                    && l.key != e.key
+                {
+                    self.err(Diagnostic::syntax(e.span, format!("`end loop {}` does not match the loop name `{}`", e.name, l.name)));
+                }
+                if let (None, Some(e)) = (label, end_label) {
+                    self.err(Diagnostic::syntax(e.span, format!("the loop has no name, but its end says `{}`", e.name)));
+                }
+                let id = self.new_loop();
+                self.loops.push((label.as_ref().map(|l| l.key.clone()), id));
+                let k = match scheme {
+                    ast::LoopScheme::Plain => {
+                        let body = self.scoped_stmts(body);
+                        StmtKind::Loop { id, body }
+                    }
+                    ast::LoopScheme::While(c) => {
+                        let cond = self.cond(c);
+                        let body = self.scoped_stmts(body);
+                        StmtKind::While { id, cond, body }
+                    }
+                    ast::LoopScheme::For { var, reverse, range } => {
+                        let (lo, hi, t) = self.discrete_range(range, None);
+                        let t = if self.types.is_universal(t) { INTEGER } else { t };
+                        let (lo, hi) = (self.coerce(lo, self.types.base(t)), self.coerce(hi, self.types.base(t)));
+                        self.push_scope();
+                        let v = self.new_slot();
+                        self.declare(
+                            &var.name,
+                            Entity::Var {
+                                var: v,
+                                ty: t,
+                                constant: true,
+                                value: None,
+                            },
+                        );
+                        let body = self.stmts(body);
+                        self.pop_scope();
+                        StmtKind::For {
+                            id,
+                            var: v,
+                            lo,
+                            hi,
+                            reverse: *reverse,
+                            body,
+                        }
+                    }
+                };
+                self.loops.pop();
+                k
+            }
+            S::Exit { label, cond } => {
+                let id = match label {
+                    None => self.loops.last().map(|l| l.1),
+                    Some(l) => {
+                        let f = self.loops.iter().rev().find(|x| x.0.as_deref() == Some(l.key.as_str())).map(|x| x.1);
+                        if f.is_none() {
+                            self.err(Diagnostic::name(l.span, format!("no enclosing loop is named `{}`", l.name)));
+                            return;
+                        }
+                        f
+                    }
+                };
+                let Some(id) = id else {
+                    self.err(Diagnostic::syntax(sp, "`exit` outside a loop"));
+                    return;
+                };
+                let c = cond.as_ref().map(|c| self.cond(c));
+                StmtKind::Exit(id, c)
+            }
+            S::Return(v) => {
+                let ctx = self.ctx.last_mut().expect("ctx");
+                ctx.saw_return = true;
+                let ret = ctx.ret;
+                let is_sub = ctx.func.is_some();
+                match (v, ret) {
+                    (Some(v), Some(t)) => {
+                        let e = self.expr(v, Some(t));
+                        StmtKind::Return(Some(self.coerce(e, t)))
+                    }
+                    (None, None) if is_sub => StmtKind::Return(None),
+                    (None, None) => {
+                        self.err(Diagnostic::syntax(sp, "`return` outside a subprogram"));
+                        return;
+                    }
+                    (Some(v), None) => {
+                        self.err(Diagnostic::ty(v.span, "a procedure cannot return a value").with_hint("make it a function, or write `return;`"));
+                        return;
+                    }
+                    (None, Some(t)) => {
+                        self.err(Diagnostic::ty(sp, format!("a function must return a value of type `{}`", self.types.name(t))));
+                        return;
+                    }
+                }
+            }
+            S::Block { label: _, decls, body } => {
+                self.push_scope();
+                let mut elab = Vec::new();
+                self.decls(decls, &mut elab);
+                let inner = self.block(body);
+                self.pop_scope();
+                if elab.is_empty() {
+                    StmtKind::Block(Box::new(inner))
+                } else {
+                    elab.push(Stmt {
+                        kind: StmtKind::Block(Box::new(inner)),
+                        span: sp,
+                    });
+                    StmtKind::Block(Box::new(Body { stmts: elab, handlers: Vec::new() }))
+                }
+            }
+            S::Raise { name, message } => {
+                let msg = message.as_ref().map(|m| {
+                    let e = self.expr(m, Some(STRING));
+                    self.coerce(e, STRING)
+                });
+                match name {
+                    None => {
+                        if self.in_handler == 0 {
+                            self.err(Diagnostic::syntax(sp, "`raise;` re-raises, so it can only stand in an exception handler").with_hint("name the exception: `raise Constraint_Error;`"));
+                            return;
+                        }
+                        StmtKind::Reraise
+                    }
+                    Some(n) => match self.denote(n, true).first() {
+                        Some(Entity::Exc(e)) => StmtKind::Raise(*e, msg),
+                        Some(_) => {
+                            let t = crate::syntax::parser::expr_text(n);
+                            self.err(Diagnostic::name(n.span, format!("`{t}` is not an exception")));
+                            return;
+                        }
+                        None => return,
+                    },
+                }
+            }
+            S::Delay(d) => {
+                let e = self.expr(d, Some(DURATION));
+                StmtKind::Delay(self.coerce(e, DURATION))
+            }
+            S::Accept { .. } | S::Select(_) => {
+                self.err(Diagnostic::unsupported(sp, "a task statement (`accept`/`select`)").with_hint("tasks are not implemented yet in this version of adair"));
+                return;
+            }
+        };
+        out.push(Stmt { kind, span: sp });
+    }
+
+    fn scoped_stmts(&mut self, ss: &[ast::Stmt]) -> Vec<Stmt> {
+        self.push_scope();
+        let r = self.stmts(ss);
+        self.pop_scope();
+        r
+    }
+
+    fn call_stmt(&mut self, e: &ast::Expr) -> Option<StmtKind> {
+        let (prefix, args): (&ast::Expr, &[ast::Arg]) = match &e.kind {
+            ast::ExprKind::Apply(p, a) => (p, a),
+            _ => (e, &[]),
+        };
+        let es = match &prefix.kind {
+            ast::ExprKind::Name(_) | ast::ExprKind::Select(..) => self.denote(prefix, true),
+            _ => Vec::new(),
+        };
+        let fs: Vec<FuncId> = es.iter().filter_map(|x| if let Entity::Func(f) = x { Some(*f) } else { None }).collect();
+        if fs.is_empty() {
+            if !es.is_empty() {
+                let t = crate::syntax::parser::expr_text(prefix);
+                self.err(Diagnostic::ty(e.span, format!("`{t}` is not a procedure")).with_hint("a statement is an assignment `X := ...;` or a procedure call"));
+            } else if !matches!(prefix.kind, ast::ExprKind::Name(_) | ast::ExprKind::Select(..)) {
+                self.err(Diagnostic::syntax(e.span, "this expression is not a statement"));
+            }
+            for a in args {
+                self.expr(&a.value, None);
+            }
+            return None;
+        }
+        let name = crate::syntax::parser::expr_text(prefix);
+        let (f, a) = self.call(&fs, args, None, true, e.span, &name)?;
+        Some(StmtKind::Call(f, a))
+    }
+}

@@ -1,0 +1,263 @@
+//! The type table: every type and subtype of a program, by index.
+
+use super::ir::Ex;
+
+pub type TypeId = u32;
+
+#[derive(Clone, Debug)]
+pub enum TypeKind {
+    /// Signed integer types (Integer, user `range` types, their derivations).
+    Integer,
+    /// Floating point types (Float, `digits` types) and Duration.
+    Float,
+    /// Enumerations, including Boolean and Character (positions 0..n).
+    Enum(Vec<String>),
+    Array {
+        index: Vec<TypeId>,
+        elem: TypeId,
+        /// Bounds of a constrained array type, as expressions (often static).
+        bounds: Option<Vec<(Ex, Ex)>>,
+    },
+    Record(Vec<Field>),
+    Access(TypeId),
+    /// `type T;` not yet completed.
+    Incomplete,
+    /// The type of integer literals and named numbers.
+    UnivInt,
+    /// The type of real literals.
+    UnivReal,
+    /// The type of `null`.
+    Null,
+    /// An aggregate or allocator before its type is known from context.
+    AnyComposite,
+    /// `Ada.Exceptions.Exception_Occurrence`.
+    Occurrence,
+    /// `Ada.Calendar.Time` (seconds of virtual time).
+    Time,
+    /// A type the checker could not determine (after an error).
+    Error,
+}
+
+#[derive(Clone, Debug)]
+pub struct Field {
+    pub name: String,
+    pub key: String,
+    pub ty: TypeId,
+    pub default: Option<Ex>,
+}
+
+#[derive(Clone, Debug)]
+pub struct TypeInfo {
+    pub name: String,
+    pub kind: TypeKind,
+    /// The type this is a subtype of (itself for a type): subtypes of one base
+    /// are compatible with each other.
+    pub base: TypeId,
+    /// The scalar range constraint, if any (low, high).
+    pub range: Option<(Ex, Ex)>,
+    /// Static bounds of the range, when known: used for `case` coverage and
+    /// static range checks.
+    pub static_range: Option<(i128, i128)>,
+    pub static_frange: Option<(f64, f64)>,
+    /// For an access type's designated incomplete type, completed later.
+    pub full_name: String,
+}
+
+pub const ERROR: TypeId = 0;
+pub const UNIV_INT: TypeId = 1;
+pub const UNIV_REAL: TypeId = 2;
+pub const NULL_T: TypeId = 3;
+pub const ANY_COMPOSITE: TypeId = 4;
+pub const BOOLEAN: TypeId = 5;
+pub const CHARACTER: TypeId = 6;
+pub const INTEGER: TypeId = 7;
+pub const NATURAL: TypeId = 8;
+pub const POSITIVE: TypeId = 9;
+pub const FLOAT: TypeId = 10;
+pub const STRING: TypeId = 11;
+pub const DURATION: TypeId = 12;
+pub const OCCURRENCE: TypeId = 13;
+pub const TIME: TypeId = 14;
+
+pub const INT_FIRST: i128 = i32::MIN as i128;
+pub const INT_LAST: i128 = i32::MAX as i128;
+
+#[derive(Clone, Debug, Default)]
+pub struct Types {
+    pub list: Vec<TypeInfo>,
+}
+
+impl Types {
+    pub fn get(&self, t: TypeId) -> &TypeInfo {
+        &self.list[t as usize]
+    }
+    pub fn base(&self, t: TypeId) -> TypeId {
+        self.list[t as usize].base
+    }
+    pub fn kind(&self, t: TypeId) -> &TypeKind {
+        &self.list[self.base(t) as usize].kind
+    }
+    pub fn name(&self, t: TypeId) -> &str {
+        &self.list[t as usize].name
+    }
+    pub fn add(&mut self, name: &str, kind: TypeKind) -> TypeId {
+        let id = self.list.len() as TypeId;
+        self.list.push(TypeInfo {
+            name: name.to_string(),
+            kind,
+            base: id,
+            range: None,
+            static_range: None,
+            static_frange: None,
+            full_name: name.to_string(),
+        });
+        id
+    }
+    pub fn add_subtype(&mut self, name: &str, of: TypeId) -> TypeId {
+        let id = self.list.len() as TypeId;
+        let mut info = self.list[of as usize].clone();
+        info.name = name.to_string();
+        info.full_name = name.to_string();
+        info.base = self.base(of);
+        self.list.push(info);
+        id
+    }
+    pub fn is_integer(&self, t: TypeId) -> bool {
+        matches!(self.kind(t), TypeKind::Integer | TypeKind::UnivInt)
+    }
+    pub fn is_float(&self, t: TypeId) -> bool {
+        matches!(self.kind(t), TypeKind::Float | TypeKind::UnivReal)
+    }
+    pub fn is_numeric(&self, t: TypeId) -> bool {
+        self.is_integer(t) || self.is_float(t)
+    }
+    pub fn is_discrete(&self, t: TypeId) -> bool {
+        matches!(self.kind(t), TypeKind::Integer | TypeKind::UnivInt | TypeKind::Enum(_))
+    }
+    pub fn is_scalar(&self, t: TypeId) -> bool {
+        self.is_discrete(t) || self.is_float(t) || self.base(t) == TIME
+    }
+    pub fn is_universal(&self, t: TypeId) -> bool {
+        matches!(self.kind(t), TypeKind::UnivInt | TypeKind::UnivReal)
+    }
+    pub fn is_array(&self, t: TypeId) -> bool {
+        matches!(self.kind(t), TypeKind::Array { .. })
+    }
+    pub fn is_access(&self, t: TypeId) -> bool {
+        matches!(self.kind(t), TypeKind::Access(_))
+    }
+    /// Array information of `t` (which may be a constrained subtype).
+    pub fn array(&self, t: TypeId) -> Option<(&[TypeId], TypeId, Option<&Vec<(Ex, Ex)>>)> {
+        match &self.list[t as usize].kind {
+            TypeKind::Array { index, elem, bounds } => Some((index, *elem, bounds.as_ref())),
+            _ => None,
+        }
+    }
+    pub fn fields(&self, t: TypeId) -> Option<&[Field]> {
+        match self.kind(t) {
+            TypeKind::Record(f) => Some(f),
+            _ => None,
+        }
+    }
+    pub fn enum_lits(&self, t: TypeId) -> Option<&[String]> {
+        match self.kind(t) {
+            TypeKind::Enum(l) => Some(l),
+            _ => None,
+        }
+    }
+    pub fn designated(&self, t: TypeId) -> Option<TypeId> {
+        match self.kind(t) {
+            TypeKind::Access(d) => Some(*d),
+            _ => None,
+        }
+    }
+
+    /// Can a value of type `from` be used where `to` is expected?
+    pub fn compatible(&self, from: TypeId, to: TypeId) -> bool {
+        if from == ERROR || to == ERROR {
+            return true;
+        }
+        let (bf, bt) = (self.base(from), self.base(to));
+        if bf == bt {
+            return true;
+        }
+        match (self.kind(from), self.kind(to)) {
+            (TypeKind::UnivInt, TypeKind::Integer) => true,
+            (TypeKind::UnivReal, TypeKind::Float) => true,
+            (TypeKind::Null, TypeKind::Access(_)) => true,
+            (TypeKind::AnyComposite, TypeKind::Array { .. } | TypeKind::Record(_) | TypeKind::Access(_)) => true,
+            (TypeKind::Integer, TypeKind::UnivInt) | (TypeKind::Float, TypeKind::UnivReal) => true,
+            _ => false,
+        }
+    }
+
+    /// Static bounds of a discrete subtype, if known.
+    pub fn discrete_bounds(&self, t: TypeId) -> Option<(i128, i128)> {
+        let info = self.get(t);
+        if let Some(r) = info.static_range {
+            return Some(r);
+        }
+        match self.kind(t) {
+            TypeKind::Enum(l) => Some((0, l.len() as i128 - 1)),
+            _ => None,
+        }
+    }
+
+    /// The predefined types, at fixed ids.
+    pub fn standard() -> Types {
+        let mut t = Types::default();
+        let e = t.add("<error>", TypeKind::Error);
+        debug_assert_eq!(e, ERROR);
+        t.add("universal_integer", TypeKind::UnivInt);
+        t.add("universal_real", TypeKind::UnivReal);
+        t.add("null", TypeKind::Null);
+        t.add("aggregate", TypeKind::AnyComposite);
+        t.add("Boolean", TypeKind::Enum(vec!["FALSE".into(), "TRUE".into()]));
+        let chars = (0u32..256)
+            .map(|c| char::from_u32(c).map(char_image).unwrap_or_default())
+            .collect();
+        t.add("Character", TypeKind::Enum(chars));
+        let int = t.add("Integer", TypeKind::Integer);
+        t.list[int as usize].range = Some((Ex::int(INT_FIRST as i64), Ex::int(INT_LAST as i64)));
+        t.list[int as usize].static_range = Some((INT_FIRST, INT_LAST));
+        let nat = t.add_subtype("Natural", INTEGER);
+        t.list[nat as usize].range = Some((Ex::int(0), Ex::int(INT_LAST as i64)));
+        t.list[nat as usize].static_range = Some((0, INT_LAST));
+        let pos = t.add_subtype("Positive", INTEGER);
+        t.list[pos as usize].range = Some((Ex::int(1), Ex::int(INT_LAST as i64)));
+        t.list[pos as usize].static_range = Some((1, INT_LAST));
+        let f = t.add("Float", TypeKind::Float);
+        t.list[f as usize].static_frange = Some((-f32::MAX as f64, f32::MAX as f64));
+        t.add(
+            "String",
+            TypeKind::Array {
+                index: vec![POSITIVE],
+                elem: CHARACTER,
+                bounds: None,
+            },
+        );
+        t.add("Duration", TypeKind::Float);
+        t.add("Exception_Occurrence", TypeKind::Occurrence);
+        t.add("Time", TypeKind::Time);
+        t
+    }
+}
+
+/// How GNAT's `Character'Image` shows a character: `'A'`, or the name of a
+/// control character (`NUL`, `LF`, ...).
+pub fn char_image(c: char) -> String {
+    const CTRL: [&str; 32] = [
+        "NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS", "HT", "LF", "VT", "FF", "CR", "SO", "SI", "DLE", "DC1",
+        "DC2", "DC3", "DC4", "NAK", "SYN", "ETB", "CAN", "EM", "SUB", "ESC", "FS", "GS", "RS", "US",
+    ];
+    let n = c as u32;
+    if n < 32 {
+        CTRL[n as usize].to_string()
+    } else if n == 127 {
+        "DEL".to_string()
+    } else if (128..160).contains(&n) {
+        format!("Character'Val({n})")
+    } else {
+        format!("'{c}'")
+    }
+}
