@@ -1,7 +1,14 @@
 //! adair: an interpreter, checker and simulator for AdaIR, Ada for industrial robots.
+//!
+//! Layers (arrows point one way): `syntax` -> `check` -> `interp`; `diag`
+//! is the one diagnostic type; `driver` ties a session together; only the
+//! binary prints.
 #![forbid(unsafe_code)]
 #![deny(clippy::print_stdout, clippy::print_stderr)]
 
-pub mod diag;
 pub mod check;
+pub mod diag;
+pub mod driver;
+pub mod golden;
+pub mod interp;
 pub mod syntax;

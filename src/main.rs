@@ -1,9 +1,143 @@
-fn main() {
-    let path = std::env::args().nth(1).unwrap_or_default();
-    let src = std::fs::read_to_string(&path).unwrap_or_default();
-    let mut sources = adair::diag::Sources::default();
-    let id = sources.add(path.clone(), src.clone());
-    let (ast, diags) = adair::syntax::parse_source(&src, id);
-    print!("{}", adair::diag::render(&diags, &sources, false));
-    println!("{:#?}", ast.map(|a| a.items.len()));
+//! The `adair` command line.
+
+use adair::driver::{Outcome, Session};
+use clap::{Parser, Subcommand};
+use std::io::IsTerminal;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(name = "adair", version, about = "AdaIR: Ada for industrial robots. Check, run and test robot programs.")]
+struct Cli {
+    /// Colours in diagnostics: auto (only on a terminal, and not with NO_COLOR), always, never.
+    #[arg(long, global = true, default_value = "auto", value_parser = ["auto", "always", "never"])]
+    color: String,
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Check the whole program, then run it. Exit 0; 1 on an unhandled exception; 2 on a check error.
+    Run {
+        /// The program (.air or .adb).
+        file: PathBuf,
+    },
+    /// Parse and check only; report every diagnostic; nothing runs.
+    Check {
+        #[arg(required = true)]
+        files: Vec<PathBuf>,
+    },
+    /// Golden tests: run each X.air and compare its output with X.out beside it.
+    Test {
+        /// Scripts or directories (default: the current directory).
+        paths: Vec<PathBuf>,
+        /// Write the actual output into the .out files.
+        #[arg(long)]
+        bless: bool,
+    },
+}
+
+fn color(choice: &str) -> bool {
+    match choice {
+        "always" => true,
+        "never" => false,
+        _ => std::env::var_os("NO_COLOR").is_none() && std::io::stderr().is_terminal(),
+    }
+}
+
+fn read(path: &PathBuf) -> Result<String, ExitCode> {
+    std::fs::read_to_string(path).map_err(|e| {
+        eprintln!("adair: cannot read {}: {e}", path.display());
+        ExitCode::from(2)
+    })
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    let color = color(&cli.color);
+    // Deep recursion in user programs needs a big stack for the tree walker.
+    let child = std::thread::Builder::new().stack_size(512 << 20).spawn(move || real_main(cli.command, color));
+    match child.map(|h| h.join()) {
+        Ok(Ok(code)) => ExitCode::from(code),
+        _ => {
+            eprintln!("adair: internal error");
+            ExitCode::from(3)
+        }
+    }
+}
+
+fn real_main(command: Option<Command>, color: bool) -> u8 {
+    match command {
+        None => {
+            eprintln!("adair: no command given; try `adair run FILE.air` or `adair --help`");
+            2
+        }
+        Some(Command::Run { file }) => {
+            let text = match read(&file) {
+                Ok(t) => t,
+                Err(_) => return 2,
+            };
+            let mut s = Session::new(Box::new(std::io::BufWriter::new(std::io::stdout())));
+            let outcome = s.run_source(&file.to_string_lossy(), &text);
+            match &outcome {
+                Outcome::Ok => {}
+                Outcome::CheckFailed(d) => eprint!("{}", adair::diag::render(d, &s.sources, color)),
+                Outcome::Raised(d) => eprint!("{}", adair::diag::render(std::slice::from_ref(d), &s.sources, color)),
+            }
+            outcome.exit_code() as u8
+        }
+        Some(Command::Check { files }) => {
+            let mut worst = 0;
+            for f in &files {
+                let text = match read(f) {
+                    Ok(t) => t,
+                    Err(_) => return 2,
+                };
+                let mut s = Session::new(Box::new(std::io::sink()));
+                if let Err(d) = s.check_source(&f.to_string_lossy(), &text, false) {
+                    eprint!("{}", adair::diag::render(&d, &s.sources, color));
+                    worst = 2;
+                }
+            }
+            worst
+        }
+        Some(Command::Test { paths, bless }) => {
+            let paths = if paths.is_empty() { vec![PathBuf::from(".")] } else { paths };
+            let scripts = match adair::golden::collect(&paths) {
+                Ok(s) => s,
+                Err(e) => {
+                    eprintln!("adair: {e}");
+                    return 2;
+                }
+            };
+            let (mut pass, mut fail) = (0, 0);
+            for s in &scripts {
+                match adair::golden::check_case(s, bless) {
+                    adair::golden::Verdict::Pass => pass += 1,
+                    adair::golden::Verdict::Blessed => {
+                        println!("blessed {}", s.display());
+                        pass += 1;
+                    }
+                    adair::golden::Verdict::Missing => {
+                        println!("FAIL {}: no {} (run with --bless to create it)", s.display(), adair::golden::expected_path(s).display());
+                        fail += 1;
+                    }
+                    adair::golden::Verdict::Differs { expected, actual } => {
+                        println!("FAIL {}\n{}", s.display(), adair::golden::diff(&expected, &actual));
+                        fail += 1;
+                    }
+                }
+            }
+            println!("{pass} passed, {fail} failed");
+            if fail > 0 { 1 } else { 0 }
+        }
+    }
 }

@@ -168,6 +168,15 @@ impl Checker {
                 self.declare(name, Entity::Exc(i as ExcId));
             }
         }
+        let io = self.package("Ada.IO_Exceptions");
+        for (i, n) in ["name_error", "use_error", "data_error", "end_error"].iter().enumerate() {
+            self.packages[io].names.insert(n.to_string(), vec![Entity::Exc(4 + i as ExcId)]);
+        }
+        let ex = self.package("Ada.Exceptions");
+        self.packages[ex].names.insert("exception_occurrence".into(), vec![Entity::Type(OCCURRENCE)]);
+        let cal = self.package("Ada.Calendar");
+        self.packages[cal].names.insert("time".into(), vec![Entity::Type(TIME)]);
+        self.packages[cal].names.insert("duration".into(), vec![Entity::Type(DURATION)]);
         let dur = self.types.list.get_mut(DURATION as usize);
         if let Some(d) = dur {
             d.static_frange = Some((-86400.0 * 365.0 * 100.0, 86400.0 * 365.0 * 100.0));
@@ -243,7 +252,8 @@ impl Checker {
                     found.push(e.clone());
                 }
             }
-            if let Some((p, true)) = s.package
+            if let Some((p, is_body)) = s.package
+                && (is_body || !s.names.contains_key(key))
                 && let Some(es) = self.packages[p].names.get(key)
             {
                 let overloadable = es.iter().all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));

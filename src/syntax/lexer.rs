@@ -204,6 +204,20 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
     (toks, diags)
 }
 
+/// Evaluates a numeric literal (decimal or based) on its own, as `'Value` needs.
+pub fn numeric_literal(text: &str) -> Option<Token> {
+    let mut lx = Raw::lexer(text);
+    let tok = lx.next()?;
+    if lx.span().end != text.len() || lx.next().is_some() {
+        return None;
+    }
+    match tok {
+        Ok(Raw::Decimal) => decimal(text).ok(),
+        Ok(Raw::Based) => based(text).ok(),
+        _ => None,
+    }
+}
+
 fn digits_ok(s: &str) -> bool {
     !s.is_empty() && !s.starts_with('_') && !s.ends_with('_') && !s.contains("__")
 }

@@ -1,0 +1,114 @@
+//! One session of adair: the sources, the checker state and the machine.
+//! `adair run`, `adair check`, the golden runner and the REPL all go through it.
+
+use crate::check::Checker;
+use crate::check::ir::{FuncId, Stmt};
+use crate::diag::{Diagnostic, Phase, Sources, Span};
+use crate::interp::{Machine, Occurrence, builtins};
+use std::io::Write;
+
+/// The predefined library, embedded so the binary needs no files beside it.
+pub const STDLIB: &[(&str, &str)] = &[("stdlib/ada.air", include_str!("../stdlib/ada.air"))];
+
+/// Packages visible without `with` in script mode and the REPL.
+pub const SCRIPT_USES: &[&str] = &[
+    "Ada.Text_IO",
+    "Ada.Integer_Text_IO",
+    "Ada.Float_Text_IO",
+    "Ada.Numerics",
+    "Ada.Numerics.Elementary_Functions",
+];
+
+pub struct Session {
+    pub sources: Sources,
+    pub checker: Checker,
+    pub machine: Machine,
+}
+
+/// How a run ended.
+#[derive(Debug)]
+pub enum Outcome {
+    Ok,
+    /// Check errors: nothing ran.
+    CheckFailed(Vec<Diagnostic>),
+    /// An exception left the program.
+    Raised(Diagnostic),
+}
+
+impl Outcome {
+    pub fn exit_code(&self) -> i32 {
+        match self {
+            Outcome::Ok => 0,
+            Outcome::Raised(_) => 1,
+            Outcome::CheckFailed(_) => 2,
+        }
+    }
+}
+
+impl Session {
+    pub fn new(out: Box<dyn Write>) -> Session {
+        let mut s = Session {
+            sources: Sources::default(),
+            checker: Checker::new(builtins::known),
+            machine: Machine::new(out),
+        };
+        for (name, text) in STDLIB {
+            let (stmts, _) = s.check_source(name, text, false).unwrap_or_else(|d| {
+                // The embedded library is tested; a failure here is a bug in adair.
+                panic!("stdlib does not check: {d:?}")
+            });
+            debug_assert!(stmts.is_empty() || !stmts.is_empty());
+            let _ = s.machine.run(&s.checker, &stmts, None);
+        }
+        s
+    }
+
+    /// Lexes, parses and checks one source. `script` forces script mode (the
+    /// REPL); otherwise a file with top-level statements is a script.
+    pub fn check_source(&mut self, name: &str, text: &str, script: bool) -> Result<(Vec<Stmt>, Option<FuncId>), Vec<Diagnostic>> {
+        let id = self.sources.add(name, text);
+        self.machine.add_source(id, name, text);
+        self.checker.add_text(id, text);
+        let (unit, mut diags) = crate::syntax::parse_source(text, id);
+        let Some(unit) = unit else { return Err(diags) };
+        let is_script = script || unit.items.iter().any(|i| matches!(i, crate::syntax::ast::TopItem::Stmt(_)));
+        if is_script {
+            for p in SCRIPT_USES {
+                self.checker.use_everywhere(p);
+            }
+        }
+        let (stmts, main) = self.checker.check_unit(&unit);
+        diags.extend(self.checker.take_diags());
+        if !diags.is_empty() {
+            diags.sort_by_key(|d| (d.span.context, d.span.start));
+            return Err(diags);
+        }
+        Ok((stmts, if is_script { None } else { main }))
+    }
+
+    /// Checks and runs a whole program.
+    pub fn run_source(&mut self, name: &str, text: &str) -> Outcome {
+        let (stmts, main) = match self.check_source(name, text, false) {
+            Ok(x) => x,
+            Err(d) => return Outcome::CheckFailed(d),
+        };
+        let r = self.machine.run(&self.checker, &stmts, main);
+        self.machine.finish();
+        match r {
+            Ok(()) => Outcome::Ok,
+            Err(o) => Outcome::Raised(self.exception_diag(&o)),
+        }
+    }
+
+    /// The diagnostic for an exception that left the program.
+    pub fn exception_diag(&self, o: &Occurrence) -> Diagnostic {
+        let name = &self.checker.excs[o.exc as usize].name;
+        let msg = if o.message.is_empty() { format!("raised {name}") } else { format!("raised {name} : {}", o.message) };
+        let mut d = Diagnostic::new(Phase::Runtime, o.span, msg).with_label(format!("{name} raised here"));
+        let real = |s: &Span| !(s.start == 0 && s.end == 0);
+        for s in o.chain.iter().filter(|s| real(s) && **s != o.span) {
+            d = d.with_note(*s, "called from here");
+        }
+        d
+    }
+}

@@ -1,0 +1,135 @@
+//! The golden-output runner behind `adair test` and the project's own tests:
+//! each `X.air` runs and its output is compared with `X.out` beside it.
+//!
+//! The expected text is the program's standard output, then, if anything went
+//! to standard error (diagnostics, without colour), a line `-- stderr --` and
+//! that text, then, for a non-zero exit status, a line `-- exit: N`.
+
+use crate::driver::{Outcome, Session};
+use std::cell::RefCell;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+
+/// A `Write` that appends to a shared buffer.
+#[derive(Clone, Default)]
+pub struct SharedBuf(pub Rc<RefCell<Vec<u8>>>);
+
+impl Write for SharedBuf {
+    fn write(&mut self, b: &[u8]) -> std::io::Result<usize> {
+        self.0.borrow_mut().extend_from_slice(b);
+        Ok(b.len())
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+impl SharedBuf {
+    pub fn take(&self) -> String {
+        String::from_utf8_lossy(&std::mem::take(&mut *self.0.borrow_mut())).into_owned()
+    }
+}
+
+/// Runs a script as `adair run` would (no colour) and returns its golden text.
+pub fn run_case(path: &Path) -> String {
+    let name = path.to_string_lossy().replace('\\', "/");
+    let text = match std::fs::read_to_string(path) {
+        Ok(t) => t,
+        Err(e) => return format!("-- stderr --\nerror: cannot read {name}: {e}\n-- exit: 2\n"),
+    };
+    let buf = SharedBuf::default();
+    let mut s = Session::new(Box::new(buf.clone()));
+    s.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+    let outcome = s.run_source(&name, &text);
+    let mut out = buf.take();
+    let stderr = match &outcome {
+        Outcome::Ok => String::new(),
+        Outcome::CheckFailed(d) => crate::diag::render(d, &s.sources, false),
+        Outcome::Raised(d) => crate::diag::render(std::slice::from_ref(d), &s.sources, false),
+    };
+    if !stderr.is_empty() {
+        out.push_str("-- stderr --\n");
+        out.push_str(&stderr);
+    }
+    let code = outcome.exit_code();
+    if code != 0 {
+        out.push_str(&format!("-- exit: {code}\n"));
+    }
+    out
+}
+
+/// The expected-output file of a script.
+pub fn expected_path(script: &Path) -> PathBuf {
+    script.with_extension("out")
+}
+
+#[derive(Debug)]
+pub enum Verdict {
+    Pass,
+    Blessed,
+    Missing,
+    Differs { expected: String, actual: String },
+}
+
+pub fn check_case(script: &Path, bless: bool) -> Verdict {
+    let actual = run_case(script);
+    let exp_path = expected_path(script);
+    if bless {
+        let tmp = exp_path.with_extension("out.tmp");
+        if std::fs::write(&tmp, &actual).and_then(|_| std::fs::rename(&tmp, &exp_path)).is_ok() {
+            return Verdict::Blessed;
+        }
+    }
+    match std::fs::read_to_string(&exp_path) {
+        Ok(expected) if expected == actual => Verdict::Pass,
+        Ok(expected) => Verdict::Differs { expected, actual },
+        Err(_) => Verdict::Missing,
+    }
+}
+
+/// All `.air` scripts under the given files and directories, sorted.
+pub fn collect(paths: &[PathBuf]) -> std::io::Result<Vec<PathBuf>> {
+    let mut out = Vec::new();
+    for p in paths {
+        if p.is_dir() {
+            let mut stack = vec![p.clone()];
+            while let Some(d) = stack.pop() {
+                for e in std::fs::read_dir(&d)? {
+                    let e = e?.path();
+                    if e.is_dir() {
+                        stack.push(e);
+                    } else if e.extension().is_some_and(|x| x == "air") {
+                        out.push(e);
+                    }
+                }
+            }
+        } else if p.exists() {
+            out.push(p.clone());
+        } else {
+            return Err(std::io::Error::new(std::io::ErrorKind::NotFound, format!("{} does not exist", p.display())));
+        }
+    }
+    out.sort();
+    Ok(out)
+}
+
+/// A line diff of expected and actual text, for failure reports.
+pub fn diff(expected: &str, actual: &str) -> String {
+    let (e, a): (Vec<&str>, Vec<&str>) = (expected.lines().collect(), actual.lines().collect());
+    let mut out = String::new();
+    for i in 0..e.len().max(a.len()) {
+        match (e.get(i), a.get(i)) {
+            (Some(x), Some(y)) if x == y => {}
+            (x, y) => {
+                if let Some(x) = x {
+                    out.push_str(&format!("{:>4} - {x}\n", i + 1));
+                }
+                if let Some(y) = y {
+                    out.push_str(&format!("{:>4} + {y}\n", i + 1));
+                }
+            }
+        }
+    }
+    out
+}

@@ -1,0 +1,230 @@
+//! Native bodies of the predefined library's imported subprograms
+//! (`with Import, External_Name => "..."` in `stdlib/`).
+
+use super::value::{self, Value};
+use super::{Flow, Native, R, Run};
+use crate::check;
+use crate::diag::Span;
+
+/// The native bound to an import name.
+pub fn lookup(name: &str) -> Option<Native> {
+    TABLE.iter().find(|(n, _)| *n == name).map(|(_, f)| *f)
+}
+
+pub fn known(name: &str) -> bool {
+    lookup(name).is_some()
+}
+
+const TABLE: &[(&str, Native)] = &[
+    ("put_string", put_string),
+    ("put_char", put_char),
+    ("put_line", put_line),
+    ("new_line", new_line),
+    ("get_line_fn", get_line_fn),
+    ("get_line", get_line),
+    ("put_int", put_int),
+    ("put_float", put_float),
+    ("sqrt", sqrt),
+    ("sin", |_, a, _| f1(a, f64::sin)),
+    ("cos", |_, a, _| f1(a, f64::cos)),
+    ("tan", |_, a, _| f1(a, f64::tan)),
+    ("cot", |_, a, _| f1(a, |x| 1.0 / x.tan())),
+    ("arcsin", arcsin),
+    ("arccos", arccos),
+    ("arctan", |_, a, _| Ok(Some(Value::Real(a[0].real().atan2(a[1].real()))))),
+    ("exp", |_, a, _| f1(a, f64::exp)),
+    ("log", log),
+    ("log_base", log_base),
+    ("float_pow", float_pow),
+    ("exception_name", exception_name),
+    ("exception_message", exception_message),
+    ("exception_information", exception_information),
+    ("clock", |r, _, _| Ok(Some(Value::Real(r.m.clock.now())))),
+    ("time_diff", |_, a, _| Ok(Some(Value::Real(a[0].real() - a[1].real())))),
+    ("time_add", |_, a, _| Ok(Some(Value::Real(a[0].real() + a[1].real())))),
+    ("time_sub", |_, a, _| Ok(Some(Value::Real(a[0].real() - a[1].real())))),
+    ("time_lt", |_, a, _| Ok(Some(Value::Int((a[0].real() < a[1].real()) as i64)))),
+    ("time_le", |_, a, _| Ok(Some(Value::Int((a[0].real() <= a[1].real()) as i64)))),
+    ("time_gt", |_, a, _| Ok(Some(Value::Int((a[0].real() > a[1].real()) as i64)))),
+    ("time_ge", |_, a, _| Ok(Some(Value::Int((a[0].real() >= a[1].real()) as i64)))),
+    ("seconds", |_, a, _| Ok(Some(Value::Real(a[0].real().rem_euclid(86_400.0))))),
+];
+
+fn f1(a: &[Value], f: fn(f64) -> f64) -> R<Option<Value>> {
+    Ok(Some(Value::Real(f(a[0].real()))))
+}
+
+fn argument_error(r: &Run, what: &str, span: Span) -> Flow {
+    let e = r.exc_by_name("ADA.NUMERICS.ARGUMENT_ERROR");
+    r.raise(e, what.to_string(), span)
+}
+
+fn sqrt(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let x = a[0].real();
+    if x < 0.0 {
+        return Err(argument_error(r, "Sqrt of a negative number", span));
+    }
+    Ok(Some(Value::Real(x.sqrt())))
+}
+
+fn arcsin(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let x = a[0].real();
+    if x.abs() > 1.0 {
+        return Err(argument_error(r, "Arcsin outside -1.0 .. 1.0", span));
+    }
+    Ok(Some(Value::Real(x.asin())))
+}
+
+fn arccos(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let x = a[0].real();
+    if x.abs() > 1.0 {
+        return Err(argument_error(r, "Arccos outside -1.0 .. 1.0", span));
+    }
+    Ok(Some(Value::Real(x.acos())))
+}
+
+fn log(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let x = a[0].real();
+    if x < 0.0 {
+        return Err(argument_error(r, "Log of a negative number", span));
+    }
+    if x == 0.0 {
+        return Err(r.raise(check::CONSTRAINT_ERROR, "Log of zero", span));
+    }
+    Ok(Some(Value::Real(x.ln())))
+}
+
+fn log_base(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let (x, b) = (a[0].real(), a[1].real());
+    if x < 0.0 || b <= 0.0 || b == 1.0 {
+        return Err(argument_error(r, "Log with a bad argument or base", span));
+    }
+    Ok(Some(Value::Real(x.ln() / b.ln())))
+}
+
+fn float_pow(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let (x, y) = (a[0].real(), a[1].real());
+    if x < 0.0 || (x == 0.0 && y == 0.0) {
+        return Err(argument_error(r, "\"**\" with a negative base or 0.0 ** 0.0", span));
+    }
+    Ok(Some(Value::Real(x.powf(y))))
+}
+
+fn put_string(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
+    let s = a[0].text();
+    r.m.write_str(&s);
+    Ok(None)
+}
+
+fn put_char(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
+    let c = char::from_u32(a[0].int() as u32).unwrap_or('?');
+    r.m.write_str(&c.to_string());
+    Ok(None)
+}
+
+fn put_line(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
+    let mut s = a[0].text();
+    s.push('\n');
+    r.m.write_str(&s);
+    Ok(None)
+}
+
+fn new_line(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
+    let n = a[0].int().max(0) as usize;
+    r.m.write_str(&"\n".repeat(n));
+    Ok(None)
+}
+
+fn read_line(r: &mut Run, span: Span) -> R<String> {
+    let _ = r.m.out.flush();
+    r.m.col = 0;
+    let mut line = String::new();
+    match r.m.input.read_line(&mut line) {
+        Ok(0) | Err(_) => Err(r.raise(check::END_ERROR, "end of file", span)),
+        Ok(_) => {
+            while line.ends_with('\n') || line.ends_with('\r') {
+                line.pop();
+            }
+            Ok(line)
+        }
+    }
+}
+
+fn get_line_fn(r: &mut Run, _: &mut [Value], span: Span) -> R<Option<Value>> {
+    let l = read_line(r, span)?;
+    Ok(Some(Value::str(&l)))
+}
+
+/// `Get_Line (Item, Last)`: fills Item from its first index, Last is the last
+/// index written.
+fn get_line(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let l = read_line(r, span)?;
+    let Value::Arr(arr) = &mut a[0] else { return Ok(None) };
+    let arr = std::rc::Rc::make_mut(arr);
+    let first = arr.bounds[0].0;
+    let mut n = 0;
+    for (i, c) in l.chars().enumerate() {
+        if i >= arr.data.len() {
+            break;
+        }
+        arr.data[i] = Value::Int(c as i64);
+        n = i + 1;
+    }
+    a[1] = Value::Int(first + n as i64 - 1);
+    Ok(None)
+}
+
+use std::io::Write as _;
+
+fn put_int(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
+    let (v, width, base) = (a[0].int(), a[1].int().max(0) as usize, a[2].int());
+    let s = if base == 10 || !(2..=16).contains(&base) {
+        v.to_string()
+    } else {
+        let mut digits = String::new();
+        let mut x = v.unsigned_abs();
+        if x == 0 {
+            digits.push('0');
+        }
+        while x > 0 {
+            digits.insert(0, std::char::from_digit((x % base as u64) as u32, base as u32).unwrap_or('?').to_ascii_uppercase());
+            x /= base as u64;
+        }
+        format!("{}{base}#{digits}#", if v < 0 { "-" } else { "" })
+    };
+    r.m.write_str(&value::pad_left(&s, width));
+    Ok(None)
+}
+
+fn put_float(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
+    let s = value::put_float(a[0].real(), a[1].int().max(0) as usize, a[2].int().max(0) as usize, a[3].int().max(0) as usize);
+    r.m.write_str(&s);
+    Ok(None)
+}
+
+fn occurrence(a: &[Value]) -> Option<&super::Occurrence> {
+    match &a[0] {
+        Value::Occ(o) => Some(o),
+        _ => None,
+    }
+}
+
+fn exception_name(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
+    let name = occurrence(a).map(|o| r.c.excs[o.exc as usize].name.clone()).unwrap_or_default();
+    Ok(Some(Value::str(&name)))
+}
+
+fn exception_message(_: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
+    let m = occurrence(a).map(|o| o.message.clone()).unwrap_or_default();
+    Ok(Some(Value::str(&m)))
+}
+
+fn exception_information(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
+    let s = occurrence(a)
+        .map(|o| {
+            let name = &r.c.excs[o.exc as usize].name;
+            if o.message.is_empty() { format!("raised {name}\n") } else { format!("raised {name} : {}\n", o.message) }
+        })
+        .unwrap_or_default();
+    Ok(Some(Value::str(&s)))
+}

@@ -1,0 +1,1125 @@
+//! The tree-walking interpreter over the checked program.
+//!
+//! [`Machine`] holds the state that outlives one run (globals, output, clock,
+//! the native bindings), so that the REPL can run entry after entry. A run
+//! borrows the checker's tables, in which every name is already a slot or an
+//! index: nothing here looks a name up by string.
+
+pub mod builtins;
+pub mod value;
+
+use crate::check::ir::*;
+use crate::check::types::{TypeId, TypeKind};
+use crate::check::{self, Checker};
+use crate::diag::Span;
+use crate::syntax::ast::Mode;
+use std::cell::RefCell;
+use std::io::Write;
+use std::rc::Rc;
+pub use value::{Array, Occurrence, Value};
+
+/// Why evaluation stopped early: an exception, a `return` or an `exit`.
+#[derive(Debug)]
+pub enum Flow {
+    Raise(Box<Occurrence>),
+    Return(Option<Value>),
+    Exit(u32),
+}
+
+pub type R<T> = Result<T, Flow>;
+
+/// The clock that `Ada.Calendar.Clock` and `delay` read. The simulator
+/// provides a virtual one, so runs are deterministic.
+pub trait Clock {
+    fn now(&self) -> f64;
+    fn sleep(&mut self, seconds: f64);
+}
+
+/// Virtual time that advances only by `delay` (and, later, by motions).
+#[derive(Default)]
+pub struct VirtualClock {
+    pub t: f64,
+}
+
+impl Clock for VirtualClock {
+    fn now(&self) -> f64 {
+        self.t
+    }
+    fn sleep(&mut self, seconds: f64) {
+        if seconds > 0.0 {
+            self.t += seconds;
+        }
+    }
+}
+
+pub type Native = fn(&mut Run, &mut [Value], Span) -> R<Option<Value>>;
+
+pub struct Machine {
+    stack: Vec<Value>,
+    display: Vec<usize>,
+    pub out: Box<dyn Write>,
+    /// Column of the output's current line (GNAT ends an unfinished line at exit).
+    pub col: usize,
+    pub clock: Box<dyn Clock>,
+    natives: Vec<Option<Native>>,
+    depth: usize,
+    calls: Vec<Span>,
+    /// Line starts of each source, for GNAT-style exception messages.
+    files: Vec<(String, Vec<usize>)>,
+    pub input: Box<dyn std::io::BufRead>,
+    pub interrupted: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
+    /// Occurrences being handled (innermost last), for `raise;`.
+    current: Vec<Rc<Occurrence>>,
+}
+
+const MAX_DEPTH: usize = 20_000;
+
+impl Machine {
+    pub fn new(out: Box<dyn Write>) -> Machine {
+        Machine {
+            stack: Vec::new(),
+            display: vec![0; 4],
+            out,
+            col: 0,
+            clock: Box::new(VirtualClock::default()),
+            natives: Vec::new(),
+            depth: 0,
+            calls: Vec::new(),
+            files: Vec::new(),
+            input: Box::new(std::io::BufReader::new(std::io::stdin())),
+            interrupted: None,
+            current: Vec::new(),
+        }
+    }
+
+    pub fn add_source(&mut self, id: u32, name: &str, text: &str) {
+        let id = id as usize;
+        if self.files.len() <= id {
+            self.files.resize(id + 1, (String::new(), Vec::new()));
+        }
+        let mut starts = vec![0];
+        starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        let base = std::path::Path::new(name).file_name().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
+        self.files[id] = (base, starts);
+    }
+
+    fn location(&self, s: Span) -> String {
+        match self.files.get(s.context as usize) {
+            Some((name, starts)) => {
+                let line = starts.partition_point(|&x| x <= s.start);
+                format!("{name}:{line}")
+            }
+            None => String::new(),
+        }
+    }
+
+    /// Runs level-0 statements (a script, a REPL entry or the library level),
+    /// then the main subprogram, if any.
+    pub fn run(&mut self, chk: &Checker, stmts: &[Stmt], main: Option<FuncId>) -> Result<(), Box<Occurrence>> {
+        self.bind_natives(chk);
+        let need = chk.globals as usize;
+        if self.stack.len() < need {
+            self.stack.resize(need, Value::Undef);
+        }
+        self.display[0] = 0;
+        self.depth = 0;
+        self.calls.clear();
+        let mut run = Run { m: self, c: chk };
+        let r = (|| -> R<()> {
+            run.exec_all(stmts)?;
+            if let Some(f) = main {
+                run.call(f, &[], Span { start: 0, end: 0, context: 0 })?;
+            }
+            Ok(())
+        })();
+        // Any frames left by an exception are dropped; level-0 slots stay.
+        run.m.stack.truncate(need);
+        let _ = run.m.out.flush();
+        match r {
+            Ok(()) | Err(Flow::Return(_)) | Err(Flow::Exit(_)) => Ok(()),
+            Err(Flow::Raise(o)) => Err(o),
+        }
+    }
+
+    /// Ends the program's output as GNAT does: an unfinished line gets its newline.
+    pub fn finish(&mut self) {
+        if self.col != 0 {
+            let _ = self.out.write_all(b"\n");
+            self.col = 0;
+        }
+        let _ = self.out.flush();
+    }
+
+    fn bind_natives(&mut self, chk: &Checker) {
+        while self.natives.len() < chk.funcs.len() {
+            let i = self.natives.len();
+            self.natives.push(chk.imports[i].as_deref().and_then(builtins::lookup));
+        }
+    }
+
+    /// The value of a level-0 variable (for the REPL).
+    pub fn global(&self, v: Var) -> Option<&Value> {
+        self.stack.get(v.slot as usize)
+    }
+
+    pub fn write_str(&mut self, s: &str) {
+        let _ = self.out.write_all(s.as_bytes());
+        match s.rfind('\n') {
+            Some(i) => self.col = s.len() - i - 1,
+            None => self.col += s.len(),
+        }
+    }
+}
+
+/// One run: the machine plus the checker's tables.
+pub struct Run<'a> {
+    pub m: &'a mut Machine,
+    pub c: &'a Checker,
+}
+
+enum Step {
+    Index(Vec<i64>, Span),
+    Field(u32),
+    Slice(i64, i64, Span),
+}
+
+impl Run<'_> {
+    pub fn raise(&self, exc: ExcId, msg: impl Into<String>, span: Span) -> Flow {
+        let mut chain: Vec<Span> = self.m.calls.clone();
+        chain.reverse();
+        Flow::Raise(Box::new(Occurrence {
+            exc,
+            message: msg.into(),
+            span,
+            chain,
+        }))
+    }
+
+    /// `Constraint_Error` with GNAT's message form (`file.adb:9 index check failed`).
+    fn check_failed(&self, what: &str, span: Span) -> Flow {
+        let loc = self.m.location(span);
+        self.raise(check::CONSTRAINT_ERROR, format!("{loc} {what}"), span)
+    }
+
+    pub fn exc_by_name(&self, full: &str) -> ExcId {
+        self.c.excs.iter().position(|e| e.name == full).map(|i| i as ExcId).unwrap_or(check::PROGRAM_ERROR)
+    }
+
+    fn slot(&self, v: Var) -> usize {
+        self.m.display[v.level as usize] + v.slot as usize
+    }
+
+    fn exec_all(&mut self, ss: &[Stmt]) -> R<()> {
+        for s in ss {
+            self.exec(s)?;
+        }
+        Ok(())
+    }
+
+    fn exec(&mut self, s: &Stmt) -> R<()> {
+        match &s.kind {
+            StmtKind::Null | StmtKind::ElabType(_) => Ok(()),
+            StmtKind::Init(v, e) => {
+                let val = self.eval(e)?;
+                let i = self.slot(*v);
+                self.m.stack[i] = val;
+                Ok(())
+            }
+            StmtKind::Assign(t, e) => {
+                let val = self.eval(e)?;
+                self.assign(t, val)
+            }
+            StmtKind::Call(f, args) => {
+                self.call(*f, args, s.span)?;
+                Ok(())
+            }
+            StmtKind::Builtin(..) => Ok(()),
+            StmtKind::If(arms, els) => {
+                for (c, body) in arms {
+                    if self.eval(c)?.int() != 0 {
+                        return self.exec_all(body);
+                    }
+                }
+                self.exec_all(els)
+            }
+            StmtKind::Case(subj, arms, others) => {
+                let v = self.eval(subj)?.int();
+                for (ranges, body) in arms {
+                    if ranges.iter().any(|(l, h)| *l <= v && v <= *h) {
+                        return self.exec_all(body);
+                    }
+                }
+                match others {
+                    Some(b) => self.exec_all(b),
+                    None => Err(self.check_failed("case choice not covered", s.span)),
+                }
+            }
+            StmtKind::Loop { id, body } => loop {
+                self.poll(s.span)?;
+                match self.exec_all(body) {
+                    Ok(()) => {}
+                    Err(Flow::Exit(x)) if x == *id => return Ok(()),
+                    Err(e) => return Err(e),
+                }
+            },
+            StmtKind::While { id, cond, body } => {
+                while self.eval(cond)?.int() != 0 {
+                    self.poll(s.span)?;
+                    match self.exec_all(body) {
+                        Ok(()) => {}
+                        Err(Flow::Exit(x)) if x == *id => return Ok(()),
+                        Err(e) => return Err(e),
+                    }
+                }
+                Ok(())
+            }
+            StmtKind::For { id, var, lo, hi, reverse, body } => {
+                let (l, h) = (self.eval(lo)?.int(), self.eval(hi)?.int());
+                if l > h {
+                    return Ok(());
+                }
+                let slot = self.slot(*var);
+                let mut i = if *reverse { h } else { l };
+                loop {
+                    self.m.stack[slot] = Value::Int(i);
+                    match self.exec_all(body) {
+                        Ok(()) => {}
+                        Err(Flow::Exit(x)) if x == *id => return Ok(()),
+                        Err(e) => return Err(e),
+                    }
+                    if *reverse {
+                        if i == l {
+                            break;
+                        }
+                        i -= 1;
+                    } else {
+                        if i == h {
+                            break;
+                        }
+                        i += 1;
+                    }
+                    self.poll(s.span)?;
+                }
+                Ok(())
+            }
+            StmtKind::Exit(id, cond) => {
+                if let Some(c) = cond
+                    && self.eval(c)?.int() == 0
+                {
+                    return Ok(());
+                }
+                Err(Flow::Exit(*id))
+            }
+            StmtKind::Return(v) => {
+                let val = match v {
+                    Some(e) => Some(self.eval(e)?),
+                    None => None,
+                };
+                Err(Flow::Return(val))
+            }
+            StmtKind::Block(b) => self.body(b),
+            StmtKind::Raise(e, msg) => {
+                let m = match msg {
+                    Some(x) => self.eval(x)?.text(),
+                    None => self.m.location(s.span),
+                };
+                Err(self.raise(*e, m, s.span))
+            }
+            StmtKind::Reraise => {
+                // The handler keeps the current occurrence in a hidden slot.
+                match self.m.current.last().cloned() {
+                    Some(o) => Err(Flow::Raise(Box::new((*o).clone()))),
+                    None => Err(self.raise(check::PROGRAM_ERROR, "no exception to re-raise", s.span)),
+                }
+            }
+            StmtKind::Delay(d) => {
+                let secs = self.eval(d)?.real();
+                self.m.clock.sleep(secs);
+                Ok(())
+            }
+        }
+    }
+
+    /// Checks for a user interrupt (Ctrl-C in the REPL) at loop heads.
+    fn poll(&mut self, span: Span) -> R<()> {
+        if let Some(flag) = &self.m.interrupted
+            && flag.swap(false, std::sync::atomic::Ordering::SeqCst)
+        {
+            return Err(self.raise(check::PROGRAM_ERROR, "interrupted", span));
+        }
+        Ok(())
+    }
+
+    fn body(&mut self, b: &Body) -> R<()> {
+        match self.exec_all(&b.stmts) {
+            Err(Flow::Raise(occ)) if !b.handlers.is_empty() => {
+                for h in &b.handlers {
+                    let matches = match &h.choices {
+                        None => true,
+                        Some(list) => list.contains(&occ.exc),
+                    };
+                    if matches {
+                        let occ: Rc<Occurrence> = Rc::from(occ);
+                        if let Some(v) = h.occurrence {
+                            let i = self.slot(v);
+                            self.m.stack[i] = Value::Occ(occ.clone());
+                        }
+                        self.m.current.push(occ);
+                        let r = self.exec_all(&h.stmts);
+                        self.m.current.pop();
+                        return r;
+                    }
+                }
+                Err(Flow::Raise(occ))
+            }
+            r => r,
+        }
+    }
+
+    /// Calls a subprogram with copy-in/copy-out parameters.
+    pub fn call(&mut self, f: FuncId, args: &[Arg], span: Span) -> R<Option<Value>> {
+        let mut vals = Vec::with_capacity(args.len());
+        for a in args {
+            vals.push(self.eval(&a.value)?);
+        }
+        let sub = &self.c.funcs[f as usize];
+        if self.m.depth >= MAX_DEPTH {
+            return Err(self.raise(check::STORAGE_ERROR, "stack overflow (recursion too deep)", span));
+        }
+        let result = if let Some(native) = self.m.natives.get(f as usize).copied().flatten() {
+            self.m.calls.push(span);
+            let r = native(self, &mut vals, span);
+            self.m.calls.pop();
+            r?
+        } else {
+            let Some(body) = sub.body.clone() else {
+                return Err(self.raise(check::PROGRAM_ERROR, format!("`{}` has no body", sub.name), span));
+            };
+            let level = sub.level as usize;
+            let nslots = sub.nslots as usize;
+            let base = self.m.stack.len();
+            self.m.stack.extend(vals.iter().cloned());
+            self.m.stack.resize(base + nslots.max(vals.len()), Value::Undef);
+            if self.m.display.len() <= level {
+                self.m.display.resize(level + 1, 0);
+            }
+            let saved = self.m.display[level];
+            self.m.display[level] = base;
+            self.m.depth += 1;
+            self.m.calls.push(span);
+            let r = self.body(&body);
+            self.m.calls.pop();
+            self.m.depth -= 1;
+            self.m.display[level] = saved;
+            // Copy-out values live in the frame.
+            for (i, a) in args.iter().enumerate() {
+                if a.mode != Mode::In {
+                    vals[i] = std::mem::take(&mut self.m.stack[base + i]);
+                }
+            }
+            self.m.stack.truncate(base);
+            match r {
+                Ok(()) => {
+                    if sub.ret.is_some() {
+                        return Err(self.raise(check::PROGRAM_ERROR, format!("{} missing return", self.m.location(sub.span)), sub.span));
+                    }
+                    None
+                }
+                Err(Flow::Return(v)) => v,
+                Err(e) => return Err(e),
+            }
+        };
+        for (a, v) in args.iter().zip(vals) {
+            if a.mode != Mode::In {
+                if let Some(t) = a.back_check {
+                    self.range_check(&v, t, a.value.span)?;
+                }
+                self.assign(&a.value, v)?;
+            }
+        }
+        Ok(result)
+    }
+
+    // ---- places ----
+
+    fn assign(&mut self, target: &Ex, val: Value) -> R<()> {
+        let mut steps = Vec::new();
+        let mut e = target;
+        loop {
+            match &e.kind {
+                ExKind::Var(v) => {
+                    let i = self.slot(*v);
+                    steps.reverse();
+                    let root = &mut self.m.stack[i];
+                    return write_path(root, &steps, val).map_err(|(what, sp)| self.check_failed(what, sp));
+                }
+                ExKind::Index(p, idx) => {
+                    let mut ix = Vec::with_capacity(idx.len());
+                    for x in idx {
+                        ix.push(self.eval(x)?.int());
+                    }
+                    steps.push(Step::Index(ix, e.span));
+                    e = p;
+                }
+                ExKind::Field(p, i) => {
+                    steps.push(Step::Field(*i));
+                    e = p;
+                }
+                ExKind::Slice(p, l, h) => {
+                    let (l, h) = (self.eval(l)?.int(), self.eval(h)?.int());
+                    steps.push(Step::Slice(l, h, e.span));
+                    e = p;
+                }
+                ExKind::Deref(p) => {
+                    let ptr = self.eval(p)?;
+                    let Value::Ptr(Some(rc)) = ptr else {
+                        return Err(self.check_failed("access check failed", e.span));
+                    };
+                    steps.reverse();
+                    let mut b = rc.borrow_mut();
+                    return write_path(&mut b, &steps, val).map_err(|(what, sp)| self.check_failed(what, sp));
+                }
+                _ => return Err(self.raise(check::PROGRAM_ERROR, "not a variable", e.span)),
+            }
+        }
+    }
+
+    // ---- expressions ----
+
+    pub fn eval(&mut self, e: &Ex) -> R<Value> {
+        Ok(match &e.kind {
+            ExKind::Int(v) => Value::Int(*v),
+            ExKind::Real(v) => Value::Real(*v),
+            ExKind::Str(s) => Value::str(s),
+            ExKind::Null => Value::Ptr(None),
+            ExKind::Var(v) => self.m.stack[self.slot(*v)].clone(),
+            ExKind::Index(p, idx) => {
+                let base = self.eval(p)?;
+                let Value::Arr(a) = base else {
+                    return Err(self.check_failed("access check failed", e.span));
+                };
+                let mut ix = [0i64; 4];
+                let n = idx.len().min(4);
+                for (k, x) in idx.iter().take(4).enumerate() {
+                    ix[k] = self.eval(x)?.int();
+                }
+                match a.offset(&ix[..n]) {
+                    Some(o) => a.data[o].clone(),
+                    None => return Err(self.check_failed("index check failed", e.span)),
+                }
+            }
+            ExKind::Slice(p, l, h) => {
+                let base = self.eval(p)?;
+                let (l, h) = (self.eval(l)?.int(), self.eval(h)?.int());
+                let Value::Arr(a) = base else { return Err(self.check_failed("access check failed", e.span)) };
+                if l > h {
+                    return Ok(Value::Arr(Rc::new(Array { bounds: vec![(l, h)], data: vec![] })));
+                }
+                let (lo, hi) = a.bounds[0];
+                if l < lo || h > hi {
+                    return Err(self.check_failed("range check failed", e.span));
+                }
+                let data = a.data[(l - lo) as usize..=(h - lo) as usize].to_vec();
+                Value::Arr(Rc::new(Array { bounds: vec![(l, h)], data }))
+            }
+            ExKind::Field(p, i) => match self.eval(p)? {
+                Value::Rec(r) => r[*i as usize].clone(),
+                _ => return Err(self.check_failed("discriminant check failed", e.span)),
+            },
+            ExKind::Deref(p) => match self.eval(p)? {
+                Value::Ptr(Some(rc)) => rc.borrow().clone(),
+                _ => return Err(self.check_failed("access check failed", e.span)),
+            },
+            ExKind::Call(f, args) => match self.call(*f, args, e.span)? {
+                Some(v) => v,
+                None => Value::Undef,
+            },
+            ExKind::IntBin(op, a, b) => {
+                let x = self.eval(a)?.int();
+                let y = self.eval(b)?.int();
+                Value::Int(self.int_op(*op, x, y, e.span)?)
+            }
+            ExKind::FloatBin(op, a, b) => {
+                let x = self.eval(a)?.real();
+                let yv = self.eval(b)?;
+                Value::Real(match op {
+                    FloatOp::Add => x + yv.real(),
+                    FloatOp::Sub => x - yv.real(),
+                    FloatOp::Mul => x * yv.real(),
+                    FloatOp::Div => {
+                        let y = yv.real();
+                        if y == 0.0 {
+                            return Err(self.check_failed("divide by zero", e.span));
+                        }
+                        x / y
+                    }
+                    FloatOp::PowI => {
+                        let n = yv.int();
+                        if n < 0 && x == 0.0 {
+                            return Err(self.check_failed("divide by zero", e.span));
+                        }
+                        x.powi(n as i32)
+                    }
+                })
+            }
+            ExKind::Cmp(op, a, b) => {
+                let x = self.eval(a)?;
+                let y = self.eval(b)?;
+                let o = x.compare(&y);
+                use std::cmp::Ordering::*;
+                let r = match op {
+                    CmpOp::Lt => o == Less,
+                    CmpOp::Le => o != Greater,
+                    CmpOp::Gt => o == Greater,
+                    CmpOp::Ge => o != Less,
+                    CmpOp::Eq => o == Equal,
+                    CmpOp::Ne => o != Equal,
+                };
+                Value::Int(r as i64)
+            }
+            ExKind::Eq(ne, a, b) => {
+                let x = self.eval(a)?;
+                let y = self.eval(b)?;
+                Value::Int(((x == y) != *ne) as i64)
+            }
+            ExKind::Logic(op, a, b) => {
+                let x = self.eval(a)?.int() != 0;
+                let r = match op {
+                    LogicOp::AndThen => x && self.eval(b)?.int() != 0,
+                    LogicOp::OrElse => x || self.eval(b)?.int() != 0,
+                    LogicOp::And => {
+                        let y = self.eval(b)?.int() != 0;
+                        x && y
+                    }
+                    LogicOp::Or => {
+                        let y = self.eval(b)?.int() != 0;
+                        x || y
+                    }
+                    LogicOp::Xor => {
+                        let y = self.eval(b)?.int() != 0;
+                        x ^ y
+                    }
+                };
+                Value::Int(r as i64)
+            }
+            ExKind::Not(a) => Value::Int((self.eval(a)?.int() == 0) as i64),
+            ExKind::IntNeg(a) => {
+                let x = self.eval(a)?.int();
+                Value::Int(self.int_op(IntOp::Sub, 0, x, e.span)?)
+            }
+            ExKind::FloatNeg(a) => Value::Real(-self.eval(a)?.real()),
+            ExKind::IntAbs(a) => {
+                let x = self.eval(a)?.int();
+                let v = x.abs();
+                if v > i32::MAX as i64 {
+                    return Err(self.check_failed("overflow check failed", e.span));
+                }
+                Value::Int(v)
+            }
+            ExKind::FloatAbs(a) => Value::Real(self.eval(a)?.real().abs()),
+            ExKind::Concat(a, b, ae, be) => {
+                let x = self.eval(a)?;
+                let y = self.eval(b)?;
+                self.concat(x, y, *ae, *be, e.ty, e.span)?
+            }
+            ExKind::IntToFloat(a) => Value::Real(self.eval(a)?.real()),
+            ExKind::FloatToInt(a) => {
+                let x = self.eval(a)?.real();
+                let r = x.round();
+                if !(r >= i32::MIN as f64 && r <= i32::MAX as f64) {
+                    return Err(self.check_failed("range check failed", e.span));
+                }
+                Value::Int(r as i64)
+            }
+            ExKind::RangeCheck(a, t) => {
+                let v = self.eval(a)?;
+                self.range_check(&v, *t, e.span)?;
+                v
+            }
+            ExKind::ArrayConvert(a, t) => {
+                let v = self.eval(a)?;
+                self.array_convert(v, *t, e.span)?
+            }
+            ExKind::Attr(op, args) => self.attr(*op, args, e)?,
+            ExKind::TypeFirst(t) => self.type_bounds(*t)?.0,
+            ExKind::TypeLast(t) => self.type_bounds(*t)?.1,
+            ExKind::InRanges(s, ranges, neg) => {
+                let v = self.eval(s)?;
+                let mut inside = false;
+                for (l, h) in ranges {
+                    let lo = self.eval(l)?;
+                    let hi = self.eval(h)?;
+                    if v.compare(&lo) != std::cmp::Ordering::Less && v.compare(&hi) != std::cmp::Ordering::Greater {
+                        inside = true;
+                        break;
+                    }
+                }
+                Value::Int((inside != *neg) as i64)
+            }
+            ExKind::ArrayAgg(agg) => self.array_agg(agg, e.span)?,
+            ExKind::RecordAgg(fields) => {
+                let mut v = Vec::with_capacity(fields.len());
+                for f in fields {
+                    v.push(self.eval(f)?);
+                }
+                Value::Rec(Rc::new(v))
+            }
+            ExKind::If(arms, els) => {
+                for (c, v) in arms {
+                    if self.eval(c)?.int() != 0 {
+                        return self.eval(v);
+                    }
+                }
+                self.eval(els)?
+            }
+            ExKind::Case(s, arms, others) => {
+                let v = self.eval(s)?.int();
+                for (ranges, x) in arms {
+                    if ranges.iter().any(|(l, h)| *l <= v && v <= *h) {
+                        return self.eval(x);
+                    }
+                }
+                match others {
+                    Some(x) => self.eval(x)?,
+                    None => return Err(self.check_failed("case choice not covered", e.span)),
+                }
+            }
+            ExKind::Alloc(init, t) => {
+                let v = match init {
+                    Some(x) => self.eval(x)?,
+                    None => self.default_value(*t)?,
+                };
+                Value::Ptr(Some(Rc::new(RefCell::new(v))))
+            }
+            ExKind::Builtin(..) => Value::Undef,
+            ExKind::Default(t) => self.default_value(*t)?,
+            ExKind::Error => return Err(self.raise(check::PROGRAM_ERROR, "erroneous expression", e.span)),
+        })
+    }
+
+    fn int_op(&self, op: IntOp, x: i64, y: i64, span: Span) -> R<i64> {
+        let r = match op {
+            IntOp::Add => x + y,
+            IntOp::Sub => x - y,
+            IntOp::Mul => x.checked_mul(y).unwrap_or(i64::MAX),
+            IntOp::Div => {
+                if y == 0 {
+                    return Err(self.check_failed("divide by zero", span));
+                }
+                x / y
+            }
+            IntOp::Rem => {
+                if y == 0 {
+                    return Err(self.check_failed("divide by zero", span));
+                }
+                x % y
+            }
+            IntOp::Mod => {
+                if y == 0 {
+                    return Err(self.check_failed("divide by zero", span));
+                }
+                let m = x % y;
+                if m != 0 && ((m < 0) != (y < 0)) { m + y } else { m }
+            }
+            IntOp::Pow => {
+                if y < 0 {
+                    return Err(self.check_failed("range check failed", span));
+                }
+                let mut acc: i64 = 1;
+                for _ in 0..y.min(64) {
+                    acc = acc.checked_mul(x).unwrap_or(i64::MAX);
+                    if acc.abs() > i32::MAX as i64 + 1 {
+                        break;
+                    }
+                }
+                if y > 64 && x.abs() > 1 {
+                    i64::MAX
+                } else if y > 64 {
+                    if x == -1 && y % 2 == 1 { -1 } else { x.abs() }
+                } else {
+                    acc
+                }
+            }
+        };
+        if r < i32::MIN as i64 || r > i32::MAX as i64 {
+            return Err(self.check_failed("overflow check failed", span));
+        }
+        Ok(r)
+    }
+
+    /// Low and high bound of a scalar subtype.
+    fn type_bounds(&mut self, t: TypeId) -> R<(Value, Value)> {
+        let info = self.c.types.get(t);
+        if let Some((l, h)) = info.static_range {
+            return Ok((Value::Int(l as i64), Value::Int(h as i64)));
+        }
+        if let Some((l, h)) = info.static_frange {
+            return Ok((Value::Real(l), Value::Real(h)));
+        }
+        if let Some((l, h)) = &info.range {
+            let (l, h) = (l.clone(), h.clone());
+            return Ok((self.eval(&l)?, self.eval(&h)?));
+        }
+        Ok(match self.c.types.kind(t) {
+            TypeKind::Enum(l) => (Value::Int(0), Value::Int(l.len() as i64 - 1)),
+            TypeKind::Float => (Value::Real(-f64::MAX), Value::Real(f64::MAX)),
+            _ => (Value::Int(i32::MIN as i64), Value::Int(i32::MAX as i64)),
+        })
+    }
+
+    fn range_check(&mut self, v: &Value, t: TypeId, span: Span) -> R<()> {
+        let info = self.c.types.get(t);
+        let ok = match (v, info.static_range, info.static_frange) {
+            (Value::Int(x), Some((l, h)), _) => (l as i64) <= *x && *x <= (h as i64),
+            (Value::Real(x), _, Some((l, h))) => l <= *x && *x <= h,
+            _ => {
+                let (l, h) = self.type_bounds(t)?;
+                v.compare(&l) != std::cmp::Ordering::Less && v.compare(&h) != std::cmp::Ordering::Greater
+            }
+        };
+        if ok { Ok(()) } else { Err(self.check_failed("range check failed", span)) }
+    }
+
+    /// Bounds of a constrained array subtype.
+    fn array_bounds(&mut self, t: TypeId) -> R<Option<Vec<(i64, i64)>>> {
+        let Some((_, _, Some(bs))) = self.c.types.array(t) else { return Ok(None) };
+        let bs = bs.clone();
+        let mut out = Vec::with_capacity(bs.len());
+        for (l, h) in &bs {
+            out.push((self.eval(l)?.int(), self.eval(h)?.int()));
+        }
+        Ok(Some(out))
+    }
+
+    fn array_convert(&mut self, v: Value, t: TypeId, span: Span) -> R<Value> {
+        let Some(bounds) = self.array_bounds(t)? else { return Ok(v) };
+        let Value::Arr(mut a) = v else { return Ok(v) };
+        if a.bounds == bounds {
+            return Ok(Value::Arr(a));
+        }
+        for (d, (l, h)) in bounds.iter().enumerate() {
+            if a.len(d) != (h - l + 1).max(0) {
+                return Err(self.check_failed("length check failed", span));
+            }
+        }
+        Rc::make_mut(&mut a).bounds = bounds;
+        Ok(Value::Arr(a))
+    }
+
+    pub fn default_value(&mut self, t: TypeId) -> R<Value> {
+        Ok(match self.c.types.kind(t).clone() {
+            TypeKind::Float => Value::Real(0.0),
+            TypeKind::Record(fields) => {
+                let mut v = Vec::with_capacity(fields.len());
+                for f in &fields {
+                    v.push(match &f.default {
+                        Some(d) => self.eval(d)?,
+                        None => self.default_value(f.ty)?,
+                    });
+                }
+                Value::Rec(Rc::new(v))
+            }
+            TypeKind::Array { elem, .. } => {
+                let bounds = self.array_bounds(t)?.unwrap_or_default();
+                let n: i64 = bounds.iter().map(|(l, h)| (h - l + 1).max(0)).product();
+                let d = self.default_value(elem)?;
+                Value::Arr(Rc::new(Array {
+                    bounds,
+                    data: vec![d; n as usize],
+                }))
+            }
+            TypeKind::Access(_) => Value::Ptr(None),
+            TypeKind::Time => Value::Real(0.0),
+            _ => match self.c.types.get(t).static_range {
+                // An uninitialised scalar: the lower bound when it is positive, else 0.
+                Some((l, _)) if l > 0 => Value::Int(l as i64),
+                _ => Value::Int(0),
+            },
+        })
+    }
+
+    fn concat(&mut self, x: Value, y: Value, xe: bool, ye: bool, t: TypeId, span: Span) -> R<Value> {
+        let first_of_index = || -> i64 {
+            self.c
+                .types
+                .array(t)
+                .and_then(|(i, _, _)| i.first().copied())
+                .and_then(|it| self.c.types.get(it).static_range)
+                .map(|r| r.0 as i64)
+                .unwrap_or(1)
+        };
+        let (mut data, lo) = match (&x, xe) {
+            (v, true) => (vec![v.clone()], first_of_index()),
+            (Value::Arr(a), false) => {
+                if a.data.is_empty() {
+                    // An empty left operand: the result is the right operand.
+                    return Ok(match (y, ye) {
+                        (v, true) => Value::Arr(Rc::new(Array { bounds: vec![(first_of_index(), first_of_index())], data: vec![v] })),
+                        (v, false) => v,
+                    });
+                }
+                (a.data.clone(), a.bounds[0].0)
+            }
+            _ => (vec![], 1),
+        };
+        match (y, ye) {
+            (v, true) => data.push(v),
+            (Value::Arr(b), false) => data.extend(b.data.iter().cloned()),
+            _ => {}
+        }
+        let hi = lo + data.len() as i64 - 1;
+        if hi > i32::MAX as i64 {
+            return Err(self.check_failed("range check failed", span));
+        }
+        Ok(Value::Arr(Rc::new(Array { bounds: vec![(lo, hi)], data })))
+    }
+
+    fn array_agg(&mut self, agg: &ArrayAgg, span: Span) -> R<Value> {
+        let t = agg.ty;
+        let fixed = self.array_bounds(t)?;
+        let index_first = || -> i64 {
+            self.c
+                .types
+                .array(t)
+                .and_then(|(i, _, _)| i.first().copied())
+                .map(|it| match self.c.types.get(it).static_range {
+                    Some((l, _)) => l as i64,
+                    None => match self.c.types.kind(it) {
+                        TypeKind::Enum(_) => 0,
+                        _ => i32::MIN as i64,
+                    },
+                })
+                .unwrap_or(1)
+        };
+        match &agg.kind {
+            ArrayAggKind::Positional(items, others) => {
+                let mut vals = Vec::with_capacity(items.len());
+                for i in items {
+                    vals.push(self.eval(i)?);
+                }
+                let (lo, hi) = match &fixed {
+                    Some(b) => b[0],
+                    None => {
+                        let lo = index_first();
+                        (lo, lo + vals.len() as i64 - 1)
+                    }
+                };
+                let n = (hi - lo + 1).max(0) as usize;
+                if vals.len() > n || (vals.len() < n && others.is_none()) {
+                    return Err(self.check_failed("length check failed", span));
+                }
+                if let Some(o) = others {
+                    while vals.len() < n {
+                        vals.push(self.eval(o)?);
+                    }
+                }
+                self.rows_to_array(vals, (lo, hi), fixed, span)
+            }
+            ArrayAggKind::Named(choices, others) => {
+                let mut pairs = Vec::new();
+                for (ranges, v) in choices {
+                    let mut rs = Vec::new();
+                    for (l, h) in ranges {
+                        rs.push((self.eval(l)?.int(), self.eval(h)?.int()));
+                    }
+                    pairs.push((rs, v));
+                }
+                let (lo, hi) = match &fixed {
+                    Some(b) => b[0],
+                    None => {
+                        let lo = pairs.iter().flat_map(|p| p.0.iter().map(|r| r.0)).min().unwrap_or(1);
+                        let hi = pairs.iter().flat_map(|p| p.0.iter().map(|r| r.1)).max().unwrap_or(0);
+                        (lo, hi)
+                    }
+                };
+                let n = (hi - lo + 1).max(0) as usize;
+                let mut vals: Vec<Option<Value>> = vec![None; n];
+                for (rs, v) in &pairs {
+                    let val = self.eval(v)?;
+                    for (l, h) in rs {
+                        for i in *l..=*h {
+                            if i < lo || i > hi {
+                                return Err(self.check_failed("index check failed", span));
+                            }
+                            vals[(i - lo) as usize] = Some(val.clone());
+                        }
+                    }
+                }
+                let mut out = Vec::with_capacity(n);
+                for v in vals {
+                    match v {
+                        Some(v) => out.push(v),
+                        None => match others {
+                            Some(o) => out.push(self.eval(o)?),
+                            None => return Err(self.check_failed("length check failed", span)),
+                        },
+                    }
+                }
+                self.rows_to_array(out, (lo, hi), fixed, span)
+            }
+            ArrayAggKind::Rows(rows) => {
+                let mut vals = Vec::new();
+                for r in rows {
+                    vals.push(self.eval(r)?);
+                }
+                let lo = index_first();
+                let n = vals.len() as i64;
+                self.rows_to_array(vals, (lo, lo + n - 1), fixed, span)
+            }
+        }
+    }
+
+    /// Builds an array from its first-dimension components (elements, or rows
+    /// of the remaining dimensions).
+    fn rows_to_array(&mut self, vals: Vec<Value>, first: (i64, i64), fixed: Option<Vec<(i64, i64)>>, span: Span) -> R<Value> {
+        let multi = fixed.as_ref().map(|b| b.len() > 1).unwrap_or(false) || matches!(vals.first(), Some(Value::Arr(_))) && self.is_multi(&fixed);
+        if !multi {
+            return Ok(Value::Arr(Rc::new(Array { bounds: vec![first], data: vals })));
+        }
+        let mut bounds = vec![first];
+        let mut data = Vec::new();
+        let mut inner: Option<Vec<(i64, i64)>> = None;
+        for v in vals {
+            let Value::Arr(row) = v else { return Err(self.check_failed("length check failed", span)) };
+            match &inner {
+                None => inner = Some(row.bounds.clone()),
+                Some(b) => {
+                    if b.iter().zip(&row.bounds).any(|(x, y)| x.1 - x.0 != y.1 - y.0) {
+                        return Err(self.check_failed("length check failed", span));
+                    }
+                }
+            }
+            data.extend(row.data.iter().cloned());
+        }
+        let inner = match fixed {
+            Some(f) => f[1..].to_vec(),
+            None => inner.unwrap_or_default(),
+        };
+        bounds.extend(inner);
+        Ok(Value::Arr(Rc::new(Array { bounds, data })))
+    }
+
+    fn is_multi(&self, fixed: &Option<Vec<(i64, i64)>>) -> bool {
+        fixed.as_ref().is_some_and(|b| b.len() > 1)
+    }
+
+    fn attr(&mut self, op: AttrOp, args: &[Ex], e: &Ex) -> R<Value> {
+        let sp = e.span;
+        let a0 = match args.first() {
+            Some(x) => self.eval(x)?,
+            None => Value::Undef,
+        };
+        Ok(match op {
+            AttrOp::ArrFirst(d) | AttrOp::ArrLast(d) | AttrOp::ArrLength(d) => {
+                let Value::Arr(a) = a0 else { return Err(self.check_failed("access check failed", sp)) };
+                let d = d as usize - 1;
+                match op {
+                    AttrOp::ArrFirst(_) => Value::Int(a.bounds[d].0),
+                    AttrOp::ArrLast(_) => Value::Int(a.bounds[d].1),
+                    _ => Value::Int(a.len(d)),
+                }
+            }
+            AttrOp::ImageInt => Value::str(&value::image_int(a0.int())),
+            AttrOp::ImageFloat => Value::str(&value::image_float(a0.real())),
+            AttrOp::ImageChar => {
+                let c = char::from_u32(a0.int() as u32).unwrap_or('?');
+                Value::str(&crate::check::types::char_image(c))
+            }
+            AttrOp::ImageEnum(t) => {
+                let lits = self.c.types.enum_lits(t).unwrap_or(&[]);
+                Value::str(lits.get(a0.int() as usize).map(String::as_str).unwrap_or("?"))
+            }
+            AttrOp::ValueInt => match value::value_int(&a0.text()) {
+                Some(v) if v >= i32::MIN as i64 && v <= i32::MAX as i64 => Value::Int(v),
+                _ => return Err(self.check_failed("bad input for 'Value", sp)),
+            },
+            AttrOp::ValueFloat => match value::value_float(&a0.text()) {
+                Some(v) => Value::Real(v),
+                None => return Err(self.check_failed("bad input for 'Value", sp)),
+            },
+            AttrOp::ValueEnum(t) => {
+                let s = a0.text();
+                let s = s.trim();
+                let lits = self.c.types.enum_lits(t).unwrap_or(&[]);
+                let found = if t == crate::check::types::CHARACTER {
+                    let cs: Vec<char> = s.chars().collect();
+                    (cs.len() == 3 && cs[0] == '\'' && cs[2] == '\'').then(|| cs[1] as usize)
+                } else {
+                    lits.iter().position(|l| l.eq_ignore_ascii_case(s))
+                };
+                match found {
+                    Some(i) => Value::Int(i as i64),
+                    None => return Err(self.check_failed("bad input for 'Value", sp)),
+                }
+            }
+            AttrOp::Succ => Value::Int(a0.int() + 1),
+            AttrOp::Pred => Value::Int(a0.int() - 1),
+            AttrOp::Pos | AttrOp::Val => a0,
+            AttrOp::Min | AttrOp::Max | AttrOp::FloatMin | AttrOp::FloatMax => {
+                let b = self.eval(&args[1])?;
+                let less = a0.compare(&b) == std::cmp::Ordering::Less;
+                match op {
+                    AttrOp::Min | AttrOp::FloatMin => {
+                        if less {
+                            a0
+                        } else {
+                            b
+                        }
+                    }
+                    _ => {
+                        if less {
+                            b
+                        } else {
+                            a0
+                        }
+                    }
+                }
+            }
+            AttrOp::Floor => Value::Real(a0.real().floor()),
+            AttrOp::Ceiling => Value::Real(a0.real().ceil()),
+            AttrOp::Truncation => Value::Real(a0.real().trunc()),
+            AttrOp::Rounding => Value::Real(a0.real().round()),
+        })
+    }
+}
+
+/// Writes `val` at the end of a path of steps into `root` (copy-on-write).
+fn write_path(root: &mut Value, steps: &[Step], val: Value) -> Result<(), (&'static str, Span)> {
+    let Some((first, rest)) = steps.split_first() else {
+        *root = val;
+        return Ok(());
+    };
+    match first {
+        Step::Index(ix, sp) => {
+            let Value::Arr(a) = root else { return Err(("access check failed", *sp)) };
+            let a = Rc::make_mut(a);
+            let Some(o) = a.offset(ix) else { return Err(("index check failed", *sp)) };
+            write_path(&mut a.data[o], rest, val)
+        }
+        Step::Field(i) => {
+            let Value::Rec(r) = root else { return Err(("discriminant check failed", Span { start: 0, end: 0, context: 0 })) };
+            let r = Rc::make_mut(r);
+            write_path(&mut r[*i as usize], rest, val)
+        }
+        Step::Slice(l, h, sp) => {
+            let Value::Arr(a) = root else { return Err(("access check failed", *sp)) };
+            let a = Rc::make_mut(a);
+            let Value::Arr(src) = val else { return Err(("length check failed", *sp)) };
+            let n = (h - l + 1).max(0) as usize;
+            if src.data.len() != n {
+                return Err(("length check failed", *sp));
+            }
+            if n == 0 {
+                return Ok(());
+            }
+            let (lo, hi) = a.bounds[0];
+            if *l < lo || *h > hi {
+                return Err(("range check failed", *sp));
+            }
+            for (k, v) in src.data.iter().enumerate() {
+                a.data[(*l - lo) as usize + k] = v.clone();
+            }
+            Ok(())
+        }
+    }
+}

@@ -1,0 +1,311 @@
+//! Run-time values and GNAT-exact text forms of scalars.
+
+use crate::check::ir::ExcId;
+use crate::diag::Span;
+use std::cell::RefCell;
+use std::rc::Rc;
+
+/// A value. Discrete values (integers, enumerations, characters, Booleans)
+/// are `Int`; composites are reference-counted and copied on write, which
+/// gives Ada's value semantics without copying on every read.
+#[derive(Clone, Debug, Default)]
+pub enum Value {
+    #[default]
+    Undef,
+    Int(i64),
+    Real(f64),
+    Arr(Rc<Array>),
+    Rec(Rc<Vec<Value>>),
+    Ptr(Option<Rc<RefCell<Value>>>),
+    Occ(Rc<Occurrence>),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Array {
+    pub bounds: Vec<(i64, i64)>,
+    pub data: Vec<Value>,
+}
+
+impl Array {
+    pub fn len(&self, dim: usize) -> i64 {
+        let (l, h) = self.bounds[dim];
+        (h - l + 1).max(0)
+    }
+    /// Offset of an index tuple, or `None` when out of bounds.
+    pub fn offset(&self, idx: &[i64]) -> Option<usize> {
+        let mut off = 0i64;
+        for (d, &i) in idx.iter().enumerate() {
+            let (l, h) = *self.bounds.get(d)?;
+            if i < l || i > h {
+                return None;
+            }
+            off = off * self.len(d) + (i - l);
+        }
+        Some(off as usize)
+    }
+    pub fn string(s: &str) -> Array {
+        let data: Vec<Value> = s.chars().map(|c| Value::Int(c as i64)).collect();
+        Array {
+            bounds: vec![(1, data.len() as i64)],
+            data,
+        }
+    }
+    pub fn to_string_lossy(&self) -> String {
+        self.data
+            .iter()
+            .map(|v| match v {
+                Value::Int(c) => char::from_u32(*c as u32).unwrap_or('?'),
+                _ => '?',
+            })
+            .collect()
+    }
+}
+
+impl PartialEq for Value {
+    fn eq(&self, other: &Value) -> bool {
+        match (self, other) {
+            (Value::Int(a), Value::Int(b)) => a == b,
+            (Value::Real(a), Value::Real(b)) => a == b,
+            (Value::Arr(a), Value::Arr(b)) => {
+                // Ada: arrays are equal when lengths and components match (bounds may differ).
+                a.data.len() == b.data.len() && (0..a.bounds.len()).all(|d| a.len(d) == b.len(d)) && a.data == b.data
+            }
+            (Value::Rec(a), Value::Rec(b)) => a == b,
+            (Value::Ptr(a), Value::Ptr(b)) => match (a, b) {
+                (None, None) => true,
+                (Some(x), Some(y)) => Rc::ptr_eq(x, y),
+                _ => false,
+            },
+            (Value::Undef, Value::Undef) => true,
+            _ => false,
+        }
+    }
+}
+
+impl Value {
+    pub fn str(s: &str) -> Value {
+        Value::Arr(Rc::new(Array::string(s)))
+    }
+    pub fn int(&self) -> i64 {
+        match self {
+            Value::Int(i) => *i,
+            Value::Real(r) => *r as i64,
+            _ => 0,
+        }
+    }
+    pub fn real(&self) -> f64 {
+        match self {
+            Value::Real(r) => *r,
+            Value::Int(i) => *i as f64,
+            _ => 0.0,
+        }
+    }
+    pub fn text(&self) -> String {
+        match self {
+            Value::Arr(a) => a.to_string_lossy(),
+            _ => String::new(),
+        }
+    }
+    /// Ordering of scalars and of one-dimensional discrete arrays (strings).
+    pub fn compare(&self, other: &Value) -> std::cmp::Ordering {
+        use std::cmp::Ordering;
+        match (self, other) {
+            (Value::Int(a), Value::Int(b)) => a.cmp(b),
+            (Value::Real(a), Value::Real(b)) => a.partial_cmp(b).unwrap_or(Ordering::Equal),
+            (Value::Arr(a), Value::Arr(b)) => {
+                for (x, y) in a.data.iter().zip(&b.data) {
+                    let c = x.compare(y);
+                    if c != Ordering::Equal {
+                        return c;
+                    }
+                }
+                a.data.len().cmp(&b.data.len())
+            }
+            _ => Ordering::Equal,
+        }
+    }
+}
+
+/// An exception occurrence: which exception, its message, where it was raised
+/// and the call chain (innermost call first).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Occurrence {
+    pub exc: ExcId,
+    pub message: String,
+    pub span: Span,
+    pub chain: Vec<Span>,
+}
+
+/// `Integer'Image`: a leading blank for non-negative values.
+pub fn image_int(v: i64) -> String {
+    if v < 0 { v.to_string() } else { format!(" {v}") }
+}
+
+/// Decimal digits of |x| rounded half away from zero at `frac` digits after
+/// the point when `sci` is false, or with `frac` digits after the first
+/// significant digit when `sci` is true. Returns (digits, exponent of the
+/// first digit). Rust's own formatting rounds ties to even, so the rounding is
+/// done here on an exact-enough expansion.
+fn round_digits(x: f64, frac: usize, sci: bool) -> (Vec<u8>, i32) {
+    let x = x.abs();
+    if x == 0.0 {
+        return (vec![0; frac + 1], 0);
+    }
+    let s = format!("{x:.70e}");
+    let (mant, exp) = s.split_once('e').unwrap_or((&s, "0"));
+    let mut exp: i32 = exp.parse().unwrap_or(0);
+    let mut digits: Vec<u8> = mant.bytes().filter(u8::is_ascii_digit).map(|b| b - b'0').collect();
+    // Number of digits to keep.
+    let keep: i64 = if sci { frac as i64 + 1 } else { exp as i64 + 1 + frac as i64 };
+    if keep < 0 {
+        return (vec![0; frac + 1], 0);
+    }
+    let keep = keep as usize;
+    let round_up = digits.get(keep).is_some_and(|d| *d >= 5);
+    digits.truncate(keep);
+    while digits.len() < keep {
+        digits.push(0);
+    }
+    if round_up {
+        let mut i = digits.len();
+        loop {
+            if i == 0 {
+                digits.insert(0, 1);
+                exp += 1;
+                if sci {
+                    digits.pop();
+                }
+                break;
+            }
+            i -= 1;
+            if digits[i] == 9 {
+                digits[i] = 0;
+            } else {
+                digits[i] += 1;
+                break;
+            }
+        }
+    }
+    if keep == 0 && !round_up {
+        return (vec![0; frac + 1], 0);
+    }
+    (digits, exp)
+}
+
+/// `Ada.Float_Text_IO.Put (Item, Fore, Aft, Exp)` as GNAT prints it.
+pub fn put_float(x: f64, fore: usize, aft: usize, exp: usize) -> String {
+    let aft = aft.max(1);
+    let neg = x.is_sign_negative() && !x.is_nan();
+    if x.is_nan() {
+        return pad_left("NaN", fore + aft + 1);
+    }
+    if x.is_infinite() {
+        let s = if neg { "-Inf" } else { "+Inf" };
+        return pad_left(s, fore + aft + 1 + if exp > 0 { exp + 1 } else { 0 });
+    }
+    let mut body = String::new();
+    if exp > 0 {
+        let (digits, e) = round_digits(x, aft, true);
+        let e = if x == 0.0 { 0 } else { e };
+        body.push((b'0' + digits[0]) as char);
+        body.push('.');
+        for d in &digits[1..] {
+            body.push((b'0' + d) as char);
+        }
+        let ed = format!("{}", e.abs());
+        let width = exp.saturating_sub(1).max(1);
+        body.push('E');
+        body.push(if e < 0 { '-' } else { '+' });
+        for _ in ed.len()..width {
+            body.push('0');
+        }
+        body.push_str(&ed);
+        let int = if neg { format!("-{}", &body[..1]) } else { body[..1].to_string() };
+        format!("{}{}", pad_left(&int, fore), &body[1..])
+    } else {
+        let (digits, e) = round_digits(x, aft, false);
+        // digits hold the integer part (e + 1 digits, or a leading 0) and `aft` fraction digits.
+        let int_len = digits.len() - aft;
+        let (ip, fp) = digits.split_at(int_len);
+        let mut int: String = ip.iter().map(|d| (b'0' + d) as char).collect();
+        if int.is_empty() {
+            int.push('0');
+        }
+        let _ = e;
+        let int = if neg { format!("-{int}") } else { int };
+        let frac: String = fp.iter().map(|d| (b'0' + d) as char).collect();
+        format!("{}.{}", pad_left(&int, fore), frac)
+    }
+}
+
+/// `Float'Image` (GNAT, Float'Digits = 6): `" 8.30600E+02"`.
+pub fn image_float(x: f64) -> String {
+    let s = put_float(x, 1, 5, 3);
+    if s.starts_with('-') { s } else { format!(" {s}") }
+}
+
+pub fn pad_left(s: &str, width: usize) -> String {
+    let n = s.chars().count();
+    if n >= width { s.to_string() } else { format!("{}{}", " ".repeat(width - n), s) }
+}
+
+/// `Integer'Value`: blanks around, an optional sign, Ada literal syntax
+/// (underscores, based literals, exponents).
+pub fn value_int(s: &str) -> Option<i64> {
+    let t = s.trim_matches(|c: char| c == ' ' || c == '\t');
+    let (neg, body) = match t.strip_prefix('-') {
+        Some(r) => (true, r),
+        None => (false, t.strip_prefix('+').unwrap_or(t)),
+    };
+    match crate::syntax::lexer::numeric_literal(body)? {
+        crate::syntax::token::Token::Int(v) => {
+            let v = if neg { -v } else { v };
+            i64::try_from(v).ok()
+        }
+        _ => None,
+    }
+}
+
+pub fn value_float(s: &str) -> Option<f64> {
+    let t = s.trim_matches(|c: char| c == ' ' || c == '\t');
+    let (neg, body) = match t.strip_prefix('-') {
+        Some(r) => (true, r),
+        None => (false, t.strip_prefix('+').unwrap_or(t)),
+    };
+    match crate::syntax::lexer::numeric_literal(body)? {
+        crate::syntax::token::Token::Real(v) => Some(if neg { -v } else { v }),
+        crate::syntax::token::Token::Int(v) => Some(if neg { -(v as f64) } else { v as f64 }),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn gnat_float_formats() {
+        assert_eq!(image_float(830.6), " 8.30600E+02");
+        assert_eq!(image_float(1234.125), " 1.23413E+03");
+        assert_eq!(image_float(0.0), " 0.00000E+00");
+        assert_eq!(image_float(-0.0), "-0.00000E+00");
+        assert_eq!(put_float(7.25, 1, 1, 0), "7.3");
+        assert_eq!(put_float(-0.00001, 1, 4, 0), "-0.0000");
+        assert_eq!(put_float(3.14159, 1, 3, 2), "3.142E+0");
+        assert_eq!(put_float(1.0e-10, 1, 2, 4), "1.00E-010");
+        assert_eq!(put_float(2.5, 1, 0, 3), "2.5E+00");
+        assert_eq!(put_float(0.95, 1, 0, 0), "0.9");
+        assert_eq!(put_float(9.96, 2, 1, 0), "10.0");
+        assert_eq!(put_float(-12.5, 5, 2, 0), "  -12.50");
+        assert_eq!(image_float(9.999999), " 1.00000E+01");
+    }
+
+    #[test]
+    fn values() {
+        assert_eq!(value_int(" +1_000 "), Some(1000));
+        assert_eq!(value_int("16#FF#"), Some(255));
+        assert_eq!(value_int("3e2"), Some(300));
+        assert_eq!(value_int("- 5"), None);
+        assert_eq!(value_int("1__0"), None);
+    }
+}
