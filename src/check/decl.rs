@@ -548,6 +548,7 @@ impl Checker {
             next_slot: 0,
         });
         self.push_scope();
+        self.name_scope(&b.spec.name.key());
         self.unit_path.push(b.spec.name.display());
         for p in &params {
             let var = self.new_slot();

@@ -58,14 +58,20 @@ impl Checker {
             ex.ty = t;
         }
         let info = self.types.get(t);
-        if self.types.is_scalar(t) && info.range.is_some() && ex.ty != t && t != INTEGER {
+        // Operations yield values of the base type, which may lie outside
+        // the subtype even when their type is the subtype itself.
+        let computed = matches!(
+            ex.kind,
+            ExKind::IntBin(..) | ExKind::FloatBin(..) | ExKind::IntNeg(_) | ExKind::FloatNeg(_) | ExKind::IntAbs(_) | ExKind::FloatAbs(_) | ExKind::IntToFloat(_) | ExKind::FloatToInt(_)
+        );
+        if self.types.is_scalar(t) && info.range.is_some() && (ex.ty != t || computed) && t != INTEGER {
             // Statically known to be in range: no check needed.
             let inside = match (self.static_value(&ex), info.static_range, info.static_frange) {
                 (Some(Static::Int(v)), Some((l, h)), _) => l <= v && v <= h,
                 (Some(Static::Real(v)), _, Some((l, h))) => l <= v && v <= h,
                 _ => false,
             };
-            let same_range = ex.ty != ERROR && self.types.get(ex.ty).static_range.is_some() && self.types.get(ex.ty).static_range == info.static_range;
+            let same_range = !computed && ex.ty != ERROR && self.types.get(ex.ty).static_range.is_some() && self.types.get(ex.ty).static_range == info.static_range;
             if !inside && !same_range {
                 let span = ex.span;
                 return self.mk(ExKind::RangeCheck(bx(ex), t), t, span);
@@ -155,8 +161,7 @@ impl Checker {
                 self.entity_types(&es)
             }
             ExprKind::Select(p, id) => {
-                let pes = self.denote(p, false);
-                if matches!(pes.first(), Some(Entity::Package(_))) {
+                if self.expanded_prefix(p) {
                     let es = self.denote(e, false);
                     return self.entity_types(&es);
                 }
@@ -263,6 +268,16 @@ impl Checker {
             ExprKind::Membership { .. } => vec![BOOLEAN],
             ExprKind::If { arms, .. } => arms.first().map(|a| self.interps(&a.1)).unwrap_or_default(),
             ExprKind::Case { arms, .. } => arms.first().map(|a| self.interps(&a.body)).unwrap_or_default(),
+        }
+    }
+
+    /// Is `p` the prefix of an expanded name (a package, or an enclosing
+    /// subprogram or named block), rather than a record value?
+    fn expanded_prefix(&mut self, p: &ast::Expr) -> bool {
+        match &p.kind {
+            ExprKind::Name(id) if self.scopes.iter().any(|s| s.name.as_deref() == Some(id.key.as_str())) => true,
+            ExprKind::Name(_) | ExprKind::Select(..) => matches!(self.denote(p, false).first(), Some(Entity::Package(_))),
+            _ => false,
         }
     }
 
@@ -549,11 +564,7 @@ impl Checker {
                 self.entity_value(&es, want, sp, &crate::syntax::parser::expr_text(e))
             }
             ExprKind::Select(p, id) => {
-                let pes = match &p.kind {
-                    ExprKind::Name(_) | ExprKind::Select(..) => self.denote(p, false),
-                    _ => Vec::new(),
-                };
-                if matches!(pes.first(), Some(Entity::Package(_))) {
+                if self.expanded_prefix(p) {
                     let es = self.denote(e, true);
                     return self.entity_value(&es, want, sp, &crate::syntax::parser::expr_text(e));
                 }
@@ -821,10 +832,7 @@ impl Checker {
     fn apply(&mut self, p: &ast::Expr, args: &[ast::Arg], want: Option<TypeId>, sp: Span) -> Ex {
         let pes = match &p.kind {
             ExprKind::Name(_) => self.denote(p, true),
-            ExprKind::Select(q, _) => match &q.kind {
-                ExprKind::Name(_) | ExprKind::Select(..) if matches!(self.denote(q, false).first(), Some(Entity::Package(_))) => self.denote(p, true),
-                _ => Vec::new(),
-            },
+            ExprKind::Select(q, _) if self.expanded_prefix(q) => self.denote(p, true),
             _ => Vec::new(),
         };
         if matches!(&p.kind, ExprKind::Name(_)) && pes.is_empty() {

@@ -45,6 +45,9 @@ pub enum Entity {
 struct Scope {
     names: HashMap<String, Vec<Entity>>,
     uses: Vec<usize>,
+    /// The name of the subprogram or block this scope belongs to (lower
+    /// case), for expanded names like `Main.X`.
+    name: Option<String>,
     /// The package whose spec (false) or body (true) this scope is.
     package: Option<(usize, bool)>,
 }
@@ -206,6 +209,11 @@ impl Checker {
 
     fn push_scope(&mut self) {
         self.scopes.push(Scope::default());
+    }
+    fn name_scope(&mut self, key: &str) {
+        if let Some(s) = self.scopes.last_mut() {
+            s.name = Some(key.to_string());
+        }
     }
     fn pop_scope(&mut self) {
         self.scopes.pop();
@@ -435,6 +443,15 @@ impl Checker {
                 es
             }
             ast::ExprKind::Select(p, id) => {
+                if let ast::ExprKind::Name(pn) = &p.kind
+                    && let Some(scope) = self.scopes.iter().rev().find(|s| s.name.as_deref() == Some(pn.key.as_str()))
+                {
+                    let es = scope.names.get(&id.key).cloned().unwrap_or_default();
+                    if es.is_empty() && report {
+                        self.err(Diagnostic::name(id.span, format!("`{}` is not declared in `{}`", id.name, pn.name)));
+                    }
+                    return es;
+                }
                 let pes = self.denote(p, report);
                 match pes.first() {
                     Some(Entity::Package(pk)) => {

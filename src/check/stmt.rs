@@ -218,8 +218,11 @@ impl Checker {
                     }
                 }
             }
-            S::Block { label: _, decls, body } => {
+            S::Block { label, decls, body } => {
                 self.push_scope();
+                if let Some(l) = label {
+                    self.name_scope(&l.key);
+                }
                 let mut elab = Vec::new();
                 self.decls(decls, &mut elab);
                 let inner = self.block(body);

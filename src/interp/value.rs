@@ -223,7 +223,10 @@ pub fn put_float(x: f64, fore: usize, aft: usize, exp: usize) -> String {
         let int = if neg { format!("-{}", &body[..1]) } else { body[..1].to_string() };
         format!("{}{}", pad_left(&int, fore), &body[1..])
     } else {
-        let (digits, e) = round_digits(x, aft, false);
+        let (mut digits, e) = round_digits(x, aft, false);
+        while digits.len() < aft + 1 {
+            digits.insert(0, 0);
+        }
         // digits hold the integer part (e + 1 digits, or a leading 0) and `aft` fraction digits.
         let int_len = digits.len() - aft;
         let (ip, fp) = digits.split_at(int_len);

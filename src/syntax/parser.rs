@@ -431,7 +431,13 @@ fn seq_end<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
     select! {
         Token::Kw(Kw::End) => (), Token::Kw(Kw::Elsif) => (), Token::Kw(Kw::Else) => (),
         Token::Kw(Kw::When) => (), Token::Kw(Kw::Exception) => (), Token::Kw(Kw::Or) => (),
-        Token::Kw(Kw::Begin) => (), Token::Kw(Kw::Private) => (),
+    }
+}
+
+/// Tokens that end a declarative part.
+fn decls_end<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
+    select! {
+        Token::Kw(Kw::End) => (), Token::Kw(Kw::Begin) => (), Token::Kw(Kw::Private) => (),
     }
 }
 
@@ -495,7 +501,6 @@ fn subprogram_spec<'t, I: TokIn<'t>>(expr: Boxed<'t, 't, I, Expr, Ex<'t>>) -> Bo
 }
 
 struct Parsers<'t, I: TokIn<'t>> {
-    decl: Boxed<'t, 't, I, Decl, Ex<'t>>,
     stmt: Boxed<'t, 't, I, Stmt, Ex<'t>>,
 }
 
@@ -515,7 +520,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .repeated()
         .collect::<Vec<_>>()
         .boxed();
-    let decls = seq_end()
+    let decls = decls_end()
         .not()
         .rewind()
         .ignore_then(decl.clone())
@@ -1164,10 +1169,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .boxed(),
     );
 
-    Parsers {
-        decl: decl.boxed(),
-        stmt: stmt.boxed(),
-    }
+    Parsers { stmt: stmt.boxed() }
 }
 
 fn unsupported(span: Span, what: &'static str) -> Decl {
@@ -1194,11 +1196,14 @@ fn compilation<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, CompilationUnit, Ex<'t>> 
         .ignore_then(name().separated_by(just(Token::Comma)).at_least(1).collect::<Vec<_>>())
         .then_ignore(semi())
         .map_with(|n, e| TopItem::With(n, e.span()));
+    // Statement position accepts declarations too (script mode), so one
+    // parser serves both; library units come back as declarations.
     let item = choice((
         with,
-        // A library-level declaration or body; in script mode also a statement.
-        p.decl.clone().map(TopItem::Decl),
-        p.stmt.clone().map(TopItem::Stmt),
+        p.stmt.clone().map(|s| match s.kind {
+            StmtKind::Decl(d) => TopItem::Decl(*d),
+            _ => TopItem::Stmt(s),
+        }),
     ));
     item.repeated()
         .collect::<Vec<_>>()
