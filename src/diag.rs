@@ -89,16 +89,16 @@ impl Diagnostic {
             .with_hint("close the string with `\"`; write `\"\"` for a quote inside it")
     }
     pub fn single_quoted_string(span: Span, text: &str) -> Self {
+        Self::new(Phase::Lexical, span, "string literal in single quotes")
+            .with_label("Ada strings use double quotes")
+            .with_hint(format!("write \"{text}\""))
+    }
+    pub fn bad_number(span: Span, why: impl Into<String>) -> Self {
         Self::new(
             Phase::Lexical,
             span,
-            "string literal in single quotes",
+            format!("malformed numeric literal: {}", why.into()),
         )
-        .with_label("Ada strings use double quotes")
-        .with_hint(format!("write \"{text}\""))
-    }
-    pub fn bad_number(span: Span, why: impl Into<String>) -> Self {
-        Self::new(Phase::Lexical, span, format!("malformed numeric literal: {}", why.into()))
     }
 
     // --- syntax ---
@@ -106,9 +106,13 @@ impl Diagnostic {
         Self::new(Phase::Syntax, span, message)
     }
     pub fn unsupported(span: Span, what: &str) -> Self {
-        Self::new(Phase::Unsupported, span, format!("{what} is not supported by AdaIR"))
-            .with_label("outside the AdaIR subset")
-            .with_hint("see docs/differences.md for the supported subset of Ada 2012")
+        Self::new(
+            Phase::Unsupported,
+            span,
+            format!("{what} is not supported by AdaIR"),
+        )
+        .with_label("outside the AdaIR subset")
+        .with_hint("see docs/differences.md for the supported subset of Ada 2012")
     }
 
     // --- names and types ---
@@ -137,10 +141,16 @@ impl Sources {
         (self.files.len() - 1) as FileId
     }
     pub fn name(&self, id: FileId) -> &str {
-        self.files.get(id as usize).map(|f| f.0.as_str()).unwrap_or("?")
+        self.files
+            .get(id as usize)
+            .map(|f| f.0.as_str())
+            .unwrap_or("?")
     }
     pub fn text(&self, id: FileId) -> &str {
-        self.files.get(id as usize).map(|f| f.1.as_str()).unwrap_or("")
+        self.files
+            .get(id as usize)
+            .map(|f| f.1.as_str())
+            .unwrap_or("")
     }
     /// 1-based line and column (in characters) of a byte offset.
     pub fn line_col(&self, id: FileId, offset: usize) -> (usize, usize) {
@@ -148,7 +158,12 @@ impl Sources {
         let offset = offset.min(text.len());
         let before = &text[..floor_char_boundary(text, offset)];
         let line = before.matches('\n').count() + 1;
-        let col = before.rsplit('\n').next().map(|l| l.chars().count()).unwrap_or(0) + 1;
+        let col = before
+            .rsplit('\n')
+            .next()
+            .map(|l| l.chars().count())
+            .unwrap_or(0)
+            + 1;
         (line, col)
     }
 }
@@ -183,7 +198,14 @@ fn clamp(sources: &Sources, s: Span) -> (FileId, std::ops::Range<usize>) {
 pub fn render(diags: &[Diagnostic], sources: &Sources, color: bool) -> String {
     use ariadne::{Color, Config, IndexType, Label, Report, ReportKind};
     let mut out = Vec::new();
-    let mut cache = Cache(sources, sources.files.iter().map(|(_, t)| ariadne::Source::from(t.as_str())).collect());
+    let mut cache = Cache(
+        sources,
+        sources
+            .files
+            .iter()
+            .map(|(_, t)| ariadne::Source::from(t.as_str()))
+            .collect(),
+    );
     for d in diags {
         let primary = clamp(sources, d.span);
         let (line, col) = sources.line_col(d.span.context, d.span.start);
@@ -210,7 +232,9 @@ pub fn render(diags: &[Diagnostic], sources: &Sources, color: bool) -> String {
         }
         report.add_label(label);
         for (i, (s, text)) in d.notes.iter().enumerate() {
-            let mut l = Label::new(clamp(sources, *s)).with_message(text).with_order(i as i32 + 1);
+            let mut l = Label::new(clamp(sources, *s))
+                .with_message(text)
+                .with_order(i as i32 + 1);
             if color {
                 l = l.with_color(Color::Blue);
             }
@@ -228,6 +252,14 @@ pub fn render(diags: &[Diagnostic], sources: &Sources, color: bool) -> String {
 pub fn one_line(d: &Diagnostic, sources: &Sources) -> String {
     let (line, col) = sources.line_col(d.span.context, d.span.start);
     let mut s = String::new();
-    let _ = write!(s, "{}:{}:{}: {}: {}", sources.name(d.span.context), line, col, d.phase.title(), d.message);
+    let _ = write!(
+        s,
+        "{}:{}:{}: {}: {}",
+        sources.name(d.span.context),
+        line,
+        col,
+        d.phase.title(),
+        d.message
+    );
     s
 }

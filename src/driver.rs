@@ -65,13 +65,22 @@ impl Session {
 
     /// Lexes, parses and checks one source. `script` forces script mode (the
     /// REPL); otherwise a file with top-level statements is a script.
-    pub fn check_source(&mut self, name: &str, text: &str, script: bool) -> Result<(Vec<Stmt>, Option<FuncId>), Vec<Diagnostic>> {
+    pub fn check_source(
+        &mut self,
+        name: &str,
+        text: &str,
+        script: bool,
+    ) -> Result<(Vec<Stmt>, Option<FuncId>), Vec<Diagnostic>> {
         let id = self.sources.add(name, text);
         self.machine.add_source(id, name, text);
         self.checker.add_text(id, text);
         let (unit, mut diags) = crate::syntax::parse_source(text, id);
         let Some(unit) = unit else { return Err(diags) };
-        let is_script = script || unit.items.iter().any(|i| matches!(i, crate::syntax::ast::TopItem::Stmt(_)));
+        let is_script = script
+            || unit
+                .items
+                .iter()
+                .any(|i| matches!(i, crate::syntax::ast::TopItem::Stmt(_)));
         if is_script {
             for p in SCRIPT_USES {
                 self.checker.use_everywhere(p);
@@ -103,8 +112,13 @@ impl Session {
     /// The diagnostic for an exception that left the program.
     pub fn exception_diag(&self, o: &Occurrence) -> Diagnostic {
         let name = &self.checker.excs[o.exc as usize].name;
-        let msg = if o.message.is_empty() { format!("raised {name}") } else { format!("raised {name} : {}", o.message) };
-        let mut d = Diagnostic::new(Phase::Runtime, o.span, msg).with_label(format!("{name} raised here"));
+        let msg = if o.message.is_empty() {
+            format!("raised {name}")
+        } else {
+            format!("raised {name} : {}", o.message)
+        };
+        let mut d =
+            Diagnostic::new(Phase::Runtime, o.span, msg).with_label(format!("{name} raised here"));
         let real = |s: &Span| !(s.start == 0 && s.end == 0);
         for s in o.chain.iter().filter(|s| real(s) && **s != o.span) {
             d = d.with_note(*s, "called from here");

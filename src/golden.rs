@@ -77,7 +77,10 @@ pub fn check_case(script: &Path, bless: bool) -> Verdict {
     let exp_path = expected_path(script);
     if bless {
         let tmp = exp_path.with_extension("out.tmp");
-        if std::fs::write(&tmp, &actual).and_then(|_| std::fs::rename(&tmp, &exp_path)).is_ok() {
+        if std::fs::write(&tmp, &actual)
+            .and_then(|_| std::fs::rename(&tmp, &exp_path))
+            .is_ok()
+        {
             return Verdict::Blessed;
         }
     }
@@ -107,7 +110,10 @@ pub fn collect(paths: &[PathBuf]) -> std::io::Result<Vec<PathBuf>> {
         } else if p.exists() {
             out.push(p.clone());
         } else {
-            return Err(std::io::Error::new(std::io::ErrorKind::NotFound, format!("{} does not exist", p.display())));
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::NotFound,
+                format!("{} does not exist", p.display()),
+            ));
         }
     }
     out.sort();

@@ -1,4 +1,5 @@
-//! The `adair` command line.
+//! The `adair` command line: the only place (with the REPL) that prints.
+#![allow(clippy::print_stdout, clippy::print_stderr)]
 
 use adair::driver::{Outcome, Session};
 use clap::{Parser, Subcommand};
@@ -7,7 +8,11 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 #[derive(Parser)]
-#[command(name = "adair", version, about = "AdaIR: Ada for industrial robots. Check, run and test robot programs.")]
+#[command(
+    name = "adair",
+    version,
+    about = "AdaIR: Ada for industrial robots. Check, run and test robot programs."
+)]
 struct Cli {
     /// Colours in diagnostics: auto (only on a terminal, and not with NO_COLOR), always, never.
     #[arg(long, global = true, default_value = "auto", value_parser = ["auto", "always", "never"])]
@@ -64,7 +69,9 @@ fn main() -> ExitCode {
     };
     let color = color(&cli.color);
     // Deep recursion in user programs needs a big stack for the tree walker.
-    let child = std::thread::Builder::new().stack_size(512 << 20).spawn(move || real_main(cli.command, color));
+    let child = std::thread::Builder::new()
+        .stack_size(512 << 20)
+        .spawn(move || real_main(cli.command, color));
     match child.map(|h| h.join()) {
         Ok(Ok(code)) => ExitCode::from(code),
         _ => {
@@ -90,7 +97,10 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             match &outcome {
                 Outcome::Ok => {}
                 Outcome::CheckFailed(d) => eprint!("{}", adair::diag::render(d, &s.sources, color)),
-                Outcome::Raised(d) => eprint!("{}", adair::diag::render(std::slice::from_ref(d), &s.sources, color)),
+                Outcome::Raised(d) => eprint!(
+                    "{}",
+                    adair::diag::render(std::slice::from_ref(d), &s.sources, color)
+                ),
             }
             outcome.exit_code() as u8
         }
@@ -110,7 +120,11 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             worst
         }
         Some(Command::Test { paths, bless }) => {
-            let paths = if paths.is_empty() { vec![PathBuf::from(".")] } else { paths };
+            let paths = if paths.is_empty() {
+                vec![PathBuf::from(".")]
+            } else {
+                paths
+            };
             let scripts = match adair::golden::collect(&paths) {
                 Ok(s) => s,
                 Err(e) => {
@@ -127,11 +141,19 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                         pass += 1;
                     }
                     adair::golden::Verdict::Missing => {
-                        println!("FAIL {}: no {} (run with --bless to create it)", s.display(), adair::golden::expected_path(s).display());
+                        println!(
+                            "FAIL {}: no {} (run with --bless to create it)",
+                            s.display(),
+                            adair::golden::expected_path(s).display()
+                        );
                         fail += 1;
                     }
                     adair::golden::Verdict::Differs { expected, actual } => {
-                        println!("FAIL {}\n{}", s.display(), adair::golden::diff(&expected, &actual));
+                        println!(
+                            "FAIL {}\n{}",
+                            s.display(),
+                            adair::golden::diff(&expected, &actual)
+                        );
                         fail += 1;
                     }
                 }

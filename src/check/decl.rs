@@ -34,7 +34,12 @@ impl Checker {
                 let v = match self.static_value(&ex) {
                     Some(v) => v,
                     None => {
-                        self.err(Diagnostic::ty(value.span, "a named number needs a static value").with_hint("give the constant a type: `K : constant Float := ...;`"));
+                        self.err(
+                            Diagnostic::ty(value.span, "a named number needs a static value")
+                                .with_hint(
+                                    "give the constant a type: `K : constant Float := ...;`",
+                                ),
+                        );
                         Static::Int(0)
                     }
                 };
@@ -44,7 +49,11 @@ impl Checker {
             }
             DeclKind::Type { name, def } => {
                 // Completing an incomplete type keeps its id.
-                let prev = self.scopes.last().and_then(|s| s.names.get(&name.key)).and_then(|es| es.last().cloned());
+                let prev = self
+                    .scopes
+                    .last()
+                    .and_then(|s| s.names.get(&name.key))
+                    .and_then(|es| es.last().cloned());
                 if let Some(Entity::Type(old)) = prev
                     && matches!(self.types.kind(old), TypeKind::Incomplete)
                 {
@@ -71,7 +80,9 @@ impl Checker {
             DeclKind::Exception { names } => {
                 for n in names {
                     let id = self.excs.len() as ExcId;
-                    self.excs.push(Exception { name: self.exc_name(&n.name) });
+                    self.excs.push(Exception {
+                        name: self.exc_name(&n.name),
+                    });
                     self.declare_checked(n, Entity::Exc(id));
                 }
             }
@@ -80,7 +91,10 @@ impl Checker {
                 if let Some(f) = f {
                     if let Some(name) = import {
                         if !self.known_builtin(name) {
-                            self.err(Diagnostic::name(spec.span, format!("no builtin named \"{name}\"")));
+                            self.err(Diagnostic::name(
+                                spec.span,
+                                format!("no builtin named \"{name}\""),
+                            ));
                         }
                         self.imports[f as usize] = Some(name.clone());
                     }
@@ -119,7 +133,15 @@ impl Checker {
         }
     }
 
-    fn object(&mut self, names: &[ast::Ident], constant: bool, t: TypeId, init: Option<&ast::Expr>, span: Span, out: &mut Vec<Stmt>) {
+    fn object(
+        &mut self,
+        names: &[ast::Ident],
+        constant: bool,
+        t: TypeId,
+        init: Option<&ast::Expr>,
+        span: Span,
+        out: &mut Vec<Stmt>,
+    ) {
         let unconstrained_array = self.types.array(t).is_some_and(|a| a.2.is_none());
         let init_ex = init.map(|e| {
             let ex = self.expr(e, Some(t));
@@ -135,7 +157,10 @@ impl Checker {
             self.err(Diagnostic::ty(span, "a constant needs an initial value"));
         }
         let static_v = if constant {
-            init_ex.as_ref().and_then(|e| self.static_value(e)).filter(|_| self.types.is_scalar(t))
+            init_ex
+                .as_ref()
+                .and_then(|e| self.static_value(e))
+                .filter(|_| self.types.is_scalar(t))
         } else {
             None
         };
@@ -186,25 +211,52 @@ impl Checker {
             None => t,
             Some(ast::Constraint::Range(lo, hi)) => {
                 if !self.types.is_scalar(t) && t != ERROR {
-                    self.err(Diagnostic::ty(ind.span, format!("a range constraint needs a scalar type, not `{}`", self.types.name(t))));
+                    self.err(Diagnostic::ty(
+                        ind.span,
+                        format!(
+                            "a range constraint needs a scalar type, not `{}`",
+                            self.types.name(t)
+                        ),
+                    ));
                     return t;
                 }
                 let name = self.types.name(t).to_string();
                 self.constrained_scalar(&name, t, lo, hi)
             }
             Some(ast::Constraint::Index(ranges)) => {
-                let Some((index, elem, bounds)) = self.types.array(t).map(|(i, e, b)| (i.to_vec(), e, b.is_some())) else {
+                let Some((index, elem, bounds)) = self
+                    .types
+                    .array(t)
+                    .map(|(i, e, b)| (i.to_vec(), e, b.is_some()))
+                else {
                     if t != ERROR {
-                        self.err(Diagnostic::ty(ind.span, format!("`{}` is not an array type and takes no index constraint", self.types.name(t))));
+                        self.err(Diagnostic::ty(
+                            ind.span,
+                            format!(
+                                "`{}` is not an array type and takes no index constraint",
+                                self.types.name(t)
+                            ),
+                        ));
                     }
                     return t;
                 };
                 if bounds {
-                    self.err(Diagnostic::ty(ind.span, format!("`{}` is already constrained", self.types.name(t))));
+                    self.err(Diagnostic::ty(
+                        ind.span,
+                        format!("`{}` is already constrained", self.types.name(t)),
+                    ));
                     return t;
                 }
                 if ranges.len() != index.len() {
-                    self.err(Diagnostic::ty(ind.span, format!("`{}` has {} index(es), the constraint gives {}", self.types.name(t), index.len(), ranges.len())));
+                    self.err(Diagnostic::ty(
+                        ind.span,
+                        format!(
+                            "`{}` has {} index(es), the constraint gives {}",
+                            self.types.name(t),
+                            index.len(),
+                            ranges.len()
+                        ),
+                    ));
                     return t;
                 }
                 let mut bs = Vec::new();
@@ -224,7 +276,13 @@ impl Checker {
         }
     }
 
-    fn constrained_scalar(&mut self, name: &str, t: TypeId, lo: &ast::Expr, hi: &ast::Expr) -> TypeId {
+    fn constrained_scalar(
+        &mut self,
+        name: &str,
+        t: TypeId,
+        lo: &ast::Expr,
+        hi: &ast::Expr,
+    ) -> TypeId {
         let base = self.types.base(t);
         let l = self.expr(lo, Some(base));
         let l = self.coerce(l, base);
@@ -249,7 +307,11 @@ impl Checker {
     }
 
     /// A discrete range: returns low and high bound expressions and the type.
-    pub(super) fn discrete_range(&mut self, r: &ast::DiscreteRange, want: Option<TypeId>) -> (Ex, Ex, TypeId) {
+    pub(super) fn discrete_range(
+        &mut self,
+        r: &ast::DiscreteRange,
+        want: Option<TypeId>,
+    ) -> (Ex, Ex, TypeId) {
         match r {
             ast::DiscreteRange::Range(a, b) => {
                 let t = match want {
@@ -261,14 +323,26 @@ impl Checker {
                 let h = self.expr(b, Some(t));
                 let h = self.coerce(h, self.types.base(t));
                 if !self.types.is_discrete(t) && t != ERROR {
-                    self.err(Diagnostic::ty(a.span, format!("a discrete range is needed, `{}` is not discrete", self.types.name(t))).with_hint("ranges of loops and indices are integers or enumerations"));
+                    self.err(
+                        Diagnostic::ty(
+                            a.span,
+                            format!(
+                                "a discrete range is needed, `{}` is not discrete",
+                                self.types.name(t)
+                            ),
+                        )
+                        .with_hint("ranges of loops and indices are integers or enumerations"),
+                    );
                 }
                 (l, h, t)
             }
             ast::DiscreteRange::Subtype(ind) => {
                 let t = self.subtype_ind(ind);
                 if !self.types.is_discrete(t) && t != ERROR {
-                    self.err(Diagnostic::ty(ind.span, format!("`{}` is not a discrete type", self.types.name(t))));
+                    self.err(Diagnostic::ty(
+                        ind.span,
+                        format!("`{}` is not a discrete type", self.types.name(t)),
+                    ));
                 }
                 let sp = ind.span;
                 (
@@ -309,8 +383,12 @@ impl Checker {
                 self.types.list[t as usize].static_range = Some((0, n as i128 - 1));
                 for (i, l) in lits.iter().enumerate() {
                     match l {
-                        ast::EnumLit::Ident(id) => self.declare_checked(id, Entity::EnumLit(t, i as i64)),
-                        ast::EnumLit::Char(c, _) => self.declare(&format!("'{c}'"), Entity::EnumLit(t, i as i64)),
+                        ast::EnumLit::Ident(id) => {
+                            self.declare_checked(id, Entity::EnumLit(t, i as i64))
+                        }
+                        ast::EnumLit::Char(c, _) => {
+                            self.declare(&format!("'{c}'"), Entity::EnumLit(t, i as i64))
+                        }
                     }
                 }
                 t
@@ -322,10 +400,18 @@ impl Checker {
                 match (self.static_value(&l), self.static_value(&h)) {
                     (Some(Static::Int(a)), Some(Static::Int(b))) => {
                         if a < INT_FIRST || b > INT_LAST {
-                            self.err(Diagnostic::ty(span, "integer types of AdaIR are 32-bit").with_hint(format!("the range must lie in {INT_FIRST} .. {INT_LAST}")));
+                            self.err(
+                                Diagnostic::ty(span, "integer types of AdaIR are 32-bit")
+                                    .with_hint(format!(
+                                        "the range must lie in {INT_FIRST} .. {INT_LAST}"
+                                    )),
+                            );
                         }
                     }
-                    _ => self.err(Diagnostic::ty(span, "the range of an integer type must be static")),
+                    _ => self.err(Diagnostic::ty(
+                        span,
+                        "the range of an integer type must be static",
+                    )),
                 }
                 let (l, h) = (Ex { ty: t, ..l }, Ex { ty: t, ..h });
                 self.set_range(t, l, h);
@@ -334,7 +420,10 @@ impl Checker {
             TypeDef::Float { digits, range } => {
                 let d = self.expr(digits, Some(UNIV_INT));
                 if self.static_value(&d).is_none() {
-                    self.err(Diagnostic::ty(digits.span, "`digits` needs a static integer"));
+                    self.err(Diagnostic::ty(
+                        digits.span,
+                        "`digits` needs a static integer",
+                    ));
                 }
                 let t = self.types.add(&name.name, TypeKind::Float);
                 if let Some((lo, hi)) = range {
@@ -353,7 +442,11 @@ impl Checker {
                 info.base = id;
                 if let TypeKind::Enum(_) = &info.kind {
                     // Derived enumeration types get their own literals.
-                    let lits = self.types.enum_lits(parent).map(|l| l.to_vec()).unwrap_or_default();
+                    let lits = self
+                        .types
+                        .enum_lits(parent)
+                        .map(|l| l.to_vec())
+                        .unwrap_or_default();
                     info.kind = TypeKind::Enum(lits.clone());
                     self.types.list.push(info);
                     for (i, l) in lits.iter().enumerate() {
@@ -377,7 +470,10 @@ impl Checker {
             TypeDef::Array { index, elem } => {
                 let et = self.subtype_ind(elem);
                 if matches!(self.types.array(et), Some((_, _, None))) {
-                    self.err(Diagnostic::ty(elem.span, "array components must have a constrained type").with_hint("give the component type bounds, e.g. `String (1 .. 10)`"));
+                    self.err(
+                        Diagnostic::ty(elem.span, "array components must have a constrained type")
+                            .with_hint("give the component type bounds, e.g. `String (1 .. 10)`"),
+                    );
                 }
                 match index {
                     ast::ArrayIndex::Unconstrained(marks) => {
@@ -396,7 +492,11 @@ impl Checker {
                         let mut bs = Vec::new();
                         for r in ranges {
                             let (l, h, t) = self.discrete_range(r, None);
-                            let t = if self.types.is_universal(t) { INTEGER } else { t };
+                            let t = if self.types.is_universal(t) {
+                                INTEGER
+                            } else {
+                                t
+                            };
                             idx.push(self.types.base(t));
                             bs.push((l, h));
                         }
@@ -416,7 +516,10 @@ impl Checker {
                 for c in components {
                     let t = self.subtype_ind(&c.ty);
                     if matches!(self.types.array(t), Some((_, _, None))) {
-                        self.err(Diagnostic::ty(c.ty.span, "record components must have a constrained type"));
+                        self.err(Diagnostic::ty(
+                            c.ty.span,
+                            "record components must have a constrained type",
+                        ));
                     }
                     let default = c.default.as_ref().map(|d| {
                         let ex = self.expr(d, Some(t));
@@ -424,7 +527,10 @@ impl Checker {
                     });
                     for n in &c.names {
                         if fields.iter().any(|f| f.key == n.key) {
-                            self.err(Diagnostic::name(n.span, format!("component `{}` is declared twice", n.name)));
+                            self.err(Diagnostic::name(
+                                n.span,
+                                format!("component `{}` is declared twice", n.name),
+                            ));
                         }
                         fields.push(Field {
                             name: n.name.clone(),
@@ -459,7 +565,10 @@ impl Checker {
                 self.coerce(ex, t)
             });
             if default.is_some() && p.mode != ast::Mode::In {
-                self.err(Diagnostic::ty(p.span, "only `in` parameters can have default values"));
+                self.err(Diagnostic::ty(
+                    p.span,
+                    "only `in` parameters can have default values",
+                ));
             }
             for n in &p.names {
                 out.push(Param {
@@ -475,19 +584,32 @@ impl Checker {
 
     fn same_profile(&self, a: &Subprogram, params: &[Param], ret: Option<TypeId>) -> bool {
         a.params.len() == params.len()
-            && a.params.iter().zip(params).all(|(x, y)| self.types.base(x.ty) == self.types.base(y.ty) && x.mode == y.mode)
+            && a.params
+                .iter()
+                .zip(params)
+                .all(|(x, y)| self.types.base(x.ty) == self.types.base(y.ty) && x.mode == y.mode)
             && a.ret.map(|t| self.types.base(t)) == ret.map(|t| self.types.base(t))
     }
 
     /// Declares a subprogram (or finds its earlier declaration) and returns its id.
-    fn subprogram_decl(&mut self, spec: &ast::SubprogramSpec, declare_only: bool) -> Option<FuncId> {
+    fn subprogram_decl(
+        &mut self,
+        spec: &ast::SubprogramSpec,
+        declare_only: bool,
+    ) -> Option<FuncId> {
         let params = self.params(&spec.params);
         let ret = spec.ret.as_ref().map(|r| self.type_mark(r));
         let key = spec.name.key();
         if let ast::Designator::Op(op, sp) = &spec.name {
-            let ok = ["+", "-", "*", "/", "**", "=", "<", "<=", ">", ">=", "&", "abs", "not", "and", "or", "xor", "mod", "rem"];
+            let ok = [
+                "+", "-", "*", "/", "**", "=", "<", "<=", ">", ">=", "&", "abs", "not", "and",
+                "or", "xor", "mod", "rem",
+            ];
             if !ok.contains(&op.to_ascii_lowercase().as_str()) {
-                self.err(Diagnostic::syntax(*sp, format!("\"{op}\" is not an operator symbol")));
+                self.err(Diagnostic::syntax(
+                    *sp,
+                    format!("\"{op}\" is not an operator symbol"),
+                ));
             }
         }
         // A body completes an earlier declaration with the same profile.
@@ -495,19 +617,41 @@ impl Checker {
             .scopes
             .last()
             .and_then(|s| s.names.get(&key))
-            .map(|es| es.iter().filter_map(|e| if let Entity::Func(f) = e { Some(*f) } else { None }).collect())
+            .map(|es| {
+                es.iter()
+                    .filter_map(|e| {
+                        if let Entity::Func(f) = e {
+                            Some(*f)
+                        } else {
+                            None
+                        }
+                    })
+                    .collect()
+            })
             .unwrap_or_default();
         let mut existing = existing;
         if let Some((p, true)) = self.scopes.last().and_then(|s| s.package)
             && let Some(es) = self.packages[p].names.get(&key)
         {
-            existing.extend(es.iter().filter_map(|e| if let Entity::Func(f) = e { Some(*f) } else { None }));
+            existing.extend(es.iter().filter_map(|e| {
+                if let Entity::Func(f) = e {
+                    Some(*f)
+                } else {
+                    None
+                }
+            }));
         }
         for f in existing {
             let sub = &self.funcs[f as usize];
             if self.same_profile(sub, &params, ret) {
                 if declare_only || sub.body.is_some() || self.imports[f as usize].is_some() {
-                    self.err(Diagnostic::name(spec.span, format!("`{}` is already declared with this profile", spec.name.display())));
+                    self.err(Diagnostic::name(
+                        spec.span,
+                        format!(
+                            "`{}` is already declared with this profile",
+                            spec.name.display()
+                        ),
+                    ));
                 }
                 return Some(f);
             }
@@ -531,11 +675,16 @@ impl Checker {
     }
 
     fn subprogram_body(&mut self, b: &ast::SubprogramBody) {
-        let Some(f) = self.subprogram_decl(&b.spec, false) else { return };
+        let Some(f) = self.subprogram_decl(&b.spec, false) else {
+            return;
+        };
         if let Some((end, sp)) = &b.end_name {
             let name = b.spec.name.display();
             if !end.eq_ignore_ascii_case(&name) {
-                self.err(Diagnostic::syntax(*sp, format!("`end {end};` does not match `{name}`")).with_hint(format!("write `end {name};`")));
+                self.err(
+                    Diagnostic::syntax(*sp, format!("`end {end};` does not match `{name}`"))
+                        .with_hint(format!("write `end {name};`")),
+                );
             }
         }
         let ret = self.funcs[f as usize].ret;
@@ -576,8 +725,14 @@ impl Checker {
         self.level -= 1;
         if ret.is_some() && !ctx.saw_return {
             self.err(
-                Diagnostic::ty(b.spec.span, format!("function `{}` has no `return` statement", b.spec.name.display()))
-                    .with_hint("a function must return a value on every path: add `return Value;`"),
+                Diagnostic::ty(
+                    b.spec.span,
+                    format!(
+                        "function `{}` has no `return` statement",
+                        b.spec.name.display()
+                    ),
+                )
+                .with_hint("a function must return a value on every path: add `return Value;`"),
             );
         }
         let sub = &mut self.funcs[f as usize];
@@ -613,7 +768,10 @@ impl Checker {
         self.scopes.last_mut().expect("scope").package = Some((idx, false));
         // Child units see their parents' declarations.
         if let Some((parent, _)) = full.rsplit_once('.')
-            && let Some(pi) = self.packages.iter().position(|x| x.name.eq_ignore_ascii_case(parent))
+            && let Some(pi) = self
+                .packages
+                .iter()
+                .position(|x| x.name.eq_ignore_ascii_case(parent))
         {
             self.scopes.last_mut().expect("scope").uses.push(pi);
         }
@@ -632,7 +790,13 @@ impl Checker {
         let idx = match self.denote(&p.name, false).first() {
             Some(Entity::Package(i)) => *i,
             _ => {
-                self.err(Diagnostic::name(p.name.span, format!("package body `{name}` has no package spec")).with_hint(format!("declare `package {name} is ... end {name};` first")));
+                self.err(
+                    Diagnostic::name(
+                        p.name.span,
+                        format!("package body `{name}` has no package spec"),
+                    )
+                    .with_hint(format!("declare `package {name} is ... end {name};` first")),
+                );
                 return;
             }
         };
@@ -657,12 +821,20 @@ impl Checker {
             .values()
             .flatten()
             .filter_map(|e| match e {
-                Entity::Func(f) if self.funcs[*f as usize].body.is_none() && self.imports[*f as usize].is_none() => Some(self.funcs[*f as usize].name.clone()),
+                Entity::Func(f)
+                    if self.funcs[*f as usize].body.is_none()
+                        && self.imports[*f as usize].is_none() =>
+                {
+                    Some(self.funcs[*f as usize].name.clone())
+                }
                 _ => None,
             })
             .collect();
         for m in missing {
-            self.err(Diagnostic::name(p.span, format!("package body `{name}` lacks a body for `{m}`")));
+            self.err(Diagnostic::name(
+                p.span,
+                format!("package body `{name}` lacks a body for `{m}`"),
+            ));
         }
     }
 
@@ -681,7 +853,9 @@ impl Checker {
                 _ => return None,
             },
             ExKind::IntBin(op, a, b) => {
-                let (Int(x), Int(y)) = (self.static_value(a)?, self.static_value(b)?) else { return None };
+                let (Int(x), Int(y)) = (self.static_value(a)?, self.static_value(b)?) else {
+                    return None;
+                };
                 Int(match op {
                     IntOp::Add => x.checked_add(y)?,
                     IntOp::Sub => x.checked_sub(y)?,

@@ -39,22 +39,42 @@ impl Checker {
             return ex;
         }
         if !self.types.compatible(ex.ty, t) {
-            let mut d = Diagnostic::ty(ex.span, format!("expected `{}`, found {}", self.tname(t), self.found_desc(ex.ty)))
-                .with_label(format!("this has type `{}`", self.tname(ex.ty)));
+            let mut d = Diagnostic::ty(
+                ex.span,
+                format!(
+                    "expected `{}`, found {}",
+                    self.tname(t),
+                    self.found_desc(ex.ty)
+                ),
+            )
+            .with_label(format!("this has type `{}`", self.tname(ex.ty)));
             let (tf, ti) = (self.types.is_float(t), self.types.is_integer(t));
             if tf && self.types.is_integer(ex.ty) {
                 d = match &ex.kind {
                     ExKind::Int(v) => d.with_hint(format!("write the literal as a real: `{v}.0`")),
-                    _ => d.with_hint(format!("convert it: `{} ({})`", self.types.name(t), self.snippet(ex.span))),
+                    _ => d.with_hint(format!(
+                        "convert it: `{} ({})`",
+                        self.types.name(t),
+                        self.snippet(ex.span)
+                    )),
                 };
             } else if ti && self.types.is_float(ex.ty) {
-                d = d.with_hint(format!("convert it: `{} ({})` (rounds to nearest, ties away from zero)", self.types.name(t), self.snippet(ex.span)));
+                d = d.with_hint(format!(
+                    "convert it: `{} ({})` (rounds to nearest, ties away from zero)",
+                    self.types.name(t),
+                    self.snippet(ex.span)
+                ));
             }
             self.err(d);
             ex.ty = ERROR;
             return ex;
         }
-        if self.types.is_universal(ex.ty) || matches!(self.types.kind(ex.ty), TypeKind::Null | TypeKind::AnyComposite) {
+        if self.types.is_universal(ex.ty)
+            || matches!(
+                self.types.kind(ex.ty),
+                TypeKind::Null | TypeKind::AnyComposite
+            )
+        {
             ex.ty = t;
         }
         let info = self.types.get(t);
@@ -62,16 +82,34 @@ impl Checker {
         // the subtype even when their type is the subtype itself.
         let computed = matches!(
             ex.kind,
-            ExKind::IntBin(..) | ExKind::FloatBin(..) | ExKind::IntNeg(_) | ExKind::FloatNeg(_) | ExKind::IntAbs(_) | ExKind::FloatAbs(_) | ExKind::IntToFloat(_) | ExKind::FloatToInt(_)
+            ExKind::IntBin(..)
+                | ExKind::FloatBin(..)
+                | ExKind::IntNeg(_)
+                | ExKind::FloatNeg(_)
+                | ExKind::IntAbs(_)
+                | ExKind::FloatAbs(_)
+                | ExKind::IntToFloat(_)
+                | ExKind::FloatToInt(_)
         );
-        if self.types.is_scalar(t) && info.range.is_some() && (ex.ty != t || computed) && t != INTEGER {
+        if self.types.is_scalar(t)
+            && info.range.is_some()
+            && (ex.ty != t || computed)
+            && t != INTEGER
+        {
             // Statically known to be in range: no check needed.
-            let inside = match (self.static_value(&ex), info.static_range, info.static_frange) {
+            let inside = match (
+                self.static_value(&ex),
+                info.static_range,
+                info.static_frange,
+            ) {
                 (Some(Static::Int(v)), Some((l, h)), _) => l <= v && v <= h,
                 (Some(Static::Real(v)), _, Some((l, h))) => l <= v && v <= h,
                 _ => false,
             };
-            let same_range = !computed && ex.ty != ERROR && self.types.get(ex.ty).static_range.is_some() && self.types.get(ex.ty).static_range == info.static_range;
+            let same_range = !computed
+                && ex.ty != ERROR
+                && self.types.get(ex.ty).static_range.is_some()
+                && self.types.get(ex.ty).static_range == info.static_range;
             if !inside && !same_range {
                 let span = ex.span;
                 return self.mk(ExKind::RangeCheck(bx(ex), t), t, span);
@@ -103,7 +141,12 @@ impl Checker {
         let mut univ = None;
         for e in es {
             for t in self.interps(e) {
-                if !self.types.is_universal(t) && !matches!(self.types.kind(t), TypeKind::Null | TypeKind::AnyComposite | TypeKind::Error) {
+                if !self.types.is_universal(t)
+                    && !matches!(
+                        self.types.kind(t),
+                        TypeKind::Null | TypeKind::AnyComposite | TypeKind::Error
+                    )
+                {
                     if es.iter().all(|x| self.fits(x, t)) {
                         return t;
                     }
@@ -125,14 +168,23 @@ impl Checker {
             return true;
         }
         match &e.kind {
-            ExprKind::Str(_) => self.types.array(t).is_some_and(|(i, el, _)| i.len() == 1 && self.types.base(el) == CHARACTER),
-            ExprKind::Aggregate(_) => matches!(self.types.kind(t), TypeKind::Array { .. } | TypeKind::Record(_)),
+            ExprKind::Str(_) => self
+                .types
+                .array(t)
+                .is_some_and(|(i, el, _)| i.len() == 1 && self.types.base(el) == CHARACTER),
+            ExprKind::Aggregate(_) => matches!(
+                self.types.kind(t),
+                TypeKind::Array { .. } | TypeKind::Record(_)
+            ),
             ExprKind::Allocator(..) | ExprKind::Null => self.types.is_access(t),
             ExprKind::Paren(x) => self.fits(x, t),
             ExprKind::If { arms, .. } => arms.first().is_none_or(|a| self.fits(&a.1, t)),
             _ => {
                 let is = self.interps(e);
-                is.is_empty() || is.iter().any(|u| *u == ERROR || self.types.compatible(*u, t))
+                is.is_empty()
+                    || is
+                        .iter()
+                        .any(|u| *u == ERROR || self.types.compatible(*u, t))
             }
         }
     }
@@ -168,13 +220,21 @@ impl Checker {
                 let mut out = Vec::new();
                 for t in self.interps(p) {
                     let t = self.types.designated(t).unwrap_or(t);
-                    if let Some(f) = self.types.fields(t).and_then(|fs| fs.iter().find(|f| f.key == id.key)) {
+                    if let Some(f) = self
+                        .types
+                        .fields(t)
+                        .and_then(|fs| fs.iter().find(|f| f.key == id.key))
+                    {
                         out.push(f.ty);
                     }
                 }
                 out
             }
-            ExprKind::Deref(p) => self.interps(p).into_iter().filter_map(|t| self.types.designated(t)).collect(),
+            ExprKind::Deref(p) => self
+                .interps(p)
+                .into_iter()
+                .filter_map(|t| self.types.designated(t))
+                .collect(),
             ExprKind::Apply(p, args) => {
                 let pes = match &p.kind {
                     ExprKind::Name(_) | ExprKind::Select(..) => self.denote(p, false),
@@ -183,7 +243,16 @@ impl Checker {
                 match pes.first() {
                     Some(Entity::Type(t)) => vec![*t],
                     Some(Entity::Func(_)) => {
-                        let fs: Vec<FuncId> = pes.iter().filter_map(|e| if let Entity::Func(f) = e { Some(*f) } else { None }).collect();
+                        let fs: Vec<FuncId> = pes
+                            .iter()
+                            .filter_map(|e| {
+                                if let Entity::Func(f) = e {
+                                    Some(*f)
+                                } else {
+                                    None
+                                }
+                            })
+                            .collect();
                         let mut out = Vec::new();
                         for f in fs {
                             if let Some(r) = self.funcs[f as usize].ret
@@ -200,7 +269,11 @@ impl Checker {
                             let t = self.types.designated(t).unwrap_or(t);
                             if let Some((idx, el, _)) = self.types.array(t) {
                                 let slice = args.len() == 1 && is_range_arg(&args[0].value);
-                                out.push(if slice || idx.len() != args.len() { t } else { el });
+                                out.push(if slice || idx.len() != args.len() {
+                                    t
+                                } else {
+                                    el
+                                });
                             }
                         }
                         out
@@ -230,10 +303,19 @@ impl Checker {
                 _ => vec![],
             },
             ExprKind::Binary(op, a, b) => match op {
-                BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge => vec![BOOLEAN],
-                BinOp::And | BinOp::Or | BinOp::Xor | BinOp::AndThen | BinOp::OrElse => vec![BOOLEAN],
+                BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge => {
+                    vec![BOOLEAN]
+                }
+                BinOp::And | BinOp::Or | BinOp::Xor | BinOp::AndThen | BinOp::OrElse => {
+                    vec![BOOLEAN]
+                }
                 BinOp::Cat => {
-                    let mut v: Vec<TypeId> = self.interps(a).into_iter().chain(self.interps(b)).filter(|t| self.types.is_array(*t)).collect();
+                    let mut v: Vec<TypeId> = self
+                        .interps(a)
+                        .into_iter()
+                        .chain(self.interps(b))
+                        .filter(|t| self.types.is_array(*t))
+                        .collect();
                     if v.is_empty() {
                         v.push(STRING);
                     }
@@ -244,7 +326,9 @@ impl Checker {
                     let (l, r) = (self.interps(a), self.interps(b));
                     for &x in &l {
                         for &y in &r {
-                            if !self.types.is_numeric(x) || !(self.types.is_numeric(y) || y == ERROR) {
+                            if !self.types.is_numeric(x)
+                                || !(self.types.is_numeric(y) || y == ERROR)
+                            {
                                 continue;
                             }
                             if *op == BinOp::Pow {
@@ -253,9 +337,15 @@ impl Checker {
                                 }
                             } else if self.types.compatible(x, y) || self.types.compatible(y, x) {
                                 out.push(if self.types.is_universal(x) { y } else { x });
-                            } else if self.types.base(x) == DURATION && self.types.is_integer(y) && matches!(op, BinOp::Mul | BinOp::Div) {
+                            } else if self.types.base(x) == DURATION
+                                && self.types.is_integer(y)
+                                && matches!(op, BinOp::Mul | BinOp::Div)
+                            {
                                 out.push(DURATION);
-                            } else if self.types.base(y) == DURATION && self.types.is_integer(x) && *op == BinOp::Mul {
+                            } else if self.types.base(y) == DURATION
+                                && self.types.is_integer(x)
+                                && *op == BinOp::Mul
+                            {
                                 out.push(DURATION);
                             }
                         }
@@ -264,10 +354,19 @@ impl Checker {
                 }
             },
             ExprKind::Unary(UnOp::Not, _) => vec![BOOLEAN],
-            ExprKind::Unary(_, a) => self.interps(a).into_iter().filter(|t| self.types.is_numeric(*t)).collect(),
+            ExprKind::Unary(_, a) => self
+                .interps(a)
+                .into_iter()
+                .filter(|t| self.types.is_numeric(*t))
+                .collect(),
             ExprKind::Membership { .. } => vec![BOOLEAN],
-            ExprKind::If { arms, .. } => arms.first().map(|a| self.interps(&a.1)).unwrap_or_default(),
-            ExprKind::Case { arms, .. } => arms.first().map(|a| self.interps(&a.body)).unwrap_or_default(),
+            ExprKind::If { arms, .. } => {
+                arms.first().map(|a| self.interps(&a.1)).unwrap_or_default()
+            }
+            ExprKind::Case { arms, .. } => arms
+                .first()
+                .map(|a| self.interps(&a.body))
+                .unwrap_or_default(),
         }
     }
 
@@ -275,8 +374,17 @@ impl Checker {
     /// subprogram or named block), rather than a record value?
     fn expanded_prefix(&mut self, p: &ast::Expr) -> bool {
         match &p.kind {
-            ExprKind::Name(id) if self.scopes.iter().any(|s| s.name.as_deref() == Some(id.key.as_str())) => true,
-            ExprKind::Name(_) | ExprKind::Select(..) => matches!(self.denote(p, false).first(), Some(Entity::Package(_))),
+            ExprKind::Name(id)
+                if self
+                    .scopes
+                    .iter()
+                    .any(|s| s.name.as_deref() == Some(id.key.as_str())) =>
+            {
+                true
+            }
+            ExprKind::Name(_) | ExprKind::Select(..) => {
+                matches!(self.denote(p, false).first(), Some(Entity::Package(_)))
+            }
             _ => false,
         }
     }
@@ -308,7 +416,13 @@ impl Checker {
     fn op_funcs(&self, sym: &str, arity: usize) -> Vec<FuncId> {
         self.lookup(&format!("\"{sym}\""))
             .into_iter()
-            .filter_map(|e| if let Entity::Func(f) = e { Some(f) } else { None })
+            .filter_map(|e| {
+                if let Entity::Func(f) = e {
+                    Some(f)
+                } else {
+                    None
+                }
+            })
             .filter(|f| self.funcs[*f as usize].params.len() == arity)
             .collect()
     }
@@ -322,7 +436,11 @@ impl Checker {
                 Entity::EnumLit(t, _) => Some(*t),
                 Entity::Func(f) => {
                     let s = &self.funcs[*f as usize];
-                    if s.params.iter().all(|p| p.default.is_some()) { s.ret } else { None }
+                    if s.params.iter().all(|p| p.default.is_some()) {
+                        s.ret
+                    } else {
+                        None
+                    }
                 }
                 _ => None,
             })
@@ -331,7 +449,11 @@ impl Checker {
 
     /// Maps actual arguments to the formals of `f`: one entry per formal,
     /// `None` where the default applies. `Err` says why they do not match.
-    fn match_args<'a>(&self, f: FuncId, args: &'a [ast::Arg]) -> Result<Vec<Option<&'a ast::Arg>>, String> {
+    fn match_args<'a>(
+        &self,
+        f: FuncId,
+        args: &'a [ast::Arg],
+    ) -> Result<Vec<Option<&'a ast::Arg>>, String> {
         let sub = &self.funcs[f as usize];
         let mut slots: Vec<Option<&ast::Arg>> = vec![None; sub.params.len()];
         let mut named = false;
@@ -342,18 +464,35 @@ impl Checker {
                         return Err("a positional argument cannot follow a named one".into());
                     }
                     if i >= slots.len() {
-                        return Err(format!("`{}` takes {} argument(s), {} given", sub.name, sub.params.len(), args.len()));
+                        return Err(format!(
+                            "`{}` takes {} argument(s), {} given",
+                            sub.name,
+                            sub.params.len(),
+                            args.len()
+                        ));
                     }
                     slots[i] = Some(a);
                 }
                 Some(n) => {
                     named = true;
-                    match sub.params.iter().position(|p| p.name.eq_ignore_ascii_case(&n.name)) {
-                        Some(j) if slots[j].is_some() => return Err(format!("parameter `{}` is given twice", n.name)),
+                    match sub
+                        .params
+                        .iter()
+                        .position(|p| p.name.eq_ignore_ascii_case(&n.name))
+                    {
+                        Some(j) if slots[j].is_some() => {
+                            return Err(format!("parameter `{}` is given twice", n.name));
+                        }
                         Some(j) => slots[j] = Some(a),
                         None => {
-                            let names: Vec<&str> = sub.params.iter().map(|p| p.name.as_str()).collect();
-                            return Err(format!("`{}` has no parameter named `{}` (its parameters: {})", sub.name, n.name, names.join(", ")));
+                            let names: Vec<&str> =
+                                sub.params.iter().map(|p| p.name.as_str()).collect();
+                            return Err(format!(
+                                "`{}` has no parameter named `{}` (its parameters: {})",
+                                sub.name,
+                                n.name,
+                                names.join(", ")
+                            ));
                         }
                     }
                 }
@@ -361,36 +500,72 @@ impl Checker {
         }
         for (s, p) in slots.iter().zip(&sub.params) {
             if s.is_none() && p.default.is_none() {
-                return Err(format!("missing argument for parameter `{}` of `{}`", p.name, sub.name));
+                return Err(format!(
+                    "missing argument for parameter `{}` of `{}`",
+                    p.name, sub.name
+                ));
             }
         }
         Ok(slots)
     }
 
     fn args_fit(&mut self, f: FuncId, args: &[ast::Arg]) -> bool {
-        let Ok(slots) = self.match_args(f, args) else { return false };
+        let Ok(slots) = self.match_args(f, args) else {
+            return false;
+        };
         let tys: Vec<TypeId> = self.funcs[f as usize].params.iter().map(|p| p.ty).collect();
-        slots.iter().zip(tys).all(|(s, t)| s.is_none_or(|a| self.fits(&a.value, t)))
+        slots
+            .iter()
+            .zip(tys)
+            .all(|(s, t)| s.is_none_or(|a| self.fits(&a.value, t)))
     }
 
     /// Resolves a call among candidate subprograms and checks its arguments.
-    pub(super) fn call(&mut self, cands: &[FuncId], args: &[ast::Arg], want: Option<TypeId>, procedure: bool, span: Span, name: &str) -> Option<(FuncId, Vec<Arg>)> {
-        let kind_ok: Vec<FuncId> = cands.iter().copied().filter(|f| self.funcs[*f as usize].ret.is_none() == procedure).collect();
+    pub(super) fn call(
+        &mut self,
+        cands: &[FuncId],
+        args: &[ast::Arg],
+        want: Option<TypeId>,
+        procedure: bool,
+        span: Span,
+        name: &str,
+    ) -> Option<(FuncId, Vec<Arg>)> {
+        let kind_ok: Vec<FuncId> = cands
+            .iter()
+            .copied()
+            .filter(|f| self.funcs[*f as usize].ret.is_none() == procedure)
+            .collect();
         if kind_ok.is_empty() {
             let msg = if procedure {
                 format!("`{name}` is a function: its result must be used")
             } else {
                 format!("`{name}` is a procedure and has no value")
             };
-            let hint = if procedure { "assign the result: `X := F (...);`" } else { "call it as a statement: `P (...);`" };
+            let hint = if procedure {
+                "assign the result: `X := F (...);`"
+            } else {
+                "call it as a statement: `P (...);`"
+            };
             self.err(Diagnostic::ty(span, msg).with_hint(hint));
             return None;
         }
-        let mut fitting: Vec<FuncId> = kind_ok.iter().copied().filter(|f| self.args_fit(*f, args)).collect();
+        let mut fitting: Vec<FuncId> = kind_ok
+            .iter()
+            .copied()
+            .filter(|f| self.args_fit(*f, args))
+            .collect();
         if let Some(w) = want
             && fitting.len() > 1
         {
-            let by_ret: Vec<FuncId> = fitting.iter().copied().filter(|f| self.funcs[*f as usize].ret.is_some_and(|r| self.types.compatible(r, w))).collect();
+            let by_ret: Vec<FuncId> = fitting
+                .iter()
+                .copied()
+                .filter(|f| {
+                    self.funcs[*f as usize]
+                        .ret
+                        .is_some_and(|r| self.types.compatible(r, w))
+                })
+                .collect();
             if !by_ret.is_empty() {
                 fitting = by_ret;
             }
@@ -399,7 +574,10 @@ impl Checker {
             Some(f) => *f,
             None if kind_ok.len() == 1 => kind_ok[0],
             None => {
-                let mut d = Diagnostic::ty(span, format!("no version of `{name}` accepts these arguments"));
+                let mut d = Diagnostic::ty(
+                    span,
+                    format!("no version of `{name}` accepts these arguments"),
+                );
                 let sigs: Vec<String> = kind_ok.iter().map(|f| self.signature(*f)).collect();
                 d = d.with_hint(format!("the candidates are:\n  {}", sigs.join("\n  ")));
                 self.err(d);
@@ -436,20 +614,47 @@ impl Checker {
                             back_check: None,
                         });
                     } else {
-                        self.check_variable(&ex, a.value.span, &format!("the `{}` parameter `{}`", if p.mode == ast::Mode::Out { "out" } else { "in out" }, p.name));
+                        self.check_variable(
+                            &ex,
+                            a.value.span,
+                            &format!(
+                                "the `{}` parameter `{}`",
+                                if p.mode == ast::Mode::Out {
+                                    "out"
+                                } else {
+                                    "in out"
+                                },
+                                p.name
+                            ),
+                        );
                         let actual_ty = ex.ty;
-                        if !self.types.compatible(actual_ty, p.ty) || self.types.is_universal(actual_ty) {
+                        if !self.types.compatible(actual_ty, p.ty)
+                            || self.types.is_universal(actual_ty)
+                        {
                             let ex2 = self.coerce(ex.clone(), p.ty);
                             let _ = ex2;
                         }
-                        let back_check = (self.types.is_scalar(actual_ty) && actual_ty != p.ty && self.types.get(actual_ty).range.is_some() && actual_ty != INTEGER).then_some(actual_ty);
-                        let value = if p.mode == ast::Mode::InOut && self.types.is_scalar(p.ty) && self.types.get(p.ty).range.is_some() && p.ty != actual_ty && p.ty != INTEGER {
+                        let back_check = (self.types.is_scalar(actual_ty)
+                            && actual_ty != p.ty
+                            && self.types.get(actual_ty).range.is_some()
+                            && actual_ty != INTEGER)
+                            .then_some(actual_ty);
+                        let value = if p.mode == ast::Mode::InOut
+                            && self.types.is_scalar(p.ty)
+                            && self.types.get(p.ty).range.is_some()
+                            && p.ty != actual_ty
+                            && p.ty != INTEGER
+                        {
                             // Copy-in of an `in out` value is checked against the formal's subtype.
                             ex
                         } else {
                             ex
                         };
-                        out.push(Arg { mode: p.mode, value, back_check });
+                        out.push(Arg {
+                            mode: p.mode,
+                            value,
+                            back_check,
+                        });
                     }
                 }
             }
@@ -468,10 +673,19 @@ impl Checker {
                     ast::Mode::Out => "out ",
                     ast::Mode::InOut => "in out ",
                 };
-                format!("{} : {mode}{}{}", p.name, self.types.name(p.ty), if p.default.is_some() { " := ..." } else { "" })
+                format!(
+                    "{} : {mode}{}{}",
+                    p.name,
+                    self.types.name(p.ty),
+                    if p.default.is_some() { " := ..." } else { "" }
+                )
             })
             .collect();
-        let params = if ps.is_empty() { String::new() } else { format!(" ({})", ps.join("; ")) };
+        let params = if ps.is_empty() {
+            String::new()
+        } else {
+            format!(" ({})", ps.join("; "))
+        };
         match s.ret {
             Some(r) => format!("function {}{params} return {}", s.name, self.types.name(r)),
             None => format!("procedure {}{params}", s.name),
@@ -499,7 +713,10 @@ impl Checker {
                 ExKind::Deref(_) | ExKind::Error => return,
                 _ if ex.ty == ERROR => return,
                 _ => {
-                    self.err(Diagnostic::ty(span, format!("{what} must be a variable")).with_label("this is a value, not a variable"));
+                    self.err(
+                        Diagnostic::ty(span, format!("{what} must be a variable"))
+                            .with_label("this is a value, not a variable"),
+                    );
                     return;
                 }
             }
@@ -552,8 +769,16 @@ impl Checker {
                     Some(w) if self.fits(e, w) => w,
                     _ => STRING,
                 };
-                let ty = if self.types.array(ty).is_some_and(|a| a.2.is_some()) { self.types.base(ty) } else { ty };
-                let ty = if self.types.array(ty).is_some() { self.unconstrained_of(ty) } else { STRING };
+                let ty = if self.types.array(ty).is_some_and(|a| a.2.is_some()) {
+                    self.types.base(ty)
+                } else {
+                    ty
+                };
+                let ty = if self.types.array(ty).is_some() {
+                    self.unconstrained_of(ty)
+                } else {
+                    STRING
+                };
                 self.mk(ExKind::Str(Rc::from(s.as_str())), ty, sp)
             }
             ExprKind::Null => self.mk(ExKind::Null, NULL_T, sp),
@@ -577,7 +802,13 @@ impl Checker {
                     Some(d) => self.mk(ExKind::Deref(bx(pe)), d, sp),
                     None => {
                         if pe.ty != ERROR {
-                            self.err(Diagnostic::ty(sp, format!("`.all` needs an access value, this is `{}`", self.tname(pe.ty))));
+                            self.err(Diagnostic::ty(
+                                sp,
+                                format!(
+                                    "`.all` needs an access value, this is `{}`",
+                                    self.tname(pe.ty)
+                                ),
+                            ));
                         }
                         self.err_ex(sp)
                     }
@@ -592,7 +823,11 @@ impl Checker {
             }
             ExprKind::Binary(op, a, b) => self.binary(*op, a, b, want, sp),
             ExprKind::Unary(op, a) => self.unary(*op, a, want, sp),
-            ExprKind::Membership { negated, subject, choices } => {
+            ExprKind::Membership {
+                negated,
+                subject,
+                choices,
+            } => {
                 let t = {
                     let mut refs: Vec<&ast::Expr> = vec![subject];
                     for c in choices {
@@ -633,25 +868,43 @@ impl Checker {
                         Choice::Expr(x) => {
                             if let Some(tt) = self.denote_quiet_type(x) {
                                 if !self.types.compatible(tt, s.ty) {
-                                    self.err(Diagnostic::ty(x.span, format!("`{}` is not a subtype of `{}`", self.types.name(tt), self.tname(s.ty))));
+                                    self.err(Diagnostic::ty(
+                                        x.span,
+                                        format!(
+                                            "`{}` is not a subtype of `{}`",
+                                            self.types.name(tt),
+                                            self.tname(s.ty)
+                                        ),
+                                    ));
                                 }
-                                ranges.push((self.mk(ExKind::TypeFirst(tt), tt, x.span), self.mk(ExKind::TypeLast(tt), tt, x.span)));
+                                ranges.push((
+                                    self.mk(ExKind::TypeFirst(tt), tt, x.span),
+                                    self.mk(ExKind::TypeLast(tt), tt, x.span),
+                                ));
                             } else {
                                 let v = self.expr(x, Some(t));
                                 let v = self.coerce(v, self.types.base(t));
                                 ranges.push((v.clone(), v));
                             }
                         }
-                        Choice::Others(os) => self.err(Diagnostic::syntax(*os, "`others` is not allowed in a membership test")),
+                        Choice::Others(os) => self.err(Diagnostic::syntax(
+                            *os,
+                            "`others` is not allowed in a membership test",
+                        )),
                     }
                 }
                 self.mk(ExKind::InRanges(bx(s), ranges, *negated), BOOLEAN, sp)
             }
             ExprKind::Aggregate(items) => match want {
-                Some(t) if t != ERROR && !self.types.is_universal(t) => self.aggregate(items, t, sp),
+                Some(t) if t != ERROR && !self.types.is_universal(t) => {
+                    self.aggregate(items, t, sp)
+                }
                 Some(_) => self.err_ex(sp),
                 None => {
-                    self.err(Diagnostic::ty(sp, "the type of this aggregate cannot be determined").with_hint("qualify it with its type: `T'(...)`"));
+                    self.err(
+                        Diagnostic::ty(sp, "the type of this aggregate cannot be determined")
+                            .with_hint("qualify it with its type: `T'(...)`"),
+                    );
                     self.err_ex(sp)
                 }
             },
@@ -680,7 +933,10 @@ impl Checker {
                     }
                     None => {
                         if self.types.base(t) != BOOLEAN {
-                            self.err(Diagnostic::ty(sp, "an `if` expression needs an `else` part unless it is Boolean"));
+                            self.err(Diagnostic::ty(
+                                sp,
+                                "an `if` expression needs an `else` part unless it is Boolean",
+                            ));
                         }
                         self.mk(ExKind::Int(1), BOOLEAN, sp)
                     }
@@ -696,9 +952,14 @@ impl Checker {
                     }
                 };
                 let s = self.expr(subject, None);
-                let st = if self.types.is_universal(s.ty) { INTEGER } else { s.ty };
+                let st = if self.types.is_universal(s.ty) {
+                    INTEGER
+                } else {
+                    s.ty
+                };
                 let s = self.coerce(s, st);
-                let choice_lists: Vec<&[Choice]> = arms.iter().map(|a| a.choices.as_slice()).collect();
+                let choice_lists: Vec<&[Choice]> =
+                    arms.iter().map(|a| a.choices.as_slice()).collect();
                 let (ranges, others_at) = self.case_choices(st, &choice_lists, sp);
                 let mut out = Vec::new();
                 let mut others = None;
@@ -716,14 +977,28 @@ impl Checker {
             ExprKind::Allocator(tm, init) => {
                 let Some(w) = want.filter(|w| self.types.is_access(*w)) else {
                     if want != Some(ERROR) {
-                        self.err(Diagnostic::ty(sp, "an allocator needs an access type from its context").with_hint("assign it to a variable of an access type"));
+                        self.err(
+                            Diagnostic::ty(
+                                sp,
+                                "an allocator needs an access type from its context",
+                            )
+                            .with_hint("assign it to a variable of an access type"),
+                        );
                     }
                     return self.err_ex(sp);
                 };
                 let d = self.types.designated(w).unwrap_or(ERROR);
                 let t = self.type_mark(tm);
                 if !self.types.compatible(t, d) {
-                    self.err(Diagnostic::ty(tm.span, format!("`{}` designates `{}`, not `{}`", self.types.name(w), self.types.name(d), self.types.name(t))));
+                    self.err(Diagnostic::ty(
+                        tm.span,
+                        format!(
+                            "`{}` designates `{}`, not `{}`",
+                            self.types.name(w),
+                            self.types.name(d),
+                            self.types.name(t)
+                        ),
+                    ));
                 }
                 let init = init.as_ref().map(|x| {
                     let v = self.expr(x, Some(t));
@@ -741,7 +1016,14 @@ impl Checker {
                 let (idx, el) = (idx.to_vec(), el);
                 let name = self.types.name(t).to_string();
                 let base = self.types.base(t);
-                let n = self.types.add(&name, TypeKind::Array { index: idx, elem: el, bounds: None });
+                let n = self.types.add(
+                    &name,
+                    TypeKind::Array {
+                        index: idx,
+                        elem: el,
+                        bounds: None,
+                    },
+                );
                 self.types.list[n as usize].base = base;
                 n
             }
@@ -750,7 +1032,9 @@ impl Checker {
     }
 
     fn entity_value(&mut self, es: &[Entity], want: Option<TypeId>, sp: Span, text: &str) -> Ex {
-        let Some(first) = es.first() else { return self.err_ex(sp) };
+        let Some(first) = es.first() else {
+            return self.err_ex(sp);
+        };
         match first {
             Entity::Var { var, ty, value, .. } => match value {
                 Some(Static::Int(v)) => self.mk(ExKind::Int(*v as i64), *ty, sp),
@@ -771,7 +1055,16 @@ impl Checker {
                         return self.mk(ExKind::Int(*pos), *t, sp);
                     }
                 }
-                let fs: Vec<FuncId> = es.iter().filter_map(|e| if let Entity::Func(f) = e { Some(*f) } else { None }).collect();
+                let fs: Vec<FuncId> = es
+                    .iter()
+                    .filter_map(|e| {
+                        if let Entity::Func(f) = e {
+                            Some(*f)
+                        } else {
+                            None
+                        }
+                    })
+                    .collect();
                 if fs.is_empty() {
                     if let Some(Entity::EnumLit(t, pos)) = es.first() {
                         return self.mk(ExKind::Int(*pos), *t, sp);
@@ -788,15 +1081,27 @@ impl Checker {
             }
             Entity::Type(t) => {
                 let n = self.types.name(*t).to_string();
-                self.err(Diagnostic::ty(sp, format!("the type `{n}` is not a value")).with_hint(format!("convert a value with `{n} (X)` or use an attribute like `{n}'First`")));
+                self.err(
+                    Diagnostic::ty(sp, format!("the type `{n}` is not a value")).with_hint(
+                        format!(
+                            "convert a value with `{n} (X)` or use an attribute like `{n}'First`"
+                        ),
+                    ),
+                );
                 self.err_ex(sp)
             }
             Entity::Exc(_) => {
-                self.err(Diagnostic::ty(sp, format!("the exception `{text}` is not a value")).with_hint(format!("raise it with `raise {text};`")));
+                self.err(
+                    Diagnostic::ty(sp, format!("the exception `{text}` is not a value"))
+                        .with_hint(format!("raise it with `raise {text};`")),
+                );
                 self.err_ex(sp)
             }
             Entity::Package(_) => {
-                self.err(Diagnostic::ty(sp, format!("the package `{text}` is not a value")));
+                self.err(Diagnostic::ty(
+                    sp,
+                    format!("the package `{text}` is not a value"),
+                ));
                 self.err_ex(sp)
             }
         }
@@ -818,12 +1123,29 @@ impl Checker {
                 }
                 None => {
                     let names: Vec<&str> = fields.iter().map(|f| f.name.as_str()).collect();
-                    self.err(Diagnostic::name(id.span, format!("`{}` has no component `{}`", self.types.name(pe.ty), id.name)).with_hint(format!("its components are: {}", names.join(", "))));
+                    self.err(
+                        Diagnostic::name(
+                            id.span,
+                            format!(
+                                "`{}` has no component `{}`",
+                                self.types.name(pe.ty),
+                                id.name
+                            ),
+                        )
+                        .with_hint(format!("its components are: {}", names.join(", "))),
+                    );
                     self.err_ex(sp)
                 }
             },
             None => {
-                self.err(Diagnostic::ty(id.span, format!("`.{}` needs a record, this is `{}`", id.name, self.tname(pe.ty))));
+                self.err(Diagnostic::ty(
+                    id.span,
+                    format!(
+                        "`.{}` needs a record, this is `{}`",
+                        id.name,
+                        self.tname(pe.ty)
+                    ),
+                ));
                 self.err_ex(sp)
             }
         }
@@ -845,13 +1167,28 @@ impl Checker {
             Some(Entity::Type(t)) => {
                 let t = *t;
                 if args.len() != 1 || args[0].name.is_some() {
-                    self.err(Diagnostic::ty(sp, format!("a conversion to `{}` takes exactly one value", self.types.name(t))));
+                    self.err(Diagnostic::ty(
+                        sp,
+                        format!(
+                            "a conversion to `{}` takes exactly one value",
+                            self.types.name(t)
+                        ),
+                    ));
                     return self.err_ex(sp);
                 }
                 self.conversion(t, &args[0].value, sp)
             }
             Some(Entity::Func(_)) => {
-                let fs: Vec<FuncId> = pes.iter().filter_map(|e| if let Entity::Func(f) = e { Some(*f) } else { None }).collect();
+                let fs: Vec<FuncId> = pes
+                    .iter()
+                    .filter_map(|e| {
+                        if let Entity::Func(f) = e {
+                            Some(*f)
+                        } else {
+                            None
+                        }
+                    })
+                    .collect();
                 let name = crate::syntax::parser::expr_text(p);
                 match self.call(&fs, args, want, false, sp, &name) {
                     Some((f, a)) => {
@@ -862,7 +1199,13 @@ impl Checker {
                 }
             }
             Some(Entity::Exc(_) | Entity::Package(_)) => {
-                self.err(Diagnostic::ty(sp, format!("`{}` cannot be called or indexed", crate::syntax::parser::expr_text(p))));
+                self.err(Diagnostic::ty(
+                    sp,
+                    format!(
+                        "`{}` cannot be called or indexed",
+                        crate::syntax::parser::expr_text(p)
+                    ),
+                ));
                 self.err_ex(sp)
             }
             _ => {
@@ -877,13 +1220,21 @@ impl Checker {
                     }
                     return self.err_ex(sp);
                 }
-                let Some((idx, el, _)) = self.types.array(pe.ty).map(|(i, e, b)| (i.to_vec(), e, b.is_some())) else {
+                let Some((idx, el, _)) = self
+                    .types
+                    .array(pe.ty)
+                    .map(|(i, e, b)| (i.to_vec(), e, b.is_some()))
+                else {
                     self.err(Diagnostic::ty(sp, format!("`{}` is neither an array nor a subprogram and cannot be indexed or called", self.snippet(p.span))).with_label(format!("this has type `{}`", self.tname(pe.ty))));
                     return self.err_ex(sp);
                 };
                 if args.len() == 1 && is_range_arg(&args[0].value) {
-                    let ExprKind::Aggregate(items) = &args[0].value.kind else { return self.err_ex(sp) };
-                    let Some(Choice::Range(l, h)) = items[0].choices.first() else { return self.err_ex(sp) };
+                    let ExprKind::Aggregate(items) = &args[0].value.kind else {
+                        return self.err_ex(sp);
+                    };
+                    let Some(Choice::Range(l, h)) = items[0].choices.first() else {
+                        return self.err_ex(sp);
+                    };
                     let l = self.expr(l, Some(idx[0]));
                     let l = self.coerce(l, self.types.base(idx[0]));
                     let h = self.expr(h, Some(idx[0]));
@@ -892,7 +1243,15 @@ impl Checker {
                     return self.mk(ExKind::Slice(bx(pe), bx(l), bx(h)), t, sp);
                 }
                 if args.len() != idx.len() {
-                    self.err(Diagnostic::ty(sp, format!("`{}` has {} dimension(s), {} index(es) given", self.types.name(pe.ty), idx.len(), args.len())));
+                    self.err(Diagnostic::ty(
+                        sp,
+                        format!(
+                            "`{}` has {} dimension(s), {} index(es) given",
+                            self.types.name(pe.ty),
+                            idx.len(),
+                            args.len()
+                        ),
+                    ));
                     return self.err_ex(sp);
                 }
                 let mut ix = Vec::new();
@@ -910,8 +1269,17 @@ impl Checker {
 
     fn conversion(&mut self, t: TypeId, x: &ast::Expr, sp: Span) -> Ex {
         let xi = self.interps(x);
-        let src = xi.iter().copied().find(|u| !self.types.is_universal(*u)).or(xi.first().copied()).unwrap_or(ERROR);
-        let want = if self.types.is_numeric(t) && self.types.is_numeric(src) { Some(src) } else { Some(t) };
+        let src = xi
+            .iter()
+            .copied()
+            .find(|u| !self.types.is_universal(*u))
+            .or(xi.first().copied())
+            .unwrap_or(ERROR);
+        let want = if self.types.is_numeric(t) && self.types.is_numeric(src) {
+            Some(src)
+        } else {
+            Some(t)
+        };
         let ex = self.expr(x, want);
         if ex.ty == ERROR || t == ERROR {
             return self.err_ex(sp);
@@ -923,18 +1291,44 @@ impl Checker {
         } else if ti && sf {
             self.mk(ExKind::FloatToInt(bx(ex)), self.types.base(t), sp)
         } else if (tf && sf) || (ti && si) {
-            Ex { ty: self.types.base(t), ..ex }
+            Ex {
+                ty: self.types.base(t),
+                ..ex
+            }
         } else if self.types.base(ex.ty) == self.types.base(t) {
             ex
-        } else if let (Some((i1, e1, _)), Some((i2, e2, _))) = (self.types.array(ex.ty), self.types.array(t)) {
+        } else if let (Some((i1, e1, _)), Some((i2, e2, _))) =
+            (self.types.array(ex.ty), self.types.array(t))
+        {
             if i1.len() == i2.len() && self.types.base(e1) == self.types.base(e2) {
-                let tt = if self.types.array(t).is_some_and(|a| a.2.is_some()) { t } else { self.types.base(t) };
+                let tt = if self.types.array(t).is_some_and(|a| a.2.is_some()) {
+                    t
+                } else {
+                    self.types.base(t)
+                };
                 return self.mk(ExKind::ArrayConvert(bx(ex), tt), t, sp);
             }
-            self.err(Diagnostic::ty(sp, format!("cannot convert `{}` to `{}`", self.tname(ex.ty), self.types.name(t))));
+            self.err(Diagnostic::ty(
+                sp,
+                format!(
+                    "cannot convert `{}` to `{}`",
+                    self.tname(ex.ty),
+                    self.types.name(t)
+                ),
+            ));
             return self.err_ex(sp);
         } else {
-            self.err(Diagnostic::ty(sp, format!("cannot convert `{}` to `{}`", self.tname(ex.ty), self.types.name(t))).with_hint("Ada converts only between numeric types, and between related types"));
+            self.err(
+                Diagnostic::ty(
+                    sp,
+                    format!(
+                        "cannot convert `{}` to `{}`",
+                        self.tname(ex.ty),
+                        self.types.name(t)
+                    ),
+                )
+                .with_hint("Ada converts only between numeric types, and between related types"),
+            );
             return self.err_ex(sp);
         };
         let mut inner = inner;
@@ -942,7 +1336,14 @@ impl Checker {
         self.coerce(inner, t)
     }
 
-    fn binary(&mut self, op: BinOp, a: &ast::Expr, b: &ast::Expr, want: Option<TypeId>, sp: Span) -> Ex {
+    fn binary(
+        &mut self,
+        op: BinOp,
+        a: &ast::Expr,
+        b: &ast::Expr,
+        want: Option<TypeId>,
+        sp: Span,
+    ) -> Ex {
         match op {
             BinOp::And | BinOp::Or | BinOp::Xor | BinOp::AndThen | BinOp::OrElse => {
                 let x = self.expr(a, Some(BOOLEAN));
@@ -965,14 +1366,32 @@ impl Checker {
         let user_fit: Vec<FuncId> = user
             .into_iter()
             .filter(|f| {
-                let ps: Vec<TypeId> = self.funcs[*f as usize].params.iter().map(|p| p.ty).collect();
-                self.fits(a, ps[0]) && self.fits(b, ps[1]) && want.is_none_or(|w| self.funcs[*f as usize].ret.is_some_and(|r| self.types.compatible(r, w)))
+                let ps: Vec<TypeId> = self.funcs[*f as usize]
+                    .params
+                    .iter()
+                    .map(|p| p.ty)
+                    .collect();
+                self.fits(a, ps[0])
+                    && self.fits(b, ps[1])
+                    && want.is_none_or(|w| {
+                        self.funcs[*f as usize]
+                            .ret
+                            .is_some_and(|r| self.types.compatible(r, w))
+                    })
             })
             .collect();
         let user_call = |this: &mut Self, f: FuncId| {
             let args = [
-                ast::Arg { name: None, value: a.clone(), span: a.span },
-                ast::Arg { name: None, value: b.clone(), span: b.span },
+                ast::Arg {
+                    name: None,
+                    value: a.clone(),
+                    span: a.span,
+                },
+                ast::Arg {
+                    name: None,
+                    value: b.clone(),
+                    span: b.span,
+                },
             ];
             match this.call(&[f], &args, want, false, sp, op.symbol()) {
                 Some((f, args)) => {
@@ -985,29 +1404,61 @@ impl Checker {
         match op {
             BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge => {
                 let (li, ri) = (self.interps(a), self.interps(b));
-                let predefined_ok = li.iter().any(|x| ri.iter().any(|y| self.types.compatible(*x, *y) || self.types.compatible(*y, *x)));
+                let predefined_ok = li.iter().any(|x| {
+                    ri.iter()
+                        .any(|y| self.types.compatible(*x, *y) || self.types.compatible(*y, *x))
+                });
                 if let Some(f) = user_fit.first()
-                    && (!predefined_ok || !li.iter().any(|t| self.types.is_scalar(*t) || self.types.is_array(*t)))
+                    && (!predefined_ok
+                        || !li
+                            .iter()
+                            .any(|t| self.types.is_scalar(*t) || self.types.is_array(*t)))
                 {
                     return user_call(self, *f);
                 }
                 let t = self.common_type(&[a, b], INTEGER);
                 let x = self.expr(a, Some(t));
                 let y = self.expr(b, Some(t));
-                if x.ty != ERROR && y.ty != ERROR && !self.types.compatible(x.ty, y.ty) && !self.types.compatible(y.ty, x.ty) {
+                if x.ty != ERROR
+                    && y.ty != ERROR
+                    && !self.types.compatible(x.ty, y.ty)
+                    && !self.types.compatible(y.ty, x.ty)
+                {
                     self.mismatch(op, &x, &y, a, b, sp);
                     return self.mk(ExKind::Error, BOOLEAN, sp);
                 }
-                let t = if self.types.is_universal(x.ty) { y.ty } else { x.ty };
-                let t = if self.types.is_universal(t) { if self.types.is_float(t) { FLOAT } else { INTEGER } } else { t };
+                let t = if self.types.is_universal(x.ty) {
+                    y.ty
+                } else {
+                    x.ty
+                };
+                let t = if self.types.is_universal(t) {
+                    if self.types.is_float(t) {
+                        FLOAT
+                    } else {
+                        INTEGER
+                    }
+                } else {
+                    t
+                };
                 let x = self.coerce(x, self.types.base(t));
                 let y = self.coerce(y, self.types.base(t));
                 if matches!(op, BinOp::Eq | BinOp::Ne) {
                     return self.mk(ExKind::Eq(op == BinOp::Ne, bx(x), bx(y)), BOOLEAN, sp);
                 }
-                let ordered = self.types.is_scalar(t) || self.types.array(t).is_some_and(|(i, e, _)| i.len() == 1 && self.types.is_discrete(e));
+                let ordered = self.types.is_scalar(t)
+                    || self
+                        .types
+                        .array(t)
+                        .is_some_and(|(i, e, _)| i.len() == 1 && self.types.is_discrete(e));
                 if !ordered && t != ERROR {
-                    self.err(Diagnostic::ty(sp, format!("`{}` is not defined for `{}`", op.symbol(), self.tname(t))).with_hint("ordering is defined for scalars and strings"));
+                    self.err(
+                        Diagnostic::ty(
+                            sp,
+                            format!("`{}` is not defined for `{}`", op.symbol(), self.tname(t)),
+                        )
+                        .with_hint("ordering is defined for scalars and strings"),
+                    );
                 }
                 let c = match op {
                     BinOp::Lt => CmpOp::Lt,
@@ -1021,8 +1472,15 @@ impl Checker {
                 let t = match want {
                     Some(w) if self.types.is_array(w) => self.unconstrained_of(w),
                     _ => {
-                        let c: Vec<TypeId> = self.interps(a).into_iter().chain(self.interps(b)).filter(|t| self.types.is_array(*t)).collect();
-                        c.first().map(|t| self.unconstrained_of(*t)).unwrap_or(STRING)
+                        let c: Vec<TypeId> = self
+                            .interps(a)
+                            .into_iter()
+                            .chain(self.interps(b))
+                            .filter(|t| self.types.is_array(*t))
+                            .collect();
+                        c.first()
+                            .map(|t| self.unconstrained_of(*t))
+                            .unwrap_or(STRING)
                     }
                 };
                 let el = self.types.array(t).map(|x| x.1).unwrap_or(ERROR);
@@ -1063,19 +1521,47 @@ impl Checker {
 
     fn mismatch(&mut self, op: BinOp, x: &Ex, y: &Ex, a: &ast::Expr, b: &ast::Expr, sp: Span) {
         let (xt, yt) = (self.tname(x.ty), self.tname(y.ty));
-        let mut d = Diagnostic::ty(sp, format!("`{}` cannot combine `{}` and `{}`", op.symbol(), xt, yt)).with_label("Ada does not mix types implicitly");
+        let mut d = Diagnostic::ty(
+            sp,
+            format!("`{}` cannot combine `{}` and `{}`", op.symbol(), xt, yt),
+        )
+        .with_label("Ada does not mix types implicitly");
         let (xi, yi) = (self.types.is_integer(x.ty), self.types.is_integer(y.ty));
         let (xf, yf) = (self.types.is_float(x.ty), self.types.is_float(y.ty));
-        let fname = |this: &Self, t: TypeId| if this.types.is_universal(t) { "Float".to_string() } else { this.types.name(t).to_string() };
+        let fname = |this: &Self, t: TypeId| {
+            if this.types.is_universal(t) {
+                "Float".to_string()
+            } else {
+                this.types.name(t).to_string()
+            }
+        };
         if xi && yf {
-            d = d.with_hint(format!("convert the integer: `{} ({}) {} {}`", fname(self, y.ty), self.snippet(a.span), op.symbol(), self.snippet(b.span)));
+            d = d.with_hint(format!(
+                "convert the integer: `{} ({}) {} {}`",
+                fname(self, y.ty),
+                self.snippet(a.span),
+                op.symbol(),
+                self.snippet(b.span)
+            ));
         } else if xf && yi {
-            d = d.with_hint(format!("convert the integer: `{} {} {} ({})`", self.snippet(a.span), op.symbol(), fname(self, x.ty), self.snippet(b.span)));
+            d = d.with_hint(format!(
+                "convert the integer: `{} {} {} ({})`",
+                self.snippet(a.span),
+                op.symbol(),
+                fname(self, x.ty),
+                self.snippet(b.span)
+            ));
         }
         self.err(d);
     }
 
-    fn arith_type(&mut self, op: BinOp, a: &ast::Expr, b: &ast::Expr, want: Option<TypeId>) -> Option<TypeId> {
+    fn arith_type(
+        &mut self,
+        op: BinOp,
+        a: &ast::Expr,
+        b: &ast::Expr,
+        want: Option<TypeId>,
+    ) -> Option<TypeId> {
         let (li, ri) = (self.interps(a), self.interps(b));
         if op == BinOp::Pow {
             if !ri.iter().any(|t| self.types.is_integer(*t)) {
@@ -1087,10 +1573,16 @@ impl Checker {
             {
                 return Some(w);
             }
-            return li.iter().copied().find(|t| self.types.is_numeric(*t) && !self.types.is_universal(*t)).or(li.iter().copied().find(|t| self.types.is_numeric(*t)));
+            return li
+                .iter()
+                .copied()
+                .find(|t| self.types.is_numeric(*t) && !self.types.is_universal(*t))
+                .or(li.iter().copied().find(|t| self.types.is_numeric(*t)));
         }
         let int_only = matches!(op, BinOp::Mod | BinOp::Rem);
-        let ok = |this: &Self, t: TypeId| this.types.is_numeric(t) && (!int_only || this.types.is_integer(t));
+        let ok = |this: &Self, t: TypeId| {
+            this.types.is_numeric(t) && (!int_only || this.types.is_integer(t))
+        };
         if let Some(w) = want
             && ok(self, w)
             && !self.types.is_universal(w)
@@ -1117,7 +1609,10 @@ impl Checker {
         if li.contains(&UNIV_INT) && ri.contains(&UNIV_INT) {
             return Some(UNIV_INT);
         }
-        if (li.contains(&UNIV_REAL) || li.contains(&UNIV_INT)) && (ri.contains(&UNIV_REAL) || ri.contains(&UNIV_INT)) && !int_only {
+        if (li.contains(&UNIV_REAL) || li.contains(&UNIV_INT))
+            && (ri.contains(&UNIV_REAL) || ri.contains(&UNIV_INT))
+            && !int_only
+        {
             return Some(UNIV_REAL);
         }
         None
@@ -1126,7 +1621,11 @@ impl Checker {
     fn arith(&mut self, op: BinOp, a: &ast::Expr, b: &ast::Expr, t: TypeId, sp: Span) -> Ex {
         if t == DURATION + 1000 {
             // Duration scaled by an integer.
-            let (x, y) = if self.interps(a).iter().any(|t| self.types.base(*t) == DURATION) {
+            let (x, y) = if self
+                .interps(a)
+                .iter()
+                .any(|t| self.types.base(*t) == DURATION)
+            {
                 let x = self.expr(a, Some(DURATION));
                 let x = self.coerce(x, DURATION);
                 let y = self.expr(b, Some(INTEGER));
@@ -1141,7 +1640,11 @@ impl Checker {
                 let xsp = x.span;
                 (self.mk(ExKind::IntToFloat(bx(x)), DURATION, xsp), y)
             };
-            let fop = if op == BinOp::Mul { FloatOp::Mul } else { FloatOp::Div };
+            let fop = if op == BinOp::Mul {
+                FloatOp::Mul
+            } else {
+                FloatOp::Div
+            };
             return self.mk(ExKind::FloatBin(fop, bx(x), bx(y)), DURATION, sp);
         }
         let base = self.types.base(t);
@@ -1149,7 +1652,14 @@ impl Checker {
             let x = self.expr(a, Some(t));
             let x = self.coerce(x, base);
             let y = self.expr(b, Some(INTEGER));
-            let y = self.coerce(y, if self.types.is_float(t) { INTEGER } else { NATURAL });
+            let y = self.coerce(
+                y,
+                if self.types.is_float(t) {
+                    INTEGER
+                } else {
+                    NATURAL
+                },
+            );
             return if self.types.is_float(t) {
                 self.mk(ExKind::FloatBin(FloatOp::PowI, bx(x), bx(y)), base, sp)
             } else {
@@ -1191,7 +1701,11 @@ impl Checker {
             Some(w) if self.types.is_numeric(w) && self.fits(a, w) => w,
             _ => {
                 let is = self.interps(a);
-                is.iter().copied().find(|t| self.types.is_numeric(*t) && !self.types.is_universal(*t)).or(is.first().copied()).unwrap_or(ERROR)
+                is.iter()
+                    .copied()
+                    .find(|t| self.types.is_numeric(*t) && !self.types.is_universal(*t))
+                    .or(is.first().copied())
+                    .unwrap_or(ERROR)
             }
         };
         let x = self.expr(a, Some(t));
@@ -1199,11 +1713,26 @@ impl Checker {
             return x;
         }
         if !self.types.is_numeric(x.ty) {
-            self.err(Diagnostic::ty(sp, format!("`{}` needs a number, this is `{}`", op.symbol(), self.tname(x.ty))));
+            self.err(Diagnostic::ty(
+                sp,
+                format!(
+                    "`{}` needs a number, this is `{}`",
+                    op.symbol(),
+                    self.tname(x.ty)
+                ),
+            ));
             return self.err_ex(sp);
         }
-        let ty = if self.types.is_universal(x.ty) { x.ty } else { self.types.base(x.ty) };
-        let x = if self.types.is_universal(x.ty) { x } else { self.coerce(x, ty) };
+        let ty = if self.types.is_universal(x.ty) {
+            x.ty
+        } else {
+            self.types.base(x.ty)
+        };
+        let x = if self.types.is_universal(x.ty) {
+            x
+        } else {
+            self.coerce(x, ty)
+        };
         let float = self.types.is_float(ty);
         let kind = match (op, float) {
             (UnOp::Plus, _) => return Ex { span: sp, ..x },
@@ -1217,9 +1746,20 @@ impl Checker {
 
     /// Static choices of a `case`: per arm, the ranges; and the index of the
     /// `others` arm. Reports non-static, duplicate and missing choices.
-    pub(super) fn case_choices(&mut self, t: TypeId, arms: &[&[Choice]], sp: Span) -> (Vec<Vec<(i64, i64)>>, Option<usize>) {
+    pub(super) fn case_choices(
+        &mut self,
+        t: TypeId,
+        arms: &[&[Choice]],
+        sp: Span,
+    ) -> (Vec<Vec<(i64, i64)>>, Option<usize>) {
         if !self.types.is_discrete(t) && t != ERROR {
-            self.err(Diagnostic::ty(sp, format!("a `case` needs a discrete value, this is `{}`", self.tname(t))));
+            self.err(Diagnostic::ty(
+                sp,
+                format!(
+                    "a `case` needs a discrete value, this is `{}`",
+                    self.tname(t)
+                ),
+            ));
         }
         let mut out = Vec::new();
         let mut others = None;
@@ -1230,7 +1770,10 @@ impl Checker {
                 let (lo, hi, csp) = match c {
                     Choice::Others(s) => {
                         if i + 1 != arms.len() || choices.len() != 1 {
-                            self.err(Diagnostic::syntax(*s, "`others` must be the only choice of the last alternative"));
+                            self.err(Diagnostic::syntax(
+                                *s,
+                                "`others` must be the only choice of the last alternative",
+                            ));
                         }
                         others = Some(i);
                         continue;
@@ -1238,7 +1781,9 @@ impl Checker {
                     Choice::Expr(x) => {
                         if let Some(tt) = self.denote_quiet_type(x) {
                             match self.types.discrete_bounds(tt) {
-                                Some((l, h)) => (Some(Static::Int(l)), Some(Static::Int(h)), x.span),
+                                Some((l, h)) => {
+                                    (Some(Static::Int(l)), Some(Static::Int(h)), x.span)
+                                }
                                 None => (None, None, x.span),
                             }
                         } else {
@@ -1253,7 +1798,11 @@ impl Checker {
                         let l = self.coerce(l, self.types.base(t));
                         let h = self.expr(h, Some(t));
                         let h = self.coerce(h, self.types.base(t));
-                        let sp2 = Span { start: l.span.start, end: h.span.end, context: l.span.context };
+                        let sp2 = Span {
+                            start: l.span.start,
+                            end: h.span.end,
+                            context: l.span.context,
+                        };
                         (self.static_value(&l), self.static_value(&h), sp2)
                     }
                 };
@@ -1263,7 +1812,10 @@ impl Checker {
                         if l <= h {
                             if let Some(prev) = all.iter().find(|(a, b, _)| l <= *b && *a <= h) {
                                 let prev_sp = prev.2;
-                                self.err(Diagnostic::ty(csp, "this `case` choice is covered twice").with_note(prev_sp, "covered here already"));
+                                self.err(
+                                    Diagnostic::ty(csp, "this `case` choice is covered twice")
+                                        .with_note(prev_sp, "covered here already"),
+                                );
                             }
                             all.push((l, h, csp));
                         }
@@ -1293,21 +1845,44 @@ impl Checker {
                     if next <= hi {
                         missing.push((next, hi));
                     }
-                    let missing: Vec<(i128, i128)> = missing.into_iter().filter(|(a, b)| a <= b).collect();
+                    let missing: Vec<(i128, i128)> =
+                        missing.into_iter().filter(|(a, b)| a <= b).collect();
                     if !missing.is_empty() {
                         let lits = self.types.enum_lits(t).map(|l| l.to_vec());
                         let show = |v: i128| match &lits {
-                            Some(l) if self.types.base(t) != CHARACTER => l.get(v as usize).cloned().unwrap_or_default(),
+                            Some(l) if self.types.base(t) != CHARACTER => {
+                                l.get(v as usize).cloned().unwrap_or_default()
+                            }
                             _ => v.to_string(),
                         };
-                        let text: Vec<String> = missing.iter().take(8).map(|(a, b)| if a == b { show(*a) } else { format!("{} .. {}", show(*a), show(*b)) }).collect();
+                        let text: Vec<String> = missing
+                            .iter()
+                            .take(8)
+                            .map(|(a, b)| {
+                                if a == b {
+                                    show(*a)
+                                } else {
+                                    format!("{} .. {}", show(*a), show(*b))
+                                }
+                            })
+                            .collect();
                         self.err(
-                            Diagnostic::ty(sp, format!("this `case` does not cover every value of `{}`: missing {}", self.types.name(t), text.join(", ")))
-                                .with_hint("add the missing choices or a `when others =>` alternative"),
+                            Diagnostic::ty(
+                                sp,
+                                format!(
+                                    "this `case` does not cover every value of `{}`: missing {}",
+                                    self.types.name(t),
+                                    text.join(", ")
+                                ),
+                            )
+                            .with_hint("add the missing choices or a `when others =>` alternative"),
                         );
                     }
                 }
-                None => self.err(Diagnostic::ty(sp, format!("a `case` on `{}` needs `when others`", self.types.name(t)))),
+                None => self.err(Diagnostic::ty(
+                    sp,
+                    format!("a `case` on `{}` needs `when others`", self.types.name(t)),
+                )),
             }
         }
         (out, others)
@@ -1320,7 +1895,14 @@ impl Checker {
             for it in items {
                 if it.choices.is_empty() {
                     if pos >= fields.len() {
-                        self.err(Diagnostic::ty(it.span, format!("too many components for `{}` ({} expected)", self.types.name(t), fields.len())));
+                        self.err(Diagnostic::ty(
+                            it.span,
+                            format!(
+                                "too many components for `{}` ({} expected)",
+                                self.types.name(t),
+                                fields.len()
+                            ),
+                        ));
                         continue;
                     }
                     let v = self.expr(&it.value, Some(fields[pos].ty));
@@ -1330,16 +1912,31 @@ impl Checker {
                 }
                 for c in &it.choices {
                     let targets: Vec<usize> = match c {
-                        Choice::Others(_) => (0..fields.len()).filter(|i| vals[*i].is_none()).collect(),
-                        Choice::Expr(ast::Expr { kind: ExprKind::Name(n), .. }) => match fields.iter().position(|f| f.key == n.key) {
+                        Choice::Others(_) => {
+                            (0..fields.len()).filter(|i| vals[*i].is_none()).collect()
+                        }
+                        Choice::Expr(ast::Expr {
+                            kind: ExprKind::Name(n),
+                            ..
+                        }) => match fields.iter().position(|f| f.key == n.key) {
                             Some(i) => vec![i],
                             None => {
-                                self.err(Diagnostic::name(n.span, format!("`{}` has no component `{}`", self.types.name(t), n.name)));
+                                self.err(Diagnostic::name(
+                                    n.span,
+                                    format!(
+                                        "`{}` has no component `{}`",
+                                        self.types.name(t),
+                                        n.name
+                                    ),
+                                ));
                                 vec![]
                             }
                         },
                         Choice::Expr(x) | Choice::Range(x, _) => {
-                            self.err(Diagnostic::syntax(x.span, "a record aggregate names its components"));
+                            self.err(Diagnostic::syntax(
+                                x.span,
+                                "a record aggregate names its components",
+                            ));
                             vec![]
                         }
                     };
@@ -1347,7 +1944,11 @@ impl Checker {
                         if matches!(it.value.kind, ExprKind::Error) {
                             // `Name => <>`: the component's default.
                             let ft = fields[i].ty;
-                            vals[i] = Some(fields[i].default.clone().unwrap_or(Ex { kind: ExKind::Default(ft), ty: ft, span: it.span }));
+                            vals[i] = Some(fields[i].default.clone().unwrap_or(Ex {
+                                kind: ExKind::Default(ft),
+                                ty: ft,
+                                span: it.span,
+                            }));
                             continue;
                         }
                         let v = self.expr(&it.value, Some(fields[i].ty));
@@ -1360,15 +1961,29 @@ impl Checker {
                 match v {
                     Some(v) => out.push(v),
                     None => {
-                        self.err(Diagnostic::ty(sp, format!("the aggregate lacks component `{}` of `{}`", fields[i].name, self.types.name(t))));
+                        self.err(Diagnostic::ty(
+                            sp,
+                            format!(
+                                "the aggregate lacks component `{}` of `{}`",
+                                fields[i].name,
+                                self.types.name(t)
+                            ),
+                        ));
                         out.push(self.err_ex(sp));
                     }
                 }
             }
             return self.mk(ExKind::RecordAgg(out), t, sp);
         }
-        let Some((idx, el, bounds)) = self.types.array(t).map(|(i, e, b)| (i.to_vec(), e, b.cloned())) else {
-            self.err(Diagnostic::ty(sp, format!("an aggregate cannot have type `{}`", self.tname(t))));
+        let Some((idx, el, bounds)) = self
+            .types
+            .array(t)
+            .map(|(i, e, b)| (i.to_vec(), e, b.cloned()))
+        else {
+            self.err(Diagnostic::ty(
+                sp,
+                format!("an aggregate cannot have type `{}`", self.tname(t)),
+            ));
             return self.err_ex(sp);
         };
         // For several dimensions, components are rows of the remaining dimensions.
@@ -1399,7 +2014,10 @@ impl Checker {
                     Choice::Others(_) => others = Some(bx(v.clone())),
                     Choice::Expr(x) => {
                         if let Some(tt) = self.denote_quiet_type(x) {
-                            ranges.push((self.mk(ExKind::TypeFirst(tt), tt, x.span), self.mk(ExKind::TypeLast(tt), tt, x.span)));
+                            ranges.push((
+                                self.mk(ExKind::TypeFirst(tt), tt, x.span),
+                                self.mk(ExKind::TypeLast(tt), tt, x.span),
+                            ));
                         } else {
                             let i = self.expr(x, Some(idx[0]));
                             let i = self.coerce(i, self.types.base(idx[0]));
@@ -1420,20 +2038,39 @@ impl Checker {
             }
         }
         if !positional.is_empty() && !named.is_empty() {
-            self.err(Diagnostic::syntax(sp, "an array aggregate is either positional or named, not both"));
+            self.err(Diagnostic::syntax(
+                sp,
+                "an array aggregate is either positional or named, not both",
+            ));
         }
         if others.is_some() && bounds.is_none() {
-            self.err(Diagnostic::ty(sp, "`others` needs the bounds from the context").with_hint(format!("use a constrained subtype, e.g. `{} (1 .. 3)'(others => ...)`", self.types.name(t))));
+            self.err(
+                Diagnostic::ty(sp, "`others` needs the bounds from the context").with_hint(
+                    format!(
+                        "use a constrained subtype, e.g. `{} (1 .. 3)'(others => ...)`",
+                        self.types.name(t)
+                    ),
+                ),
+            );
         }
         // A static length check for positional aggregates of constrained types.
         if let Some(b) = &bounds
             && others.is_none()
             && named.is_empty()
-            && let (Some(Static::Int(l)), Some(Static::Int(h))) = (self.static_value(&b[0].0), self.static_value(&b[0].1))
+            && let (Some(Static::Int(l)), Some(Static::Int(h))) =
+                (self.static_value(&b[0].0), self.static_value(&b[0].1))
         {
             let len = (h - l + 1).max(0) as usize;
             if positional.len() != len {
-                self.err(Diagnostic::ty(sp, format!("`{}` needs {} components in this dimension, the aggregate has {}", self.types.name(t), len, positional.len())));
+                self.err(Diagnostic::ty(
+                    sp,
+                    format!(
+                        "`{}` needs {} components in this dimension, the aggregate has {}",
+                        self.types.name(t),
+                        len,
+                        positional.len()
+                    ),
+                ));
             }
         }
         let kind = if named.is_empty() {
@@ -1444,7 +2081,14 @@ impl Checker {
         self.mk(ExKind::ArrayAgg(ArrayAgg { ty: t, kind }), t, sp)
     }
 
-    fn attribute(&mut self, p: &ast::Expr, a: &ast::Ident, args: &[ast::Expr], want: Option<TypeId>, sp: Span) -> Ex {
+    fn attribute(
+        &mut self,
+        p: &ast::Expr,
+        a: &ast::Ident,
+        args: &[ast::Expr],
+        want: Option<TypeId>,
+        sp: Span,
+    ) -> Ex {
         let key = a.key.as_str();
         let type_prefix = self.denote_quiet_type(p);
         let arg = |this: &mut Self, i: usize, t: Option<TypeId>| -> Ex {
@@ -1457,7 +2101,10 @@ impl Checker {
                     }
                 }
                 None => {
-                    this.err(Diagnostic::ty(sp, format!("`'{}` needs an argument", a.name)));
+                    this.err(Diagnostic::ty(
+                        sp,
+                        format!("`'{}` needs an argument", a.name),
+                    ));
                     this.err_ex(sp)
                 }
             }
@@ -1470,7 +2117,10 @@ impl Checker {
                     match this.static_value(&v) {
                         Some(Static::Int(n)) if n >= 1 => n as u8,
                         _ => {
-                            this.err(Diagnostic::ty(x.span, "the dimension must be a static positive integer"));
+                            this.err(Diagnostic::ty(
+                                x.span,
+                                "the dimension must be a static positive integer",
+                            ));
                             1
                         }
                     }
@@ -1482,23 +2132,57 @@ impl Checker {
             let scalar = self.types.is_scalar(t);
             match key {
                 "first" | "last" if scalar => {
-                    let k = if key == "first" { ExKind::TypeFirst(t) } else { ExKind::TypeLast(t) };
+                    let k = if key == "first" {
+                        ExKind::TypeFirst(t)
+                    } else {
+                        ExKind::TypeLast(t)
+                    };
                     return self.mk(k, t, sp);
                 }
-                "first" | "last" | "length" if self.types.array(t).is_some_and(|x| x.2.is_some()) => {
+                "first" | "last" | "length"
+                    if self.types.array(t).is_some_and(|x| x.2.is_some()) =>
+                {
                     let d = dim(self) as usize;
-                    let (idx, bounds) = self.types.array(t).map(|(i, _, b)| (i.to_vec(), b.cloned().unwrap_or_default())).unwrap_or_default();
+                    let (idx, bounds) = self
+                        .types
+                        .array(t)
+                        .map(|(i, _, b)| (i.to_vec(), b.cloned().unwrap_or_default()))
+                        .unwrap_or_default();
                     let Some((lo, hi)) = bounds.get(d - 1).cloned() else {
                         self.err(Diagnostic::ty(sp, "no such dimension"));
                         return self.err_ex(sp);
                     };
                     let it = idx[d - 1];
                     return match key {
-                        "first" => Ex { ty: it, span: sp, ..lo },
-                        "last" => Ex { ty: it, span: sp, ..hi },
+                        "first" => Ex {
+                            ty: it,
+                            span: sp,
+                            ..lo
+                        },
+                        "last" => Ex {
+                            ty: it,
+                            span: sp,
+                            ..hi
+                        },
                         _ => {
-                            let len = self.mk(ExKind::IntBin(IntOp::Add, bx(self.mk(ExKind::IntBin(IntOp::Sub, bx(hi), bx(lo)), UNIV_INT, sp)), bx(Ex::int(1))), UNIV_INT, sp);
-                            self.mk(ExKind::Attr(AttrOp::Max, vec![len, Ex::int(0)]), UNIV_INT, sp)
+                            let len = self.mk(
+                                ExKind::IntBin(
+                                    IntOp::Add,
+                                    bx(self.mk(
+                                        ExKind::IntBin(IntOp::Sub, bx(hi), bx(lo)),
+                                        UNIV_INT,
+                                        sp,
+                                    )),
+                                    bx(Ex::int(1)),
+                                ),
+                                UNIV_INT,
+                                sp,
+                            );
+                            self.mk(
+                                ExKind::Attr(AttrOp::Max, vec![len, Ex::int(0)]),
+                                UNIV_INT,
+                                sp,
+                            )
                         }
                     };
                 }
@@ -1515,8 +2199,8 @@ impl Checker {
                     } else {
                         AttrOp::ValueEnum(base)
                     };
-                    let v = self.mk(ExKind::Attr(op, vec![x]), base, sp);
-                    return self.coerce(v, t);
+                    // 'Value yields the base type; only an assignment checks the subtype.
+                    return self.mk(ExKind::Attr(op, vec![x]), base, sp);
                 }
                 "pos" if self.types.is_discrete(t) => {
                     let x = arg(self, 0, Some(base));
@@ -1524,21 +2208,39 @@ impl Checker {
                 }
                 "val" if self.types.is_discrete(t) => {
                     let x = arg(self, 0, Some(UNIV_INT));
-                    let x = if self.types.is_universal(x.ty) { Ex { ty: INTEGER, ..x } } else { x };
+                    let x = if self.types.is_universal(x.ty) {
+                        Ex { ty: INTEGER, ..x }
+                    } else {
+                        x
+                    };
                     if !self.types.is_integer(x.ty) && x.ty != ERROR {
                         self.err(Diagnostic::ty(x.span, "`'Val` needs an integer"));
                     }
-                    if let (Some(Static::Int(v)), Some((l, h))) = (self.static_value(&x), self.types.discrete_bounds(t))
+                    if let (Some(Static::Int(v)), Some((l, h))) =
+                        (self.static_value(&x), self.types.discrete_bounds(t))
                         && (v < l || v > h)
                     {
-                        self.err(Diagnostic::ty(x.span, format!("{v} is not a position of `{}` (its positions are {l} .. {h})", self.types.name(t))).with_label("static value out of range"));
+                        self.err(
+                            Diagnostic::ty(
+                                x.span,
+                                format!(
+                                    "{v} is not a position of `{}` (its positions are {l} .. {h})",
+                                    self.types.name(t)
+                                ),
+                            )
+                            .with_label("static value out of range"),
+                        );
                     }
                     let v = self.mk(ExKind::Attr(AttrOp::Val, vec![x]), base, sp);
                     return self.coerce_force_check(v, t);
                 }
                 "succ" | "pred" if self.types.is_discrete(t) => {
                     let x = arg(self, 0, Some(base));
-                    let op = if key == "succ" { AttrOp::Succ } else { AttrOp::Pred };
+                    let op = if key == "succ" {
+                        AttrOp::Succ
+                    } else {
+                        AttrOp::Pred
+                    };
                     let v = self.mk(ExKind::Attr(op, vec![x]), base, sp);
                     return self.coerce_force_check(v, base);
                 }
@@ -1563,7 +2265,13 @@ impl Checker {
                     };
                     return self.mk(ExKind::Attr(op, vec![x]), base, sp);
                 }
-                "digits" if self.types.is_float(t) => return self.mk(ExKind::Int(if base == FLOAT { 6 } else { 15 }), UNIV_INT, sp),
+                "digits" if self.types.is_float(t) => {
+                    return self.mk(
+                        ExKind::Int(if base == FLOAT { 6 } else { 15 }),
+                        UNIV_INT,
+                        sp,
+                    );
+                }
                 "range" => {
                     self.err(Diagnostic::ty(sp, "`'Range` can only be used as a range (in `for` loops, memberships and constraints)"));
                     return self.err_ex(sp);
@@ -1585,10 +2293,21 @@ impl Checker {
             let psp = pe.span;
             pe = self.mk(ExKind::Deref(bx(pe)), d, psp);
         }
-        if let Some((idx, _, _)) = self.types.array(pe.ty).map(|(i, e, b)| (i.to_vec(), e, b.is_some())) {
+        if let Some((idx, _, _)) = self
+            .types
+            .array(pe.ty)
+            .map(|(i, e, b)| (i.to_vec(), e, b.is_some()))
+        {
             let d = dim(self);
             if d as usize > idx.len() {
-                self.err(Diagnostic::ty(sp, format!("`{}` has only {} dimension(s)", self.types.name(pe.ty), idx.len())));
+                self.err(Diagnostic::ty(
+                    sp,
+                    format!(
+                        "`{}` has only {} dimension(s)",
+                        self.types.name(pe.ty),
+                        idx.len()
+                    ),
+                ));
                 return self.err_ex(sp);
             }
             let it = idx[d as usize - 1];
@@ -1601,17 +2320,32 @@ impl Checker {
                     self.err_ex(sp)
                 }
                 _ => {
-                    self.err(Diagnostic::ty(a.span, format!("`'{}` is not supported on arrays", a.name)));
+                    self.err(Diagnostic::ty(
+                        a.span,
+                        format!("`'{}` is not supported on arrays", a.name),
+                    ));
                     self.err_ex(sp)
                 }
             };
         }
         if key == "image" && self.types.is_scalar(pe.ty) {
-            let t = if self.types.is_universal(pe.ty) { if self.types.is_float(pe.ty) { FLOAT } else { INTEGER } } else { self.types.base(pe.ty) };
+            let t = if self.types.is_universal(pe.ty) {
+                if self.types.is_float(pe.ty) {
+                    FLOAT
+                } else {
+                    INTEGER
+                }
+            } else {
+                self.types.base(pe.ty)
+            };
             return self.image(pe, t, sp);
         }
         let _ = want;
-        self.err(Diagnostic::ty(a.span, format!("`'{}` is not supported here", a.name)).with_hint("AdaIR supports First Last Range Length Image Value Pos Val Succ Pred Min Max"));
+        self.err(
+            Diagnostic::ty(a.span, format!("`'{}` is not supported here", a.name)).with_hint(
+                "AdaIR supports First Last Range Length Image Value Pos Val Succ Pred Min Max",
+            ),
+        );
         self.err_ex(sp)
     }
 
@@ -1638,7 +2372,12 @@ impl Checker {
     }
 
     /// `X'Range` and `T'Range` as a discrete range.
-    pub(super) fn range_attr(&mut self, p: &ast::Expr, args: &[ast::Expr], sp: Span) -> (Ex, Ex, TypeId) {
+    pub(super) fn range_attr(
+        &mut self,
+        p: &ast::Expr,
+        args: &[ast::Expr],
+        sp: Span,
+    ) -> (Ex, Ex, TypeId) {
         let d = match args.first() {
             None => 1u8,
             Some(x) => {
@@ -1651,14 +2390,27 @@ impl Checker {
         };
         if let Some(t) = self.denote_quiet_type(p) {
             if self.types.is_scalar(t) {
-                return (self.mk(ExKind::TypeFirst(t), t, sp), self.mk(ExKind::TypeLast(t), t, sp), t);
+                return (
+                    self.mk(ExKind::TypeFirst(t), t, sp),
+                    self.mk(ExKind::TypeLast(t), t, sp),
+                    t,
+                );
             }
-            if let Some((idx, _, Some(b))) = self.types.array(t).map(|(i, e, b)| (i.to_vec(), e, b.cloned()))
+            if let Some((idx, _, Some(b))) = self
+                .types
+                .array(t)
+                .map(|(i, e, b)| (i.to_vec(), e, b.cloned()))
                 && let Some((l, h)) = b.get(d as usize - 1)
             {
                 return (l.clone(), h.clone(), idx[d as usize - 1]);
             }
-            self.err(Diagnostic::ty(sp, format!("`{}'Range` needs a scalar or constrained array type", self.types.name(t))));
+            self.err(Diagnostic::ty(
+                sp,
+                format!(
+                    "`{}'Range` needs a scalar or constrained array type",
+                    self.types.name(t)
+                ),
+            ));
             return (self.err_ex(sp), self.err_ex(sp), ERROR);
         }
         let mut pe = self.expr(p, None);
@@ -1677,7 +2429,10 @@ impl Checker {
             }
             _ => {
                 if pe.ty != ERROR {
-                    self.err(Diagnostic::ty(sp, format!("`'Range` needs an array, this is `{}`", self.tname(pe.ty))));
+                    self.err(Diagnostic::ty(
+                        sp,
+                        format!("`'Range` needs an array, this is `{}`", self.tname(pe.ty)),
+                    ));
                 }
                 (self.err_ex(sp), self.err_ex(sp), ERROR)
             }

@@ -172,14 +172,26 @@ impl Checker {
             }
         }
         let io = self.package("Ada.IO_Exceptions");
-        for (i, n) in ["name_error", "use_error", "data_error", "end_error"].iter().enumerate() {
-            self.packages[io].names.insert(n.to_string(), vec![Entity::Exc(4 + i as ExcId)]);
+        for (i, n) in ["name_error", "use_error", "data_error", "end_error"]
+            .iter()
+            .enumerate()
+        {
+            self.packages[io]
+                .names
+                .insert(n.to_string(), vec![Entity::Exc(4 + i as ExcId)]);
         }
         let ex = self.package("Ada.Exceptions");
-        self.packages[ex].names.insert("exception_occurrence".into(), vec![Entity::Type(OCCURRENCE)]);
+        self.packages[ex].names.insert(
+            "exception_occurrence".into(),
+            vec![Entity::Type(OCCURRENCE)],
+        );
         let cal = self.package("Ada.Calendar");
-        self.packages[cal].names.insert("time".into(), vec![Entity::Type(TIME)]);
-        self.packages[cal].names.insert("duration".into(), vec![Entity::Type(DURATION)]);
+        self.packages[cal]
+            .names
+            .insert("time".into(), vec![Entity::Type(TIME)]);
+        self.packages[cal]
+            .names
+            .insert("duration".into(), vec![Entity::Type(DURATION)]);
         let dur = self.types.list.get_mut(DURATION as usize);
         if let Some(d) = dur {
             d.static_frange = Some((-86400.0 * 365.0 * 100.0, 86400.0 * 365.0 * 100.0));
@@ -200,7 +212,11 @@ impl Checker {
     }
 
     fn err(&mut self, d: Diagnostic) {
-        if !self.diags.iter().any(|x| x.span == d.span && x.message == d.message) {
+        if !self
+            .diags
+            .iter()
+            .any(|x| x.span == d.span && x.message == d.message)
+        {
             self.diags.push(d);
         }
     }
@@ -223,8 +239,16 @@ impl Checker {
         let key = name.to_ascii_lowercase();
         let scope = self.scopes.last_mut().expect("scope");
         match scope.package {
-            Some((p, false)) => self.packages[p].names.entry(key.clone()).or_default().push(e.clone()),
-            Some((p, true)) => self.packages[p].private.entry(key.clone()).or_default().push(e.clone()),
+            Some((p, false)) => self.packages[p]
+                .names
+                .entry(key.clone())
+                .or_default()
+                .push(e.clone()),
+            Some((p, true)) => self.packages[p]
+                .private
+                .entry(key.clone())
+                .or_default()
+                .push(e.clone()),
             None => {}
         }
         scope.names.entry(key).or_default().push(e);
@@ -235,9 +259,16 @@ impl Checker {
     fn declare_checked(&mut self, id: &ast::Ident, e: Entity) {
         let overloadable = matches!(e, Entity::Func(_) | Entity::EnumLit(..));
         if let Some(prev) = self.scopes.last().and_then(|s| s.names.get(&id.key)) {
-            let clash = prev.iter().any(|p| !(overloadable && matches!(p, Entity::Func(_) | Entity::EnumLit(..))));
-            if clash && !matches!(prev.last(), Some(Entity::Type(t)) if matches!(self.types.kind(*t), TypeKind::Incomplete)) {
-                self.err(Diagnostic::name(id.span, format!("`{}` is already declared in this scope", id.name)));
+            let clash = prev
+                .iter()
+                .any(|p| !(overloadable && matches!(p, Entity::Func(_) | Entity::EnumLit(..))));
+            if clash
+                && !matches!(prev.last(), Some(Entity::Type(t)) if matches!(self.types.kind(*t), TypeKind::Incomplete))
+            {
+                self.err(Diagnostic::name(
+                    id.span,
+                    format!("`{}` is already declared in this scope", id.name),
+                ));
             }
         }
         self.declare(&id.name, e);
@@ -249,7 +280,9 @@ impl Checker {
         let mut found: Vec<Entity> = Vec::new();
         for s in self.scopes.iter().rev() {
             if let Some(es) = s.names.get(key) {
-                let overloadable = es.iter().all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));
+                let overloadable = es
+                    .iter()
+                    .all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));
                 if !overloadable {
                     if found.is_empty() {
                         return vec![es.last().cloned().expect("nonempty")];
@@ -264,7 +297,9 @@ impl Checker {
                 && (is_body || !s.names.contains_key(key))
                 && let Some(es) = self.packages[p].names.get(key)
             {
-                let overloadable = es.iter().all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));
+                let overloadable = es
+                    .iter()
+                    .all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));
                 if !overloadable && found.is_empty() {
                     return vec![es.last().cloned().expect("nonempty")];
                 }
@@ -283,7 +318,11 @@ impl Checker {
             }
         }
         // Non-overloadable use-visible names conflict: keep the first.
-        if found.len() > 1 && found.iter().any(|e| !matches!(e, Entity::Func(_) | Entity::EnumLit(..))) {
+        if found.len() > 1
+            && found
+                .iter()
+                .any(|e| !matches!(e, Entity::Func(_) | Entity::EnumLit(..)))
+        {
             found.truncate(1);
         }
         found
@@ -328,7 +367,10 @@ impl Checker {
         if self.level == 0 {
             self.globals = self.globals.max(slot + 1);
         }
-        Var { level: self.level, slot }
+        Var {
+            level: self.level,
+            slot,
+        }
     }
 
     fn new_loop(&mut self) -> u32 {
@@ -351,7 +393,10 @@ impl Checker {
     /// for a main-procedure program, the main subprogram.
     pub fn check_unit(&mut self, unit: &ast::CompilationUnit) -> (Vec<Stmt>, Option<FuncId>) {
         let mut out = Vec::new();
-        let has_stmts = unit.items.iter().any(|i| matches!(i, ast::TopItem::Stmt(_)));
+        let has_stmts = unit
+            .items
+            .iter()
+            .any(|i| matches!(i, ast::TopItem::Stmt(_)));
         let mut main = None;
         for item in &unit.items {
             match item {
@@ -413,7 +458,10 @@ impl Checker {
                     // `use type T;` and friends: accepted when T is a type.
                     if !matches!(self.denote(n, true).first(), Some(Entity::Type(_))) {
                         let text = crate::syntax::parser::expr_text(n);
-                        self.err(Diagnostic::name(n.span, format!("`{text}` is not a package")));
+                        self.err(Diagnostic::name(
+                            n.span,
+                            format!("`{text}` is not a package"),
+                        ));
                     }
                 }
             }
@@ -444,11 +492,18 @@ impl Checker {
             }
             ast::ExprKind::Select(p, id) => {
                 if let ast::ExprKind::Name(pn) = &p.kind
-                    && let Some(scope) = self.scopes.iter().rev().find(|s| s.name.as_deref() == Some(pn.key.as_str()))
+                    && let Some(scope) = self
+                        .scopes
+                        .iter()
+                        .rev()
+                        .find(|s| s.name.as_deref() == Some(pn.key.as_str()))
                 {
                     let es = scope.names.get(&id.key).cloned().unwrap_or_default();
                     if es.is_empty() && report {
-                        self.err(Diagnostic::name(id.span, format!("`{}` is not declared in `{}`", id.name, pn.name)));
+                        self.err(Diagnostic::name(
+                            id.span,
+                            format!("`{}` is not declared in `{}`", id.name, pn.name),
+                        ));
                     }
                     return es;
                 }
@@ -456,16 +511,37 @@ impl Checker {
                 match pes.first() {
                     Some(Entity::Package(pk)) => {
                         let pk = *pk;
-                        let mut es = self.packages[pk].names.get(&id.key).cloned().unwrap_or_default();
+                        let mut es = self.packages[pk]
+                            .names
+                            .get(&id.key)
+                            .cloned()
+                            .unwrap_or_default();
                         // Inside the package itself, its private names are visible too.
-                        if es.is_empty() && self.scopes.iter().any(|s| s.package.is_some_and(|x| x.0 == pk)) {
-                            es = self.packages[pk].private.get(&id.key).cloned().unwrap_or_default();
+                        if es.is_empty()
+                            && self
+                                .scopes
+                                .iter()
+                                .any(|s| s.package.is_some_and(|x| x.0 == pk))
+                        {
+                            es = self.packages[pk]
+                                .private
+                                .get(&id.key)
+                                .cloned()
+                                .unwrap_or_default();
                         }
                         if es.is_empty() && report {
                             let pname = self.packages[pk].name.clone();
-                            let mut d = Diagnostic::name(id.span, format!("`{}` is not declared in `{pname}`", id.name));
-                            let cands: Vec<String> = self.packages[pk].names.keys().cloned().collect();
-                            if let Some(best) = cands.iter().filter(|c| edit_distance(&id.key, c) <= 2).min_by_key(|c| edit_distance(&id.key, c)) {
+                            let mut d = Diagnostic::name(
+                                id.span,
+                                format!("`{}` is not declared in `{pname}`", id.name),
+                            );
+                            let cands: Vec<String> =
+                                self.packages[pk].names.keys().cloned().collect();
+                            if let Some(best) = cands
+                                .iter()
+                                .filter(|c| edit_distance(&id.key, c) <= 2)
+                                .min_by_key(|c| edit_distance(&id.key, c))
+                            {
                                 d = d.with_hint(format!("did you mean `{pname}.{best}`?"));
                             }
                             self.err(d);
@@ -481,7 +557,11 @@ impl Checker {
 
     /// Creates a package (and its parents, for `Ada.Text_IO`), returning its index.
     fn package(&mut self, full: &str) -> usize {
-        if let Some(i) = self.packages.iter().position(|p| p.name.eq_ignore_ascii_case(full)) {
+        if let Some(i) = self
+            .packages
+            .iter()
+            .position(|p| p.name.eq_ignore_ascii_case(full))
+        {
             return i;
         }
         let idx = self.packages.len();
@@ -493,11 +573,19 @@ impl Checker {
         match full.rsplit_once('.') {
             Some((parent, last)) => {
                 let p = self.package(parent);
-                self.packages[p].names.entry(last.to_ascii_lowercase()).or_default().push(Entity::Package(idx));
+                self.packages[p]
+                    .names
+                    .entry(last.to_ascii_lowercase())
+                    .or_default()
+                    .push(Entity::Package(idx));
             }
             None => {
                 // Library-level packages are visible in the outermost scope.
-                self.scopes[0].names.entry(full.to_ascii_lowercase()).or_default().push(Entity::Package(idx));
+                self.scopes[0]
+                    .names
+                    .entry(full.to_ascii_lowercase())
+                    .or_default()
+                    .push(Entity::Package(idx));
             }
         }
         idx
@@ -506,7 +594,10 @@ impl Checker {
     /// Makes a package's declarations directly visible at the top level
     /// (script mode: Ada.Text_IO and friends without `with`/`use`).
     pub fn use_everywhere(&mut self, full: &str) {
-        if let Some(i) = self.packages.iter().position(|p| p.name.eq_ignore_ascii_case(full))
+        if let Some(i) = self
+            .packages
+            .iter()
+            .position(|p| p.name.eq_ignore_ascii_case(full))
             && !self.scopes[0].uses.contains(&i)
         {
             self.scopes[0].uses.push(i);

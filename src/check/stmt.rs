@@ -34,7 +34,10 @@ impl Checker {
                         }
                         Some(_) => {
                             let t = crate::syntax::parser::expr_text(n);
-                            self.err(Diagnostic::name(n.span, format!("`{t}` is not an exception")));
+                            self.err(Diagnostic::name(
+                                n.span,
+                                format!("`{t}` is not an exception"),
+                            ));
                         }
                         None => {}
                     },
@@ -58,7 +61,11 @@ impl Checker {
             let stmts = self.stmts(&h.stmts);
             self.in_handler -= 1;
             self.pop_scope();
-            out.push(Handler { choices, occurrence, stmts });
+            out.push(Handler {
+                choices,
+                occurrence,
+                stmts,
+            });
         }
         out
     }
@@ -67,8 +74,18 @@ impl Checker {
         let c = self.expr(e, Some(BOOLEAN));
         if c.ty != ERROR && self.types.base(c.ty) != BOOLEAN {
             self.err(
-                Diagnostic::ty(e.span, format!("a condition must be Boolean, this is {}", if self.types.is_universal(c.ty) { "a number".to_string() } else { format!("`{}`", self.types.name(c.ty)) }))
-                    .with_hint("compare it: `X /= 0`"),
+                Diagnostic::ty(
+                    e.span,
+                    format!(
+                        "a condition must be Boolean, this is {}",
+                        if self.types.is_universal(c.ty) {
+                            "a number".to_string()
+                        } else {
+                            format!("`{}`", self.types.name(c.ty))
+                        }
+                    ),
+                )
+                .with_hint("compare it: `X /= 0`"),
             );
             return c;
         }
@@ -102,14 +119,22 @@ impl Checker {
                     let b = self.scoped_stmts(body);
                     out_arms.push((c, b));
                 }
-                let e = els.as_ref().map(|b| self.scoped_stmts(b)).unwrap_or_default();
+                let e = els
+                    .as_ref()
+                    .map(|b| self.scoped_stmts(b))
+                    .unwrap_or_default();
                 StmtKind::If(out_arms, e)
             }
             S::Case { subject, arms } => {
                 let subj = self.expr(subject, None);
-                let st = if self.types.is_universal(subj.ty) { INTEGER } else { subj.ty };
+                let st = if self.types.is_universal(subj.ty) {
+                    INTEGER
+                } else {
+                    subj.ty
+                };
                 let subj = self.coerce(subj, st);
-                let lists: Vec<&[ast::Choice]> = arms.iter().map(|a| a.choices.as_slice()).collect();
+                let lists: Vec<&[ast::Choice]> =
+                    arms.iter().map(|a| a.choices.as_slice()).collect();
                 let (ranges, others_at) = self.case_choices(st, &lists, subject.span);
                 let mut outa = Vec::new();
                 let mut others = None;
@@ -123,14 +148,28 @@ impl Checker {
                 }
                 StmtKind::Case(subj, outa, others)
             }
-            S::Loop { label, scheme, body, end_label } => {
+            S::Loop {
+                label,
+                scheme,
+                body,
+                end_label,
+            } => {
                 if let (Some(l), Some(e)) = (label, end_label)
                     && l.key != e.key
                 {
-                    self.err(Diagnostic::syntax(e.span, format!("`end loop {}` does not match the loop name `{}`", e.name, l.name)));
+                    self.err(Diagnostic::syntax(
+                        e.span,
+                        format!(
+                            "`end loop {}` does not match the loop name `{}`",
+                            e.name, l.name
+                        ),
+                    ));
                 }
                 if let (None, Some(e)) = (label, end_label) {
-                    self.err(Diagnostic::syntax(e.span, format!("the loop has no name, but its end says `{}`", e.name)));
+                    self.err(Diagnostic::syntax(
+                        e.span,
+                        format!("the loop has no name, but its end says `{}`", e.name),
+                    ));
                 }
                 let id = self.new_loop();
                 self.loops.push((label.as_ref().map(|l| l.key.clone()), id));
@@ -144,10 +183,21 @@ impl Checker {
                         let body = self.scoped_stmts(body);
                         StmtKind::While { id, cond, body }
                     }
-                    ast::LoopScheme::For { var, reverse, range } => {
+                    ast::LoopScheme::For {
+                        var,
+                        reverse,
+                        range,
+                    } => {
                         let (lo, hi, t) = self.discrete_range(range, None);
-                        let t = if self.types.is_universal(t) { INTEGER } else { t };
-                        let (lo, hi) = (self.coerce(lo, self.types.base(t)), self.coerce(hi, self.types.base(t)));
+                        let t = if self.types.is_universal(t) {
+                            INTEGER
+                        } else {
+                            t
+                        };
+                        let (lo, hi) = (
+                            self.coerce(lo, self.types.base(t)),
+                            self.coerce(hi, self.types.base(t)),
+                        );
                         self.push_scope();
                         let v = self.new_slot();
                         self.declare(
@@ -178,9 +228,17 @@ impl Checker {
                 let id = match label {
                     None => self.loops.last().map(|l| l.1),
                     Some(l) => {
-                        let f = self.loops.iter().rev().find(|x| x.0.as_deref() == Some(l.key.as_str())).map(|x| x.1);
+                        let f = self
+                            .loops
+                            .iter()
+                            .rev()
+                            .find(|x| x.0.as_deref() == Some(l.key.as_str()))
+                            .map(|x| x.1);
                         if f.is_none() {
-                            self.err(Diagnostic::name(l.span, format!("no enclosing loop is named `{}`", l.name)));
+                            self.err(Diagnostic::name(
+                                l.span,
+                                format!("no enclosing loop is named `{}`", l.name),
+                            ));
                             return;
                         }
                         f
@@ -209,11 +267,20 @@ impl Checker {
                         return;
                     }
                     (Some(v), None) => {
-                        self.err(Diagnostic::ty(v.span, "a procedure cannot return a value").with_hint("make it a function, or write `return;`"));
+                        self.err(
+                            Diagnostic::ty(v.span, "a procedure cannot return a value")
+                                .with_hint("make it a function, or write `return;`"),
+                        );
                         return;
                     }
                     (None, Some(t)) => {
-                        self.err(Diagnostic::ty(sp, format!("a function must return a value of type `{}`", self.types.name(t))));
+                        self.err(Diagnostic::ty(
+                            sp,
+                            format!(
+                                "a function must return a value of type `{}`",
+                                self.types.name(t)
+                            ),
+                        ));
                         return;
                     }
                 }
@@ -234,7 +301,10 @@ impl Checker {
                         kind: StmtKind::Block(Box::new(inner)),
                         span: sp,
                     });
-                    StmtKind::Block(Box::new(Body { stmts: elab, handlers: Vec::new() }))
+                    StmtKind::Block(Box::new(Body {
+                        stmts: elab,
+                        handlers: Vec::new(),
+                    }))
                 }
             }
             S::Raise { name, message } => {
@@ -254,7 +324,10 @@ impl Checker {
                         Some(Entity::Exc(e)) => StmtKind::Raise(*e, msg),
                         Some(_) => {
                             let t = crate::syntax::parser::expr_text(n);
-                            self.err(Diagnostic::name(n.span, format!("`{t}` is not an exception")));
+                            self.err(Diagnostic::name(
+                                n.span,
+                                format!("`{t}` is not an exception"),
+                            ));
                             return;
                         }
                         None => return,
@@ -266,7 +339,10 @@ impl Checker {
                 StmtKind::Delay(self.coerce(e, DURATION))
             }
             S::Accept { .. } | S::Select(_) => {
-                self.err(Diagnostic::unsupported(sp, "a task statement (`accept`/`select`)").with_hint("tasks are not implemented yet in this version of adair"));
+                self.err(
+                    Diagnostic::unsupported(sp, "a task statement (`accept`/`select`)")
+                        .with_hint("tasks are not implemented yet in this version of adair"),
+                );
                 return;
             }
         };
@@ -289,13 +365,31 @@ impl Checker {
             ast::ExprKind::Name(_) | ast::ExprKind::Select(..) => self.denote(prefix, true),
             _ => Vec::new(),
         };
-        let fs: Vec<FuncId> = es.iter().filter_map(|x| if let Entity::Func(f) = x { Some(*f) } else { None }).collect();
+        let fs: Vec<FuncId> = es
+            .iter()
+            .filter_map(|x| {
+                if let Entity::Func(f) = x {
+                    Some(*f)
+                } else {
+                    None
+                }
+            })
+            .collect();
         if fs.is_empty() {
             if !es.is_empty() {
                 let t = crate::syntax::parser::expr_text(prefix);
-                self.err(Diagnostic::ty(e.span, format!("`{t}` is not a procedure")).with_hint("a statement is an assignment `X := ...;` or a procedure call"));
-            } else if !matches!(prefix.kind, ast::ExprKind::Name(_) | ast::ExprKind::Select(..)) {
-                self.err(Diagnostic::syntax(e.span, "this expression is not a statement"));
+                self.err(
+                    Diagnostic::ty(e.span, format!("`{t}` is not a procedure"))
+                        .with_hint("a statement is an assignment `X := ...;` or a procedure call"),
+                );
+            } else if !matches!(
+                prefix.kind,
+                ast::ExprKind::Name(_) | ast::ExprKind::Select(..)
+            ) {
+                self.err(Diagnostic::syntax(
+                    e.span,
+                    "this expression is not a statement",
+                ));
             }
             for a in args {
                 self.expr(&a.value, None);

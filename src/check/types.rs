@@ -132,7 +132,10 @@ impl Types {
         self.is_integer(t) || self.is_float(t)
     }
     pub fn is_discrete(&self, t: TypeId) -> bool {
-        matches!(self.kind(t), TypeKind::Integer | TypeKind::UnivInt | TypeKind::Enum(_))
+        matches!(
+            self.kind(t),
+            TypeKind::Integer | TypeKind::UnivInt | TypeKind::Enum(_)
+        )
     }
     pub fn is_scalar(&self, t: TypeId) -> bool {
         self.is_discrete(t) || self.is_float(t) || self.base(t) == TIME
@@ -149,7 +152,11 @@ impl Types {
     /// Array information of `t` (which may be a constrained subtype).
     pub fn array(&self, t: TypeId) -> Option<(&[TypeId], TypeId, Option<&Vec<(Ex, Ex)>>)> {
         match &self.list[t as usize].kind {
-            TypeKind::Array { index, elem, bounds } => Some((index, *elem, bounds.as_ref())),
+            TypeKind::Array {
+                index,
+                elem,
+                bounds,
+            } => Some((index, *elem, bounds.as_ref())),
             _ => None,
         }
     }
@@ -185,7 +192,10 @@ impl Types {
             (TypeKind::UnivInt, TypeKind::Integer) => true,
             (TypeKind::UnivReal, TypeKind::Float) => true,
             (TypeKind::Null, TypeKind::Access(_)) => true,
-            (TypeKind::AnyComposite, TypeKind::Array { .. } | TypeKind::Record(_) | TypeKind::Access(_)) => true,
+            (
+                TypeKind::AnyComposite,
+                TypeKind::Array { .. } | TypeKind::Record(_) | TypeKind::Access(_),
+            ) => true,
             (TypeKind::Integer, TypeKind::UnivInt) | (TypeKind::Float, TypeKind::UnivReal) => true,
             _ => false,
         }
@@ -212,7 +222,10 @@ impl Types {
         t.add("universal_real", TypeKind::UnivReal);
         t.add("null", TypeKind::Null);
         t.add("aggregate", TypeKind::AnyComposite);
-        t.add("Boolean", TypeKind::Enum(vec!["FALSE".into(), "TRUE".into()]));
+        t.add(
+            "Boolean",
+            TypeKind::Enum(vec!["FALSE".into(), "TRUE".into()]),
+        );
         let chars = (0u32..256)
             .map(|c| char::from_u32(c).map(char_image).unwrap_or_default())
             .collect();
@@ -247,8 +260,9 @@ impl Types {
 /// control character (`NUL`, `LF`, ...).
 pub fn char_image(c: char) -> String {
     const CTRL: [&str; 32] = [
-        "NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS", "HT", "LF", "VT", "FF", "CR", "SO", "SI", "DLE", "DC1",
-        "DC2", "DC3", "DC4", "NAK", "SYN", "ETB", "CAN", "EM", "SUB", "ESC", "FS", "GS", "RS", "US",
+        "NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS", "HT", "LF", "VT", "FF", "CR",
+        "SO", "SI", "DLE", "DC1", "DC2", "DC3", "DC4", "NAK", "SYN", "ETB", "CAN", "EM", "SUB",
+        "ESC", "FS", "GS", "RS", "US",
     ];
     let n = c as u32;
     if n < 32 {

@@ -31,7 +31,9 @@ const TABLE: &[(&str, Native)] = &[
     ("cot", |_, a, _| f1(a, |x| 1.0 / x.tan())),
     ("arcsin", arcsin),
     ("arccos", arccos),
-    ("arctan", |_, a, _| Ok(Some(Value::Real(a[0].real().atan2(a[1].real()))))),
+    ("arctan", |_, a, _| {
+        Ok(Some(Value::Real(a[0].real().atan2(a[1].real()))))
+    }),
     ("exp", |_, a, _| f1(a, f64::exp)),
     ("log", log),
     ("log_base", log_base),
@@ -40,14 +42,30 @@ const TABLE: &[(&str, Native)] = &[
     ("exception_message", exception_message),
     ("exception_information", exception_information),
     ("clock", |r, _, _| Ok(Some(Value::Real(r.m.clock.now())))),
-    ("time_diff", |_, a, _| Ok(Some(Value::Real(a[0].real() - a[1].real())))),
-    ("time_add", |_, a, _| Ok(Some(Value::Real(a[0].real() + a[1].real())))),
-    ("time_sub", |_, a, _| Ok(Some(Value::Real(a[0].real() - a[1].real())))),
-    ("time_lt", |_, a, _| Ok(Some(Value::Int((a[0].real() < a[1].real()) as i64)))),
-    ("time_le", |_, a, _| Ok(Some(Value::Int((a[0].real() <= a[1].real()) as i64)))),
-    ("time_gt", |_, a, _| Ok(Some(Value::Int((a[0].real() > a[1].real()) as i64)))),
-    ("time_ge", |_, a, _| Ok(Some(Value::Int((a[0].real() >= a[1].real()) as i64)))),
-    ("seconds", |_, a, _| Ok(Some(Value::Real(a[0].real().rem_euclid(86_400.0))))),
+    ("time_diff", |_, a, _| {
+        Ok(Some(Value::Real(a[0].real() - a[1].real())))
+    }),
+    ("time_add", |_, a, _| {
+        Ok(Some(Value::Real(a[0].real() + a[1].real())))
+    }),
+    ("time_sub", |_, a, _| {
+        Ok(Some(Value::Real(a[0].real() - a[1].real())))
+    }),
+    ("time_lt", |_, a, _| {
+        Ok(Some(Value::Int((a[0].real() < a[1].real()) as i64)))
+    }),
+    ("time_le", |_, a, _| {
+        Ok(Some(Value::Int((a[0].real() <= a[1].real()) as i64)))
+    }),
+    ("time_gt", |_, a, _| {
+        Ok(Some(Value::Int((a[0].real() > a[1].real()) as i64)))
+    }),
+    ("time_ge", |_, a, _| {
+        Ok(Some(Value::Int((a[0].real() >= a[1].real()) as i64)))
+    }),
+    ("seconds", |_, a, _| {
+        Ok(Some(Value::Real(a[0].real().rem_euclid(86_400.0))))
+    }),
 ];
 
 fn f1(a: &[Value], f: fn(f64) -> f64) -> R<Option<Value>> {
@@ -105,7 +123,11 @@ fn log_base(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
 fn float_pow(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let (x, y) = (a[0].real(), a[1].real());
     if x < 0.0 || (x == 0.0 && y == 0.0) {
-        return Err(argument_error(r, "\"**\" with a negative base or 0.0 ** 0.0", span));
+        return Err(argument_error(
+            r,
+            "\"**\" with a negative base or 0.0 ** 0.0",
+            span,
+        ));
     }
     Ok(Some(Value::Real(x.powf(y))))
 }
@@ -159,7 +181,9 @@ fn get_line_fn(r: &mut Run, _: &mut [Value], span: Span) -> R<Option<Value>> {
 /// index written.
 fn get_line(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let l = read_line(r, span)?;
-    let Value::Arr(arr) = &mut a[0] else { return Ok(None) };
+    let Value::Arr(arr) = &mut a[0] else {
+        return Ok(None);
+    };
     let arr = std::rc::Rc::make_mut(arr);
     let first = arr.bounds[0].0;
     let mut n = 0;
@@ -187,7 +211,12 @@ fn put_int(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
             digits.push('0');
         }
         while x > 0 {
-            digits.insert(0, std::char::from_digit((x % base as u64) as u32, base as u32).unwrap_or('?').to_ascii_uppercase());
+            digits.insert(
+                0,
+                std::char::from_digit((x % base as u64) as u32, base as u32)
+                    .unwrap_or('?')
+                    .to_ascii_uppercase(),
+            );
             x /= base as u64;
         }
         format!("{}{base}#{digits}#", if v < 0 { "-" } else { "" })
@@ -197,7 +226,12 @@ fn put_int(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
 }
 
 fn put_float(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
-    let s = value::put_float(a[0].real(), a[1].int().max(0) as usize, a[2].int().max(0) as usize, a[3].int().max(0) as usize);
+    let s = value::put_float(
+        a[0].real(),
+        a[1].int().max(0) as usize,
+        a[2].int().max(0) as usize,
+        a[3].int().max(0) as usize,
+    );
     r.m.write_str(&s);
     Ok(None)
 }
@@ -210,7 +244,9 @@ fn occurrence(a: &[Value]) -> Option<&super::Occurrence> {
 }
 
 fn exception_name(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
-    let name = occurrence(a).map(|o| r.c.excs[o.exc as usize].name.clone()).unwrap_or_default();
+    let name = occurrence(a)
+        .map(|o| r.c.excs[o.exc as usize].name.clone())
+        .unwrap_or_default();
     Ok(Some(Value::str(&name)))
 }
 
@@ -223,7 +259,11 @@ fn exception_information(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Valu
     let s = occurrence(a)
         .map(|o| {
             let name = &r.c.excs[o.exc as usize].name;
-            if o.message.is_empty() { format!("raised {name}\n") } else { format!("raised {name} : {}\n", o.message) }
+            if o.message.is_empty() {
+                format!("raised {name}\n")
+            } else {
+                format!("raised {name} : {}\n", o.message)
+            }
         })
         .unwrap_or_default();
     Ok(Some(Value::str(&s)))

@@ -99,7 +99,10 @@ impl Machine {
         }
         let mut starts = vec![0];
         starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
-        let base = std::path::Path::new(name).file_name().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
+        let base = std::path::Path::new(name)
+            .file_name()
+            .map(|s| s.to_string_lossy().to_string())
+            .unwrap_or_default();
         self.files[id] = (base, starts);
     }
 
@@ -115,7 +118,12 @@ impl Machine {
 
     /// Runs level-0 statements (a script, a REPL entry or the library level),
     /// then the main subprogram, if any.
-    pub fn run(&mut self, chk: &Checker, stmts: &[Stmt], main: Option<FuncId>) -> Result<(), Box<Occurrence>> {
+    pub fn run(
+        &mut self,
+        chk: &Checker,
+        stmts: &[Stmt],
+        main: Option<FuncId>,
+    ) -> Result<(), Box<Occurrence>> {
         self.bind_natives(chk);
         let need = chk.globals as usize;
         if self.stack.len() < need {
@@ -128,7 +136,15 @@ impl Machine {
         let r = (|| -> R<()> {
             run.exec_all(stmts)?;
             if let Some(f) = main {
-                run.call(f, &[], Span { start: 0, end: 0, context: 0 })?;
+                run.call(
+                    f,
+                    &[],
+                    Span {
+                        start: 0,
+                        end: 0,
+                        context: 0,
+                    },
+                )?;
             }
             Ok(())
         })();
@@ -153,7 +169,8 @@ impl Machine {
     fn bind_natives(&mut self, chk: &Checker) {
         while self.natives.len() < chk.funcs.len() {
             let i = self.natives.len();
-            self.natives.push(chk.imports[i].as_deref().and_then(builtins::lookup));
+            self.natives
+                .push(chk.imports[i].as_deref().and_then(builtins::lookup));
         }
     }
 
@@ -202,7 +219,12 @@ impl Run<'_> {
     }
 
     pub fn exc_by_name(&self, full: &str) -> ExcId {
-        self.c.excs.iter().position(|e| e.name == full).map(|i| i as ExcId).unwrap_or(check::PROGRAM_ERROR)
+        self.c
+            .excs
+            .iter()
+            .position(|e| e.name == full)
+            .map(|i| i as ExcId)
+            .unwrap_or(check::PROGRAM_ERROR)
     }
 
     fn slot(&self, v: Var) -> usize {
@@ -236,7 +258,7 @@ impl Run<'_> {
             StmtKind::Builtin(..) => Ok(()),
             StmtKind::If(arms, els) => {
                 for (c, body) in arms {
-                    if self.eval(c)?.int() != 0 {
+                    if self.eval_int(c)? != 0 {
                         return self.exec_all(body);
                     }
                 }
@@ -263,7 +285,7 @@ impl Run<'_> {
                 }
             },
             StmtKind::While { id, cond, body } => {
-                while self.eval(cond)?.int() != 0 {
+                while self.eval_int(cond)? != 0 {
                     self.poll(s.span)?;
                     match self.exec_all(body) {
                         Ok(()) => {}
@@ -273,8 +295,15 @@ impl Run<'_> {
                 }
                 Ok(())
             }
-            StmtKind::For { id, var, lo, hi, reverse, body } => {
-                let (l, h) = (self.eval(lo)?.int(), self.eval(hi)?.int());
+            StmtKind::For {
+                id,
+                var,
+                lo,
+                hi,
+                reverse,
+                body,
+            } => {
+                let (l, h) = (self.eval_int(lo)?, self.eval_int(hi)?);
                 if l > h {
                     return Ok(());
                 }
@@ -329,7 +358,9 @@ impl Run<'_> {
                 // The handler keeps the current occurrence in a hidden slot.
                 match self.m.current.last().cloned() {
                     Some(o) => Err(Flow::Raise(Box::new((*o).clone()))),
-                    None => Err(self.raise(check::PROGRAM_ERROR, "no exception to re-raise", s.span)),
+                    None => {
+                        Err(self.raise(check::PROGRAM_ERROR, "no exception to re-raise", s.span))
+                    }
                 }
             }
             StmtKind::Delay(d) => {
@@ -384,7 +415,11 @@ impl Run<'_> {
         }
         let sub = &self.c.funcs[f as usize];
         if self.m.depth >= MAX_DEPTH {
-            return Err(self.raise(check::STORAGE_ERROR, "stack overflow (recursion too deep)", span));
+            return Err(self.raise(
+                check::STORAGE_ERROR,
+                "stack overflow (recursion too deep)",
+                span,
+            ));
         }
         let result = if let Some(native) = self.m.natives.get(f as usize).copied().flatten() {
             self.m.calls.push(span);
@@ -393,13 +428,19 @@ impl Run<'_> {
             r?
         } else {
             let Some(body) = sub.body.clone() else {
-                return Err(self.raise(check::PROGRAM_ERROR, format!("`{}` has no body", sub.name), span));
+                return Err(self.raise(
+                    check::PROGRAM_ERROR,
+                    format!("`{}` has no body", sub.name),
+                    span,
+                ));
             };
             let level = sub.level as usize;
             let nslots = sub.nslots as usize;
             let base = self.m.stack.len();
             self.m.stack.extend(vals.iter().cloned());
-            self.m.stack.resize(base + nslots.max(vals.len()), Value::Undef);
+            self.m
+                .stack
+                .resize(base + nslots.max(vals.len()), Value::Undef);
             if self.m.display.len() <= level {
                 self.m.display.resize(level + 1, 0);
             }
@@ -421,7 +462,11 @@ impl Run<'_> {
             match r {
                 Ok(()) => {
                     if sub.ret.is_some() {
-                        return Err(self.raise(check::PROGRAM_ERROR, format!("{} missing return", self.m.location(sub.span)), sub.span));
+                        return Err(self.raise(
+                            check::PROGRAM_ERROR,
+                            format!("{} missing return", self.m.location(sub.span)),
+                            sub.span,
+                        ));
                     }
                     None
                 }
@@ -443,6 +488,36 @@ impl Run<'_> {
     // ---- places ----
 
     fn assign(&mut self, target: &Ex, val: Value) -> R<()> {
+        match &target.kind {
+            ExKind::Var(v) => {
+                let i = self.slot(*v);
+                self.m.stack[i] = val;
+                return Ok(());
+            }
+            // Hot path: `A (I, J) := V` without building a path.
+            ExKind::Index(p, idx) if idx.len() <= 4 && matches!(p.kind, ExKind::Var(_)) => {
+                let mut ix = [0i64; 4];
+                for (k, x) in idx.iter().enumerate() {
+                    ix[k] = self.eval_int(x)?;
+                }
+                let ExKind::Var(v) = p.kind else {
+                    unreachable!()
+                };
+                let slot = self.slot(v);
+                let Value::Arr(a) = &mut self.m.stack[slot] else {
+                    return Err(self.check_failed("access check failed", target.span));
+                };
+                let a = Rc::make_mut(a);
+                return match a.offset(&ix[..idx.len()]) {
+                    Some(o) => {
+                        a.data[o] = val;
+                        Ok(())
+                    }
+                    None => Err(self.check_failed("index check failed", target.span)),
+                };
+            }
+            _ => {}
+        }
         let mut steps = Vec::new();
         let mut e = target;
         loop {
@@ -451,7 +526,8 @@ impl Run<'_> {
                     let i = self.slot(*v);
                     steps.reverse();
                     let root = &mut self.m.stack[i];
-                    return write_path(root, &steps, val).map_err(|(what, sp)| self.check_failed(what, sp));
+                    return write_path(root, &steps, val)
+                        .map_err(|(what, sp)| self.check_failed(what, sp));
                 }
                 ExKind::Index(p, idx) => {
                     let mut ix = Vec::with_capacity(idx.len());
@@ -477,7 +553,8 @@ impl Run<'_> {
                     };
                     steps.reverse();
                     let mut b = rc.borrow_mut();
-                    return write_path(&mut b, &steps, val).map_err(|(what, sp)| self.check_failed(what, sp));
+                    return write_path(&mut b, &steps, val)
+                        .map_err(|(what, sp)| self.check_failed(what, sp));
                 }
                 _ => return Err(self.raise(check::PROGRAM_ERROR, "not a variable", e.span)),
             }
@@ -486,6 +563,57 @@ impl Run<'_> {
 
     // ---- expressions ----
 
+    /// Evaluates a discrete expression without building a `Value`.
+    fn eval_int(&mut self, e: &Ex) -> R<i64> {
+        match &e.kind {
+            ExKind::Int(v) => Ok(*v),
+            ExKind::Var(v) => match &self.m.stack[self.slot(*v)] {
+                Value::Int(i) => Ok(*i),
+                other => Ok(other.int()),
+            },
+            ExKind::IntBin(op, a, b) => {
+                let x = self.eval_int(a)?;
+                let y = self.eval_int(b)?;
+                self.int_op(*op, x, y, e.span)
+            }
+            _ => Ok(self.eval(e)?.int()),
+        }
+    }
+
+    /// Evaluates a Float expression without building a `Value`.
+    fn eval_real(&mut self, e: &Ex) -> R<f64> {
+        match &e.kind {
+            ExKind::Real(v) => Ok(*v),
+            ExKind::Var(v) => Ok(self.m.stack[self.slot(*v)].real()),
+            ExKind::Index(p, idx) if idx.len() <= 4 && matches!(p.kind, ExKind::Var(_)) => {
+                let mut ix = [0i64; 4];
+                for (k, x) in idx.iter().enumerate() {
+                    ix[k] = self.eval_int(x)?;
+                }
+                let ExKind::Var(v) = p.kind else {
+                    unreachable!()
+                };
+                match &self.m.stack[self.slot(v)] {
+                    Value::Arr(a) => match a.offset(&ix[..idx.len()]) {
+                        Some(o) => Ok(a.data[o].real()),
+                        None => Err(self.check_failed("index check failed", e.span)),
+                    },
+                    _ => Err(self.check_failed("access check failed", e.span)),
+                }
+            }
+            ExKind::FloatBin(op, a, b) if *op != FloatOp::PowI && *op != FloatOp::Div => {
+                let x = self.eval_real(a)?;
+                let y = self.eval_real(b)?;
+                Ok(match op {
+                    FloatOp::Add => x + y,
+                    FloatOp::Sub => x - y,
+                    _ => x * y,
+                })
+            }
+            _ => Ok(self.eval(e)?.real()),
+        }
+    }
+
     pub fn eval(&mut self, e: &Ex) -> R<Value> {
         Ok(match &e.kind {
             ExKind::Int(v) => Value::Int(*v),
@@ -493,6 +621,24 @@ impl Run<'_> {
             ExKind::Str(s) => Value::str(s),
             ExKind::Null => Value::Ptr(None),
             ExKind::Var(v) => self.m.stack[self.slot(*v)].clone(),
+            ExKind::Index(p, idx) if idx.len() <= 4 && matches!(p.kind, ExKind::Var(_)) => {
+                // Hot path: index a variable in place, without touching its refcount.
+                let mut ix = [0i64; 4];
+                for (k, x) in idx.iter().enumerate() {
+                    ix[k] = self.eval_int(x)?;
+                }
+                let ExKind::Var(v) = p.kind else {
+                    unreachable!()
+                };
+                let slot = self.slot(v);
+                match &self.m.stack[slot] {
+                    Value::Arr(a) => match a.offset(&ix[..idx.len()]) {
+                        Some(o) => a.data[o].clone(),
+                        None => return Err(self.check_failed("index check failed", e.span)),
+                    },
+                    _ => return Err(self.check_failed("access check failed", e.span)),
+                }
+            }
             ExKind::Index(p, idx) => {
                 let base = self.eval(p)?;
                 let Value::Arr(a) = base else {
@@ -511,16 +657,24 @@ impl Run<'_> {
             ExKind::Slice(p, l, h) => {
                 let base = self.eval(p)?;
                 let (l, h) = (self.eval(l)?.int(), self.eval(h)?.int());
-                let Value::Arr(a) = base else { return Err(self.check_failed("access check failed", e.span)) };
+                let Value::Arr(a) = base else {
+                    return Err(self.check_failed("access check failed", e.span));
+                };
                 if l > h {
-                    return Ok(Value::Arr(Rc::new(Array { bounds: vec![(l, h)], data: vec![] })));
+                    return Ok(Value::Arr(Rc::new(Array {
+                        bounds: vec![(l, h)],
+                        data: vec![],
+                    })));
                 }
                 let (lo, hi) = a.bounds[0];
                 if l < lo || h > hi {
                     return Err(self.check_failed("range check failed", e.span));
                 }
                 let data = a.data[(l - lo) as usize..=(h - lo) as usize].to_vec();
-                Value::Arr(Rc::new(Array { bounds: vec![(l, h)], data }))
+                Value::Arr(Rc::new(Array {
+                    bounds: vec![(l, h)],
+                    data,
+                }))
             }
             ExKind::Field(p, i) => match self.eval(p)? {
                 Value::Rec(r) => r[*i as usize].clone(),
@@ -535,12 +689,20 @@ impl Run<'_> {
                 None => Value::Undef,
             },
             ExKind::IntBin(op, a, b) => {
-                let x = self.eval(a)?.int();
-                let y = self.eval(b)?.int();
+                let x = self.eval_int(a)?;
+                let y = self.eval_int(b)?;
                 Value::Int(self.int_op(*op, x, y, e.span)?)
             }
             ExKind::FloatBin(op, a, b) => {
-                let x = self.eval(a)?.real();
+                let x = self.eval_real(a)?;
+                if matches!(op, FloatOp::Add | FloatOp::Sub | FloatOp::Mul) {
+                    let y = self.eval_real(b)?;
+                    return Ok(Value::Real(match op {
+                        FloatOp::Add => x + y,
+                        FloatOp::Sub => x - y,
+                        _ => x * y,
+                    }));
+                }
                 let yv = self.eval(b)?;
                 Value::Real(match op {
                     FloatOp::Add => x + yv.real(),
@@ -649,7 +811,9 @@ impl Run<'_> {
                 for (l, h) in ranges {
                     let lo = self.eval(l)?;
                     let hi = self.eval(h)?;
-                    if v.compare(&lo) != std::cmp::Ordering::Less && v.compare(&hi) != std::cmp::Ordering::Greater {
+                    if v.compare(&lo) != std::cmp::Ordering::Less
+                        && v.compare(&hi) != std::cmp::Ordering::Greater
+                    {
                         inside = true;
                         break;
                     }
@@ -666,7 +830,7 @@ impl Run<'_> {
             }
             ExKind::If(arms, els) => {
                 for (c, v) in arms {
-                    if self.eval(c)?.int() != 0 {
+                    if self.eval_int(c)? != 0 {
                         return self.eval(v);
                     }
                 }
@@ -693,7 +857,9 @@ impl Run<'_> {
             }
             ExKind::Builtin(..) => Value::Undef,
             ExKind::Default(t) => self.default_value(*t)?,
-            ExKind::Error => return Err(self.raise(check::PROGRAM_ERROR, "erroneous expression", e.span)),
+            ExKind::Error => {
+                return Err(self.raise(check::PROGRAM_ERROR, "erroneous expression", e.span));
+            }
         })
     }
 
@@ -719,7 +885,11 @@ impl Run<'_> {
                     return Err(self.check_failed("divide by zero", span));
                 }
                 let m = x % y;
-                if m != 0 && ((m < 0) != (y < 0)) { m + y } else { m }
+                if m != 0 && ((m < 0) != (y < 0)) {
+                    m + y
+                } else {
+                    m
+                }
             }
             IntOp::Pow => {
                 if y < 0 {
@@ -774,15 +944,22 @@ impl Run<'_> {
             (Value::Real(x), _, Some((l, h))) => l <= *x && *x <= h,
             _ => {
                 let (l, h) = self.type_bounds(t)?;
-                v.compare(&l) != std::cmp::Ordering::Less && v.compare(&h) != std::cmp::Ordering::Greater
+                v.compare(&l) != std::cmp::Ordering::Less
+                    && v.compare(&h) != std::cmp::Ordering::Greater
             }
         };
-        if ok { Ok(()) } else { Err(self.check_failed("range check failed", span)) }
+        if ok {
+            Ok(())
+        } else {
+            Err(self.check_failed("range check failed", span))
+        }
     }
 
     /// Bounds of a constrained array subtype.
     fn array_bounds(&mut self, t: TypeId) -> R<Option<Vec<(i64, i64)>>> {
-        let Some((_, _, Some(bs))) = self.c.types.array(t) else { return Ok(None) };
+        let Some((_, _, Some(bs))) = self.c.types.array(t) else {
+            return Ok(None);
+        };
         let bs = bs.clone();
         let mut out = Vec::with_capacity(bs.len());
         for (l, h) in &bs {
@@ -792,7 +969,9 @@ impl Run<'_> {
     }
 
     fn array_convert(&mut self, v: Value, t: TypeId, span: Span) -> R<Value> {
-        let Some(bounds) = self.array_bounds(t)? else { return Ok(v) };
+        let Some(bounds) = self.array_bounds(t)? else {
+            return Ok(v);
+        };
         let Value::Arr(mut a) = v else { return Ok(v) };
         if a.bounds == bounds {
             return Ok(Value::Arr(a));
@@ -838,7 +1017,15 @@ impl Run<'_> {
         })
     }
 
-    fn concat(&mut self, x: Value, y: Value, xe: bool, ye: bool, t: TypeId, span: Span) -> R<Value> {
+    fn concat(
+        &mut self,
+        x: Value,
+        y: Value,
+        xe: bool,
+        ye: bool,
+        t: TypeId,
+        span: Span,
+    ) -> R<Value> {
         let first_of_index = || -> i64 {
             self.c
                 .types
@@ -854,7 +1041,10 @@ impl Run<'_> {
                 if a.data.is_empty() {
                     // An empty left operand: the result is the right operand.
                     return Ok(match (y, ye) {
-                        (v, true) => Value::Arr(Rc::new(Array { bounds: vec![(first_of_index(), first_of_index())], data: vec![v] })),
+                        (v, true) => Value::Arr(Rc::new(Array {
+                            bounds: vec![(first_of_index(), first_of_index())],
+                            data: vec![v],
+                        })),
                         (v, false) => v,
                     });
                 }
@@ -871,7 +1061,10 @@ impl Run<'_> {
         if hi > i32::MAX as i64 {
             return Err(self.check_failed("range check failed", span));
         }
-        Ok(Value::Arr(Rc::new(Array { bounds: vec![(lo, hi)], data })))
+        Ok(Value::Arr(Rc::new(Array {
+            bounds: vec![(lo, hi)],
+            data,
+        })))
     }
 
     fn array_agg(&mut self, agg: &ArrayAgg, span: Span) -> R<Value> {
@@ -927,8 +1120,16 @@ impl Run<'_> {
                 let (lo, hi) = match &fixed {
                     Some(b) => b[0],
                     None => {
-                        let lo = pairs.iter().flat_map(|p| p.0.iter().map(|r| r.0)).min().unwrap_or(1);
-                        let hi = pairs.iter().flat_map(|p| p.0.iter().map(|r| r.1)).max().unwrap_or(0);
+                        let lo = pairs
+                            .iter()
+                            .flat_map(|p| p.0.iter().map(|r| r.0))
+                            .min()
+                            .unwrap_or(1);
+                        let hi = pairs
+                            .iter()
+                            .flat_map(|p| p.0.iter().map(|r| r.1))
+                            .max()
+                            .unwrap_or(0);
                         (lo, hi)
                     }
                 };
@@ -971,20 +1172,35 @@ impl Run<'_> {
 
     /// Builds an array from its first-dimension components (elements, or rows
     /// of the remaining dimensions).
-    fn rows_to_array(&mut self, vals: Vec<Value>, first: (i64, i64), fixed: Option<Vec<(i64, i64)>>, span: Span) -> R<Value> {
-        let multi = fixed.as_ref().map(|b| b.len() > 1).unwrap_or(false) || matches!(vals.first(), Some(Value::Arr(_))) && self.is_multi(&fixed);
+    fn rows_to_array(
+        &mut self,
+        vals: Vec<Value>,
+        first: (i64, i64),
+        fixed: Option<Vec<(i64, i64)>>,
+        span: Span,
+    ) -> R<Value> {
+        let multi = fixed.as_ref().map(|b| b.len() > 1).unwrap_or(false)
+            || matches!(vals.first(), Some(Value::Arr(_))) && self.is_multi(&fixed);
         if !multi {
-            return Ok(Value::Arr(Rc::new(Array { bounds: vec![first], data: vals })));
+            return Ok(Value::Arr(Rc::new(Array {
+                bounds: vec![first],
+                data: vals,
+            })));
         }
         let mut bounds = vec![first];
         let mut data = Vec::new();
         let mut inner: Option<Vec<(i64, i64)>> = None;
         for v in vals {
-            let Value::Arr(row) = v else { return Err(self.check_failed("length check failed", span)) };
+            let Value::Arr(row) = v else {
+                return Err(self.check_failed("length check failed", span));
+            };
             match &inner {
                 None => inner = Some(row.bounds.clone()),
                 Some(b) => {
-                    if b.iter().zip(&row.bounds).any(|(x, y)| x.1 - x.0 != y.1 - y.0) {
+                    if b.iter()
+                        .zip(&row.bounds)
+                        .any(|(x, y)| x.1 - x.0 != y.1 - y.0)
+                    {
                         return Err(self.check_failed("length check failed", span));
                     }
                 }
@@ -1011,7 +1227,9 @@ impl Run<'_> {
         };
         Ok(match op {
             AttrOp::ArrFirst(d) | AttrOp::ArrLast(d) | AttrOp::ArrLength(d) => {
-                let Value::Arr(a) = a0 else { return Err(self.check_failed("access check failed", sp)) };
+                let Value::Arr(a) = a0 else {
+                    return Err(self.check_failed("access check failed", sp));
+                };
                 let d = d as usize - 1;
                 match op {
                     AttrOp::ArrFirst(_) => Value::Int(a.bounds[d].0),
@@ -1027,7 +1245,11 @@ impl Run<'_> {
             }
             AttrOp::ImageEnum(t) => {
                 let lits = self.c.types.enum_lits(t).unwrap_or(&[]);
-                Value::str(lits.get(a0.int() as usize).map(String::as_str).unwrap_or("?"))
+                Value::str(
+                    lits.get(a0.int() as usize)
+                        .map(String::as_str)
+                        .unwrap_or("?"),
+                )
             }
             AttrOp::ValueInt => match value::value_int(&a0.text()) {
                 Some(v) if v >= i32::MIN as i64 && v <= i32::MAX as i64 => Value::Int(v),
@@ -1091,20 +1313,37 @@ fn write_path(root: &mut Value, steps: &[Step], val: Value) -> Result<(), (&'sta
     };
     match first {
         Step::Index(ix, sp) => {
-            let Value::Arr(a) = root else { return Err(("access check failed", *sp)) };
+            let Value::Arr(a) = root else {
+                return Err(("access check failed", *sp));
+            };
             let a = Rc::make_mut(a);
-            let Some(o) = a.offset(ix) else { return Err(("index check failed", *sp)) };
+            let Some(o) = a.offset(ix) else {
+                return Err(("index check failed", *sp));
+            };
             write_path(&mut a.data[o], rest, val)
         }
         Step::Field(i) => {
-            let Value::Rec(r) = root else { return Err(("discriminant check failed", Span { start: 0, end: 0, context: 0 })) };
+            let Value::Rec(r) = root else {
+                return Err((
+                    "discriminant check failed",
+                    Span {
+                        start: 0,
+                        end: 0,
+                        context: 0,
+                    },
+                ));
+            };
             let r = Rc::make_mut(r);
             write_path(&mut r[*i as usize], rest, val)
         }
         Step::Slice(l, h, sp) => {
-            let Value::Arr(a) = root else { return Err(("access check failed", *sp)) };
+            let Value::Arr(a) = root else {
+                return Err(("access check failed", *sp));
+            };
             let a = Rc::make_mut(a);
-            let Value::Arr(src) = val else { return Err(("length check failed", *sp)) };
+            let Value::Arr(src) = val else {
+                return Err(("length check failed", *sp));
+            };
             let n = (h - l + 1).max(0) as usize;
             if src.data.len() != n {
                 return Err(("length check failed", *sp));

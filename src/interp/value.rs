@@ -68,7 +68,9 @@ impl PartialEq for Value {
             (Value::Real(a), Value::Real(b)) => a == b,
             (Value::Arr(a), Value::Arr(b)) => {
                 // Ada: arrays are equal when lengths and components match (bounds may differ).
-                a.data.len() == b.data.len() && (0..a.bounds.len()).all(|d| a.len(d) == b.len(d)) && a.data == b.data
+                a.data.len() == b.data.len()
+                    && (0..a.bounds.len()).all(|d| a.len(d) == b.len(d))
+                    && a.data == b.data
             }
             (Value::Rec(a), Value::Rec(b)) => a == b,
             (Value::Ptr(a), Value::Ptr(b)) => match (a, b) {
@@ -138,7 +140,11 @@ pub struct Occurrence {
 
 /// `Integer'Image`: a leading blank for non-negative values.
 pub fn image_int(v: i64) -> String {
-    if v < 0 { v.to_string() } else { format!(" {v}") }
+    if v < 0 {
+        v.to_string()
+    } else {
+        format!(" {v}")
+    }
 }
 
 /// Decimal digits of |x| rounded half away from zero at `frac` digits after
@@ -154,9 +160,17 @@ fn round_digits(x: f64, frac: usize, sci: bool) -> (Vec<u8>, i32) {
     let s = format!("{x:.70e}");
     let (mant, exp) = s.split_once('e').unwrap_or((&s, "0"));
     let mut exp: i32 = exp.parse().unwrap_or(0);
-    let mut digits: Vec<u8> = mant.bytes().filter(u8::is_ascii_digit).map(|b| b - b'0').collect();
+    let mut digits: Vec<u8> = mant
+        .bytes()
+        .filter(u8::is_ascii_digit)
+        .map(|b| b - b'0')
+        .collect();
     // Number of digits to keep.
-    let keep: i64 = if sci { frac as i64 + 1 } else { exp as i64 + 1 + frac as i64 };
+    let keep: i64 = if sci {
+        frac as i64 + 1
+    } else {
+        exp as i64 + 1 + frac as i64
+    };
     if keep < 0 {
         return (vec![0; frac + 1], 0);
     }
@@ -220,7 +234,11 @@ pub fn put_float(x: f64, fore: usize, aft: usize, exp: usize) -> String {
             body.push('0');
         }
         body.push_str(&ed);
-        let int = if neg { format!("-{}", &body[..1]) } else { body[..1].to_string() };
+        let int = if neg {
+            format!("-{}", &body[..1])
+        } else {
+            body[..1].to_string()
+        };
         format!("{}{}", pad_left(&int, fore), &body[1..])
     } else {
         let (mut digits, e) = round_digits(x, aft, false);
@@ -244,12 +262,20 @@ pub fn put_float(x: f64, fore: usize, aft: usize, exp: usize) -> String {
 /// `Float'Image` (GNAT, Float'Digits = 6): `" 8.30600E+02"`.
 pub fn image_float(x: f64) -> String {
     let s = put_float(x, 1, 5, 3);
-    if s.starts_with('-') { s } else { format!(" {s}") }
+    if s.starts_with('-') {
+        s
+    } else {
+        format!(" {s}")
+    }
 }
 
 pub fn pad_left(s: &str, width: usize) -> String {
     let n = s.chars().count();
-    if n >= width { s.to_string() } else { format!("{}{}", " ".repeat(width - n), s) }
+    if n >= width {
+        s.to_string()
+    } else {
+        format!("{}{}", " ".repeat(width - n), s)
+    }
 }
 
 /// `Integer'Value`: blanks around, an optional sign, Ada literal syntax

@@ -52,12 +52,26 @@ pub enum DeclKind {
         anon: Option<Box<TypeDef>>,
     },
     /// `K : constant := 2.5;`
-    Number { names: Vec<Ident>, value: Expr },
-    Type { name: Ident, def: TypeDef },
-    Subtype { name: Ident, ind: SubtypeInd },
-    Exception { names: Vec<Ident> },
+    Number {
+        names: Vec<Ident>,
+        value: Expr,
+    },
+    Type {
+        name: Ident,
+        def: TypeDef,
+    },
+    Subtype {
+        name: Ident,
+        ind: SubtypeInd,
+    },
+    Exception {
+        names: Vec<Ident>,
+    },
     /// A subprogram specification alone (forward declaration or imported).
-    SubprogramDecl { spec: SubprogramSpec, import: Option<String> },
+    SubprogramDecl {
+        spec: SubprogramSpec,
+        import: Option<String>,
+    },
     SubprogramBody(Box<SubprogramBody>),
     PackageSpec(Box<PackageSpec>),
     PackageBody(Box<PackageBody>),
@@ -67,7 +81,10 @@ pub enum DeclKind {
     TaskSpec(Box<TaskSpec>),
     TaskBody(Box<TaskBody>),
     /// `for E use at Addr;`
-    InterruptUse { entry: Ident, address: Expr },
+    InterruptUse {
+        entry: Ident,
+        address: Expr,
+    },
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -97,7 +114,10 @@ pub enum DiscreteRange {
 pub enum TypeDef {
     Enum(Vec<EnumLit>),
     IntRange(Expr, Expr),
-    Float { digits: Expr, range: Option<(Expr, Expr)> },
+    Float {
+        digits: Expr,
+        range: Option<(Expr, Expr)>,
+    },
     Derived(SubtypeInd),
     Array {
         /// `Positive range <>` for unconstrained (Some(mark) each), or ranges.

@@ -127,7 +127,10 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                 Ok(Raw::Tick) => {
                     let attribute_mark = matches!(
                         toks.last(),
-                        Some((Token::Ident(_) | Token::RParen | Token::Kw(Kw::All) | Token::Str(_), _))
+                        Some((
+                            Token::Ident(_) | Token::RParen | Token::Kw(Kw::All) | Token::Str(_),
+                            _
+                        ))
                     );
                     if attribute_mark {
                         Token::Tick
@@ -147,14 +150,19 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                                 if let Some(close) = rest[..line_end].find('\'') {
                                     let inner = &rest[..close];
                                     let end = e + close + 1;
-                                    diags.push(Diagnostic::single_quoted_string(span(file, s, end), inner));
+                                    diags.push(Diagnostic::single_quoted_string(
+                                        span(file, s, end),
+                                        inner,
+                                    ));
                                     toks.push((Token::Str(inner.to_string()), span(file, s, end)));
                                     base = end;
                                     continue 'restart;
                                 }
                                 diags.push(
                                     Diagnostic::new(crate::diag::Phase::Lexical, sp, "stray `'`")
-                                        .with_label("neither a character literal nor an attribute mark")
+                                        .with_label(
+                                            "neither a character literal nor an attribute mark",
+                                        )
                                         .with_hint("a character literal is written 'c'"),
                                 );
                                 Token::Error
@@ -233,7 +241,10 @@ fn decimal(text: &str) -> Result<Token, String> {
             if !digits_ok(digits) {
                 return Err(format!("bad exponent in `{text}`"));
             }
-            let v: i32 = digits.replace('_', "").parse().map_err(|_| format!("exponent too large in `{text}`"))?;
+            let v: i32 = digits
+                .replace('_', "")
+                .parse()
+                .map_err(|_| format!("exponent too large in `{text}`"))?;
             if e.starts_with('-') { -v } else { v }
         }
         None => 0,
@@ -242,18 +253,30 @@ fn decimal(text: &str) -> Result<Token, String> {
         if !digits_ok(ip) || !digits_ok(fp) {
             return Err(format!("misplaced `_` in `{text}`"));
         }
-        let s = format!("{}.{}e{}", ip.replace('_', ""), fp.replace('_', ""), exp_val);
+        let s = format!(
+            "{}.{}e{}",
+            ip.replace('_', ""),
+            fp.replace('_', ""),
+            exp_val
+        );
         s.parse::<f64>().map(Token::Real).map_err(|e| e.to_string())
     } else {
         if !digits_ok(mant) {
             return Err(format!("misplaced `_` in `{text}`"));
         }
         if exp_val < 0 {
-            return Err(format!("an integer literal cannot have a negative exponent: `{text}`"));
+            return Err(format!(
+                "an integer literal cannot have a negative exponent: `{text}`"
+            ));
         }
-        let mut v: i128 = mant.replace('_', "").parse().map_err(|_| format!("`{text}` is too large"))?;
+        let mut v: i128 = mant
+            .replace('_', "")
+            .parse()
+            .map_err(|_| format!("`{text}` is too large"))?;
         for _ in 0..exp_val {
-            v = v.checked_mul(10).ok_or_else(|| format!("`{text}` is too large"))?;
+            v = v
+                .checked_mul(10)
+                .ok_or_else(|| format!("`{text}` is too large"))?;
         }
         Ok(Token::Int(v))
     }
@@ -267,7 +290,10 @@ fn based(text: &str) -> Result<Token, String> {
         Some(t) => t,
         None => return Err(format!("based literal `{text}` lacks its closing `#`")),
     };
-    let base: u32 = base_s.replace('_', "").parse().map_err(|_| format!("bad base in `{text}`"))?;
+    let base: u32 = base_s
+        .replace('_', "")
+        .parse()
+        .map_err(|_| format!("bad base in `{text}`"))?;
     if !(2..=16).contains(&base) {
         return Err(format!("base {base} is not between 2 and 16"));
     }
@@ -279,7 +305,10 @@ fn based(text: &str) -> Result<Token, String> {
         if !digits_ok(digits) {
             return Err(format!("bad exponent in `{text}`"));
         }
-        let v: i32 = digits.replace('_', "").parse().map_err(|_| format!("bad exponent in `{text}`"))?;
+        let v: i32 = digits
+            .replace('_', "")
+            .parse()
+            .map_err(|_| format!("bad exponent in `{text}`"))?;
         if e.starts_with('-') { -v } else { v }
     };
     let (ip, fp) = match body.split_once('.') {
@@ -296,7 +325,9 @@ fn based(text: &str) -> Result<Token, String> {
     match fp {
         None => {
             if exp_val < 0 {
-                return Err(format!("an integer literal cannot have a negative exponent: `{text}`"));
+                return Err(format!(
+                    "an integer literal cannot have a negative exponent: `{text}`"
+                ));
             }
             let mut v: i128 = 0;
             for c in ip.chars().filter(|c| *c != '_') {
@@ -307,7 +338,9 @@ fn based(text: &str) -> Result<Token, String> {
                 digit(c)?;
             }
             for _ in 0..exp_val {
-                v = v.checked_mul(base as i128).ok_or_else(|| format!("`{text}` is too large"))?;
+                v = v
+                    .checked_mul(base as i128)
+                    .ok_or_else(|| format!("`{text}` is too large"))?;
             }
             Ok(Token::Int(v))
         }
@@ -336,31 +369,43 @@ mod tests {
 
     #[test]
     fn literals() {
-        assert_eq!(toks("16#FF# 8#340# 2#1010_0001# 1_000 2E3"), vec![
-            Token::Int(255),
-            Token::Int(224),
-            Token::Int(161),
-            Token::Int(1000),
-            Token::Int(2000)
-        ]);
-        assert_eq!(toks("1.0E-3 16#F.8#"), vec![Token::Real(1.0e-3), Token::Real(15.5)]);
+        assert_eq!(
+            toks("16#FF# 8#340# 2#1010_0001# 1_000 2E3"),
+            vec![
+                Token::Int(255),
+                Token::Int(224),
+                Token::Int(161),
+                Token::Int(1000),
+                Token::Int(2000)
+            ]
+        );
+        assert_eq!(
+            toks("1.0E-3 16#F.8#"),
+            vec![Token::Real(1.0e-3), Token::Real(15.5)]
+        );
     }
 
     #[test]
     fn tick_ambiguity() {
-        assert_eq!(toks("Character'('a')"), vec![
-            Token::Ident("Character".into()),
-            Token::Tick,
-            Token::LParen,
-            Token::Char('a'),
-            Token::RParen
-        ]);
-        assert_eq!(toks("X := ''';"), vec![
-            Token::Ident("X".into()),
-            Token::Assign,
-            Token::Char('\''),
-            Token::Semi
-        ]);
+        assert_eq!(
+            toks("Character'('a')"),
+            vec![
+                Token::Ident("Character".into()),
+                Token::Tick,
+                Token::LParen,
+                Token::Char('a'),
+                Token::RParen
+            ]
+        );
+        assert_eq!(
+            toks("X := ''';"),
+            vec![
+                Token::Ident("X".into()),
+                Token::Assign,
+                Token::Char('\''),
+                Token::Semi
+            ]
+        );
     }
 
     #[test]

@@ -75,7 +75,7 @@ pub fn expr<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, Expr, Ex<'t>> {
             Token::Le => BinOp::Le, Token::Gt => BinOp::Gt, Token::Ge => BinOp::Ge,
         };
         #[derive(Clone)]
-    enum Tail {
+        enum Tail {
             Rel(BinOp, Expr),
             In(bool, Vec<Choice>),
         }
@@ -87,14 +87,22 @@ pub fn expr<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, Expr, Ex<'t>> {
                     kw!(Not)
                         .or_not()
                         .then_ignore(kw!(In))
-                        .then(choice_p.clone().separated_by(just(Token::Bar)).at_least(1).collect())
+                        .then(
+                            choice_p
+                                .clone()
+                                .separated_by(just(Token::Bar))
+                                .at_least(1)
+                                .collect(),
+                        )
                         .map(|(n, c)| Tail::In(n.is_some(), c)),
                 ))
                 .or_not(),
             )
             .map_with(|(a, t), e| match t {
                 None => a,
-                Some(Tail::Rel(o, b)) => mk(ExprKind::Binary(o, Box::new(a), Box::new(b)), e.span()),
+                Some(Tail::Rel(o, b)) => {
+                    mk(ExprKind::Binary(o, Box::new(a), Box::new(b)), e.span())
+                }
                 Some(Tail::In(negated, choices)) => mk(
                     ExprKind::Membership {
                         negated,
@@ -137,7 +145,9 @@ fn paren_part<'t, I: TokIn<'t>>(
                 Some(b) => Choice::Range(a, b),
                 None => Choice::Expr(a),
             }));
-    let value = expr.clone().or(just(Token::Box).map_with(|_, e| mk(ExprKind::Error, e.span())));
+    let value = expr
+        .clone()
+        .or(just(Token::Box).map_with(|_, e| mk(ExprKind::Error, e.span())));
     let assoc = choice_p
         .clone()
         .separated_by(just(Token::Bar))
@@ -179,7 +189,13 @@ fn paren_part<'t, I: TokIn<'t>>(
         .then_ignore(kw!(Is))
         .then(
             kw!(When)
-                .ignore_then(choice_p.clone().separated_by(just(Token::Bar)).at_least(1).collect())
+                .ignore_then(
+                    choice_p
+                        .clone()
+                        .separated_by(just(Token::Bar))
+                        .at_least(1)
+                        .collect(),
+                )
                 .then_ignore(just(Token::Arrow))
                 .then(expr.clone())
                 .map_with(|(choices, body), e| CaseArm {
@@ -241,7 +257,10 @@ fn name_with<'t, I: TokIn<'t>>(
     let arg = ident()
         .then_ignore(just(Token::Arrow))
         .or_not()
-        .then(expr.clone().then(just(Token::DotDot).ignore_then(expr.clone()).or_not()))
+        .then(
+            expr.clone()
+                .then(just(Token::DotDot).ignore_then(expr.clone()).or_not()),
+        )
         .map_with(|(name, (v, hi)), e| {
             let value = match hi {
                 // A slice `A (L .. H)`: kept as a one-element aggregate with a range choice.
@@ -267,8 +286,12 @@ fn name_with<'t, I: TokIn<'t>>(
     let op_symbol = select! { Token::Str(s) = e => Ident::new(&format!("\"{s}\""), e.span()) };
     let suffix = choice((
         just(Token::Dot).ignore_then(kw!(All)).to(Suffix::All),
-        just(Token::Dot).ignore_then(ident().or(op_symbol)).map(Suffix::Sel),
-        just(Token::Tick).ignore_then(paren.clone()).map(Suffix::Qual),
+        just(Token::Dot)
+            .ignore_then(ident().or(op_symbol))
+            .map(Suffix::Sel),
+        just(Token::Tick)
+            .ignore_then(paren.clone())
+            .map(Suffix::Qual),
         just(Token::Tick)
             .ignore_then(attr_name())
             .then(
@@ -361,14 +384,17 @@ pub fn name<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, Expr, Ex<'t>> {
             let sp = i.span;
             mk(ExprKind::Name(i), sp)
         })
-        .foldl_with(just(Token::Dot).ignore_then(ident()).repeated(), |p, i, e| {
-            mk(ExprKind::Select(Box::new(p), i), e.span())
-        })
+        .foldl_with(
+            just(Token::Dot).ignore_then(ident()).repeated(),
+            |p, i, e| mk(ExprKind::Select(Box::new(p), i), e.span()),
+        )
         .labelled("name")
         .boxed()
 }
 
-fn subtype_ind<'t, I: TokIn<'t>>(expr: Boxed<'t, 't, I, Expr, Ex<'t>>) -> Boxed<'t, 't, I, SubtypeInd, Ex<'t>> {
+fn subtype_ind<'t, I: TokIn<'t>>(
+    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, SubtypeInd, Ex<'t>> {
     let simple = expr.clone();
     let range_c = kw!(Range)
         .ignore_then(simple.clone())
@@ -393,12 +419,16 @@ fn subtype_ind<'t, I: TokIn<'t>>(expr: Boxed<'t, 't, I, Expr, Ex<'t>>) -> Boxed<
         .boxed()
 }
 
-fn discrete_range<'t, I: TokIn<'t>>(expr: Boxed<'t, 't, I, Expr, Ex<'t>>) -> Boxed<'t, 't, I, DiscreteRange, Ex<'t>> {
+fn discrete_range<'t, I: TokIn<'t>>(
+    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, DiscreteRange, Ex<'t>> {
     // `A .. B`, `T range A .. B`, `T`, `X'Range`: parse an expression first.
     expr.clone()
         .then(
             choice((
-                just(Token::DotDot).ignore_then(expr.clone()).map(|b| (Some(b), None)),
+                just(Token::DotDot)
+                    .ignore_then(expr.clone())
+                    .map(|b| (Some(b), None)),
                 kw!(Range)
                     .ignore_then(expr.clone())
                     .then_ignore(just(Token::DotDot))
@@ -441,7 +471,9 @@ fn decls_end<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
     }
 }
 
-fn params<'t, I: TokIn<'t>>(expr: Boxed<'t, 't, I, Expr, Ex<'t>>) -> Boxed<'t, 't, I, Vec<Param>, Ex<'t>> {
+fn params<'t, I: TokIn<'t>>(
+    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, Vec<Param>, Ex<'t>> {
     let mode = choice((
         kw!(In).then(kw!(Out)).to(Mode::InOut),
         kw!(In).to(Mode::In),
@@ -473,7 +505,9 @@ fn params<'t, I: TokIn<'t>>(expr: Boxed<'t, 't, I, Expr, Ex<'t>>) -> Boxed<'t, '
         .boxed()
 }
 
-fn subprogram_spec<'t, I: TokIn<'t>>(expr: Boxed<'t, 't, I, Expr, Ex<'t>>) -> Boxed<'t, 't, I, SubprogramSpec, Ex<'t>> {
+fn subprogram_spec<'t, I: TokIn<'t>>(
+    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, SubprogramSpec, Ex<'t>> {
     let designator = ident()
         .map(Designator::Ident)
         .or(select! { Token::Str(s) = e => Designator::Op(s, e.span()) });
@@ -505,8 +539,10 @@ struct Parsers<'t, I: TokIn<'t>> {
 }
 
 fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
-    let mut decl: Recursive<chumsky::recursive::Indirect<'t, 't, I, Decl, Ex<'t>>> = Recursive::declare();
-    let mut stmt: Recursive<chumsky::recursive::Indirect<'t, 't, I, Stmt, Ex<'t>>> = Recursive::declare();
+    let mut decl: Recursive<chumsky::recursive::Indirect<'t, 't, I, Decl, Ex<'t>>> =
+        Recursive::declare();
+    let mut stmt: Recursive<chumsky::recursive::Indirect<'t, 't, I, Stmt, Ex<'t>>> =
+        Recursive::declare();
     let expr = expr::<I>();
     let st_ind = subtype_ind(expr.clone());
     let drange = discrete_range(expr.clone());
@@ -548,7 +584,11 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         });
     let block = kw!(Begin)
         .ignore_then(stmts.clone())
-        .then(kw!(Exception).ignore_then(handler.clone().repeated().collect::<Vec<_>>()).or_not())
+        .then(
+            kw!(Exception)
+                .ignore_then(handler.clone().repeated().collect::<Vec<_>>())
+                .or_not(),
+        )
         .then_ignore(kw!(End))
         .map_with(|(stmts, handlers), e| Block {
             stmts,
@@ -574,7 +614,11 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 None => Choice::Expr(a),
             }))
         .boxed();
-    let choices = choice_p.separated_by(just(Token::Bar)).at_least(1).collect::<Vec<_>>().boxed();
+    let choices = choice_p
+        .separated_by(just(Token::Bar))
+        .at_least(1)
+        .collect::<Vec<_>>()
+        .boxed();
 
     let if_stmt = kw!(If)
         .ignore_then(expr.clone())
@@ -682,7 +726,11 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .then(
             kw!(Do)
                 .ignore_then(stmts.clone())
-                .then(kw!(Exception).ignore_then(handler.clone().repeated().collect::<Vec<_>>()).or_not())
+                .then(
+                    kw!(Exception)
+                        .ignore_then(handler.clone().repeated().collect::<Vec<_>>())
+                        .or_not(),
+                )
                 .then_ignore(kw!(End))
                 .then_ignore(ident().or_not())
                 .map_with(|(stmts, handlers), e| Block {
@@ -694,7 +742,11 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         )
         .then_ignore(semi())
         .map_with(|((entry, params), body), e| Stmt {
-            kind: StmtKind::Accept { entry, params, body },
+            kind: StmtKind::Accept {
+                entry,
+                params,
+                body,
+            },
             span: e.span(),
         })
         .boxed();
@@ -720,7 +772,13 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
             span: e.span(),
         });
     let select_stmt = kw!(Select)
-        .ignore_then(select_alt.clone().separated_by(kw!(Or)).at_least(1).collect::<Vec<_>>())
+        .ignore_then(
+            select_alt
+                .clone()
+                .separated_by(kw!(Or))
+                .at_least(1)
+                .collect::<Vec<_>>(),
+        )
         .then(
             kw!(Else)
                 .ignore_then(stmts.clone())
@@ -779,24 +837,27 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
     .labelled("statement");
     stmt.define(
         stmt_kind
-            .map_with(|kind, e| Stmt { kind, span: e.span() })
-            .recover_with(skip_until(
-                any().ignored(),
-                semi().ignored(),
-                || Stmt {
-                    kind: StmtKind::Error,
-                    span: Span {
-                        start: 0,
-                        end: 0,
-                        context: 0,
-                    },
+            .map_with(|kind, e| Stmt {
+                kind,
+                span: e.span(),
+            })
+            .recover_with(skip_until(any().ignored(), semi().ignored(), || Stmt {
+                kind: StmtKind::Error,
+                span: Span {
+                    start: 0,
+                    end: 0,
+                    context: 0,
                 },
-            ))
+            }))
             .boxed(),
     );
 
     // ---- declarations ----
-    let names = ident().separated_by(just(Token::Comma)).at_least(1).collect::<Vec<_>>().boxed();
+    let names = ident()
+        .separated_by(just(Token::Comma))
+        .at_least(1)
+        .collect::<Vec<_>>()
+        .boxed();
     let init = just(Token::Assign).ignore_then(expr.clone()).or_not();
     let enum_lit = ident()
         .map(EnumLit::Ident)
@@ -872,11 +933,27 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         kw!(Tagged)
             .then(record_body.clone())
             .to(TypeDef::Unsupported("a tagged type")),
-        kw!(Abstract).then(kw!(Tagged)).then(record_body.clone()).to(TypeDef::Unsupported("an abstract tagged type")),
-        kw!(Limited).then(kw!(Private)).to(TypeDef::Unsupported("a private type")),
+        kw!(Abstract)
+            .then(kw!(Tagged))
+            .then(record_body.clone())
+            .to(TypeDef::Unsupported("an abstract tagged type")),
+        kw!(Limited)
+            .then(kw!(Private))
+            .to(TypeDef::Unsupported("a private type")),
         kw!(Private).to(TypeDef::Unsupported("a private type")),
-        kw!(Mod).ignore_then(expr.clone()).to(TypeDef::Unsupported("a modular type")),
-        kw!(Delta).ignore_then(expr.clone()).then(kw!(Range).then(expr.clone()).then(just(Token::DotDot)).then(expr.clone()).or_not()).to(TypeDef::Unsupported("a fixed-point type")),
+        kw!(Mod)
+            .ignore_then(expr.clone())
+            .to(TypeDef::Unsupported("a modular type")),
+        kw!(Delta)
+            .ignore_then(expr.clone())
+            .then(
+                kw!(Range)
+                    .then(expr.clone())
+                    .then(just(Token::DotDot))
+                    .then(expr.clone())
+                    .or_not(),
+            )
+            .to(TypeDef::Unsupported("a fixed-point type")),
         kw!(Access)
             .ignore_then(kw!(All).or(kw!(Constant)).or_not())
             .ignore_then(st_ind.clone())
@@ -971,10 +1048,18 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 .collect::<Vec<_>>(),
         )
         .map(|aspects: Vec<(Ident, Option<Expr>)>| {
-            aspects.into_iter().find_map(|(k, v)| match (k.key.as_str(), v) {
-                ("external_name", Some(Expr { kind: ExprKind::Str(s), .. })) => Some(s),
-                _ => None,
-            })
+            aspects
+                .into_iter()
+                .find_map(|(k, v)| match (k.key.as_str(), v) {
+                    (
+                        "external_name",
+                        Some(Expr {
+                            kind: ExprKind::Str(s),
+                            ..
+                        }),
+                    ) => Some(s),
+                    _ => None,
+                })
         });
     #[derive(Clone)]
     enum SubTail {
@@ -1010,66 +1095,80 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .map(|(spec, rest)| match rest {
             SubTail::Unsupported(what) => DeclKind::Unsupported(what),
             SubTail::Decl(import) => DeclKind::SubprogramDecl { spec, import },
-            SubTail::Body(decls, body, end_name) => DeclKind::SubprogramBody(Box::new(SubprogramBody {
-                spec,
-                decls,
-                body,
-                end_name,
-            })),
+            SubTail::Body(decls, body, end_name) => {
+                DeclKind::SubprogramBody(Box::new(SubprogramBody {
+                    spec,
+                    decls,
+                    body,
+                    end_name,
+                }))
+            }
         });
-    let package = kw!(Package)
-        .ignore_then(choice((
-            kw!(Body)
-                .ignore_then(name())
-                .then_ignore(kw!(Is))
-                .then(decls.clone())
-                .then(
-                    kw!(Begin)
-                        .ignore_then(stmts.clone())
-                        .then(kw!(Exception).ignore_then(handler.clone().repeated().collect::<Vec<_>>()).or_not())
-                        .map_with(|(stmts, handlers), e| Block {
-                            stmts,
-                            handlers: handlers.unwrap_or_default(),
-                            span: e.span(),
-                        })
-                        .or_not(),
-                )
-                .then_ignore(kw!(End))
-                .then_ignore(name().or_not())
-                .then_ignore(semi())
-                .map_with(|((name, decls), init), e| {
-                    DeclKind::PackageBody(Box::new(PackageBody {
-                        name,
-                        decls,
-                        init,
+    let package = kw!(Package).ignore_then(choice((
+        kw!(Body)
+            .ignore_then(name())
+            .then_ignore(kw!(Is))
+            .then(decls.clone())
+            .then(
+                kw!(Begin)
+                    .ignore_then(stmts.clone())
+                    .then(
+                        kw!(Exception)
+                            .ignore_then(handler.clone().repeated().collect::<Vec<_>>())
+                            .or_not(),
+                    )
+                    .map_with(|(stmts, handlers), e| Block {
+                        stmts,
+                        handlers: handlers.unwrap_or_default(),
                         span: e.span(),
-                    }))
-                }),
-            name()
-                .then_ignore(kw!(Is))
-                .then_ignore(kw!(New))
-                .then(any().and_is(semi().not()).repeated())
-                .then_ignore(semi())
-                .to(DeclKind::Unsupported("a generic instantiation")),
-            name()
-                .then_ignore(kw!(Is))
-                .then(decls.clone())
-                .then(kw!(Private).ignore_then(decls.clone()).or_not())
-                .then_ignore(kw!(End))
-                .then_ignore(name().or_not())
-                .then_ignore(semi())
-                .map_with(|((name, decls), private), e| {
-                    DeclKind::PackageSpec(Box::new(PackageSpec {
-                        name,
-                        decls,
-                        private: private.unwrap_or_default(),
-                        span: e.span(),
-                    }))
-                }),
-        )));
+                    })
+                    .or_not(),
+            )
+            .then_ignore(kw!(End))
+            .then_ignore(name().or_not())
+            .then_ignore(semi())
+            .map_with(|((name, decls), init), e| {
+                DeclKind::PackageBody(Box::new(PackageBody {
+                    name,
+                    decls,
+                    init,
+                    span: e.span(),
+                }))
+            }),
+        name()
+            .then_ignore(kw!(Is))
+            .then_ignore(kw!(New))
+            .then(any().and_is(semi().not()).repeated())
+            .then_ignore(semi())
+            .to(DeclKind::Unsupported("a generic instantiation")),
+        name()
+            .then_ignore(kw!(Is))
+            .then(decls.clone())
+            .then(kw!(Private).ignore_then(decls.clone()).or_not())
+            .then_ignore(kw!(End))
+            .then_ignore(name().or_not())
+            .then_ignore(semi())
+            .map_with(|((name, decls), private), e| {
+                DeclKind::PackageSpec(Box::new(PackageSpec {
+                    name,
+                    decls,
+                    private: private.unwrap_or_default(),
+                    span: e.span(),
+                }))
+            }),
+    )));
     let use_decl = kw!(Use)
-        .ignore_then(kw!(Type).or(kw!(All).then(kw!(Type)).to(Token::Semi)).or_not())
-        .ignore_then(name().separated_by(just(Token::Comma)).at_least(1).collect::<Vec<_>>())
+        .ignore_then(
+            kw!(Type)
+                .or(kw!(All).then(kw!(Type)).to(Token::Semi))
+                .or_not(),
+        )
+        .ignore_then(
+            name()
+                .separated_by(just(Token::Comma))
+                .at_least(1)
+                .collect::<Vec<_>>(),
+        )
         .then_ignore(semi())
         .map(DeclKind::Use);
     let pragma = kw!(Pragma)
@@ -1101,7 +1200,9 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
             .then(block.clone())
             .then_ignore(ident().or_not())
             .then_ignore(semi())
-            .map(|((name, decls), body)| DeclKind::TaskBody(Box::new(TaskBody { name, decls, body }))),
+            .map(|((name, decls), body)| {
+                DeclKind::TaskBody(Box::new(TaskBody { name, decls, body }))
+            }),
         kw!(Type)
             .or_not()
             .then(ident())
@@ -1130,7 +1231,9 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
     let generic = kw!(Generic)
         .then(
             any()
-                .and_is(select! { Token::Kw(Kw::Procedure | Kw::Function | Kw::Package) => () }.not())
+                .and_is(
+                    select! { Token::Kw(Kw::Procedure | Kw::Function | Kw::Package) => () }.not(),
+                )
                 .repeated(),
         )
         .ignore_then(decl.clone())
@@ -1138,7 +1241,11 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
     let protected = kw!(Protected)
         .then(kw!(Type).or(kw!(Body)).or_not())
         .then(ident())
-        .then(any().and_is(kw!(End).then(ident()).then(semi()).not()).repeated())
+        .then(
+            any()
+                .and_is(kw!(End).then(ident()).then(semi()).not())
+                .repeated(),
+        )
         .then(kw!(End).then(ident()).then(semi()))
         .to(DeclKind::Unsupported("a protected object"));
 
@@ -1156,7 +1263,10 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
             generic,
             protected,
         ))
-        .map_with(|kind, e| Decl { kind, span: e.span() })
+        .map_with(|kind, e| Decl {
+            kind,
+            span: e.span(),
+        })
         .labelled("declaration")
         .recover_with(skip_until(any().ignored(), semi().ignored(), || Decl {
             kind: DeclKind::Unsupported("<error>"),
@@ -1193,7 +1303,12 @@ fn compilation<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, CompilationUnit, Ex<'t>> 
     let with = kw!(Limited)
         .or_not()
         .ignore_then(kw!(With))
-        .ignore_then(name().separated_by(just(Token::Comma)).at_least(1).collect::<Vec<_>>())
+        .ignore_then(
+            name()
+                .separated_by(just(Token::Comma))
+                .at_least(1)
+                .collect::<Vec<_>>(),
+        )
         .then_ignore(semi())
         .map_with(|n, e| TopItem::With(n, e.span()));
     // Statement position accepts declarations too (script mode), so one
@@ -1213,7 +1328,11 @@ fn compilation<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, CompilationUnit, Ex<'t>> 
 }
 
 /// Parses a token list. Returns the AST (possibly partial) and every syntax error.
-pub fn parse(tokens: &[(Token, Span)], file: FileId, src_len: usize) -> (Option<CompilationUnit>, Vec<Diagnostic>) {
+pub fn parse(
+    tokens: &[(Token, Span)],
+    file: FileId,
+    src_len: usize,
+) -> (Option<CompilationUnit>, Vec<Diagnostic>) {
     let eoi = Span {
         start: src_len,
         end: src_len,
@@ -1228,7 +1347,12 @@ pub fn parse(tokens: &[(Token, Span)], file: FileId, src_len: usize) -> (Option<
 /// True if the error list only says the input ended too early (for the REPL's
 /// continuation prompt).
 pub fn is_unfinished(diags: &[Diagnostic], src_len: usize) -> bool {
-    !diags.is_empty() && diags.iter().all(|d| d.phase == crate::diag::Phase::Syntax && d.span.start >= src_len && d.label == "end of input")
+    !diags.is_empty()
+        && diags.iter().all(|d| {
+            d.phase == crate::diag::Phase::Syntax
+                && d.span.start >= src_len
+                && d.label == "end of input"
+        })
 }
 
 fn rich_to_diag(e: Rich<'_, Token, Span>, eoi: Span) -> Diagnostic {
@@ -1257,8 +1381,13 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, eoi: Span) -> Diagnostic {
                 1 => format!(", expected {}", expected[0]),
                 _ => format!(", expected one of {}", expected.join(", ")),
             };
-            let mut d = Diagnostic::syntax(span, format!("unexpected {found}{exp}"))
-                .with_label(if e.found().is_none() { "end of input".to_string() } else { format!("unexpected {found}") });
+            let mut d = Diagnostic::syntax(span, format!("unexpected {found}{exp}")).with_label(
+                if e.found().is_none() {
+                    "end of input".to_string()
+                } else {
+                    format!("unexpected {found}")
+                },
+            );
             if expected.iter().any(|x| x == "`;`") {
                 d = d.with_hint("a statement or declaration ends with `;`");
             }

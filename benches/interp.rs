@@ -1,0 +1,25 @@
+//! The interpreter on the three benchmark programs of `bench/programs`
+//! (recursive fib (27), 200,000 4x4 matrix products, a 100,000-node list).
+//! `bench/compare.sh` runs the same programs in CPython, Lua and GNAT.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+
+fn run(path: &str) {
+    let text = std::fs::read_to_string(path).expect("bench program");
+    let mut s = adair::driver::Session::new(Box::new(std::io::sink()));
+    let outcome = s.run_source(path, &text);
+    assert_eq!(outcome.exit_code(), 0);
+}
+
+fn programs(c: &mut Criterion) {
+    let mut g = c.benchmark_group("interp");
+    g.sample_size(10);
+    for p in ["fib", "matrix", "list"] {
+        let path = format!("{}/bench/programs/{p}.adb", env!("CARGO_MANIFEST_DIR"));
+        g.bench_function(p, |b| b.iter(|| run(&path)));
+    }
+    g.finish();
+}
+
+criterion_group!(benches, programs);
+criterion_main!(benches);

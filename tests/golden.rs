@@ -1,0 +1,38 @@
+//! The golden corpus: every `.air` under `tests/golden/` and `examples/` is
+//! one named test, run in-process through the same runner as `adair test`.
+//! `BLESS=1 cargo test --test golden` rewrites the `.out` files.
+#![allow(clippy::print_stdout, clippy::print_stderr)]
+
+use adair::golden::{self, Verdict};
+use libtest_mimic::{Arguments, Failed, Trial};
+use std::path::PathBuf;
+
+fn main() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    std::env::set_current_dir(&root).expect("crate root");
+    let bless = std::env::var_os("BLESS").is_some();
+    let dirs: Vec<PathBuf> = ["tests/golden", "examples"]
+        .iter()
+        .map(PathBuf::from)
+        .filter(|p| p.exists())
+        .collect();
+    let scripts = golden::collect(&dirs).expect("golden corpus");
+    let trials = scripts
+        .into_iter()
+        .map(|path| {
+            let name = path.with_extension("").to_string_lossy().replace('/', "::");
+            Trial::test(name, move || match golden::check_case(&path, bless) {
+                Verdict::Pass | Verdict::Blessed => Ok(()),
+                Verdict::Missing => Err(Failed::from(format!(
+                    "{} has no .out file (run with BLESS=1)",
+                    path.display()
+                ))),
+                Verdict::Differs { expected, actual } => Err(Failed::from(format!(
+                    "output differs (- expected, + actual):\n{}",
+                    golden::diff(&expected, &actual)
+                ))),
+            })
+        })
+        .collect();
+    libtest_mimic::run(&Arguments::from_args(), trials).exit();
+}

@@ -1,0 +1,499 @@
+//! Forward and inverse kinematics: spec test vectors, branches, error
+//! classes, joint targets.
+
+use adair::kinematics::{
+    AdaException, Arm, Elbow, KinError, Kinematics, Pose, RobotDescription, joints_from_deg,
+};
+use nalgebra::{Matrix3, Vector3};
+
+fn rv_m1() -> Kinematics {
+    Kinematics::new(RobotDescription::builtin("rv-m1").unwrap())
+}
+
+fn rm_501() -> Kinematics {
+    Kinematics::new(RobotDescription::builtin("rm-501").unwrap())
+}
+
+/// A robot of the same structure with (nearly) unlimited joints, so that all
+/// four branches exist.
+fn wide() -> Kinematics {
+    let text = RobotDescription::builtin_text("rv-m1")
+        .unwrap()
+        .replace("min_deg = -150.0", "min_deg = -180.0")
+        .replace("max_deg = 150.0", "max_deg = 180.0")
+        .replace("min_deg = -30.0", "min_deg = -180.0")
+        .replace("max_deg = 100.0", "max_deg = 180.0")
+        .replace("min_deg = 0.0", "min_deg = -180.0")
+        .replace("max_deg = 110.0", "max_deg = 180.0")
+        .replace("min_deg = -90.0", "min_deg = -180.0")
+        .replace("max_deg = 90.0", "max_deg = 180.0");
+    Kinematics::new(RobotDescription::from_toml_str(&text).unwrap())
+}
+
+fn assert_close(a: Vector3<f64>, b: Vector3<f64>, tol: f64) {
+    assert!((a - b).amax() < tol, "{a:?} != {b:?}");
+}
+
+fn down_at(x: f64, y: f64, z: f64) -> Pose {
+    let mut p = Pose::rot_y(std::f64::consts::PI);
+    p.translation = Vector3::new(x, y, z);
+    p
+}
+
+#[test]
+fn spec_vectors_rv_m1() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    let zero = k.fk_tcp(&[0.0; 5], &tool);
+    assert_eq!(zero.translation, Vector3::new(0.0, 0.0, 889.0));
+    assert_eq!(zero.rotation, Matrix3::identity());
+    let p = k.fk_tcp(&joints_from_deg([0.0, 0.0, 0.0, 90.0, 0.0]), &tool);
+    assert_close(p.translation, Vector3::new(179.0, 0.0, 710.0), 1e-9);
+    let p = k.fk_tcp(&joints_from_deg([90.0, 30.0, 60.0, 0.0, 0.0]), &tool);
+    assert_close(p.translation, Vector3::new(0.0, 464.0, 516.506), 1e-3);
+}
+
+#[test]
+fn spec_vectors_rm_501() {
+    let k = rm_501();
+    let tool = k.standard_tool();
+    let zero = k.fk_tcp(&[0.0; 5], &tool);
+    assert_close(zero.translation, Vector3::new(0.0, 0.0, 844.6), 1e-9);
+    let p = k.fk_tcp(&joints_from_deg([0.0, 0.0, 90.0, 90.0, 0.0]), &tool);
+    assert_close(p.translation, Vector3::new(160.0, 0.0, 255.4), 1e-9);
+    assert_close(p.approach(), Vector3::new(0.0, 0.0, -1.0), 1e-12);
+}
+
+#[test]
+fn flange_and_general_tool() {
+    let k = rv_m1();
+    let q = joints_from_deg([20.0, 30.0, 40.0, -10.0, 33.0]);
+    let flange = k.fk_flange(&q);
+    let tool = Pose::rot_x(0.3) * Pose::from_translation(10.0, -20.0, 50.0);
+    let tcp = k.fk_tcp(&q, &tool);
+    assert_eq!(tcp, flange * tool);
+    // The standard tool is a shift along the approach.
+    let std_tcp = k.fk_tcp(&q, &k.standard_tool());
+    assert_close(
+        std_tcp.translation,
+        flange.translation + flange.approach() * 107.0,
+        1e-9,
+    );
+}
+
+#[test]
+fn frame_conversions() {
+    let rows = [
+        [0.0, -1.0, 0.0, 10.0],
+        [1.0, 0.0, 0.0, 20.0],
+        [0.0, 0.0, 1.0, 30.0],
+    ];
+    let p = Pose::from_rows(rows);
+    assert_eq!(p.to_rows(), rows);
+    let expected =
+        Pose::from_translation(10.0, 20.0, 30.0) * Pose::rot_z(std::f64::consts::FRAC_PI_2);
+    assert!((p.rotation - expected.rotation).amax() < 1e-15);
+    assert_eq!(p.translation, expected.translation);
+    assert_eq!(Pose::from_matrix4(&p.to_matrix4()), p);
+    let q = p * p.inverse();
+    assert!((q.rotation - Matrix3::identity()).amax() < 1e-15);
+    assert!(q.translation.amax() < 1e-12);
+}
+
+#[test]
+fn ik_zero_pose_and_vectors() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    for deg in [
+        [0.0, 0.0, 0.0, 90.0, 0.0],
+        [90.0, 30.0, 60.0, 0.0, 0.0],
+        [-45.0, 10.0, 80.0, 45.0, 120.0],
+    ] {
+        let q = joints_from_deg(deg);
+        let goal = k.fk_tcp(&q, &tool);
+        let sols = k.ik_all(&goal, &tool, &q).unwrap();
+        assert!(
+            sols.iter()
+                .any(|s| s.joints.iter().zip(&q).all(|(a, b)| (a - b).abs() < 1e-9)),
+            "{deg:?}: {sols:?}"
+        );
+        for s in &sols {
+            let back = k.fk_tcp(&s.joints, &tool);
+            assert_close(back.translation, goal.translation, 1e-9);
+            assert!((back.rotation - goal.rotation).amax() < 1e-12);
+        }
+    }
+}
+
+#[test]
+fn ik_zero_pose_on_axis_keeps_j1() {
+    // TCP on the waist axis with a vertical approach: J1 and J5 are
+    // redundant; the current J1 is kept.
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    let goal = k.fk_tcp(&[0.0; 5], &tool);
+    let current = joints_from_deg([37.0, 0.0, 0.0, 0.0, 0.0]);
+    let s = k
+        .ik_choose(&goal, &tool, &current, Arm::None, Elbow::None)
+        .unwrap();
+    assert!((s.joints[0] - current[0]).abs() < 1e-12);
+    assert!((s.joints[4] + current[0]).abs() < 1e-12, "{:?}", s.joints);
+    let back = k.fk_tcp(&s.joints, &tool);
+    assert!((back.rotation - goal.rotation).amax() < 1e-12);
+    assert_close(back.translation, goal.translation, 1e-9);
+}
+
+#[test]
+fn ik_on_axis_takes_j1_from_approach() {
+    let k = wide();
+    let tool = k.standard_tool();
+    // TCP on the axis, approach horizontal towards -y: J1 = -90 or +90.
+    let mut goal =
+        Pose::rot_z(-std::f64::consts::FRAC_PI_2) * Pose::rot_y(std::f64::consts::FRAC_PI_2);
+    goal.translation = Vector3::new(0.0, 0.0, 500.0);
+    let sols = k.ik_all(&goal, &tool, &[0.0; 5]).unwrap();
+    assert!(!sols.is_empty());
+    for s in &sols {
+        let j1 = s.joints[0].to_degrees();
+        assert!((j1.abs() - 90.0).abs() < 1e-9, "{j1}");
+        let back = k.fk_tcp(&s.joints, &tool);
+        assert_close(back.translation, goal.translation, 1e-9);
+        assert!((back.rotation - goal.rotation).amax() < 1e-12);
+    }
+}
+
+#[test]
+fn all_four_branches() {
+    let k = wide();
+    let tool = k.standard_tool();
+    let q = joints_from_deg([30.0, 20.0, 50.0, 30.0, 10.0]);
+    let goal = k.fk_tcp(&q, &tool);
+    let sols = k.ik_all(&goal, &tool, &q).unwrap();
+    assert_eq!(sols.len(), 4, "{sols:?}");
+    let mut configs: Vec<_> = sols.iter().map(|s| (s.arm, s.elbow)).collect();
+    configs.sort_by_key(|c| format!("{c:?}"));
+    configs.dedup();
+    assert_eq!(configs.len(), 4);
+    for s in &sols {
+        assert_eq!(k.config_of(&s.joints), (s.arm, s.elbow));
+        let back = k.fk_tcp(&s.joints, &tool);
+        assert_close(back.translation, goal.translation, 1e-9);
+        assert!((back.rotation - goal.rotation).amax() < 1e-12);
+    }
+    // Preferences pick each branch; no preference picks the nearest.
+    for arm in [Arm::Forward, Arm::Backward] {
+        for elbow in [Elbow::Above, Elbow::Below] {
+            let s = k.ik_choose(&goal, &tool, &q, arm, elbow).unwrap();
+            assert_eq!((s.arm, s.elbow), (arm, elbow));
+        }
+    }
+    let s = k
+        .ik_choose(&goal, &tool, &q, Arm::None, Elbow::None)
+        .unwrap();
+    assert!(s.joints.iter().zip(&q).all(|(a, b)| (a - b).abs() < 1e-9));
+    let s = k
+        .ik_choose(&goal, &tool, &q, Arm::Backward, Elbow::None)
+        .unwrap();
+    assert_eq!(s.arm, Arm::Backward);
+}
+
+#[test]
+fn preference_falls_back_to_nearest() {
+    // RV-M1: J3 >= 0, so ElbowBelow never exists; the nearest is taken.
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    let q = joints_from_deg([10.0, 20.0, 50.0, 30.0, 10.0]);
+    let goal = k.fk_tcp(&q, &tool);
+    let s = k
+        .ik_choose(&goal, &tool, &q, Arm::Forward, Elbow::Below)
+        .unwrap();
+    assert_eq!(s.elbow, Elbow::Above);
+    assert!(s.joints.iter().zip(&q).all(|(a, b)| (a - b).abs() < 1e-9));
+}
+
+#[test]
+fn stretched_arm_has_one_elbow() {
+    let k = wide();
+    let tool = k.standard_tool();
+    let q = joints_from_deg([0.0, 30.0, 0.0, 20.0, 0.0]);
+    let goal = k.fk_tcp(&q, &tool);
+    let sols = k.ik_all(&goal, &tool, &q).unwrap();
+    assert_eq!(sols.len(), 2, "{sols:?}");
+    for s in &sols {
+        assert!(s.joints[2].abs() < 1e-6);
+        assert!(s.joints.iter().all(|v| v.is_finite()));
+    }
+}
+
+#[test]
+fn general_tool_ik() {
+    let k = rv_m1();
+    let tool = Pose::rot_x(0.4) * Pose::rot_z(0.2) * Pose::from_translation(15.0, -30.0, 80.0);
+    let q = joints_from_deg([-30.0, 40.0, 60.0, -20.0, 75.0]);
+    let goal = k.fk_tcp(&q, &tool);
+    let sols = k.ik_all(&goal, &tool, &q).unwrap();
+    assert!(
+        sols.iter()
+            .any(|s| s.joints.iter().zip(&q).all(|(a, b)| (a - b).abs() < 1e-9))
+    );
+    for s in &sols {
+        let back = k.fk_tcp(&s.joints, &tool);
+        assert_close(back.translation, goal.translation, 1e-9);
+    }
+}
+
+fn err(k: &Kinematics, goal: &Pose) -> KinError {
+    k.ik_all(goal, &k.standard_tool(), &[0.0; 5]).unwrap_err()
+}
+
+#[test]
+fn error_not_finite() {
+    let k = rv_m1();
+    let mut goal = down_at(300.0, 0.0, 200.0);
+    goal.translation.x = f64::NAN;
+    let e = err(&k, &goal);
+    assert!(matches!(e, KinError::NotFinite { .. }), "{e}");
+    assert_eq!(e.exception(), AdaException::FrameInvalid);
+    // NaN current joints are refused too.
+    let e = k
+        .ik_all(
+            &down_at(300.0, 0.0, 200.0),
+            &k.standard_tool(),
+            &[f64::NAN; 5],
+        )
+        .unwrap_err();
+    assert_eq!(e.exception(), AdaException::ConstraintError);
+}
+
+#[test]
+fn error_not_orthonormal() {
+    let k = rv_m1();
+    let mut goal = down_at(300.0, 0.0, 200.0);
+    goal.rotation *= 1.01;
+    let e = err(&k, &goal);
+    assert!(matches!(e, KinError::NotOrthonormal { .. }), "{e}");
+    assert_eq!(e.exception(), AdaException::FrameInvalid);
+    assert!(e.to_string().contains("not a rigid transform"), "{e}");
+}
+
+#[test]
+fn error_reflection() {
+    let k = rv_m1();
+    let mut goal = down_at(300.0, 0.0, 200.0);
+    goal.rotation.set_column(0, &(-goal.rotation.column(0)));
+    let e = err(&k, &goal);
+    assert!(matches!(e, KinError::NotRightHanded { .. }), "{e}");
+    assert_eq!(e.exception(), AdaException::FrameInvalid);
+    assert!(e.to_string().contains("determinant -1.0"), "{e}");
+}
+
+#[test]
+fn error_orientation_unreachable() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    // Reachable with a horizontal approach along +x; asked for along +y,
+    // perpendicular to the arm plane y = 0.
+    let reachable = k.fk_tcp(
+        &[0.0, 0.7, 0.9, std::f64::consts::FRAC_PI_2 - 1.6, 0.0],
+        &tool,
+    );
+    let goal = Pose::new(
+        Pose::rot_x(-std::f64::consts::FRAC_PI_2).rotation,
+        reachable.translation,
+    );
+    let e = err(&k, &goal);
+    assert!(matches!(e, KinError::OrientationUnreachable { .. }), "{e}");
+    assert_eq!(e.exception(), AdaException::FrameInvalid);
+    assert!(e.to_string().contains("90.000 deg"), "{e}");
+    // Slightly off the plane is FrameInvalid too; within 1e-6 it is accepted.
+    let tilt = |a: f64| Pose::new((Pose::rot_z(a) * reachable).rotation, reachable.translation);
+    assert!(matches!(
+        err(&k, &tilt(1e-4)),
+        KinError::OrientationUnreachable { .. }
+    ));
+    k.classify(&tilt(1e-8), &tool, &[0.0; 5]).unwrap();
+}
+
+#[test]
+fn error_out_of_reach_beats_orientation() {
+    let k = rv_m1();
+    let mut goal = Pose::rot_x(-std::f64::consts::FRAC_PI_2);
+    goal.translation = Vector3::new(2000.0, 0.0, 300.0);
+    let e = err(&k, &goal);
+    assert_eq!(e.exception(), AdaException::OutOfReach, "{e}");
+}
+
+#[test]
+fn error_wrist_too_far() {
+    let k = rv_m1();
+    let e = err(&k, &down_at(800.0, 0.0, 200.0));
+    match &e {
+        KinError::WristTooFar { distance, reach } => {
+            assert!(*reach == 410.0 && *distance > 410.0);
+        }
+        _ => panic!("{e:?}"),
+    }
+    assert_eq!(e.exception(), AdaException::OutOfReach);
+    assert!(
+        e.to_string().contains("mm from shoulder, reach 410.0 mm"),
+        "{e}"
+    );
+}
+
+#[test]
+fn error_wrist_too_close() {
+    let k = rv_m1();
+    // Pointing down, wrist point 30 mm out and 30 mm above the shoulder.
+    let e = err(&k, &down_at(30.0, 0.0, 300.0 + 30.0 - 179.0));
+    assert!(matches!(e, KinError::WristTooClose { .. }), "{e}");
+    assert_eq!(e.exception(), AdaException::OutOfReach);
+    assert!(e.to_string().contains("42.4 mm"), "{e}");
+}
+
+#[test]
+fn error_every_branch_beyond_limits() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    // Leaning back 60 deg: J2 below -30 deg; the mirrored branches need
+    // J1 = 180 deg or J3 < 0.
+    let goal = k.fk_tcp(&joints_from_deg([0.0, -60.0, 30.0, 0.0, 0.0]), &tool);
+    let e = err(&k, &goal);
+    match &e {
+        KinError::NoBranchWithinLimits { branches } => assert_eq!(branches.len(), 4),
+        _ => panic!("{e:?}"),
+    }
+    assert_eq!(e.exception(), AdaException::OutOfReach);
+    let msg = e.to_string();
+    assert!(
+        msg.contains("joint 2 target -60.0 deg outside -30.0 .. 100.0 deg"),
+        "{msg}"
+    );
+    assert!(k.classify(&goal, &tool, &[0.0; 5]).is_err());
+    assert!(
+        k.classify(&down_at(300.0, 0.0, 200.0), &tool, &[0.0; 5])
+            .is_ok()
+    );
+}
+
+#[test]
+fn config_of_labels() {
+    let k = rv_m1();
+    assert_eq!(
+        k.config_of(&joints_from_deg([0.0, 30.0, 40.0, 0.0, 0.0])),
+        (Arm::Forward, Elbow::Above)
+    );
+    assert_eq!(
+        k.config_of(&joints_from_deg([0.0, -30.0, 10.0, 0.0, 0.0])),
+        (Arm::Backward, Elbow::Above)
+    );
+    assert_eq!(
+        k.config_of(&joints_from_deg([0.0, 30.0, -40.0, 0.0, 0.0])),
+        (Arm::Forward, Elbow::Below)
+    );
+}
+
+#[test]
+fn joint_target_two_pi_rule() {
+    let k = rv_m1();
+    let deg = |d: f64| d.to_radians();
+    // Multiples of 2 pi are removed, the sign kept.
+    let t = k
+        .joint_target(&[7.0, 0.0, 0.0, 0.0, deg(720.0 + 30.0)])
+        .unwrap();
+    assert!((t[0] - (7.0 - std::f64::consts::TAU)).abs() < 1e-12);
+    assert!((t[4] - deg(30.0)).abs() < 1e-12);
+    // The other way round when the signed way breaks a limit.
+    let t = k
+        .joint_target(&[0.0, 0.0, 0.0, deg(-270.0), deg(350.0)])
+        .unwrap();
+    assert!((t[3] - deg(90.0)).abs() < 1e-12);
+    assert!((t[4] - deg(-10.0)).abs() < 1e-12);
+    // Neither way.
+    let e = k
+        .joint_target(&[deg(-200.0), 0.0, 0.0, 0.0, 0.0])
+        .unwrap_err();
+    assert_eq!(e.exception(), AdaException::OutOfReach);
+    assert_eq!(
+        e.to_string(),
+        "joint 1 target -200.0 deg outside -150.0 .. 150.0 deg by 50.0 deg (the other way round, 160.0 deg, by 10.0 deg)"
+    );
+    let e = k
+        .joint_target(&[0.0, deg(142.0), 0.0, 0.0, 0.0])
+        .unwrap_err();
+    assert!(
+        e.to_string()
+            .starts_with("joint 2 target 142.0 deg outside -30.0 .. 100.0 deg by 42.0 deg"),
+        "{e}"
+    );
+    // Values a hair beyond a limit are clamped onto it.
+    let t = k
+        .joint_target(&[deg(150.0) + 1e-12, 0.0, 0.0, 0.0, 0.0])
+        .unwrap();
+    assert_eq!(t[0], deg(150.0));
+    // Relative: current + delta.
+    let t = k
+        .relative_joint_target(
+            &[0.0, deg(90.0), 0.0, 0.0, 0.0],
+            &[0.0, deg(20.0), 0.0, 0.0, 0.0],
+        )
+        .unwrap_err();
+    assert_eq!(t.exception(), AdaException::OutOfReach);
+    let e = k.joint_target(&[f64::NAN, 0.0, 0.0, 0.0, 0.0]).unwrap_err();
+    assert_eq!(e.exception(), AdaException::ConstraintError);
+}
+
+#[test]
+fn no_panic_on_garbage() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    let values = [
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        1e300,
+        -1e300,
+        f64::INFINITY,
+        f64::NAN,
+        1e-300,
+    ];
+    for (i, v) in values.iter().enumerate() {
+        let mut goal = Pose::identity();
+        goal.translation = Vector3::new(*v, values[(i + 3) % values.len()], *v);
+        let _ = k.ik_all(&goal, &tool, &[0.0; 5]);
+        goal.rotation = Matrix3::from_element(*v);
+        let _ = k.ik_all(&goal, &tool, &[*v; 5]);
+        let _ = k.valid_frame(&goal, &tool);
+        let _ = k.joint_target(&[*v; 5]);
+        let _ = k.straight_line(&[0.0; 5], &goal, &tool, *v);
+        let _ = k.fk_tcp(&[*v; 5], &goal);
+    }
+}
+
+#[test]
+fn two_pi_representation_nearest_current() {
+    // A wrist roll with more than a turn of range: the IK picks the
+    // representation next to the current value.
+    let text = RobotDescription::builtin_text("rv-m1")
+        .unwrap()
+        .replace("min_deg = -180.0", "min_deg = -270.0")
+        .replace("max_deg = 180.0", "max_deg = 270.0");
+    let k = Kinematics::new(RobotDescription::from_toml_str(&text).unwrap());
+    let tool = k.standard_tool();
+    let q = joints_from_deg([10.0, 20.0, 50.0, 30.0, 100.0]);
+    let goal = k.fk_tcp(&q, &tool);
+    let near_plus = joints_from_deg([10.0, 20.0, 50.0, 30.0, 200.0]);
+    let s = k
+        .ik_choose(&goal, &tool, &near_plus, Arm::None, Elbow::None)
+        .unwrap();
+    assert!((s.joints[4] - 100.0f64.to_radians()).abs() < 1e-9);
+    let near_minus = joints_from_deg([10.0, 20.0, 50.0, 30.0, -200.0]);
+    let s = k
+        .ik_choose(&goal, &tool, &near_minus, Arm::None, Elbow::None)
+        .unwrap();
+    assert!(
+        (s.joints[4] - (-260.0f64).to_radians()).abs() < 1e-9,
+        "{:?}",
+        s.joints
+    );
+}

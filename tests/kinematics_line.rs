@@ -1,0 +1,190 @@
+//! Straight-line interpolation: continuity, refusals with a distance.
+
+use adair::kinematics::{
+    AdaException, KinError, Kinematics, Pose, RobotDescription, continuity, joints_from_deg,
+};
+use nalgebra::Vector3;
+
+fn rv_m1() -> Kinematics {
+    Kinematics::new(RobotDescription::builtin("rv-m1").unwrap())
+}
+
+fn wide() -> Kinematics {
+    let text = RobotDescription::builtin_text("rv-m1")
+        .unwrap()
+        .replace("min_deg = -150.0", "min_deg = -180.0")
+        .replace("max_deg = 150.0", "max_deg = 180.0")
+        .replace("min_deg = -30.0", "min_deg = -180.0")
+        .replace("max_deg = 100.0", "max_deg = 180.0")
+        .replace("min_deg = 0.0", "min_deg = -180.0")
+        .replace("max_deg = 110.0", "max_deg = 180.0")
+        .replace("min_deg = -90.0", "min_deg = -180.0")
+        .replace("max_deg = 90.0", "max_deg = 180.0");
+    Kinematics::new(RobotDescription::from_toml_str(&text).unwrap())
+}
+
+fn down_at(x: f64, y: f64, z: f64) -> Pose {
+    let mut p = Pose::rot_y(std::f64::consts::PI);
+    p.translation = Vector3::new(x, y, z);
+    p
+}
+
+#[test]
+fn continuous_line_on_the_line() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    let from = joints_from_deg([-30.0, 40.0, 70.0, 40.0, 10.0]);
+    let start = k.fk_tcp(&from, &tool);
+    let goal = k.fk_tcp(&joints_from_deg([40.0, 20.0, 90.0, 50.0, -60.0]), &tool);
+    let width = 1.0;
+    let points = k.straight_line(&from, &goal, &tool, width).unwrap();
+    let length = (goal.translation - start.translation).norm();
+    assert!(points.len() as f64 >= length / width);
+    let mut prev = from;
+    let mut prev_pos = start.translation;
+    for q in &points {
+        let step = q
+            .iter()
+            .zip(&prev)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        assert!(step <= continuity::MAX_STEP, "step {step}");
+        let p = k.fk_tcp(q, &tool).translation;
+        // On the line: distance to the infinite line through start and goal.
+        let dir = (goal.translation - start.translation).normalize();
+        let off = (p - start.translation) - dir * (p - start.translation).dot(&dir);
+        assert!(off.norm() < 1e-6, "{off:?}");
+        assert!((p - prev_pos).norm() <= width + 1e-9);
+        assert!(k.description().check_limits(q).is_ok());
+        prev = *q;
+        prev_pos = p;
+    }
+    let end = k.fk_tcp(points.last().unwrap(), &tool);
+    assert!((end.translation - goal.translation).norm() < 1e-9);
+    assert!((end.rotation - goal.rotation).amax() < 1e-12);
+}
+
+#[test]
+fn pure_rotation_and_zero_length() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    let from = joints_from_deg([0.0, 30.0, 60.0, 30.0, 0.0]);
+    let goal = k.fk_tcp(&joints_from_deg([0.0, 30.0, 60.0, 30.0, 90.0]), &tool);
+    let points = k.straight_line(&from, &goal, &tool, 10.0).unwrap();
+    assert_eq!(points.len(), 90);
+    let same = k
+        .straight_line(&from, &k.fk_tcp(&from, &tool), &tool, 10.0)
+        .unwrap();
+    assert_eq!(same.len(), 1);
+}
+
+#[test]
+fn blocked_where_it_leaves_the_workspace() {
+    // Wide limits, so that the reach, not a limit, stops the line.
+    let k = wide();
+    let tool = k.standard_tool();
+    // Pointing down, low, through the waist axis: the arm cannot reach
+    // near its own base.
+    let a = down_at(250.0, -250.0, 100.0);
+    let b = down_at(-250.0, 250.0, 100.0);
+    let from = k.ik_all(&a, &tool, &[0.0; 5]).unwrap()[0].joints;
+    let e = k.straight_line(&from, &b, &tool, 1.0).unwrap_err();
+    match &e {
+        KinError::LineBlocked { at, length, cause } => {
+            assert!((*length - 707.1).abs() < 0.1);
+            assert!(*at > 200.0 && *at < 353.6, "{at} {cause}");
+            assert!(matches!(**cause, KinError::WristTooClose { .. }), "{cause}");
+        }
+        _ => panic!("{e:?}"),
+    }
+    assert_eq!(e.exception(), AdaException::OutOfReach);
+    assert!(
+        e.to_string().starts_with("straight line blocked at "),
+        "{e}"
+    );
+}
+
+#[test]
+fn blocked_at_a_joint_limit() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    // Through the waist axis, pointing down: the arm stays in its plane and
+    // folds the elbow until J3 reaches 110 deg.
+    let from = k
+        .ik_all(&down_at(200.0, 0.0, 350.0), &tool, &[0.0; 5])
+        .unwrap()[0]
+        .joints;
+    let goal = Pose::rot_z(2.5) * down_at(200.0, 0.0, 350.0);
+    let e = k.straight_line(&from, &goal, &tool, 1.0).unwrap_err();
+    match &e {
+        KinError::LineBlocked { cause, at, .. } => {
+            assert!(*at > 100.0 && *at < 150.0, "{at} {cause}");
+            match &**cause {
+                KinError::JointLimit(v) => assert_eq!(v.joint, 3),
+                other => panic!("{other:?}"),
+            }
+        }
+        _ => panic!("{e:?}"),
+    }
+    assert_eq!(e.exception(), AdaException::OutOfReach);
+}
+
+#[test]
+fn through_the_axis_in_one_plane_is_continuous() {
+    let k = wide();
+    let tool = k.standard_tool();
+    let from = k
+        .ik_all(&down_at(100.0, 0.0, 400.0), &tool, &[0.0; 5])
+        .unwrap()[0]
+        .joints;
+    let points = k
+        .straight_line(&from, &down_at(-100.0, 0.0, 400.0), &tool, 0.5)
+        .unwrap();
+    // J1 never moves: the arm leans back in its plane.
+    assert!(points.iter().all(|q| (q[0] - from[0]).abs() < 1e-9));
+}
+
+#[test]
+fn near_the_axis_is_a_joint_jump() {
+    let k = wide();
+    let tool = k.standard_tool();
+    let from = k
+        .ik_all(&down_at(100.0, 1e-4, 400.0), &tool, &[0.0; 5])
+        .unwrap()[0]
+        .joints;
+    let e = k
+        .straight_line(&from, &down_at(-100.0, 1e-4, 400.0), &tool, 0.5)
+        .unwrap_err();
+    match &e {
+        KinError::JointJump {
+            at, joint, jump, ..
+        } => {
+            assert_eq!(*joint, 1);
+            assert!((*at - 100.0).abs() < 0.02, "{at}");
+            assert!(*jump > continuity::MAX_STEP);
+        }
+        _ => panic!("{e:?}"),
+    }
+    assert_eq!(e.exception(), AdaException::OutOfReach);
+}
+
+#[test]
+fn goal_errors_and_parameters() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    let from = joints_from_deg([0.0, 30.0, 60.0, 30.0, 0.0]);
+    let e = k
+        .straight_line(&from, &down_at(900.0, 0.0, 0.0), &tool, 1.0)
+        .unwrap_err();
+    assert!(matches!(e, KinError::WristTooFar { .. }), "{e}");
+    let mut bad = k.fk_tcp(&[0.1; 5], &tool);
+    bad.rotation *= 2.0;
+    let e = k.straight_line(&from, &bad, &tool, 1.0).unwrap_err();
+    assert_eq!(e.exception(), AdaException::FrameInvalid);
+    for w in [0.0, -1.0, f64::NAN, 1e-9] {
+        let e = k
+            .straight_line(&from, &k.fk_tcp(&[0.1; 5], &tool), &tool, w)
+            .unwrap_err();
+        assert_eq!(e.exception(), AdaException::ConstraintError, "{w}: {e}");
+    }
+}

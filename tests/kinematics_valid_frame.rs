@@ -1,0 +1,167 @@
+//! ValidFrame: nearest reachable orientation, degenerate cases.
+
+use std::f64::consts::{FRAC_PI_2, PI};
+
+use adair::kinematics::{AdaException, KinError, Kinematics, Pose, RobotDescription};
+use nalgebra::{Matrix3, UnitQuaternion, Vector3};
+
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    fn rotation(&mut self) -> Matrix3<f64> {
+        let axis = Vector3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5);
+        UnitQuaternion::from_scaled_axis(axis.normalize() * (self.next() * PI))
+            .to_rotation_matrix()
+            .into_inner()
+    }
+}
+
+fn rv_m1() -> Kinematics {
+    Kinematics::new(RobotDescription::builtin("rv-m1").unwrap())
+}
+
+/// Angle between the approach and the vertical plane through the axis and p.
+fn plane_angle(pose: &Pose) -> f64 {
+    let p = pose.translation;
+    let m = Vector3::new(-p.y, p.x, 0.0).normalize();
+    pose.approach().dot(&m).abs().asin()
+}
+
+#[test]
+fn reachable_frame_unchanged() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    let goal = k.fk_tcp(&[0.3, 0.5, 0.9, -0.2, 1.0], &tool);
+    let v = k.valid_frame(&goal, &tool).unwrap();
+    assert!((v.rotation - goal.rotation).amax() < 1e-15);
+    assert_eq!(v.translation, goal.translation);
+}
+
+#[test]
+fn minimal_and_reachable() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    let mut rng = Rng(7);
+    for _ in 0..500 {
+        // Positions well inside the workspace.
+        let angle = (rng.next() - 0.5) * 2.4;
+        let r = 200.0 + 150.0 * rng.next();
+        let z = 250.0 + 250.0 * rng.next();
+        let goal = Pose::new(
+            rng.rotation(),
+            Vector3::new(r * angle.cos(), r * angle.sin(), z),
+        );
+        let v = k.valid_frame(&goal, &tool).unwrap();
+        assert_eq!(v.translation, goal.translation);
+        assert!(plane_angle(&v) < 1e-12);
+        v.check_rigid("valid frame").unwrap();
+        // The turn is exactly the approach's angle to the plane.
+        let turned = goal.rotation_angle_to(&v);
+        assert!(
+            (turned - plane_angle(&goal)).abs() < 1e-9,
+            "{turned} vs {}",
+            plane_angle(&goal)
+        );
+        // The result is no longer FrameInvalid.
+        if let Err(e) = k.classify(&v, &tool, &[0.0; 5]) {
+            assert_ne!(e.exception(), AdaException::FrameInvalid, "{e}");
+        }
+        // No reachable orientation found by random search is closer.
+        let theta = goal.translation.y.atan2(goal.translation.x);
+        for _ in 0..200 {
+            let flip = if rng.next() < 0.5 { 0.0 } else { PI };
+            let candidate = Pose::rot_z(theta + flip)
+                * Pose::rot_y((rng.next() - 0.5) * 2.0 * PI)
+                * Pose::rot_z((rng.next() - 0.5) * 2.0 * PI);
+            let other = Pose::new(candidate.rotation, goal.translation);
+            assert!(plane_angle(&other) < 1e-12);
+            assert!(goal.rotation_angle_to(&other) >= turned - 1e-12);
+        }
+        // Nor are small perturbations of the answer that stay reachable.
+        for _ in 0..50 {
+            let d =
+                Pose::rot_z(theta) * Pose::rot_y((rng.next() - 0.5) * 1e-3) * Pose::rot_z(-theta);
+            let other = Pose::new(d.rotation * v.rotation, goal.translation);
+            if plane_angle(&other) < 1e-12 {
+                assert!(goal.rotation_angle_to(&other) >= turned - 1e-12);
+            }
+        }
+    }
+}
+
+#[test]
+fn on_waist_axis_unchanged() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    // J2 = -20, J3 = 60 deg and the pitch chosen so that the TCP is on the
+    // waist axis; then the frame turned about z (still on the axis).
+    let (j2, j3) = ((-20.0f64).to_radians(), 60.0f64.to_radians());
+    let r = 250.0 * j2.sin() + 160.0 * (j2 + j3).sin();
+    let psi = (-r / 179.0).asin();
+    let q = [0.0, j2, j3, psi - j2 - j3, 0.0];
+    let mut goal = Pose::rot_z(1.0) * k.fk_tcp(&q, &tool);
+    assert!(goal.translation.xy().norm() < 1e-9);
+    goal.translation.x = 0.0;
+    goal.translation.y = 0.0;
+    let v = k.valid_frame(&goal, &tool).unwrap();
+    assert!((v.rotation - goal.rotation).amax() < 1e-15);
+    // And it is reachable: J1 turns to the approach's plane.
+    let s = k.ik_all(&v, &tool, &[0.0; 5]).unwrap();
+    assert!(s.iter().any(|s| (s.joints[0] - 1.0).abs() < 1e-9), "{s:?}");
+}
+
+#[test]
+fn perpendicular_approach_points_outward() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    // A reachable pose with a horizontal approach along +x ...
+    let reachable = k.fk_tcp(&[0.0, 0.7, 0.9, FRAC_PI_2 - 1.6, 0.0], &tool);
+    assert!((reachable.approach() - Vector3::x()).amax() < 1e-12);
+    // ... asked for with the approach along +y, perpendicular to the plane.
+    let goal = Pose::new(Pose::rot_x(-FRAC_PI_2).rotation, reachable.translation);
+    assert!((goal.approach() - Vector3::new(0.0, 1.0, 0.0)).amax() < 1e-15);
+    let v = k.valid_frame(&goal, &tool).unwrap();
+    assert!((v.approach() - Vector3::new(1.0, 0.0, 0.0)).amax() < 1e-15);
+    assert!((goal.rotation_angle_to(&v) - FRAC_PI_2).abs() < 1e-12);
+    k.classify(&v, &tool, &[0.0; 5]).unwrap();
+    let e = k.classify(&goal, &tool, &[0.0; 5]).unwrap_err();
+    assert_eq!(e.exception(), AdaException::FrameInvalid);
+    assert!(e.to_string().contains("90.000 deg"), "{e}");
+}
+
+#[test]
+fn off_axis_tool_converges() {
+    let k = rv_m1();
+    let tool = Pose::rot_x(0.3) * Pose::from_translation(25.0, -10.0, 90.0);
+    let mut rng = Rng(11);
+    for _ in 0..100 {
+        let angle = (rng.next() - 0.5) * 2.0;
+        let goal = Pose::new(
+            rng.rotation(),
+            Vector3::new(300.0 * angle.cos(), 300.0 * angle.sin(), 350.0),
+        );
+        let v = k.valid_frame(&goal, &tool).unwrap();
+        assert_eq!(v.translation, goal.translation);
+        if let Err(e) = k.classify(&v, &tool, &[0.0; 5]) {
+            assert_ne!(e.exception(), AdaException::FrameInvalid, "{e}");
+        }
+    }
+}
+
+#[test]
+fn invalid_input() {
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    let bad = Pose::new(Matrix3::from_element(0.5), Vector3::new(1.0, 2.0, 3.0));
+    let e = k.valid_frame(&bad, &tool).unwrap_err();
+    assert!(matches!(e, KinError::NotOrthonormal { .. }));
+    assert_eq!(e.exception(), AdaException::FrameInvalid);
+}
