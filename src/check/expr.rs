@@ -570,6 +570,40 @@ impl Checker {
                 fitting = by_ret;
             }
         }
+        // An inner declaration hides an outer one with the same profile.
+        let mut distinct: Vec<FuncId> = Vec::new();
+        for f in fitting {
+            let same = distinct.iter().any(|g| {
+                let (a, b) = (&self.funcs[f as usize], &self.funcs[*g as usize]);
+                a.params.len() == b.params.len()
+                    && a.params
+                        .iter()
+                        .zip(&b.params)
+                        .all(|(x, y)| self.types.base(x.ty) == self.types.base(y.ty))
+                    && a.ret.map(|t| self.types.base(t)) == b.ret.map(|t| self.types.base(t))
+            });
+            if !same {
+                distinct.push(f);
+            }
+        }
+        let fitting = distinct;
+        if fitting.len() > 1 {
+            let sigs: Vec<String> = fitting.iter().map(|f| self.signature(*f)).collect();
+            self.err(
+                Diagnostic::ty(
+                    span,
+                    format!(
+                        "ambiguous call: {} versions of `{name}` match these arguments",
+                        fitting.len()
+                    ),
+                )
+                .with_hint(format!(
+                    "qualify an argument with its type, like `T'(X)`; the candidates are:\n  {}",
+                    sigs.join("\n  ")
+                )),
+            );
+            return None;
+        }
         let f = match fitting.first() {
             Some(f) => *f,
             None if kind_ok.len() == 1 => kind_ok[0],
@@ -698,9 +732,10 @@ impl Checker {
         loop {
             match &e.kind {
                 ExKind::Var(v) => {
-                    if let Some((name, constant)) = self.var_info(*v)
+                    if let Some((_, constant)) = self.var_info(*v)
                         && constant
                     {
+                        let name = self.snippet(e.span);
                         self.err(
                             Diagnostic::ty(span, format!("`{name}` is a constant or an `in` parameter and cannot be assigned"))
                                 .with_label(format!("used as {what}"))
@@ -1609,9 +1644,14 @@ impl Checker {
         if li.contains(&UNIV_INT) && ri.contains(&UNIV_INT) {
             return Some(UNIV_INT);
         }
-        if (li.contains(&UNIV_REAL) || li.contains(&UNIV_INT))
-            && (ri.contains(&UNIV_REAL) || ri.contains(&UNIV_INT))
-            && !int_only
+        if li.contains(&UNIV_REAL) && ri.contains(&UNIV_REAL) && !int_only {
+            return Some(UNIV_REAL);
+        }
+        // root_real * root_integer (and / by root_integer) for named numbers.
+        if (op == BinOp::Mul
+            && ((li.contains(&UNIV_REAL) && ri.contains(&UNIV_INT))
+                || (li.contains(&UNIV_INT) && ri.contains(&UNIV_REAL))))
+            || (op == BinOp::Div && li.contains(&UNIV_REAL) && ri.contains(&UNIV_INT))
         {
             return Some(UNIV_REAL);
         }

@@ -92,6 +92,8 @@ pub struct Checker {
     pub globals: u32,
     /// Script mode: the standard packages are use-visible at the top level.
     pub script: bool,
+    /// Units named by a `with` that does not exist (reported once).
+    missing_units: Vec<String>,
 }
 
 pub const CONSTRAINT_ERROR: ExcId = 0;
@@ -128,6 +130,7 @@ impl Checker {
             known_builtin,
             globals: 0,
             script: false,
+            missing_units: Vec::new(),
         };
         c.standard();
         c
@@ -438,6 +441,7 @@ impl Checker {
     fn with_clause(&mut self, n: &ast::Expr) {
         if self.package_of(n, false).is_none() {
             let text = crate::syntax::parser::expr_text(n);
+            self.missing_units.push(text.to_ascii_lowercase());
             self.err(
                 Diagnostic::name(n.span, format!("no library unit named `{text}`"))
                     .with_hint("AdaIR provides Ada.Text_IO, Ada.Integer_Text_IO, Ada.Float_Text_IO, Ada.Numerics, Ada.Numerics.Elementary_Functions, Ada.Calendar, Ada.Exceptions and AdaIR"),
@@ -447,6 +451,11 @@ impl Checker {
 
     fn use_clause(&mut self, names: &[ast::Expr]) {
         for n in names {
+            // A unit whose `with` already failed is not reported again.
+            let text = crate::syntax::parser::expr_text(n).to_ascii_lowercase();
+            if self.missing_units.contains(&text) {
+                continue;
+            }
             match self.package_of(n, true) {
                 Some(p) => {
                     let s = self.scopes.last_mut().expect("scope");
@@ -456,7 +465,8 @@ impl Checker {
                 }
                 None => {
                     // `use type T;` and friends: accepted when T is a type.
-                    if !matches!(self.denote(n, true).first(), Some(Entity::Type(_))) {
+                    let es = self.denote(n, false);
+                    if !es.is_empty() && !matches!(es.first(), Some(Entity::Type(_))) {
                         let text = crate::syntax::parser::expr_text(n);
                         self.err(Diagnostic::name(
                             n.span,

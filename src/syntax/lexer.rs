@@ -16,6 +16,9 @@ enum Raw {
     Decimal,
     #[regex(r"[0-9][0-9_]*#[0-9A-Za-z_.]*#?([eE][+-]?[0-9][0-9_]*)?")]
     Based,
+    /// An exponent mark without digits (`1.0E`, `2.5E+`).
+    #[regex(r"[0-9][0-9_]*(\.[0-9][0-9_]*)?[eE][+-]?")]
+    BadExponent,
     #[regex(r#""([^"\n]|"")*""#)]
     Str,
     #[regex(r#""([^"\n]|"")*"#, priority = 1)]
@@ -119,6 +122,16 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                         Token::Error
                     }
                 },
+                Ok(Raw::BadExponent) => {
+                    diags.push(
+                        Diagnostic::bad_number(
+                            sp,
+                            format!("the exponent of `{text}` has no digits"),
+                        )
+                        .with_hint("write an exponent like `E3` or `E-3`, or leave it out"),
+                    );
+                    Token::Error
+                }
                 Ok(Raw::Str) => Token::Str(text[1..text.len() - 1].replace("\"\"", "\"")),
                 Ok(Raw::UnterminatedStr) => {
                     diags.push(Diagnostic::unterminated_string(sp));
@@ -410,8 +423,8 @@ mod tests {
 
     #[test]
     fn errors_continue() {
-        let (t, d) = lex("A $ B 'abc' \"open", 0);
+        let (t, d) = lex("A $ B := 'abc' \"open", 0);
         assert_eq!(d.len(), 3);
-        assert_eq!(t.len(), 4);
+        assert_eq!(t.len(), 5);
     }
 }

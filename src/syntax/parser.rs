@@ -29,6 +29,51 @@ fn semi<'t, I: TokIn<'t>>() -> impl Parser<'t, I, Token, Ex<'t>> + Clone {
     just(Token::Semi).labelled("`;`")
 }
 
+/// A reserved word that may be missing (`then`, `loop`): reported, and
+/// parsing goes on as if it were there when a statement follows.
+fn soft_kw<'t, I: TokIn<'t>>(k: Kw) -> impl Parser<'t, I, (), Ex<'t>> + Clone {
+    let starts_stmt = select! {
+        Token::Ident(_) => (),
+        Token::Kw(Kw::If | Kw::For | Kw::While | Kw::Loop | Kw::Case | Kw::Return | Kw::Null | Kw::Raise | Kw::Exit | Kw::Declare | Kw::Begin | Kw::Delay) => (),
+    };
+    just(Token::Kw(k))
+        .ignored()
+        .or(starts_stmt.rewind().validate(move |_, e, emitter| {
+            let sp: Span = e.span();
+            emitter.emit(Rich::custom(
+                Span {
+                    start: sp.start,
+                    end: sp.start,
+                    context: sp.context,
+                },
+                format!("missing `{}`", k.as_str()),
+            ));
+        }))
+}
+
+/// A `;` that may be missing: reports it, and parsing goes on as if it were
+/// there, when the next token starts a new statement or declaration.
+fn soft_semi<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
+    let starts_next = select! {
+        Token::Ident(_) => (),
+        Token::Kw(Kw::Procedure | Kw::Function | Kw::Type | Kw::Subtype | Kw::Begin | Kw::End | Kw::If | Kw::For | Kw::While | Kw::Loop
+            | Kw::Case | Kw::Return | Kw::Null | Kw::Raise | Kw::Exit | Kw::Declare | Kw::Package | Kw::Exception | Kw::Delay) => (),
+    };
+    just(Token::Semi)
+        .ignored()
+        .or(starts_next.rewind().validate(|_, e, emitter| {
+            let sp: Span = e.span();
+            emitter.emit(Rich::custom(
+                Span {
+                    start: sp.start,
+                    end: sp.start,
+                    context: sp.context,
+                },
+                "missing `;`",
+            ));
+        }))
+}
+
 fn mk(kind: ExprKind, span: Span) -> Expr {
     Expr { kind, span }
 }
@@ -476,6 +521,15 @@ fn params<'t, I: TokIn<'t>>(
 ) -> Boxed<'t, 't, I, Vec<Param>, Ex<'t>> {
     let mode = choice((
         kw!(In).then(kw!(Out)).to(Mode::InOut),
+        select! { Token::Ident(s) if s.eq_ignore_ascii_case("inout") => () }
+            .then(ident().rewind())
+            .validate(|_, e, emitter| {
+                emitter.emit(Rich::custom(
+                    e.span(),
+                    "`inout` is not a parameter mode: write `in out`",
+                ));
+            })
+            .to(Mode::InOut),
         kw!(In).to(Mode::In),
         kw!(Out).to(Mode::Out),
     ))
@@ -622,12 +676,12 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
 
     let if_stmt = kw!(If)
         .ignore_then(expr.clone())
-        .then_ignore(kw!(Then))
+        .then_ignore(soft_kw(Kw::Then))
         .then(stmts.clone())
         .then(
             kw!(Elsif)
                 .ignore_then(expr.clone())
-                .then_ignore(kw!(Then))
+                .then_ignore(soft_kw(Kw::Then))
                 .then(stmts.clone())
                 .repeated()
                 .collect::<Vec<_>>(),
@@ -672,13 +726,12 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 range,
             }),
     ))
-    .or_not()
-    .map(|s| s.unwrap_or(LoopScheme::Plain));
+    .then_ignore(soft_kw(Kw::Loop))
+    .or(kw!(Loop).to(LoopScheme::Plain));
     let loop_stmt = label
         .clone()
         .or_not()
         .then(scheme)
-        .then_ignore(kw!(Loop))
         .then(stmts.clone())
         .then_ignore(kw!(End).then(kw!(Loop)).labelled("`end loop`"))
         .then(ident().or_not())
@@ -802,7 +855,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
     let simple_stmt = expr
         .clone()
         .then(just(Token::Assign).ignore_then(expr.clone()).or_not())
-        .then_ignore(semi())
+        .then_ignore(soft_semi())
         .map(|(target, value)| match value {
             Some(v) => StmtKind::Assign(target, v),
             None => StmtKind::Call(target),
@@ -1011,7 +1064,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                     }
                 }),
         )))
-        .then_ignore(semi())
+        .then_ignore(soft_semi())
         .map(|(names, tail)| match tail {
             ObjTail::Exception => DeclKind::Exception { names },
             ObjTail::Number(value) => DeclKind::Number { names, value },
@@ -1340,7 +1393,21 @@ pub fn parse(
     };
     let input = tokens.map(eoi, |(t, s)| (t, s));
     let (out, errs) = compilation().parse(input).into_output_errors();
-    let diags = errs.into_iter().map(|e| rich_to_diag(e, eoi)).collect();
+    let mut diags: Vec<Diagnostic> = errs.into_iter().map(|e| rich_to_diag(e, tokens)).collect();
+    diags.dedup_by(|a, b| a.span == b.span);
+    // Report a missing `;` at the end of the token it should follow.
+    for d in &mut diags {
+        if d.message.starts_with("missing `")
+            && let Some((_, p)) = tokens.iter().rev().find(|(_, s)| s.end <= d.span.start)
+        {
+            d.span = Span {
+                start: p.end,
+                end: p.end,
+                context: p.context,
+            };
+            d.label = "expected `;` here".into();
+        }
+    }
     (out, diags)
 }
 
@@ -1355,15 +1422,20 @@ pub fn is_unfinished(diags: &[Diagnostic], src_len: usize) -> bool {
         })
 }
 
-fn rich_to_diag(e: Rich<'_, Token, Span>, eoi: Span) -> Diagnostic {
+fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnostic {
     use chumsky::error::RichReason;
     let span = *e.span();
     let found = match e.found() {
         Some(t) => t.to_string(),
         None => "end of input".to_string(),
     };
+    let label = if e.found().is_none() {
+        "end of input".to_string()
+    } else {
+        format!("unexpected {found}")
+    };
     match e.reason() {
-        RichReason::Custom(msg) => Diagnostic::syntax(span, msg.clone()),
+        RichReason::Custom(msg) => Diagnostic::syntax(span, msg.clone()).with_label(label),
         _ => {
             let mut expected: Vec<String> = e
                 .expected()
@@ -1376,23 +1448,54 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, eoi: Span) -> Diagnostic {
                 .collect();
             expected.sort();
             expected.dedup();
+            // A missing `;` is the most common slip: say so, at the end of
+            // the token it should follow.
+            if expected.iter().any(|x| x == "`;`") && e.found().is_some() {
+                let prev = tokens
+                    .iter()
+                    .rev()
+                    .find(|(_, s)| s.end <= span.start)
+                    .map(|(_, s)| *s);
+                let at = prev
+                    .map(|p| Span {
+                        start: p.end,
+                        end: p.end,
+                        context: p.context,
+                    })
+                    .unwrap_or(span);
+                return Diagnostic::syntax(at, format!("missing `;` before {found}"))
+                    .with_label("expected `;` here")
+                    .with_hint("a statement or declaration ends with `;`");
+            }
+            // Operators that could continue an expression are rarely what was meant.
+            const CONT: &[&str] = &[
+                "`**`",
+                "`and`",
+                "`in`",
+                "`not`",
+                "`or`",
+                "`xor`",
+                "`..`",
+                "`mod`",
+                "`rem`",
+                "something else",
+                "`limited`",
+                "`with`",
+            ];
+            let filtered: Vec<String> = expected
+                .iter()
+                .filter(|x| !CONT.contains(&x.as_str()))
+                .cloned()
+                .collect();
+            if !filtered.is_empty() {
+                expected = filtered;
+            }
             let exp = match expected.len() {
                 0 => String::new(),
                 1 => format!(", expected {}", expected[0]),
                 _ => format!(", expected one of {}", expected.join(", ")),
             };
-            let mut d = Diagnostic::syntax(span, format!("unexpected {found}{exp}")).with_label(
-                if e.found().is_none() {
-                    "end of input".to_string()
-                } else {
-                    format!("unexpected {found}")
-                },
-            );
-            if expected.iter().any(|x| x == "`;`") {
-                d = d.with_hint("a statement or declaration ends with `;`");
-            }
-            let _ = eoi;
-            d
+            Diagnostic::syntax(span, format!("unexpected {found}{exp}")).with_label(label)
         }
     }
 }
