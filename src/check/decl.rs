@@ -88,16 +88,14 @@ impl Checker {
             }
             DeclKind::SubprogramDecl { spec, import } => {
                 let f = self.subprogram_decl(spec, true);
-                if let Some(f) = f {
-                    if let Some(name) = import {
-                        if !self.known_builtin(name) {
-                            self.err(Diagnostic::name(
-                                spec.span,
-                                format!("no builtin named \"{name}\""),
-                            ));
-                        }
-                        self.imports[f as usize] = Some(name.clone());
+                if let (Some(f), Some(name)) = (f, import) {
+                    if !self.known_builtin(name) {
+                        self.err(Diagnostic::name(
+                            spec.span,
+                            format!("no builtin named \"{name}\""),
+                        ));
                     }
+                    self.imports[f as usize] = Some(name.clone());
                 }
             }
             DeclKind::SubprogramBody(b) => self.subprogram_body(b),

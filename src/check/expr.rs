@@ -337,14 +337,12 @@ impl Checker {
                                 }
                             } else if self.types.compatible(x, y) || self.types.compatible(y, x) {
                                 out.push(if self.types.is_universal(x) { y } else { x });
-                            } else if self.types.base(x) == DURATION
+                            } else if (self.types.base(x) == DURATION
                                 && self.types.is_integer(y)
-                                && matches!(op, BinOp::Mul | BinOp::Div)
-                            {
-                                out.push(DURATION);
-                            } else if self.types.base(y) == DURATION
-                                && self.types.is_integer(x)
-                                && *op == BinOp::Mul
+                                && matches!(op, BinOp::Mul | BinOp::Div))
+                                || (self.types.base(y) == DURATION
+                                    && self.types.is_integer(x)
+                                    && *op == BinOp::Mul)
                             {
                                 out.push(DURATION);
                             }

@@ -209,7 +209,7 @@ pub enum StmtKind {
     Call(FuncId, Vec<Arg>),
     Builtin(u32, Vec<Arg>),
     If(Vec<(Ex, Vec<Stmt>)>, Vec<Stmt>),
-    Case(Ex, Vec<(Vec<(i64, i64)>, Vec<Stmt>)>, Option<Vec<Stmt>>),
+    Case(Ex, CaseArms, Option<Vec<Stmt>>),
     Loop {
         id: u32,
         body: Vec<Stmt>,
@@ -236,6 +236,9 @@ pub enum StmtKind {
     /// A type whose constraints are evaluated at elaboration (dynamic bounds).
     ElabType(TypeId),
 }
+
+/// The alternatives of a `case`: static choice ranges and statements.
+pub type CaseArms = Vec<(Vec<(i64, i64)>, Vec<Stmt>)>;
 
 /// Statements with exception handlers.
 #[derive(Clone, Debug)]

@@ -4,6 +4,9 @@ use super::ir::Ex;
 
 pub type TypeId = u32;
 
+/// Index types, component type and (for a constrained array) the bounds.
+pub type ArrayInfo<'a> = (&'a [TypeId], TypeId, Option<&'a Vec<(Ex, Ex)>>);
+
 #[derive(Clone, Debug)]
 pub enum TypeKind {
     /// Signed integer types (Integer, user `range` types, their derivations).
@@ -150,7 +153,7 @@ impl Types {
         matches!(self.kind(t), TypeKind::Access(_))
     }
     /// Array information of `t` (which may be a constrained subtype).
-    pub fn array(&self, t: TypeId) -> Option<(&[TypeId], TypeId, Option<&Vec<(Ex, Ex)>>)> {
+    pub fn array(&self, t: TypeId) -> Option<ArrayInfo<'_>> {
         match &self.list[t as usize].kind {
             TypeKind::Array {
                 index,
@@ -188,17 +191,18 @@ impl Types {
         if bf == bt {
             return true;
         }
-        match (self.kind(from), self.kind(to)) {
-            (TypeKind::UnivInt, TypeKind::Integer) => true,
-            (TypeKind::UnivReal, TypeKind::Float) => true,
-            (TypeKind::Null, TypeKind::Access(_)) => true,
-            (
-                TypeKind::AnyComposite,
-                TypeKind::Array { .. } | TypeKind::Record(_) | TypeKind::Access(_),
-            ) => true,
-            (TypeKind::Integer, TypeKind::UnivInt) | (TypeKind::Float, TypeKind::UnivReal) => true,
-            _ => false,
-        }
+        matches!(
+            (self.kind(from), self.kind(to)),
+            (TypeKind::UnivInt, TypeKind::Integer)
+                | (TypeKind::UnivReal, TypeKind::Float)
+                | (TypeKind::Null, TypeKind::Access(_))
+                | (
+                    TypeKind::AnyComposite,
+                    TypeKind::Array { .. } | TypeKind::Record(_) | TypeKind::Access(_)
+                )
+                | (TypeKind::Integer, TypeKind::UnivInt)
+                | (TypeKind::Float, TypeKind::UnivReal)
+        )
     }
 
     /// Static bounds of a discrete subtype, if known.

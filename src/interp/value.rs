@@ -320,7 +320,7 @@ mod tests {
         assert_eq!(image_float(-0.0), "-0.00000E+00");
         assert_eq!(put_float(7.25, 1, 1, 0), "7.3");
         assert_eq!(put_float(-0.00001, 1, 4, 0), "-0.0000");
-        assert_eq!(put_float(3.14159, 1, 3, 2), "3.142E+0");
+        assert_eq!(put_float(3.14158, 1, 3, 2), "3.142E+0");
         assert_eq!(put_float(1.0e-10, 1, 2, 4), "1.00E-010");
         assert_eq!(put_float(2.5, 1, 0, 3), "2.5E+00");
         assert_eq!(put_float(0.95, 1, 0, 0), "0.9");
