@@ -62,9 +62,27 @@ fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
         Err(e) => {
-            let code = if e.use_stderr() { 2 } else { 0 };
-            let _ = e.print();
-            return ExitCode::from(code);
+            if !e.use_stderr() {
+                // --help and --version.
+                let _ = e.print();
+                return ExitCode::SUCCESS;
+            }
+            // A usage error is one line.
+            let text = e.kind().to_string();
+            let detail = e.to_string();
+            let mut lines = detail.lines().map(str::trim).filter(|l| !l.is_empty());
+            let mut first = lines
+                .next()
+                .unwrap_or(&text)
+                .trim_start_matches("error: ")
+                .to_string();
+            if first.ends_with(':')
+                && let Some(next) = lines.next()
+            {
+                first = format!("{first} {next}");
+            }
+            eprintln!("adair: {first} (try `adair --help`)");
+            return ExitCode::from(2);
         }
     };
     let color = color(&cli.color);

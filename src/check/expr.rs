@@ -2397,7 +2397,9 @@ impl Checker {
     }
 
     fn image(&mut self, x: Ex, t: TypeId, sp: Span) -> Ex {
-        let op = if self.types.is_float(t) {
+        let op = if self.types.base(t) == DURATION {
+            AttrOp::ImageDuration
+        } else if self.types.is_float(t) {
             AttrOp::ImageFloat
         } else if self.types.is_integer(t) {
             AttrOp::ImageInt

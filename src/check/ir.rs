@@ -89,6 +89,8 @@ pub enum AttrOp {
     /// `T'Image (X)` for the given scalar type kind.
     ImageInt,
     ImageFloat,
+    /// `Duration'Image`: fixed point with 9 decimals, as GNAT.
+    ImageDuration,
     ImageEnum(TypeId),
     ImageChar,
     /// `T'Value (S)`

@@ -1239,6 +1239,14 @@ impl Run<'_> {
             }
             AttrOp::ImageInt => Value::str(&value::image_int(a0.int())),
             AttrOp::ImageFloat => Value::str(&value::image_float(a0.real())),
+            AttrOp::ImageDuration => {
+                let s = value::put_float(a0.real(), 1, 9, 0);
+                Value::str(&if s.starts_with('-') {
+                    s
+                } else {
+                    format!(" {s}")
+                })
+            }
             AttrOp::ImageChar => {
                 let c = char::from_u32(a0.int() as u32).unwrap_or('?');
                 Value::str(&crate::check::types::char_image(c))
