@@ -6,7 +6,7 @@ use criterion::{Criterion, criterion_group, criterion_main};
 
 fn run(path: &str) {
     let text = std::fs::read_to_string(path).expect("bench program");
-    let mut s = adair::driver::Session::new(Box::new(std::io::sink()));
+    let mut s = adair::session::Session::new(Box::new(std::io::sink()));
     let outcome = s.run_source(path, &text);
     assert_eq!(outcome.exit_code(), 0);
 }

@@ -5,7 +5,7 @@
 //! to standard error (diagnostics, without colour), a line `-- stderr --` and
 //! that text, then, for a non-zero exit status, a line `-- exit: N`.
 
-use crate::driver::{Outcome, Session};
+use crate::session::{Outcome, Session};
 use std::cell::RefCell;
 use std::io::Write;
 use std::path::{Path, PathBuf};

@@ -14,4 +14,6 @@ pub mod driver;
 pub mod golden;
 pub mod interp;
 pub mod kinematics;
+pub mod services;
+pub mod session;
 pub mod syntax;

@@ -1,7 +1,7 @@
 //! The `adair` command line: the only place (with the REPL) that prints.
 #![allow(clippy::print_stdout, clippy::print_stderr)]
 
-use adair::driver::{Outcome, Session};
+use adair::session::{Outcome, Session};
 use clap::{Parser, Subcommand};
 use std::io::IsTerminal;
 use std::path::PathBuf;

@@ -39,7 +39,7 @@ fn gnat_output(src: &Path, work: &Path) -> Result<(String, i32), String> {
 
 fn adair_output(src: &Path) -> (String, i32) {
     let buf = adair::golden::SharedBuf::default();
-    let mut s = adair::driver::Session::new(Box::new(buf.clone()));
+    let mut s = adair::session::Session::new(Box::new(buf.clone()));
     let text = std::fs::read_to_string(src).unwrap_or_default();
     let outcome = s.run_source(&src.to_string_lossy(), &text);
     (buf.take(), outcome.exit_code())

@@ -3,7 +3,7 @@
 use proptest::prelude::*;
 
 fn check(src: &str) {
-    let mut s = adair::driver::Session::new(Box::new(std::io::sink()));
+    let mut s = adair::session::Session::new(Box::new(std::io::sink()));
     let _ = s.check_source("fuzz.air", src, false);
 }
 

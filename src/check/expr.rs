@@ -585,7 +585,12 @@ impl Checker {
             }
         }
         let fitting = distinct;
-        if fitting.len() > 1 {
+        // After an error in an argument, any candidate will do: no second error.
+        let erroneous = args.iter().any(|a| {
+            let i = self.interps(&a.value);
+            i.is_empty() || i.contains(&ERROR)
+        });
+        if fitting.len() > 1 && !erroneous {
             let sigs: Vec<String> = fitting.iter().map(|f| self.signature(*f)).collect();
             self.err(
                 Diagnostic::ty(
@@ -744,6 +749,23 @@ impl Checker {
                 }
                 ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _, _) => e = p,
                 ExKind::Deref(_) | ExKind::Error => return,
+                // A constant with a static value stands in the IR as its value.
+                ExKind::Int(_) | ExKind::Real(_)
+                    if self
+                        .snippet(e.span)
+                        .starts_with(|c: char| c.is_ascii_alphabetic()) =>
+                {
+                    let name = self.snippet(e.span);
+                    self.err(
+                        Diagnostic::ty(
+                            span,
+                            format!("`{name}` is a constant and cannot be assigned"),
+                        )
+                        .with_label(format!("used as {what}"))
+                        .with_hint("declare it as a variable to change it"),
+                    );
+                    return;
+                }
                 _ if ex.ty == ERROR => return,
                 _ => {
                     self.err(
@@ -1572,6 +1594,13 @@ impl Checker {
             d = d.with_hint(format!(
                 "convert the integer: `{} ({}) {} {}`",
                 fname(self, y.ty),
+                self.snippet(a.span),
+                op.symbol(),
+                self.snippet(b.span)
+            ));
+        } else if xf && yi && matches!(y.kind, ExKind::Int(_)) && self.types.is_universal(y.ty) {
+            d = d.with_hint(format!(
+                "write the literal as a real: `{} {} {}.0`",
                 self.snippet(a.span),
                 op.symbol(),
                 self.snippet(b.span)

@@ -94,6 +94,8 @@ pub struct Checker {
     pub script: bool,
     /// Units named by a `with` that does not exist (reported once).
     missing_units: Vec<String>,
+    /// Declared spelling of each name, for messages.
+    spelling: HashMap<String, String>,
 }
 
 pub const CONSTRAINT_ERROR: ExcId = 0;
@@ -131,6 +133,7 @@ impl Checker {
             globals: 0,
             script: false,
             missing_units: Vec::new(),
+            spelling: HashMap::new(),
         };
         c.standard();
         c
@@ -240,6 +243,9 @@ impl Checker {
 
     fn declare(&mut self, name: &str, e: Entity) {
         let key = name.to_ascii_lowercase();
+        if !self.spelling.contains_key(&key) {
+            self.spelling.insert(key.clone(), name.to_string());
+        }
         let scope = self.scopes.last_mut().expect("scope");
         match scope.package {
             Some((p, false)) => self.packages[p]
@@ -358,7 +364,15 @@ impl Checker {
                 best = Some((d, n));
             }
         }
-        best.map(|b| b.1)
+        best.map(|b| self.spelled(&b.1))
+    }
+
+    /// A name as it was declared (keys are lower case).
+    pub fn spelled(&self, key: &str) -> String {
+        self.spelling
+            .get(key)
+            .cloned()
+            .unwrap_or_else(|| key.to_string())
     }
 
     // ---- frames and slots ----
@@ -552,7 +566,10 @@ impl Checker {
                                 .filter(|c| edit_distance(&id.key, c) <= 2)
                                 .min_by_key(|c| edit_distance(&id.key, c))
                             {
-                                d = d.with_hint(format!("did you mean `{pname}.{best}`?"));
+                                d = d.with_hint(format!(
+                                    "did you mean `{pname}.{}`?",
+                                    self.spelled(best)
+                                ));
                             }
                             self.err(d);
                         }

@@ -157,7 +157,7 @@ fn new_line(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
     Ok(None)
 }
 
-fn read_line(r: &mut Run, span: Span) -> R<String> {
+pub fn read_line(r: &mut Run, span: Span) -> R<String> {
     let _ = r.m.out.flush();
     r.m.col = 0;
     let mut line = String::new();
@@ -179,7 +179,7 @@ fn get_line_fn(r: &mut Run, _: &mut [Value], span: Span) -> R<Option<Value>> {
 
 /// `Get_Line (Item, Last)`: fills Item from its first index, Last is the last
 /// index written.
-fn get_line(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+pub fn get_line(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let l = read_line(r, span)?;
     let Value::Arr(arr) = &mut a[0] else {
         return Ok(None);

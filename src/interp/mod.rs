@@ -33,6 +33,12 @@ pub type R<T> = Result<T, Flow>;
 pub trait Clock {
     fn now(&self) -> f64;
     fn sleep(&mut self, seconds: f64);
+    /// Paces a motion to the wall clock (`--realtime`, `RealTime => True`).
+    fn pace(&mut self, seconds: f64) {
+        if seconds > 0.0 {
+            std::thread::sleep(std::time::Duration::from_secs_f64(seconds.min(3600.0)));
+        }
+    }
 }
 
 /// Virtual time that advances only by `delay` (and, later, by motions).
@@ -70,6 +76,10 @@ pub struct Machine {
     pub interrupted: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
     /// Occurrences being handled (innermost last), for `raise;`.
     current: Vec<Rc<Occurrence>>,
+    /// Finds the native body of an imported subprogram by its import name.
+    pub resolver: fn(&str) -> Option<Native>,
+    /// State of the robot services (owned by `services`, opaque here).
+    pub robot: Option<Box<dyn std::any::Any>>,
 }
 
 const MAX_DEPTH: usize = 20_000;
@@ -89,6 +99,8 @@ impl Machine {
             input: Box::new(std::io::BufReader::new(std::io::stdin())),
             interrupted: None,
             current: Vec::new(),
+            resolver: builtins::lookup,
+            robot: None,
         }
     }
 
@@ -106,7 +118,8 @@ impl Machine {
         self.files[id] = (base, starts);
     }
 
-    fn location(&self, s: Span) -> String {
+    /// `file:line` of a span, as GNAT writes it in exception messages.
+    pub fn location(&self, s: Span) -> String {
         match self.files.get(s.context as usize) {
             Some((name, starts)) => {
                 let line = starts.partition_point(|&x| x <= s.start);
@@ -170,7 +183,7 @@ impl Machine {
         while self.natives.len() < chk.funcs.len() {
             let i = self.natives.len();
             self.natives
-                .push(chk.imports[i].as_deref().and_then(builtins::lookup));
+                .push(chk.imports[i].as_deref().and_then(self.resolver));
         }
     }
 

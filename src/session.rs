@@ -8,7 +8,10 @@ use crate::interp::{Machine, Occurrence, builtins};
 use std::io::Write;
 
 /// The predefined library, embedded so the binary needs no files beside it.
-pub const STDLIB: &[(&str, &str)] = &[("stdlib/ada.air", include_str!("../stdlib/ada.air"))];
+pub const STDLIB: &[(&str, &str)] = &[
+    ("stdlib/ada.air", include_str!("../stdlib/ada.air")),
+    ("stdlib/adair.air", include_str!("../stdlib/adair.air")),
+];
 
 /// Packages visible without `with` in script mode and the REPL.
 pub const SCRIPT_USES: &[&str] = &[
@@ -17,7 +20,17 @@ pub const SCRIPT_USES: &[&str] = &[
     "Ada.Float_Text_IO",
     "Ada.Numerics",
     "Ada.Numerics.Elementary_Functions",
+    "AdaIR",
 ];
+
+/// Every import name the runtime binds: the predefined library, then the services.
+pub fn resolve(name: &str) -> Option<crate::interp::Native> {
+    builtins::lookup(name).or_else(|| crate::services::lookup(name))
+}
+
+fn known(name: &str) -> bool {
+    resolve(name).is_some()
+}
 
 pub struct Session {
     pub sources: Sources,
@@ -49,9 +62,11 @@ impl Session {
     pub fn new(out: Box<dyn Write>) -> Session {
         let mut s = Session {
             sources: Sources::default(),
-            checker: Checker::new(builtins::known),
+            checker: Checker::new(known),
             machine: Machine::new(out),
         };
+        s.machine.resolver = resolve;
+        debug_assert!(s.checker.funcs.is_empty());
         for (name, text) in STDLIB {
             let (stmts, _) = s.check_source(name, text, false).unwrap_or_else(|d| {
                 // The embedded library is tested; a failure here is a bug in adair.

@@ -1,0 +1,103 @@
+//! The exact robot simulator: joint state, read-back quantised to the
+//! joint resolution, and a gripper with an optional object between the jaws.
+//! Timing is the services' business (they advance the machine's clock).
+
+use super::{DriverError, GripperState, Robot};
+use crate::kinematics::{Joints, RobotDescription};
+
+pub struct Simulator {
+    desc: RobotDescription,
+    joints: Joints,
+    gripper: GripperState,
+    /// Width of an object between the jaws, mm (0 = none).
+    object: f64,
+}
+
+impl Simulator {
+    pub fn new(desc: RobotDescription) -> Simulator {
+        let opening = desc.gripper().opening_max;
+        Simulator {
+            desc,
+            joints: [0.0; 5],
+            gripper: GripperState {
+                opening,
+                force: 0.0,
+            },
+            object: 0.0,
+        }
+    }
+}
+
+impl Robot for Simulator {
+    fn description(&self) -> &RobotDescription {
+        &self.desc
+    }
+    fn joints(&self) -> Joints {
+        self.joints
+    }
+    fn read_joints(&self) -> Joints {
+        self.desc.quantize(&self.joints)
+    }
+    fn move_joints(&mut self, points: &[Joints], _duration: f64) -> Result<(), DriverError> {
+        for p in points {
+            // The services check limits before anything moves; a driver
+            // still refuses to leave them.
+            if let Err(v) = self.desc.check_limits(p) {
+                return Err(DriverError::Refused(format!("{v:?}")));
+            }
+        }
+        if let Some(last) = points.last() {
+            self.joints = *last;
+        }
+        Ok(())
+    }
+    fn calibrate(&mut self) -> Result<(), DriverError> {
+        Ok(())
+    }
+    fn gripper(&self) -> GripperState {
+        self.gripper
+    }
+    fn move_gripper(
+        &mut self,
+        opening: f64,
+        force_limit: Option<f64>,
+    ) -> Result<GripperState, DriverError> {
+        let g = *self.desc.gripper();
+        let target = opening.clamp(g.opening_min, g.opening_max);
+        let closing = target < self.gripper.opening;
+        // Closing onto an object: the jaws stop at its width and press.
+        if closing
+            && self.object > 0.0
+            && target < self.object
+            && self.gripper.opening >= self.object
+        {
+            let force = force_limit.unwrap_or(g.force_max).min(g.force_max);
+            self.gripper = GripperState {
+                opening: self.object,
+                force,
+            };
+        } else if closing && target <= g.opening_min && force_limit.is_some() {
+            // Closed on nothing: the jaws press on each other.
+            self.gripper = GripperState {
+                opening: g.opening_min,
+                force: force_limit.unwrap_or(0.0).min(g.force_max),
+            };
+        } else {
+            self.gripper = GripperState {
+                opening: target,
+                force: 0.0,
+            };
+        }
+        Ok(self.gripper)
+    }
+    fn place_object(&mut self, width: f64) -> Result<(), DriverError> {
+        if width > self.gripper.opening + 1e-9 && width > 0.0 {
+            return Err(DriverError::Refused(format!(
+                "an object of {width:.1} mm does not fit between jaws open {:.1} mm",
+                self.gripper.opening
+            )));
+        }
+        self.object = width.max(0.0);
+        Ok(())
+    }
+}

@@ -1,0 +1,962 @@
+//! The AdaIR services: each is one table entry (import name, command code,
+//! native body). A service validates its arguments, asks the kinematics,
+//! and only then commands the driver, so a refused motion moves nothing and
+//! every raised exception leaves the state as it was.
+
+mod paths;
+
+use crate::driver::{Robot, sim::Simulator};
+use crate::interp::{Flow, Native, R, Run, Value, value::Array};
+use crate::kinematics::{
+    Arm, Elbow, Joints, KinError, Kinematics, MotionProfile, Pose, RobotDescription,
+};
+use std::collections::BTreeMap;
+use std::io::Write;
+use std::rc::Rc;
+
+/// Everything the services keep between calls.
+pub struct RobotState {
+    pub kin: Kinematics,
+    pub robot: Box<dyn Robot>,
+    pub initialized: bool,
+    pub velocity: f64,
+    pub straight: bool,
+    pub interpolation: f64,
+    pub arm: Arm,
+    pub elbow: Elbow,
+    pub hand: i64,
+    pub tool: Tool,
+    pub base: Pose,
+    pub paths: BTreeMap<i64, Vec<[[f64; 4]; 3]>>,
+    pub error_status: i64,
+    /// Virtual time at which a `Control => True` motion ends.
+    pub busy_until: f64,
+    pub trace: Option<Box<dyn Write>>,
+    pub realtime: bool,
+}
+
+#[derive(Clone, Copy, Debug)]
+pub struct Tool {
+    pub trans: Pose,
+    pub force_min: f64,
+    pub force_max: f64,
+    pub dist_min: f64,
+    pub dist_max: f64,
+}
+
+impl RobotState {
+    pub fn new(desc: RobotDescription) -> RobotState {
+        let kin = Kinematics::new(desc.clone());
+        let tool = standard_tool(&kin);
+        RobotState {
+            kin,
+            robot: Box::new(Simulator::new(desc)),
+            initialized: false,
+            velocity: 50.0,
+            straight: false,
+            interpolation: 1.0,
+            arm: Arm::None,
+            elbow: Elbow::None,
+            hand: 2,
+            tool,
+            base: Pose::identity(),
+            paths: BTreeMap::new(),
+            error_status: 0,
+            busy_until: 0.0,
+            trace: None,
+            realtime: false,
+        }
+    }
+}
+
+fn standard_tool(kin: &Kinematics) -> Tool {
+    let g = *kin.description().gripper();
+    Tool {
+        trans: kin.standard_tool(),
+        force_min: g.force_min,
+        force_max: g.force_max,
+        dist_min: g.opening_min,
+        dist_max: g.opening_max,
+    }
+}
+
+/// A service: its import name, its command code (for `ValueErrorStatus`)
+/// and its body.
+pub struct Service {
+    pub name: &'static str,
+    pub code: i64,
+    pub body: Native,
+}
+
+macro_rules! services {
+    ($($name:literal, $code:expr, $f:expr;)*) => {
+        pub const SERVICES: &[Service] = &[$(Service { name: $name, code: $code, body: $f }),*];
+    };
+}
+
+services! {
+    "InitRobot", 150, init_robot;
+    "EndRobot", 110, end_robot;
+    "CalibrateRobot", 40, calibrate;
+    "SetVelocity", 330, set_velocity;
+    "SetMoveMode", 290, set_move_mode;
+    "SetInterpolation", 300, set_interpolation;
+    "SetRobotConfig", 310, set_robot_config;
+    "ValueRobotConfig", 430, value_robot_config;
+    "SetTool", 320, set_tool;
+    "ValueTool", 440, value_tool;
+    "ValueTool_F", 440, value_tool_f;
+    "MoveTool", 230, move_tool;
+    "MoveAxesAbsolute", 180, move_axes_absolute;
+    "MoveAxesRelative", 190, move_axes_relative;
+    "MoveFrameAbsolute", 200, move_frame_absolute;
+    "MoveFrameRelative", 210, move_frame_relative;
+    "SetBase", 280, set_base;
+    "ValidFrame", 370, valid_frame;
+    "ValueAxes", 380, value_axes;
+    "ValueAxes_F", 380, value_axes_f;
+    "ValueFrameAbsolute", 400, value_frame_absolute;
+    "ValueFrameAbsolute_F", 400, value_frame_absolute_f;
+    "ValueFrameRelative", 410, value_frame_relative;
+    "ValueFrameRelative_F", 410, value_frame_relative_f;
+    "ValueErrorStatus", 390, value_error_status;
+    "ValueErrorStatus_F", 390, value_error_status_f;
+    "CreatePath", 70, paths::create_path;
+    "DeletePath", 80, paths::delete_path;
+    "InsertPosition", 160, paths::insert_position;
+    "DeletePosition", 90, paths::delete_position;
+    "ValuePosition", 420, paths::value_position;
+    "MovePath", 220, paths::move_path;
+    "SavePathSystem", 260, paths::save_path_system;
+    "LoadPathSystem", 170, paths::load_path_system;
+    "TeachBox", 350, teach_box;
+    "PlaceObject", 0, place_object;
+    "PutS_String", 0, puts_string;
+    "PutS_Integer", 0, puts_integer;
+    "New_LineS", 0, new_lines;
+    "Get_LineS", 0, get_lines;
+    "Get_LineS_Text", 0, get_lines_text;
+    "put_fixed", 0, put_fixed;
+}
+
+pub fn lookup(name: &str) -> Option<Native> {
+    SERVICES.iter().find(|s| s.name == name).map(|s| s.body)
+}
+
+fn code_of(name: &str) -> i64 {
+    SERVICES
+        .iter()
+        .find(|s| s.name == name)
+        .map(|s| s.code)
+        .unwrap_or(0)
+}
+
+// ---- plumbing ----
+
+/// Raises an AdaIR exception from a service, recording its command code.
+pub(crate) fn fail(
+    r: &mut Run,
+    st: &mut RobotState,
+    service: &str,
+    exc: &str,
+    msg: String,
+    span: crate::diag::Span,
+) -> Flow {
+    st.error_status = code_of(service);
+    let full = if exc.contains('.') || exc.chars().all(|c| c.is_ascii_uppercase() || c == '_') {
+        exc.to_string()
+    } else {
+        format!("ADAIR.{}", exc.to_uppercase())
+    };
+    let id = r.exc_by_name(&full);
+    r.raise(id, msg, span)
+}
+
+fn kin_fail(
+    r: &mut Run,
+    st: &mut RobotState,
+    service: &str,
+    e: &KinError,
+    span: crate::diag::Span,
+) -> Flow {
+    let exc = e.exception();
+    let name = match exc {
+        crate::kinematics::AdaException::ConstraintError => "CONSTRAINT_ERROR",
+        other => other.name(),
+    };
+    fail(r, st, service, name, e.to_string(), span)
+}
+
+/// Runs a service body with the robot state taken out of the machine.
+fn with_state(
+    r: &mut Run,
+    f: impl FnOnce(&mut Run, &mut RobotState) -> R<Option<Value>>,
+) -> R<Option<Value>> {
+    let mut boxed = match r.m.robot.take() {
+        Some(b) => b,
+        None => Box::new(RobotState::new(
+            RobotDescription::builtin("rv-m1").expect("built-in robot"),
+        )),
+    };
+    let result = match boxed.downcast_mut::<RobotState>() {
+        Some(st) => f(r, st),
+        None => Ok(None),
+    };
+    r.m.robot = Some(boxed);
+    result
+}
+
+fn require_init(r: &mut Run, st: &mut RobotState, service: &str, span: crate::diag::Span) -> R<()> {
+    if !st.initialized {
+        return Err(fail(
+            r,
+            st,
+            service,
+            "SystemNotInitialized",
+            format!("{service} before InitRobot: call InitRobot first"),
+            span,
+        ));
+    }
+    // A `Control => True` motion still running: wait for its end.
+    let now = r.m.clock.now();
+    if st.busy_until > now {
+        r.m.clock.sleep(st.busy_until - now);
+    }
+    Ok(())
+}
+
+pub fn frame_value(p: &Pose) -> Value {
+    let rows = p.to_rows();
+    let data = rows
+        .iter()
+        .flat_map(|row| row.iter().map(|x| Value::Real(*x)))
+        .collect();
+    Value::Arr(Rc::new(Array {
+        bounds: vec![(1, 3), (1, 4)],
+        data,
+    }))
+}
+
+pub fn frame_rows(v: &Value) -> [[f64; 4]; 3] {
+    let mut rows = [[0.0; 4]; 3];
+    if let Value::Arr(a) = v {
+        for (k, x) in a.data.iter().enumerate().take(12) {
+            rows[k / 4][k % 4] = x.real();
+        }
+    }
+    rows
+}
+
+fn axes_value(j: &Joints) -> Value {
+    Value::Arr(Rc::new(Array {
+        bounds: vec![(1, 5)],
+        data: j.iter().map(|x| Value::Real(*x)).collect(),
+    }))
+}
+
+fn axes_of(v: &Value) -> Joints {
+    let mut j = [0.0; 5];
+    if let Value::Arr(a) = v {
+        for (k, x) in a.data.iter().enumerate().take(5) {
+            j[k] = x.real();
+        }
+    }
+    j
+}
+
+fn deg5(j: &Joints) -> String {
+    let d: Vec<String> = j.iter().map(|x| format!("{:.2}", x.to_degrees())).collect();
+    format!("({})", d.join(", "))
+}
+
+/// Motion options common to every motion service.
+struct MotionOpts {
+    time: Option<f64>,
+    control: bool,
+    realtime: bool,
+}
+
+fn opts(a: &[Value], first: usize) -> MotionOpts {
+    let t = a.get(first).map(|v| v.real()).unwrap_or(0.0);
+    MotionOpts {
+        time: if t > 0.0 { Some(t) } else { None },
+        control: a.get(first + 1).is_some_and(|v| v.int() != 0),
+        realtime: a.get(first + 2).is_some_and(|v| v.int() != 0),
+    }
+}
+
+/// Executes a planned joint motion: driver, clock, trace.
+fn perform(
+    r: &mut Run,
+    st: &mut RobotState,
+    service: &str,
+    points: &[Joints],
+    duration: f64,
+    o: &MotionOpts,
+    span: crate::diag::Span,
+) -> R<()> {
+    let before = st.robot.joints();
+    if let Err(e) = st.robot.move_joints(points, duration) {
+        return Err(fail(
+            r,
+            st,
+            service,
+            "FatalCommunicationError",
+            format!("{e:?}"),
+            span,
+        ));
+    }
+    let start = r.m.clock.now();
+    if o.control {
+        st.busy_until = start + duration;
+    } else {
+        r.m.clock.sleep(duration);
+    }
+    if o.realtime || st.realtime {
+        r.m.clock.pace(duration);
+    }
+    if let Some(t) = &mut st.trace {
+        let after = st.robot.joints();
+        let _ = writeln!(
+            t,
+            "[t={start:9.3} s] {service} at {}: {} -> {} deg, {duration:.3} s",
+            r.m.location(span),
+            deg5(&before),
+            deg5(&after)
+        );
+    }
+    Ok(())
+}
+
+/// Plans a point-to-point joint motion to `target`.
+fn plan(
+    r: &mut Run,
+    st: &mut RobotState,
+    service: &str,
+    target: &Joints,
+    o: &MotionOpts,
+    span: crate::diag::Span,
+) -> R<f64> {
+    let from = st.robot.joints();
+    match MotionProfile::plan(&from, target, st.velocity, st.kin.description(), o.time) {
+        Ok(p) => Ok(p.duration()),
+        Err(e) => Err(kin_fail(r, st, service, &e, span)),
+    }
+}
+
+/// The duration of a path through support points at the current velocity.
+fn path_duration(st: &RobotState, from: &Joints, points: &[Joints]) -> f64 {
+    let desc = st.kin.description();
+    let mut t = 0.0;
+    let mut prev = *from;
+    for p in points {
+        let mut seg: f64 = 0.0;
+        for (j, spec) in desc.joints().iter().enumerate() {
+            let v = spec.max_speed * st.velocity / 100.0;
+            if v > 0.0 {
+                seg = seg.max((p[j] - prev[j]).abs() / v);
+            }
+        }
+        t += seg;
+        prev = *p;
+    }
+    t
+}
+
+/// Solves a frame goal in the current move mode: the support points to go through.
+fn frame_motion(st: &RobotState, from: &Joints, goal: &Pose) -> Result<Vec<Joints>, KinError> {
+    if st.straight {
+        st.kin
+            .straight_line(from, goal, &st.tool.trans, st.interpolation)
+    } else {
+        st.kin
+            .ik_choose(goal, &st.tool.trans, from, st.arm, st.elbow)
+            .map(|s| vec![s.joints])
+    }
+}
+
+fn move_frame(
+    r: &mut Run,
+    st: &mut RobotState,
+    service: &str,
+    goal: Pose,
+    o: MotionOpts,
+    span: crate::diag::Span,
+) -> R<Option<Value>> {
+    let from = st.robot.joints();
+    let points = match frame_motion(st, &from, &goal) {
+        Ok(p) => p,
+        Err(e) => return Err(kin_fail(r, st, service, &e, span)),
+    };
+    let duration = if st.straight {
+        let d = path_duration(st, &from, &points);
+        match o.time {
+            Some(t) if t + 1e-9 < d => {
+                return Err(fail(
+                    r,
+                    st,
+                    service,
+                    "TimeInvalid",
+                    format!("Time => {t:.3} s is shorter than the fastest straight line, {d:.3} s"),
+                    span,
+                ));
+            }
+            Some(t) => t,
+            None => d,
+        }
+    } else {
+        let target = points[points.len() - 1];
+        plan(r, st, service, &target, &o, span)?
+    };
+    perform(r, st, service, &points, duration, &o, span)?;
+    Ok(None)
+}
+
+// ---- services ----
+
+fn init_robot(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    with_state(r, |r, st| {
+        let o = MotionOpts {
+            time: None,
+            control: false,
+            realtime: false,
+        };
+        st.initialized = true;
+        st.velocity = 50.0;
+        st.straight = false;
+        st.interpolation = 1.0;
+        st.arm = Arm::None;
+        st.elbow = Elbow::None;
+        st.hand = 2;
+        st.tool = standard_tool(&st.kin);
+        st.base = Pose::identity();
+        st.busy_until = r.m.clock.now();
+        if let Err(e) = st.robot.calibrate() {
+            return Err(fail(
+                r,
+                st,
+                "InitRobot",
+                "FatalCommunicationError",
+                format!("{e:?}"),
+                span,
+            ));
+        }
+        let zero = [0.0; 5];
+        let d = plan(r, st, "InitRobot", &zero, &o, span)?;
+        perform(r, st, "InitRobot", &[zero], d, &o, span)?;
+        let g = *st.kin.description().gripper();
+        let _ = st.robot.move_gripper(g.opening_max, None);
+        Ok(None)
+    })
+}
+
+fn end_robot(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    with_state(r, |r, st| {
+        if !st.initialized {
+            return Err(fail(
+                r,
+                st,
+                "EndRobot",
+                "SystemNotInitialized",
+                "EndRobot before InitRobot".into(),
+                span,
+            ));
+        }
+        let now = r.m.clock.now();
+        if st.busy_until > now + 1e-12 {
+            return Err(fail(
+                r,
+                st,
+                "EndRobot",
+                "ControlCommandActive",
+                format!(
+                    "a Control => True motion runs until t = {:.3} s (now {now:.3} s)",
+                    st.busy_until
+                ),
+                span,
+            ));
+        }
+        // The nest (rest) position is the zero pose.
+        let o = MotionOpts {
+            time: None,
+            control: false,
+            realtime: false,
+        };
+        let zero = [0.0; 5];
+        let d = plan(r, st, "EndRobot", &zero, &o, span)?;
+        perform(r, st, "EndRobot", &[zero], d, &o, span)?;
+        st.initialized = false;
+        st.tool = standard_tool(&st.kin);
+        st.base = Pose::identity();
+        Ok(None)
+    })
+}
+
+fn calibrate(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    with_state(r, |r, st| {
+        require_init(r, st, "CalibrateRobot", span)?;
+        if let Err(e) = st.robot.calibrate() {
+            return Err(fail(
+                r,
+                st,
+                "CalibrateRobot",
+                "FatalCommunicationError",
+                format!("{e:?}"),
+                span,
+            ));
+        }
+        Ok(None)
+    })
+}
+
+fn set_velocity(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let v = a[0].real();
+    with_state(r, |r, st| {
+        require_init(r, st, "SetVelocity", span)?;
+        if v <= 0.0 {
+            return Err(fail(
+                r,
+                st,
+                "SetVelocity",
+                "CONSTRAINT_ERROR",
+                format!("velocity {v:.1} % would never arrive: give 0.1 .. 100.0 %"),
+                span,
+            ));
+        }
+        st.velocity = v;
+        Ok(None)
+    })
+}
+
+fn set_move_mode(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let k = a[0].int();
+    with_state(r, |r, st| {
+        require_init(r, st, "SetMoveMode", span)?;
+        st.straight = k == 1;
+        Ok(None)
+    })
+}
+
+fn set_interpolation(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let w = a[0].real();
+    with_state(r, |r, st| {
+        require_init(r, st, "SetInterpolation", span)?;
+        st.interpolation = w;
+        Ok(None)
+    })
+}
+
+fn set_robot_config(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let (arm, elbow, hand) = (a[0].int(), a[1].int(), a[2].int());
+    with_state(r, |r, st| {
+        require_init(r, st, "SetRobotConfig", span)?;
+        st.arm = match arm {
+            0 => Arm::Forward,
+            1 => Arm::Backward,
+            _ => Arm::None,
+        };
+        st.elbow = match elbow {
+            0 => Elbow::Above,
+            1 => Elbow::Below,
+            _ => Elbow::None,
+        };
+        st.hand = hand;
+        Ok(None)
+    })
+}
+
+fn value_robot_config(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    with_state(r, |r, st| {
+        require_init(r, st, "ValueRobotConfig", span)?;
+        let (arm, elbow) = st.kin.config_of(&st.robot.read_joints());
+        a[0] = Value::Int(match arm {
+            Arm::Forward => 0,
+            Arm::Backward => 1,
+            Arm::None => 2,
+        });
+        a[1] = Value::Int(match elbow {
+            Elbow::Above => 0,
+            Elbow::Below => 1,
+            Elbow::None => 2,
+        });
+        // A 5-axis wrist never flips.
+        a[2] = Value::Int(1);
+        Ok(None)
+    })
+}
+
+fn set_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let Value::Rec(rec) = &a[0] else {
+        return Ok(None);
+    };
+    let trans = Pose::from_rows(frame_rows(&rec[0]));
+    let (fmin, fmax, dmin, dmax) = (rec[1].real(), rec[2].real(), rec[4].real(), rec[5].real());
+    with_state(r, |r, st| {
+        require_init(r, st, "SetTool", span)?;
+        if let Err(e) = trans.check_rigid("tool transform") {
+            return Err(kin_fail(r, st, "SetTool", &e, span));
+        }
+        if fmin > fmax {
+            return Err(fail(
+                r,
+                st,
+                "SetTool",
+                "ForceInvalid",
+                format!("ForceMin {fmin:.1} N is above ForceMax {fmax:.1} N"),
+                span,
+            ));
+        }
+        if dmin > dmax {
+            return Err(fail(
+                r,
+                st,
+                "SetTool",
+                "DistanceInvalid",
+                format!("DistMin {dmin:.1} mm is above DistMax {dmax:.1} mm"),
+                span,
+            ));
+        }
+        st.tool = Tool {
+            trans,
+            force_min: fmin,
+            force_max: fmax,
+            dist_min: dmin,
+            dist_max: dmax,
+        };
+        Ok(None)
+    })
+}
+
+fn tool_value(st: &RobotState) -> Value {
+    let g = st.robot.gripper();
+    Value::Rec(Rc::new(vec![
+        frame_value(&st.tool.trans),
+        Value::Real(st.tool.force_min),
+        Value::Real(st.tool.force_max),
+        Value::Real(g.force),
+        Value::Real(st.tool.dist_min),
+        Value::Real(st.tool.dist_max),
+        Value::Real(g.opening),
+    ]))
+}
+
+fn value_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    with_state(r, |r, st| {
+        require_init(r, st, "ValueTool", span)?;
+        a[0] = tool_value(st);
+        Ok(None)
+    })
+}
+
+fn value_tool_f(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    with_state(r, |r, st| {
+        require_init(r, st, "ValueTool", span)?;
+        Ok(Some(tool_value(st)))
+    })
+}
+
+/// Gripper motion, with the handbook's fallbacks for missing sensors: without
+/// a distance sensor (DistMin = DistMax = 0) any distance above 0.0 opens
+/// fully and 0.0 closes; without a force sensor (ForceMin = ForceMax = 0)
+/// only the distance counts. The distance wins over the force.
+fn move_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let (dist, force) = (a[0].real(), a[1].real());
+    with_state(r, |r, st| {
+        require_init(r, st, "MoveTool", span)?;
+        let t = st.tool;
+        let has_dist = !(t.dist_min == 0.0 && t.dist_max == 0.0);
+        let has_force = !(t.force_min == 0.0 && t.force_max == 0.0);
+        if has_dist && (dist < t.dist_min || dist > t.dist_max) {
+            return Err(fail(
+                r,
+                st,
+                "MoveTool",
+                "DistanceInvalid",
+                format!(
+                    "distance {dist:.1} mm outside {:.1} .. {:.1} mm",
+                    t.dist_min, t.dist_max
+                ),
+                span,
+            ));
+        }
+        if has_force && (force < t.force_min || force > t.force_max) {
+            return Err(fail(
+                r,
+                st,
+                "MoveTool",
+                "ForceInvalid",
+                format!(
+                    "force {force:.1} N outside {:.1} .. {:.1} N",
+                    t.force_min, t.force_max
+                ),
+                span,
+            ));
+        }
+        let g = *st.kin.description().gripper();
+        let target = if has_dist {
+            dist
+        } else if dist > 0.0 {
+            g.opening_max
+        } else {
+            g.opening_min
+        };
+        let limit = if has_force { Some(force) } else { None };
+        // Distance wins: closing below an object's width squeezes with the
+        // largest force the tool allows.
+        let limit = match (has_dist, limit) {
+            (true, Some(_)) => Some(t.force_max),
+            (_, l) => l,
+        };
+        let before = st.robot.gripper();
+        match st.robot.move_gripper(target, limit) {
+            Ok(g2) => {
+                // The jaws move at 100 mm/s at full velocity.
+                let d =
+                    (before.opening - g2.opening).abs() / (100.0 * st.velocity / 100.0).max(1e-6);
+                r.m.clock.sleep(d);
+                if let Some(tr) = &mut st.trace {
+                    let _ = writeln!(
+                        tr,
+                        "[t={:9.3} s] MoveTool at {}: opening {:.1} -> {:.1} mm, force {:.1} N",
+                        r.m.clock.now() - d,
+                        r.m.location(span),
+                        before.opening,
+                        g2.opening,
+                        g2.force
+                    );
+                }
+                Ok(None)
+            }
+            Err(e) => Err(fail(
+                r,
+                st,
+                "MoveTool",
+                "FatalCommunicationError",
+                format!("{e:?}"),
+                span,
+            )),
+        }
+    })
+}
+
+fn move_axes_absolute(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let axes = axes_of(&a[0]);
+    let o = opts(a, 1);
+    with_state(r, |r, st| {
+        require_init(r, st, "MoveAxesAbsolute", span)?;
+        let target = match st.kin.joint_target(&axes) {
+            Ok(t) => t,
+            Err(e) => return Err(kin_fail(r, st, "MoveAxesAbsolute", &e, span)),
+        };
+        let d = plan(r, st, "MoveAxesAbsolute", &target, &o, span)?;
+        perform(r, st, "MoveAxesAbsolute", &[target], d, &o, span)?;
+        Ok(None)
+    })
+}
+
+fn move_axes_relative(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let delta = axes_of(&a[0]);
+    let o = opts(a, 1);
+    with_state(r, |r, st| {
+        require_init(r, st, "MoveAxesRelative", span)?;
+        let current = st.robot.joints();
+        let target = match st.kin.relative_joint_target(&current, &delta) {
+            Ok(t) => t,
+            Err(e) => return Err(kin_fail(r, st, "MoveAxesRelative", &e, span)),
+        };
+        let d = plan(r, st, "MoveAxesRelative", &target, &o, span)?;
+        perform(r, st, "MoveAxesRelative", &[target], d, &o, span)?;
+        Ok(None)
+    })
+}
+
+fn move_frame_absolute(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let goal = Pose::from_rows(frame_rows(&a[0]));
+    let o = opts(a, 1);
+    with_state(r, |r, st| {
+        require_init(r, st, "MoveFrameAbsolute", span)?;
+        move_frame(r, st, "MoveFrameAbsolute", goal, o, span)
+    })
+}
+
+fn move_frame_relative(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let goal = Pose::from_rows(frame_rows(&a[0]));
+    let o = opts(a, 1);
+    with_state(r, |r, st| {
+        require_init(r, st, "MoveFrameRelative", span)?;
+        let g = st.base * goal;
+        move_frame(r, st, "MoveFrameRelative", g, o, span)
+    })
+}
+
+fn set_base(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let base = Pose::from_rows(frame_rows(&a[0]));
+    with_state(r, |r, st| {
+        require_init(r, st, "SetBase", span)?;
+        if let Err(e) = base.check_rigid("base frame") {
+            return Err(kin_fail(r, st, "SetBase", &e, span));
+        }
+        st.base = base;
+        Ok(None)
+    })
+}
+
+fn valid_frame(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let f = Pose::from_rows(frame_rows(&a[0]));
+    with_state(r, |r, st| {
+        require_init(r, st, "ValidFrame", span)?;
+        match st.kin.valid_frame(&f, &st.tool.trans) {
+            Ok(v) => {
+                a[0] = frame_value(&v);
+                Ok(None)
+            }
+            Err(e) => Err(kin_fail(r, st, "ValidFrame", &e, span)),
+        }
+    })
+}
+
+fn value_axes(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let v = value_axes_f(r, a, span)?;
+    a[0] = v.unwrap_or_default();
+    Ok(None)
+}
+
+fn value_axes_f(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    with_state(r, |r, st| {
+        require_init(r, st, "ValueAxes", span)?;
+        Ok(Some(axes_value(&st.robot.read_joints())))
+    })
+}
+
+fn current_frame(st: &RobotState) -> Pose {
+    st.kin.fk_tcp(&st.robot.read_joints(), &st.tool.trans)
+}
+
+fn value_frame_absolute(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    a[0] = value_frame_absolute_f(r, a, span)?.unwrap_or_default();
+    Ok(None)
+}
+
+fn value_frame_absolute_f(
+    r: &mut Run,
+    _a: &mut [Value],
+    span: crate::diag::Span,
+) -> R<Option<Value>> {
+    with_state(r, |r, st| {
+        require_init(r, st, "ValueFrameAbsolute", span)?;
+        Ok(Some(frame_value(&current_frame(st))))
+    })
+}
+
+fn value_frame_relative(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    a[0] = value_frame_relative_f(r, a, span)?.unwrap_or_default();
+    Ok(None)
+}
+
+fn value_frame_relative_f(
+    r: &mut Run,
+    _a: &mut [Value],
+    span: crate::diag::Span,
+) -> R<Option<Value>> {
+    with_state(r, |r, st| {
+        require_init(r, st, "ValueFrameRelative", span)?;
+        Ok(Some(frame_value(&(st.base.inverse() * current_frame(st)))))
+    })
+}
+
+fn value_error_status(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    a[0] = value_error_status_f(r, a, span)?.unwrap_or_default();
+    Ok(None)
+}
+
+fn value_error_status_f(
+    r: &mut Run,
+    _a: &mut [Value],
+    _span: crate::diag::Span,
+) -> R<Option<Value>> {
+    with_state(r, |_, st| Ok(Some(Value::Int(st.error_status))))
+}
+
+fn teach_box(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let text = a[0].text();
+    with_state(r, |r, st| {
+        require_init(r, st, "TeachBox", span)?;
+        if text.chars().count() > 60 || text.chars().any(|c| c.is_control()) {
+            return Err(fail(
+                r,
+                st,
+                "TeachBox",
+                "UserInfoInvalid",
+                format!(
+                    "the text has {} characters (at most 60, no control characters)",
+                    text.chars().count()
+                ),
+                span,
+            ));
+        }
+        Err(fail(
+            r,
+            st,
+            "TeachBox",
+            "CommandNotSupported",
+            "the TeachBox needs an interactive terminal (run the program from a terminal, or use the REPL's :teach)".into(),
+            span,
+        ))
+    })
+}
+
+fn place_object(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let w = a[0].real();
+    with_state(r, |r, st| match st.robot.place_object(w) {
+        Ok(()) => Ok(None),
+        Err(e) => Err(fail(
+            r,
+            st,
+            "PlaceObject",
+            "CONSTRAINT_ERROR",
+            match e {
+                crate::driver::DriverError::Refused(m)
+                | crate::driver::DriverError::NoConnection(m) => m,
+            },
+            span,
+        )),
+    })
+}
+
+// ---- SERIAL_IO: terminals map to standard output ----
+
+fn puts_string(r: &mut Run, a: &mut [Value], _: crate::diag::Span) -> R<Option<Value>> {
+    let s = a[1].text();
+    r.m.write_str(&s);
+    Ok(None)
+}
+
+fn puts_integer(r: &mut Run, a: &mut [Value], _: crate::diag::Span) -> R<Option<Value>> {
+    let s = crate::interp::value::image_int(a[1].int());
+    r.m.write_str(&s);
+    Ok(None)
+}
+
+fn new_lines(r: &mut Run, _a: &mut [Value], _: crate::diag::Span) -> R<Option<Value>> {
+    r.m.write_str("\n");
+    Ok(None)
+}
+
+fn get_lines(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let _ = crate::interp::builtins::read_line(r, span)?;
+    Ok(None)
+}
+
+fn get_lines_text(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+    let mut args = [a[1].clone(), a[2].clone()];
+    crate::interp::builtins::get_line(r, &mut args, span)?;
+    a[1] = args[0].clone();
+    a[2] = args[1].clone();
+    Ok(None)
+}
+
+fn put_fixed(r: &mut Run, a: &mut [Value], _: crate::diag::Span) -> R<Option<Value>> {
+    let s = crate::interp::value::put_float(a[0].real(), 7, 3, 0);
+    r.m.write_str(&s);
+    Ok(None)
+}

@@ -1,0 +1,397 @@
+//! The path system: numbered paths of frames, with the handbook's insert and
+//! delete semantics, `MovePath`, and a readable, versioned file format.
+//!
+//! File format (`SavePathSystem`), one item per line, `--` comments allowed:
+//! ```text
+//! adair-paths 1
+//! path 1
+//! pos 1 r11 r12 r13 r14 r21 r22 r23 r24 r31 r32 r33 r34
+//! end
+//! ```
+//! Numbers are written in Rust's shortest round-trip form, so a saved and
+//! loaded frame is bit-for-bit the same.
+
+use super::*;
+use crate::diag::Span;
+
+fn path_of<'a>(r: &mut Run, st: &'a mut RobotState, service: &str, p: i64, span: Span) -> R<()> {
+    if !st.paths.contains_key(&p) {
+        return Err(fail(
+            r,
+            st,
+            service,
+            "PathNotDefined",
+            format!("path {p} is not defined (CreatePath ({p}) first)"),
+            span,
+        ));
+    }
+    Ok(())
+}
+
+pub fn create_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let p = a[0].int();
+    with_state(r, |r, st| {
+        require_init(r, st, "CreatePath", span)?;
+        if st.paths.contains_key(&p) {
+            return Err(fail(
+                r,
+                st,
+                "CreatePath",
+                "PathAlreadyDefined",
+                format!("path {p} is already defined"),
+                span,
+            ));
+        }
+        st.paths.insert(p, Vec::new());
+        Ok(None)
+    })
+}
+
+pub fn delete_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let p = a[0].int();
+    with_state(r, |r, st| {
+        require_init(r, st, "DeletePath", span)?;
+        path_of(r, st, "DeletePath", p, span)?;
+        st.paths.remove(&p);
+        Ok(None)
+    })
+}
+
+/// Inserts before position N; an N beyond the end appends as last + 1.
+pub fn insert_position(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let (p, n, f) = (a[0].int(), a[1].int(), frame_rows(&a[2]));
+    with_state(r, |r, st| {
+        require_init(r, st, "InsertPosition", span)?;
+        path_of(r, st, "InsertPosition", p, span)?;
+        if let Err(e) = Pose::from_rows(f).check_rigid("position") {
+            return Err(kin_fail(r, st, "InsertPosition", &e, span));
+        }
+        let path = st.paths.entry(p).or_default();
+        let i = ((n - 1) as usize).min(path.len());
+        path.insert(i, f);
+        Ok(None)
+    })
+}
+
+fn position_index(
+    r: &mut Run,
+    st: &mut RobotState,
+    service: &str,
+    p: i64,
+    n: i64,
+    span: Span,
+) -> R<usize> {
+    path_of(r, st, service, p, span)?;
+    let len = st.paths.get(&p).map(Vec::len).unwrap_or(0);
+    if n < 1 || n as usize > len {
+        return Err(fail(
+            r,
+            st,
+            service,
+            "PathElementNotDefined",
+            format!("path {p} has {len} position(s), there is no position {n}"),
+            span,
+        ));
+    }
+    Ok(n as usize - 1)
+}
+
+pub fn delete_position(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let (p, n) = (a[0].int(), a[1].int());
+    with_state(r, |r, st| {
+        require_init(r, st, "DeletePosition", span)?;
+        let i = position_index(r, st, "DeletePosition", p, n, span)?;
+        if let Some(path) = st.paths.get_mut(&p) {
+            path.remove(i);
+        }
+        Ok(None)
+    })
+}
+
+pub fn value_position(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let (p, n) = (a[0].int(), a[1].int());
+    with_state(r, |r, st| {
+        require_init(r, st, "ValuePosition", span)?;
+        let i = position_index(r, st, "ValuePosition", p, n, span)?;
+        let f = st.paths[&p][i];
+        a[2] = frame_value(&Pose::from_rows(f));
+        Ok(None)
+    })
+}
+
+/// Moves through every position; all are solved before the first joint moves.
+pub fn move_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let p = a[0].int();
+    let o = opts(a, 1);
+    with_state(r, |r, st| {
+        require_init(r, st, "MovePath", span)?;
+        path_of(r, st, "MovePath", p, span)?;
+        let frames = st.paths[&p].clone();
+        if frames.is_empty() {
+            return Err(fail(
+                r,
+                st,
+                "MovePath",
+                "PathElementNotDefined",
+                format!("path {p} has no positions"),
+                span,
+            ));
+        }
+        let mut from = st.robot.joints();
+        let start = from;
+        let mut all: Vec<Joints> = Vec::new();
+        for (k, f) in frames.iter().enumerate() {
+            match frame_motion(st, &from, &Pose::from_rows(*f)) {
+                Ok(pts) => {
+                    from = pts[pts.len() - 1];
+                    all.extend(pts);
+                }
+                Err(e) => {
+                    let msg = format!("position {} of path {p}: {e}", k + 1);
+                    let exc = match e.exception() {
+                        crate::kinematics::AdaException::ConstraintError => "CONSTRAINT_ERROR",
+                        x => x.name(),
+                    };
+                    return Err(fail(r, st, "MovePath", exc, msg, span));
+                }
+            }
+        }
+        let d = path_duration(st, &start, &all);
+        let d = match o.time {
+            Some(t) if t + 1e-9 < d => {
+                return Err(fail(
+                    r,
+                    st,
+                    "MovePath",
+                    "TimeInvalid",
+                    format!(
+                        "Time => {t:.3} s is shorter than the fastest run of path {p}, {d:.3} s"
+                    ),
+                    span,
+                ));
+            }
+            Some(t) => t,
+            None => d,
+        };
+        perform(r, st, "MovePath", &all, d, &o, span)?;
+        Ok(None)
+    })
+}
+
+fn io_error(
+    r: &mut Run,
+    st: &mut RobotState,
+    service: &str,
+    exc: &str,
+    msg: String,
+    span: Span,
+) -> Flow {
+    fail(r, st, service, exc, msg, span)
+}
+
+pub fn save_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let name = a[0].text();
+    with_state(r, |r, st| {
+        require_init(r, st, "SavePathSystem", span)?;
+        let mut text = String::from("adair-paths 1\n");
+        for (p, frames) in &st.paths {
+            text.push_str(&format!("path {p}\n"));
+            for (k, f) in frames.iter().enumerate() {
+                text.push_str(&format!("pos {}", k + 1));
+                for row in f {
+                    for x in row {
+                        text.push_str(&format!(" {x:?}"));
+                    }
+                }
+                text.push('\n');
+            }
+            text.push_str("end\n");
+        }
+        // Write a temporary file, then rename: never a half-written file.
+        let target = std::path::Path::new(&name);
+        if name.is_empty() || target.file_name().is_none() {
+            return Err(io_error(
+                r,
+                st,
+                "SavePathSystem",
+                "ADA.IO_EXCEPTIONS.NAME_ERROR",
+                format!("\"{name}\" is not a file name"),
+                span,
+            ));
+        }
+        if let Some(dir) = target.parent().filter(|d| !d.as_os_str().is_empty())
+            && !dir.is_dir()
+        {
+            return Err(io_error(
+                r,
+                st,
+                "SavePathSystem",
+                "ADA.IO_EXCEPTIONS.NAME_ERROR",
+                format!("the directory {} does not exist", dir.display()),
+                span,
+            ));
+        }
+        let tmp = target.with_extension("adair-tmp");
+        let res = std::fs::write(&tmp, text.as_bytes()).and_then(|_| std::fs::rename(&tmp, target));
+        if let Err(e) = res {
+            let _ = std::fs::remove_file(&tmp);
+            return Err(io_error(
+                r,
+                st,
+                "SavePathSystem",
+                "ADA.IO_EXCEPTIONS.USE_ERROR",
+                format!("cannot write {name}: {e}"),
+                span,
+            ));
+        }
+        Ok(None)
+    })
+}
+
+/// Parses a path file completely; nothing is loaded unless all of it is good.
+fn parse(text: &str) -> Result<Vec<(i64, Vec<[[f64; 4]; 3]>)>, (usize, String)> {
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l.split("--").next().unwrap_or("").trim()))
+        .filter(|(_, l)| !l.is_empty());
+    match lines.next() {
+        Some((_, "adair-paths 1")) => {}
+        Some((n, l)) => {
+            return Err((
+                n,
+                format!("expected the version line `adair-paths 1`, found `{l}`"),
+            ));
+        }
+        None => return Err((1, "the file is empty; expected `adair-paths 1`".into())),
+    }
+    let mut out: Vec<(i64, Vec<[[f64; 4]; 3]>)> = Vec::new();
+    let mut current: Option<(i64, Vec<[[f64; 4]; 3]>)> = None;
+    for (n, l) in lines {
+        let words: Vec<&str> = l.split_whitespace().collect();
+        match words.as_slice() {
+            ["path", num] => {
+                if current.is_some() {
+                    return Err((
+                        n,
+                        "`path` inside a path: close the previous one with `end`".into(),
+                    ));
+                }
+                let p: i64 = num
+                    .parse()
+                    .map_err(|_| (n, format!("`{num}` is not a path number")))?;
+                if !(1..=65000).contains(&p) {
+                    return Err((n, format!("path number {p} is outside 1 .. 65000")));
+                }
+                if out.iter().any(|(q, _)| *q == p) {
+                    return Err((n, format!("path {p} appears twice")));
+                }
+                current = Some((p, Vec::new()));
+            }
+            ["pos", num, rest @ ..] => {
+                let Some((_, frames)) = current.as_mut() else {
+                    return Err((n, "`pos` outside a path".into()));
+                };
+                let k: usize = num
+                    .parse()
+                    .map_err(|_| (n, format!("`{num}` is not a position number")))?;
+                if k != frames.len() + 1 {
+                    return Err((
+                        n,
+                        format!("position {k} out of order (expected {})", frames.len() + 1),
+                    ));
+                }
+                if rest.len() != 12 {
+                    return Err((
+                        n,
+                        format!(
+                            "a position has 12 numbers (3 rows of 4), this one has {}",
+                            rest.len()
+                        ),
+                    ));
+                }
+                let mut f = [[0.0; 4]; 3];
+                for (i, w) in rest.iter().enumerate() {
+                    let x: f64 = w
+                        .parse()
+                        .map_err(|_| (n, format!("`{w}` is not a number")))?;
+                    if !x.is_finite() {
+                        return Err((n, format!("`{w}` is not a finite number")));
+                    }
+                    f[i / 4][i % 4] = x;
+                }
+                if let Err(e) = Pose::from_rows(f).check_rigid("position") {
+                    return Err((n, format!("position {k}: {e}")));
+                }
+                frames.push(f);
+            }
+            ["end"] => match current.take() {
+                Some(p) => out.push(p),
+                None => return Err((n, "`end` without `path`".into())),
+            },
+            _ => return Err((n, format!("cannot read `{l}`"))),
+        }
+    }
+    if let Some((p, _)) = current {
+        return Err((text.lines().count(), format!("path {p} has no `end`")));
+    }
+    Ok(out)
+}
+
+pub fn load_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let name = a[0].text();
+    with_state(r, |r, st| {
+        require_init(r, st, "LoadPathSystem", span)?;
+        let text = match std::fs::read_to_string(&name) {
+            Ok(t) => t,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                return Err(io_error(
+                    r,
+                    st,
+                    "LoadPathSystem",
+                    "ADA.IO_EXCEPTIONS.NAME_ERROR",
+                    format!("no file {name}"),
+                    span,
+                ));
+            }
+            Err(e) => {
+                return Err(io_error(
+                    r,
+                    st,
+                    "LoadPathSystem",
+                    "ADA.IO_EXCEPTIONS.USE_ERROR",
+                    format!("cannot read {name}: {e}"),
+                    span,
+                ));
+            }
+        };
+        let paths = match parse(&text) {
+            Ok(p) => p,
+            Err((line, msg)) => {
+                return Err(io_error(
+                    r,
+                    st,
+                    "LoadPathSystem",
+                    "ADA.IO_EXCEPTIONS.DATA_ERROR",
+                    format!("{name}:{line}: {msg}"),
+                    span,
+                ));
+            }
+        };
+        if let Some((p, _)) = paths.iter().find(|(p, _)| st.paths.contains_key(p)) {
+            let p = *p;
+            return Err(fail(
+                r,
+                st,
+                "LoadPathSystem",
+                "PathAlreadyDefined",
+                format!("{name} defines path {p}, which is already defined; nothing was loaded"),
+                span,
+            ));
+        }
+        for (p, frames) in paths {
+            st.paths.insert(p, frames);
+        }
+        Ok(None)
+    })
+}
