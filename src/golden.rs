@@ -31,7 +31,27 @@ impl SharedBuf {
     }
 }
 
+/// Options a script asks for in a first-lines comment `-- adair: --robot rm-501 --trace`.
+fn directives(text: &str) -> (String, bool) {
+    let mut robot = "rv-m1".to_string();
+    let mut trace = false;
+    for line in text.lines().take_while(|l| l.starts_with("--")) {
+        if let Some(rest) = line.strip_prefix("-- adair:") {
+            let words: Vec<&str> = rest.split_whitespace().collect();
+            for (i, w) in words.iter().enumerate() {
+                match *w {
+                    "--trace" => trace = true,
+                    "--robot" => robot = words.get(i + 1).unwrap_or(&"rv-m1").to_string(),
+                    _ => {}
+                }
+            }
+        }
+    }
+    (robot, trace)
+}
+
 /// Runs a script as `adair run` would (no colour) and returns its golden text.
+/// A trace asked for by the script is interleaved with its output.
 pub fn run_case(path: &Path) -> String {
     let name = path.to_string_lossy().replace('\\', "/");
     let text = match std::fs::read_to_string(path) {
@@ -41,6 +61,15 @@ pub fn run_case(path: &Path) -> String {
     let buf = SharedBuf::default();
     let mut s = Session::new(Box::new(buf.clone()));
     s.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+    let (robot, trace) = directives(&text);
+    match crate::kinematics::RobotDescription::builtin(&robot) {
+        Ok(desc) => s.set_robot(
+            desc,
+            trace.then(|| Box::new(buf.clone()) as Box<dyn Write>),
+            false,
+        ),
+        Err(e) => return format!("-- stderr --\nerror: {e:?}\n-- exit: 2\n"),
+    }
     let outcome = s.run_source(&name, &text);
     let mut out = buf.take();
     let stderr = match &outcome {

@@ -21,12 +21,46 @@ struct Cli {
     command: Option<Command>,
 }
 
+#[derive(clap::Args)]
+struct RobotOpts {
+    /// The simulated robot: rv-m1 (default) or rm-501.
+    #[arg(long, default_value = "rv-m1")]
+    robot: String,
+    /// A robot description file (TOML) instead of a built-in robot.
+    #[arg(long, value_name = "PATH")]
+    robot_file: Option<PathBuf>,
+    /// Print each motion (virtual time, service, joints before and after, duration, source line) to standard error.
+    #[arg(long)]
+    trace: bool,
+    /// Pace the simulator to the wall clock.
+    #[arg(long)]
+    realtime: bool,
+}
+
+impl RobotOpts {
+    fn description(&self) -> Result<adair::kinematics::RobotDescription, String> {
+        let r = match &self.robot_file {
+            Some(p) => adair::kinematics::RobotDescription::from_file(p),
+            None => adair::kinematics::RobotDescription::builtin(&self.robot),
+        };
+        r.map_err(|e| {
+            if e.problems.len() == 1 {
+                format!("{}: {}", e.source, e.problems[0])
+            } else {
+                format!("{}: {}", e.source, e.problems.join("; "))
+            }
+        })
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Check the whole program, then run it. Exit 0; 1 on an unhandled exception; 2 on a check error.
     Run {
         /// The program (.air or .adb).
         file: PathBuf,
+        #[command(flatten)]
+        robot: RobotOpts,
     },
     /// Parse and check only; report every diagnostic; nothing runs.
     Check {
@@ -105,12 +139,25 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             eprintln!("adair: no command given; try `adair run FILE.air` or `adair --help`");
             2
         }
-        Some(Command::Run { file }) => {
+        Some(Command::Run { file, robot }) => {
+            let desc = match robot.description() {
+                Ok(d) => d,
+                Err(e) => {
+                    eprintln!("adair: {e}");
+                    return 2;
+                }
+            };
             let text = match read(&file) {
                 Ok(t) => t,
                 Err(_) => return 2,
             };
-            let mut s = Session::new(Box::new(std::io::BufWriter::new(std::io::stdout())));
+            let mut s = Session::new(Box::new(std::io::LineWriter::new(std::io::stdout())));
+            let trace: Option<Box<dyn std::io::Write>> = if robot.trace {
+                Some(Box::new(std::io::stderr()))
+            } else {
+                None
+            };
+            s.set_robot(desc, trace, robot.realtime);
             let outcome = s.run_source(&file.to_string_lossy(), &text);
             match &outcome {
                 Outcome::Ok => {}

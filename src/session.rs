@@ -78,6 +78,20 @@ impl Session {
         s
     }
 
+    /// Chooses the robot the services drive (the simulator of `desc`), the
+    /// writer that receives the motion trace, and real-time pacing.
+    pub fn set_robot(
+        &mut self,
+        desc: crate::kinematics::RobotDescription,
+        trace: Option<Box<dyn Write>>,
+        realtime: bool,
+    ) {
+        let mut st = crate::services::RobotState::new(desc);
+        st.trace = trace;
+        st.realtime = realtime;
+        self.machine.robot = Some(Box::new(st));
+    }
+
     /// Lexes, parses and checks one source. `script` forces script mode (the
     /// REPL); otherwise a file with top-level statements is a script.
     pub fn check_source(
