@@ -20,15 +20,33 @@ fn frame(v: &[f64]) -> String {
             f(v[1]),
             f(v[2])
         )
-        .replace("* Identity", &format!("* Trans ({}, {}, {})", f(v[3] * 600.0), f(v[4] * 600.0), f(v[5] * 900.0)))
+        .replace(
+            "* Identity",
+            &format!(
+                "* Trans ({}, {}, {})",
+                f(v[3] * 600.0),
+                f(v[4] * 600.0),
+                f(v[5] * 900.0)
+            ),
+        )
     } else {
         let n: Vec<String> = v[..12].iter().map(|x| f(x * 400.0)).collect();
-        format!("(({}, {}, {}, {}), ({}, {}, {}, {}), ({}, {}, {}, {}))", n[0], n[1], n[2], n[3], n[4], n[5], n[6], n[7], n[8], n[9], n[10], n[11])
+        format!(
+            "(({}, {}, {}, {}), ({}, {}, {}, {}), ({}, {}, {}, {}))",
+            n[0], n[1], n[2], n[3], n[4], n[5], n[6], n[7], n[8], n[9], n[10], n[11]
+        )
     }
 }
 
 fn call(kind: u8, v: &[f64]) -> String {
-    let axes = format!("({}, {}, {}, {}, {})", f(v[0] * 8.0), f(v[1] * 3.0), f(v[2] * 3.0), f(v[3] * 3.0), f(v[4] * 8.0));
+    let axes = format!(
+        "({}, {}, {}, {}, {})",
+        f(v[0] * 8.0),
+        f(v[1] * 3.0),
+        f(v[2] * 3.0),
+        f(v[3] * 3.0),
+        f(v[4] * 8.0)
+    );
     let p = (v[5].abs() * 3.0) as i64 + 1;
     let n = (v[6].abs() * 4.0) as i64 + 1;
     match kind % 17 {
@@ -37,18 +55,38 @@ fn call(kind: u8, v: &[f64]) -> String {
         2 => format!("MoveFrameAbsolute ({});", frame(v)),
         3 => format!("MoveFrameRelative ({});", frame(v)),
         4 => format!("SetVelocity ({});", f(v[7].abs() * 120.0)),
-        5 => format!("SetMoveMode ({});", if v[8] > 0.0 { "StraightLine" } else { "JointInterpolated" }),
+        5 => format!(
+            "SetMoveMode ({});",
+            if v[8] > 0.0 {
+                "StraightLine"
+            } else {
+                "JointInterpolated"
+            }
+        ),
         6 => format!("SetInterpolation ({});", f(v[9].abs() * 50.0 + 0.05)),
         7 => format!("CreatePath ({p});"),
         8 => format!("InsertPosition ({p}, {n}, {});", frame(v)),
         9 => format!("DeletePosition ({p}, {n});"),
         10 => format!("MovePath ({p});"),
-        11 => format!("MoveTool ({}, {});", f(v[10].abs() * 80.0), f(v[11].abs() * 40.0)),
-        12 => format!("declare F : Frame := {}; begin ValidFrame (F); MoveFrameAbsolute (F); end;", frame(v)),
+        11 => format!(
+            "MoveTool ({}, {});",
+            f(v[10].abs() * 80.0),
+            f(v[11].abs() * 40.0)
+        ),
+        12 => format!(
+            "declare F : Frame := {}; begin ValidFrame (F); MoveFrameAbsolute (F); end;",
+            frame(v)
+        ),
         13 => format!("SetBase ({});", frame(v)),
-        14 => format!("MoveAxesAbsolute ({axes}, Time => {});", f(v[7].abs() * 3.0)),
+        14 => format!(
+            "MoveAxesAbsolute ({axes}, Time => {});",
+            f(v[7].abs() * 3.0)
+        ),
         15 => format!("DeletePath ({p});"),
-        _ => "declare A : AxesVector := ValueAxes; F : Frame := ValueFrameAbsolute; begin null; end;".to_string(),
+        _ => {
+            "declare A : AxesVector := ValueAxes; F : Frame := ValueFrameAbsolute; begin null; end;"
+                .to_string()
+        }
     }
 }
 
@@ -62,19 +100,44 @@ fn run(calls: &[(u8, Vec<f64>)], robot: &str) -> Result<(), TestCaseError> {
     }
     let buf = adair::golden::SharedBuf::default();
     let mut s = Session::new(Box::new(buf.clone()));
-    s.set_robot(RobotDescription::builtin(robot).expect("robot"), None, false);
+    s.set_robot(
+        RobotDescription::builtin(robot).expect("robot"),
+        None,
+        false,
+    );
     let outcome = s.run_source("props.air", &src);
     let out = buf.take();
     if std::env::var_os("PROPS_SHOW").is_some() {
         eprintln!("{src}\n=> {out}");
     }
-    prop_assert_eq!(outcome.exit_code(), 0, "script failed: {:?}\n{}\n{}", outcome, src, out);
+    prop_assert_eq!(
+        outcome.exit_code(),
+        0,
+        "script failed: {:?}\n{}\n{}",
+        outcome,
+        src,
+        out
+    );
     for line in out.lines() {
-        prop_assert!(line.starts_with("ADAIR.") || line == "CONSTRAINT_ERROR", "unexpected exception {} in\n{}", line, src);
+        prop_assert!(
+            line.starts_with("ADAIR.") || line == "CONSTRAINT_ERROR",
+            "unexpected exception {} in\n{}",
+            line,
+            src
+        );
     }
-    let state = s.machine.robot.as_ref().and_then(|b| b.downcast_ref::<RobotState>()).expect("robot state");
+    let state = s
+        .machine
+        .robot
+        .as_ref()
+        .and_then(|b| b.downcast_ref::<RobotState>())
+        .expect("robot state");
     let q = state.robot.joints();
-    prop_assert!(state.kin.description().check_limits(&q).is_ok(), "joints out of limits: {:?}", q);
+    prop_assert!(
+        state.kin.description().check_limits(&q).is_ok(),
+        "joints out of limits: {:?}",
+        q
+    );
     Ok(())
 }
 

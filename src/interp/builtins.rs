@@ -152,8 +152,9 @@ fn put_line(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
 }
 
 fn new_line(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
-    let n = a[0].int().max(0) as usize;
-    r.m.write_str(&"\n".repeat(n));
+    for _ in 0..a[0].int().max(0) {
+        r.m.write_str("\n");
+    }
     Ok(None)
 }
 

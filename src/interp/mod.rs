@@ -83,6 +83,8 @@ pub struct Machine {
 }
 
 const MAX_DEPTH: usize = 20_000;
+/// The largest array the interpreter builds (Storage_Error beyond).
+const MAX_ELEMENTS: i64 = 50_000_000;
 
 impl Machine {
     pub fn new(out: Box<dyn Write>) -> Machine {
@@ -1013,7 +1015,21 @@ impl Run<'_> {
             }
             TypeKind::Array { elem, .. } => {
                 let bounds = self.array_bounds(t)?.unwrap_or_default();
-                let n: i64 = bounds.iter().map(|(l, h)| (h - l + 1).max(0)).product();
+                let n: i64 = bounds
+                    .iter()
+                    .map(|(l, h)| (h - l + 1).max(0))
+                    .fold(1i64, |a, b| a.saturating_mul(b));
+                if n > MAX_ELEMENTS {
+                    return Err(self.raise(
+                        check::STORAGE_ERROR,
+                        format!("an array of {n} components is too large (at most {MAX_ELEMENTS})"),
+                        Span {
+                            start: 0,
+                            end: 0,
+                            context: 0,
+                        },
+                    ));
+                }
                 let d = self.default_value(elem)?;
                 Value::Arr(Rc::new(Array {
                     bounds,
@@ -1110,6 +1126,9 @@ impl Run<'_> {
                         (lo, lo + vals.len() as i64 - 1)
                     }
                 };
+                if hi - lo + 1 > MAX_ELEMENTS {
+                    return Err(self.raise(check::STORAGE_ERROR, "aggregate too large", span));
+                }
                 let n = (hi - lo + 1).max(0) as usize;
                 if vals.len() > n || (vals.len() < n && others.is_none()) {
                     return Err(self.check_failed("length check failed", span));
@@ -1146,6 +1165,9 @@ impl Run<'_> {
                         (lo, hi)
                     }
                 };
+                if hi - lo + 1 > MAX_ELEMENTS {
+                    return Err(self.raise(check::STORAGE_ERROR, "aggregate too large", span));
+                }
                 let n = (hi - lo + 1).max(0) as usize;
                 let mut vals: Vec<Option<Value>> = vec![None; n];
                 for (rs, v) in &pairs {
