@@ -1,4 +1,5 @@
 //! No service call panics or escapes the simulated robot's limits: random
+#![allow(clippy::print_stderr)]
 //! sequences of service calls with random arguments either work or raise an
 //! Ada exception (AdaIR's own, or Constraint_Error from a parameter subtype).
 

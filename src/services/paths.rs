@@ -14,7 +14,7 @@
 use super::*;
 use crate::diag::Span;
 
-fn path_of<'a>(r: &mut Run, st: &'a mut RobotState, service: &str, p: i64, span: Span) -> R<()> {
+fn path_of(r: &mut Run, st: &mut RobotState, service: &str, p: i64, span: Span) -> R<()> {
     if !st.paths.contains_key(&p) {
         return Err(fail(
             r,
@@ -249,7 +249,10 @@ pub fn save_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Va
 }
 
 /// Parses a path file completely; nothing is loaded unless all of it is good.
-fn parse(text: &str) -> Result<Vec<(i64, Vec<[[f64; 4]; 3]>)>, (usize, String)> {
+/// Paths read from a file: number and frames (rows).
+type PathList = Vec<(i64, Vec<[[f64; 4]; 3]>)>;
+
+fn parse(text: &str) -> Result<PathList, (usize, String)> {
     let mut lines = text
         .lines()
         .enumerate()
@@ -265,7 +268,7 @@ fn parse(text: &str) -> Result<Vec<(i64, Vec<[[f64; 4]; 3]>)>, (usize, String)> 
         }
         None => return Err((1, "the file is empty; expected `adair-paths 1`".into())),
     }
-    let mut out: Vec<(i64, Vec<[[f64; 4]; 3]>)> = Vec::new();
+    let mut out: PathList = Vec::new();
     let mut current: Option<(i64, Vec<[[f64; 4]; 3]>)> = None;
     for (n, l) in lines {
         let words: Vec<&str> = l.split_whitespace().collect();
