@@ -67,6 +67,12 @@ enum Command {
         #[arg(required = true)]
         files: Vec<PathBuf>,
     },
+    /// The interactive REPL (script mode, one entry at a time). Reads piped input without a terminal.
+    Repl {
+        /// With piped input: exit 1 if an entry failed.
+        #[arg(long)]
+        strict: bool,
+    },
     /// Golden tests: run each X.air and compare its output with X.out beside it.
     Test {
         /// Scripts or directories (default: the current directory).
@@ -135,9 +141,20 @@ fn main() -> ExitCode {
 
 fn real_main(command: Option<Command>, color: bool) -> u8 {
     match command {
+        None if std::io::stdin().is_terminal() => adair::repl::term::interactive(color) as u8,
         None => {
-            eprintln!("adair: no command given; try `adair run FILE.air` or `adair --help`");
+            eprintln!(
+                "adair: no command given; try `adair run FILE.air`, `adair repl` or `adair --help`"
+            );
             2
+        }
+        Some(Command::Repl { strict }) => {
+            if std::io::stdin().is_terminal() {
+                adair::repl::term::interactive(color) as u8
+            } else {
+                let stdin = std::io::stdin();
+                adair::repl::term::piped(stdin.lock(), &mut std::io::stdout(), strict) as u8
+            }
         }
         Some(Command::Run { file, robot }) => {
             let desc = match robot.description() {

@@ -75,6 +75,11 @@ impl Session {
             debug_assert!(stmts.is_empty() || !stmts.is_empty());
             let _ = s.machine.run(&s.checker, &stmts, None);
         }
+        for pkg in ["AdaIR", "Ada.Text_IO"] {
+            for e in ["Name_Error", "Use_Error", "Data_Error", "End_Error"] {
+                s.checker.export(pkg, e, "Ada.IO_Exceptions");
+            }
+        }
         s
     }
 

@@ -69,6 +69,7 @@ impl Checker {
             ex.ty = ERROR;
             return ex;
         }
+        let from = ex.ty;
         if self.types.is_universal(ex.ty)
             || matches!(
                 self.types.kind(ex.ty),
@@ -93,7 +94,7 @@ impl Checker {
         );
         if self.types.is_scalar(t)
             && info.range.is_some()
-            && (ex.ty != t || computed)
+            && (from != t || computed)
             && t != INTEGER
         {
             // Statically known to be in range: no check needed.
@@ -107,9 +108,9 @@ impl Checker {
                 _ => false,
             };
             let same_range = !computed
-                && ex.ty != ERROR
-                && self.types.get(ex.ty).static_range.is_some()
-                && self.types.get(ex.ty).static_range == info.static_range;
+                && from != ERROR
+                && self.types.get(from).static_range.is_some()
+                && self.types.get(from).static_range == info.static_range;
             if !inside && !same_range {
                 let span = ex.span;
                 return self.mk(ExKind::RangeCheck(bx(ex), t), t, span);
@@ -699,7 +700,7 @@ impl Checker {
         Some((f, out))
     }
 
-    pub(super) fn signature(&self, f: FuncId) -> String {
+    pub fn signature(&self, f: FuncId) -> String {
         let s = &self.funcs[f as usize];
         let ps: Vec<String> = s
             .params
@@ -1245,6 +1246,41 @@ impl Checker {
                     })
                     .collect();
                 let name = crate::syntax::parser::expr_text(p);
+                // `ValueAxes (2)`: a parameterless function whose array result is indexed.
+                if !fs.iter().any(|f| self.args_fit(*f, args))
+                    && let Some(f) = fs.iter().copied().find(|f| {
+                        let sub = &self.funcs[*f as usize];
+                        sub.params.iter().all(|p| p.default.is_some())
+                            && sub
+                                .ret
+                                .and_then(|r| self.types.array(r))
+                                .is_some_and(|a| a.0.len() == args.len())
+                    })
+                {
+                    let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
+                    let defaults: Vec<Arg> = self.funcs[f as usize]
+                        .params
+                        .iter()
+                        .map(|p| Arg {
+                            mode: ast::Mode::In,
+                            value: p.default.clone().unwrap_or_else(|| Ex::int(0)),
+                            back_check: None,
+                        })
+                        .collect();
+                    let callee = self.mk(ExKind::Call(f, defaults), r, p.span);
+                    let idx: Vec<TypeId> = self
+                        .types
+                        .array(r)
+                        .map(|a| a.0.to_vec())
+                        .unwrap_or_default();
+                    let el = self.types.array(r).map(|a| a.1).unwrap_or(ERROR);
+                    let mut ix = Vec::new();
+                    for (a, it) in args.iter().zip(&idx) {
+                        let v = self.expr(&a.value, Some(*it));
+                        ix.push(self.coerce(v, self.types.base(*it)));
+                    }
+                    return self.mk(ExKind::Index(bx(callee), ix), el, sp);
+                }
                 match self.call(&fs, args, want, false, sp, &name) {
                     Some((f, a)) => {
                         let r = self.funcs[f as usize].ret.unwrap_or(ERROR);

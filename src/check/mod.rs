@@ -41,7 +41,7 @@ pub enum Entity {
     Package(usize),
 }
 
-#[derive(Default, Debug)]
+#[derive(Default, Debug, Clone)]
 struct Scope {
     names: HashMap<String, Vec<Entity>>,
     uses: Vec<usize>,
@@ -52,7 +52,7 @@ struct Scope {
     package: Option<(usize, bool)>,
 }
 
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct Package {
     pub name: String,
     names: HashMap<String, Vec<Entity>>,
@@ -60,6 +60,7 @@ pub struct Package {
     private: HashMap<String, Vec<Entity>>,
 }
 
+#[derive(Clone)]
 struct FuncCtx {
     func: Option<FuncId>,
     ret: Option<TypeId>,
@@ -70,6 +71,9 @@ struct FuncCtx {
 /// Whether an import name names a builtin the runtime knows.
 pub type KnownBuiltin = fn(&str) -> bool;
 
+/// Cloning a checker snapshots its state, so that the REPL can undo an
+/// entry that does not check.
+#[derive(Clone)]
 pub struct Checker {
     pub types: Types,
     pub funcs: Vec<Subprogram>,
@@ -634,6 +638,40 @@ impl Checker {
     /// Finishes a check: the level-0 statements and the slot count.
     pub fn take_diags(&mut self) -> Vec<Diagnostic> {
         std::mem::take(&mut self.diags)
+    }
+
+    /// Checks one expression in the top-level scope (a REPL entry), with no
+    /// expected type. Errors are left in `diags`.
+    pub fn check_expr(&mut self, e: &ast::Expr) -> Ex {
+        let ex = self.expr(e, None);
+        if self.types.is_universal(ex.ty) {
+            let t = if self.types.is_float(ex.ty) {
+                FLOAT
+            } else {
+                INTEGER
+            };
+            return self.coerce(ex, t);
+        }
+        ex
+    }
+
+    /// Makes an existing entity visible in a package under another name
+    /// (Ada's IO exceptions through `AdaIR` and `Ada.Text_IO`).
+    pub fn export(&mut self, package: &str, name: &str, from_package: &str) {
+        let (Some(to), Some(from)) = (
+            self.packages
+                .iter()
+                .position(|p| p.name.eq_ignore_ascii_case(package)),
+            self.packages
+                .iter()
+                .position(|p| p.name.eq_ignore_ascii_case(from_package)),
+        ) else {
+            return;
+        };
+        let key = name.to_ascii_lowercase();
+        if let Some(es) = self.packages[from].names.get(&key).cloned() {
+            self.packages[to].names.insert(key, es);
+        }
     }
 
     pub fn known_builtin(&self, name: &str) -> bool {

@@ -76,11 +76,11 @@ impl Robot for Simulator {
                 opening: self.object,
                 force,
             };
-        } else if closing && target <= g.opening_min && force_limit.is_some() {
+        } else if closing && target <= g.opening_min {
             // Closed on nothing: the jaws press on each other.
             self.gripper = GripperState {
                 opening: g.opening_min,
-                force: force_limit.unwrap_or(0.0).min(g.force_max),
+                force: force_limit.unwrap_or(g.force_max).min(g.force_max),
             };
         } else {
             self.gripper = GripperState {

@@ -172,6 +172,26 @@ impl Machine {
         }
     }
 
+    /// Evaluates one checked expression at level 0 (a REPL entry).
+    pub fn eval_expr(&mut self, chk: &Checker, e: &Ex) -> Result<Value, Box<Occurrence>> {
+        self.bind_natives(chk);
+        let need = chk.globals as usize;
+        if self.stack.len() < need {
+            self.stack.resize(need, Value::Undef);
+        }
+        self.display[0] = 0;
+        self.calls.clear();
+        let mut run = Run { m: self, c: chk };
+        let r = run.eval(e);
+        run.m.stack.truncate(need);
+        let _ = run.m.out.flush();
+        match r {
+            Ok(v) => Ok(v),
+            Err(Flow::Raise(o)) => Err(o),
+            Err(_) => Ok(Value::Undef),
+        }
+    }
+
     /// Ends the program's output as GNAT does: an unfinished line gets its newline.
     pub fn finish(&mut self) {
         if self.col != 0 {

@@ -33,6 +33,8 @@ pub struct RobotState {
     pub busy_until: f64,
     pub trace: Option<Box<dyn Write>>,
     pub realtime: bool,
+    /// The force the jaws apply when they close on something, N.
+    pub force_setting: f64,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -65,6 +67,7 @@ impl RobotState {
             busy_until: 0.0,
             trace: None,
             realtime: false,
+            force_setting: 0.0,
         }
     }
 }
@@ -265,7 +268,10 @@ fn axes_of(v: &Value) -> Joints {
 }
 
 fn deg5(j: &Joints) -> String {
-    let d: Vec<String> = j.iter().map(|x| format!("{:.2}", x.to_degrees())).collect();
+    let d: Vec<String> = j
+        .iter()
+        .map(|x| format!("{:.2}", x.to_degrees() + 0.0))
+        .collect();
     format!("({})", d.join(", "))
 }
 
@@ -338,21 +344,23 @@ fn plan(
     span: crate::diag::Span,
 ) -> R<f64> {
     let from = st.robot.joints();
-    match MotionProfile::plan(&from, target, st.velocity, st.kin.description(), o.time) {
+    // With `Time`, the motion may use the robot's full speed.
+    let velocity = if o.time.is_some() { 100.0 } else { st.velocity };
+    match MotionProfile::plan(&from, target, velocity, st.kin.description(), o.time) {
         Ok(p) => Ok(p.duration()),
         Err(e) => Err(kin_fail(r, st, service, &e, span)),
     }
 }
 
 /// The duration of a path through support points at the current velocity.
-fn path_duration(st: &RobotState, from: &Joints, points: &[Joints]) -> f64 {
+fn path_duration(st: &RobotState, from: &Joints, points: &[Joints], velocity: f64) -> f64 {
     let desc = st.kin.description();
     let mut t = 0.0;
     let mut prev = *from;
     for p in points {
         let mut seg: f64 = 0.0;
         for (j, spec) in desc.joints().iter().enumerate() {
-            let v = spec.max_speed * st.velocity / 100.0;
+            let v = spec.max_speed * velocity / 100.0;
             if v > 0.0 {
                 seg = seg.max((p[j] - prev[j]).abs() / v);
             }
@@ -389,7 +397,12 @@ fn move_frame(
         Err(e) => return Err(kin_fail(r, st, service, &e, span)),
     };
     let duration = if st.straight {
-        let d = path_duration(st, &from, &points);
+        let d = path_duration(
+            st,
+            &from,
+            &points,
+            if o.time.is_some() { 100.0 } else { st.velocity },
+        );
         match o.time {
             Some(t) if t + 1e-9 < d => {
                 return Err(fail(
@@ -446,6 +459,7 @@ fn init_robot(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Optio
         perform(r, st, "InitRobot", &[zero], d, &o, span)?;
         let g = *st.kin.description().gripper();
         let _ = st.robot.move_gripper(g.opening_max, None);
+        st.force_setting = g.init_force;
         Ok(None)
     })
 }
@@ -519,7 +533,9 @@ fn set_velocity(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Opti
                 st,
                 "SetVelocity",
                 "CONSTRAINT_ERROR",
-                format!("velocity {v:.1} % would never arrive: give 0.1 .. 100.0 %"),
+                format!(
+                    "velocity {v:.1} % would never arrive: give a velocity above 0.0 %, up to 100.0 %"
+                ),
                 span,
             ));
         }
@@ -628,7 +644,20 @@ fn set_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<V
 }
 
 fn tool_value(st: &RobotState) -> Value {
-    let g = st.robot.gripper();
+    let mut g = st.robot.gripper();
+    // Without a sensor there is nothing to read: 0.0. The force is the one
+    // measured while the jaws press, else the force they would apply.
+    let t = &st.tool;
+    g.force = if t.force_min == 0.0 && t.force_max == 0.0 {
+        0.0
+    } else if g.force > 0.0 {
+        g.force
+    } else {
+        st.force_setting
+    };
+    if t.dist_min == 0.0 && t.dist_max == 0.0 {
+        g.opening = 0.0;
+    }
     Value::Rec(Rc::new(vec![
         frame_value(&st.tool.trans),
         Value::Real(st.tool.force_min),
@@ -701,12 +730,9 @@ fn move_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<
             g.opening_min
         };
         let limit = if has_force { Some(force) } else { None };
-        // Distance wins: closing below an object's width squeezes with the
-        // largest force the tool allows.
-        let limit = match (has_dist, limit) {
-            (true, Some(_)) => Some(t.force_max),
-            (_, l) => l,
-        };
+        if has_force {
+            st.force_setting = force;
+        }
         let before = st.robot.gripper();
         match st.robot.move_gripper(target, limit) {
             Ok(g2) => {

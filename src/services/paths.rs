@@ -156,7 +156,12 @@ pub fn move_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
                 }
             }
         }
-        let d = path_duration(st, &start, &all);
+        let d = path_duration(
+            st,
+            &start,
+            &all,
+            if o.time.is_some() { 100.0 } else { st.velocity },
+        );
         let d = match o.time {
             Some(t) if t + 1e-9 < d => {
                 return Err(fail(

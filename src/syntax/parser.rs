@@ -1411,6 +1411,21 @@ pub fn parse(
     (out, diags)
 }
 
+/// Parses a whole entry as one expression (optionally ending in `;`), for
+/// the REPL. `None` if it is not exactly an expression.
+pub fn parse_expr_entry(tokens: &[(Token, Span)], file: FileId, src_len: usize) -> Option<Expr> {
+    let eoi = Span {
+        start: src_len,
+        end: src_len,
+        context: file,
+    };
+    let input = tokens.map(eoi, |(t, s)| (t, s));
+    let p = expr()
+        .then_ignore(just(Token::Semi).or_not())
+        .then_ignore(end());
+    p.parse(input).into_result().ok()
+}
+
 /// True if the error list only says the input ended too early (for the REPL's
 /// continuation prompt).
 pub fn is_unfinished(diags: &[Diagnostic], src_len: usize) -> bool {

@@ -1,0 +1,532 @@
+//! The REPL's session logic, testable without a terminal: one entry at a
+//! time, checked before it runs, against kept state. The terminal front end
+//! (`term.rs`, rustyline) and the piped mode only feed it lines.
+
+pub mod term;
+
+use crate::check::types::{self, TypeId, TypeKind};
+use crate::diag::{self, Diagnostic};
+use crate::interp::Value;
+use crate::kinematics::{RobotDescription, joints_to_deg};
+use crate::services::RobotState;
+use crate::session::Session;
+use std::io::Write;
+
+/// Makes a fresh writer for program output and traces (stdout, or a buffer in tests).
+pub type WriterFactory = Box<dyn Fn() -> Box<dyn Write>>;
+
+/// What an entry did.
+#[derive(Debug, Default, PartialEq)]
+pub struct Reply {
+    /// Messages for the user (values, diagnostics, command output).
+    pub text: String,
+    /// The entry failed (a check error or an unhandled exception).
+    pub failed: bool,
+    /// `:quit`.
+    pub quit: bool,
+}
+
+pub struct Repl {
+    pub session: Session,
+    make_out: WriterFactory,
+    color: bool,
+    robot: String,
+    trace: bool,
+    entries: usize,
+}
+
+const COMMANDS: &[(&str, &str)] = &[
+    (
+        ":help",
+        "list the services by group; `:help NAME` explains one",
+    ),
+    (":load FILE", "check and run a file in this session"),
+    (
+        ":robot [rv-m1|rm-501]",
+        "show or switch the simulated robot (starts it afresh)",
+    ),
+    (":where", "the joints and the tool-centre-point frame"),
+    (":trace on|off", "print every motion"),
+    (":teach", "the teach pendant"),
+    (":reset", "forget everything declared and start again"),
+    (":quit", "leave (Ctrl-D too)"),
+];
+
+/// The services by group, for `:help`.
+const GROUPS: &[(&str, &[&str])] = &[
+    (
+        "start and stop",
+        &["InitRobot", "EndRobot", "CalibrateRobot"],
+    ),
+    (
+        "settings",
+        &[
+            "SetVelocity",
+            "SetMoveMode",
+            "SetInterpolation",
+            "SetRobotConfig",
+            "SetTool",
+            "SetBase",
+        ],
+    ),
+    (
+        "motion",
+        &[
+            "MoveAxesAbsolute",
+            "MoveAxesRelative",
+            "MoveFrameAbsolute",
+            "MoveFrameRelative",
+            "MovePath",
+            "ValidFrame",
+        ],
+    ),
+    ("gripper", &["MoveTool", "PlaceObject"]),
+    (
+        "paths",
+        &[
+            "CreatePath",
+            "DeletePath",
+            "InsertPosition",
+            "DeletePosition",
+            "ValuePosition",
+            "SavePathSystem",
+            "LoadPathSystem",
+        ],
+    ),
+    (
+        "values",
+        &[
+            "ValueAxes",
+            "ValueFrameAbsolute",
+            "ValueFrameRelative",
+            "ValueRobotConfig",
+            "ValueTool",
+            "ValueErrorStatus",
+        ],
+    ),
+    (
+        "frames",
+        &[
+            "Identity", "Trans", "RotX", "RotY", "RotZ", "Inverse", "Deg", "Rad", "Put",
+        ],
+    ),
+    ("teaching", &["TeachBox"]),
+];
+
+impl Repl {
+    pub fn new(make_out: WriterFactory, color: bool) -> Repl {
+        let session = Session::new(make_out());
+        let mut r = Repl {
+            session,
+            make_out,
+            color,
+            robot: "rv-m1".into(),
+            trace: false,
+            entries: 0,
+        };
+        r.install_robot();
+        r.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+        r
+    }
+
+    fn install_robot(&mut self) {
+        if let Ok(desc) = RobotDescription::builtin(&self.robot) {
+            let trace = self.trace.then(|| (self.make_out)());
+            self.session.set_robot(desc, trace, false);
+        }
+    }
+
+    /// Names for completion: keywords, visible names and commands.
+    pub fn completions(&self) -> Vec<String> {
+        let mut v: Vec<String> = crate::syntax::token::Kw::ALL
+            .iter()
+            .map(|(w, _)| w.to_string())
+            .collect();
+        v.extend(
+            self.session
+                .checker
+                .completion_names()
+                .iter()
+                .map(|k| self.session.checker.spelled(k)),
+        );
+        v.extend(
+            COMMANDS
+                .iter()
+                .map(|c| c.0.split(' ').next().unwrap_or("").to_string()),
+        );
+        v.sort();
+        v.dedup();
+        v
+    }
+
+    /// Is this text an unfinished entry (only "unexpected end of input")?
+    pub fn is_unfinished(&self, text: &str) -> bool {
+        term::unfinished(text)
+    }
+
+    fn render(&self, d: &[Diagnostic]) -> String {
+        diag::render(d, &self.session.sources, self.color)
+    }
+
+    /// Checks and runs one entry.
+    pub fn entry(&mut self, text: &str) -> Reply {
+        let trimmed = text.trim();
+        if trimmed.is_empty() {
+            return Reply::default();
+        }
+        if let Some(cmd) = trimmed.strip_prefix(':') {
+            return self.command(cmd);
+        }
+        self.entries += 1;
+        let name = format!("<entry {}>", self.entries);
+        // An expression: print its value.
+        let snapshot = self.session.checker.clone();
+        let id = self.session.sources.add(name.clone(), text);
+        self.session.machine.add_source(id, &name, text);
+        self.session.checker.add_text(id, text);
+        let (tokens, lex_diags) = crate::syntax::lexer::lex(text, id);
+        if lex_diags.is_empty()
+            && let Some(e) = crate::syntax::parser::parse_expr_entry(&tokens, id, text.len())
+        {
+            let ex = self.session.checker.check_expr(&e);
+            let diags = self.session.checker.take_diags();
+            if diags.is_empty() {
+                return match self.session.machine.eval_expr(&self.session.checker, &ex) {
+                    Ok(v) => Reply {
+                        text: format!("{}\n", self.show(&v, ex.ty)),
+                        ..Reply::default()
+                    },
+                    Err(o) => {
+                        let d = self.session.exception_diag(&o);
+                        Reply {
+                            text: self.render(&[d]),
+                            failed: true,
+                            quit: false,
+                        }
+                    }
+                };
+            }
+            self.session.checker = snapshot.clone();
+        }
+        // Declarations and statements; a lone call may leave out its `;`.
+        let owned;
+        let text = if text.trim_end().ends_with(';')
+            || crate::syntax::parser::parse_expr_entry(&tokens, id, text.len()).is_none()
+        {
+            text
+        } else {
+            owned = format!("{};", text.trim_end());
+            &owned
+        };
+        match self.session.check_source(&name, text, true) {
+            Ok((stmts, _)) => {
+                let r = self
+                    .session
+                    .machine
+                    .run(&self.session.checker, &stmts, None);
+                match r {
+                    Ok(()) => Reply::default(),
+                    Err(o) => {
+                        let d = self.session.exception_diag(&o);
+                        Reply {
+                            text: self.render(&[d]),
+                            failed: true,
+                            quit: false,
+                        }
+                    }
+                }
+            }
+            Err(d) => {
+                // Nothing of a failed entry is kept.
+                self.session.checker = snapshot;
+                Reply {
+                    text: self.render(&d),
+                    failed: true,
+                    quit: false,
+                }
+            }
+        }
+    }
+
+    fn command(&mut self, cmd: &str) -> Reply {
+        let mut words = cmd.split_whitespace();
+        let head = words.next().unwrap_or("");
+        let arg = words.next();
+        let ok = |text: String| Reply {
+            text,
+            ..Reply::default()
+        };
+        let fail = |text: String| Reply {
+            text,
+            failed: true,
+            quit: false,
+        };
+        match head {
+            "quit" | "q" | "exit" => Reply {
+                quit: true,
+                ..Reply::default()
+            },
+            "help" | "h" => match arg {
+                None => ok(self.help()),
+                Some(n) => match self.help_on(n) {
+                    Some(t) => ok(t),
+                    None => fail(format!(
+                        "no service or subprogram named `{n}`; `:help` lists them\n"
+                    )),
+                },
+            },
+            "load" => match arg {
+                None => fail(":load needs a file name\n".into()),
+                Some(f) => match std::fs::read_to_string(f) {
+                    Err(e) => fail(format!("cannot read {f}: {e}\n")),
+                    Ok(text) => match self.session.check_source(f, &text, false) {
+                        Err(d) => fail(self.render(&d)),
+                        Ok((stmts, main)) => {
+                            match self
+                                .session
+                                .machine
+                                .run(&self.session.checker, &stmts, main)
+                            {
+                                Ok(()) => ok(format!("loaded {f}\n")),
+                                Err(o) => {
+                                    let d = self.session.exception_diag(&o);
+                                    fail(self.render(&[d]))
+                                }
+                            }
+                        }
+                    },
+                },
+            },
+            "robot" => match arg {
+                None => ok(format!("robot: {}\n", self.robot)),
+                Some(r) => match RobotDescription::builtin(r) {
+                    Ok(_) => {
+                        self.robot = r.to_ascii_lowercase();
+                        self.install_robot();
+                        ok(format!(
+                            "robot: {} (not initialised: call InitRobot)\n",
+                            self.robot
+                        ))
+                    }
+                    Err(e) => fail(format!("{}\n", e.problems.join("; "))),
+                },
+            },
+            "where" => ok(self.where_text()),
+            "trace" => match arg {
+                Some("on") => {
+                    self.trace = true;
+                    self.set_trace();
+                    ok("trace on\n".into())
+                }
+                Some("off") => {
+                    self.trace = false;
+                    self.set_trace();
+                    ok("trace off\n".into())
+                }
+                _ => fail(":trace on or :trace off\n".into()),
+            },
+            "teach" => {
+                fail("the TeachBox screen is not available in this version of adair\n".into())
+            }
+            "reset" => {
+                self.session = Session::new((self.make_out)());
+                self.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+                self.install_robot();
+                ok("reset: everything declared is forgotten\n".into())
+            }
+            other => fail(format!(
+                "unknown command `:{other}`; `:help` lists the commands\n"
+            )),
+        }
+    }
+
+    fn set_trace(&mut self) {
+        let w = self.trace.then(|| (self.make_out)());
+        if let Some(st) = self
+            .session
+            .machine
+            .robot
+            .as_mut()
+            .and_then(|b| b.downcast_mut::<RobotState>())
+        {
+            st.trace = w;
+        }
+    }
+
+    fn help(&self) -> String {
+        let mut s = String::from("AdaIR services and helpers (`:help NAME` for one):\n");
+        for (g, names) in GROUPS {
+            s.push_str(&format!("  {g:<15} {}\n", names.join(", ")));
+        }
+        s.push_str("Commands:\n");
+        for (c, d) in COMMANDS {
+            s.push_str(&format!("  {c:<24} {d}\n"));
+        }
+        s
+    }
+
+    /// Signature, command code and the comment written above the declaration
+    /// in `stdlib/adair.air` (the text lives next to the definition).
+    pub fn help_on(&self, name: &str) -> Option<String> {
+        let c = &self.session.checker;
+        let key = name.to_ascii_lowercase();
+        let funcs: Vec<u32> = (0..c.funcs.len() as u32)
+            .filter(|f| c.funcs[*f as usize].name.eq_ignore_ascii_case(&key))
+            .collect();
+        if funcs.is_empty() {
+            return None;
+        }
+        let mut s = String::new();
+        for f in &funcs {
+            s.push_str(&c.signature(*f));
+            s.push('\n');
+        }
+        if let Some(svc) = crate::services::SERVICES
+            .iter()
+            .find(|x| x.name.eq_ignore_ascii_case(name) && x.code > 0)
+        {
+            s.push_str(&format!("command code {}\n", svc.code));
+        }
+        let doc = stdlib_doc(name);
+        if !doc.is_empty() {
+            s.push_str(&doc);
+        }
+        Some(s)
+    }
+
+    fn where_text(&self) -> String {
+        let Some(st) = self
+            .session
+            .machine
+            .robot
+            .as_ref()
+            .and_then(|b| b.downcast_ref::<RobotState>())
+        else {
+            return "no robot\n".into();
+        };
+        let q = st.robot.read_joints();
+        let mut s = format!(
+            "robot {}{}\n",
+            st.kin.description().name(),
+            if st.initialized {
+                ""
+            } else {
+                " (not initialised)"
+            }
+        );
+        let d = joints_to_deg(&q);
+        for (i, (r, dg)) in q.iter().zip(d).enumerate() {
+            s.push_str(&format!("  J{} = {r:9.4} rad {dg:9.3} deg\n", i + 1));
+        }
+        let f = st.kin.fk_tcp(&q, &st.tool.trans).to_rows();
+        s.push_str("TCP frame:\n");
+        for row in f {
+            s.push_str(&format!(
+                "  {:10.4} {:10.4} {:10.4} {:10.3}\n",
+                row[0], row[1], row[2], row[3]
+            ));
+        }
+        s
+    }
+
+    /// A value, readably: joints in radians and degrees, frames as matrices,
+    /// records by field.
+    pub fn show(&self, v: &Value, t: TypeId) -> String {
+        let ty = &self.session.checker.types;
+        let name = ty.name(t).to_ascii_lowercase();
+        match (v, ty.kind(t)) {
+            (Value::Int(i), TypeKind::Enum(lits)) => {
+                if ty.base(t) == types::CHARACTER {
+                    types::char_image(char::from_u32(*i as u32).unwrap_or('?'))
+                } else {
+                    let lit = lits.get(*i as usize).cloned().unwrap_or_default();
+                    self.session.checker.spelled(&lit.to_ascii_lowercase())
+                }
+            }
+            (Value::Int(i), _) => i.to_string(),
+            (Value::Real(r), _) => format!("{r:?}"),
+            (Value::Arr(a), TypeKind::Array { elem, .. }) => {
+                if ty.base(*elem) == types::CHARACTER {
+                    return format!("{:?}", a.to_string_lossy());
+                }
+                if name == "axesvector" {
+                    let mut s = String::new();
+                    for (k, x) in a.data.iter().enumerate() {
+                        let r = x.real();
+                        s.push_str(&format!(
+                            "J{} = {r:9.4} rad {:9.3} deg\n",
+                            k + 1,
+                            r.to_degrees()
+                        ));
+                    }
+                    s.pop();
+                    return s;
+                }
+                if a.bounds.len() == 2 {
+                    let cols = a.len(1) as usize;
+                    let rows: Vec<String> = a
+                        .data
+                        .chunks(cols.max(1))
+                        .map(|row| {
+                            row.iter()
+                                .map(|x| format!("{:10.4}", x.real()))
+                                .collect::<Vec<_>>()
+                                .join(" ")
+                        })
+                        .collect();
+                    return rows.join("\n");
+                }
+                let items: Vec<String> = a.data.iter().map(|x| self.show(x, *elem)).collect();
+                format!("({})", items.join(", "))
+            }
+            (Value::Rec(r), TypeKind::Record(fields)) => {
+                let mut s = String::new();
+                for (f, x) in fields.iter().zip(r.iter()) {
+                    let shown = self.show(x, f.ty);
+                    if shown.contains('\n') {
+                        s.push_str(&format!("{}:\n  {}\n", f.name, shown.replace('\n', "\n  ")));
+                    } else {
+                        s.push_str(&format!("{} => {shown}\n", f.name));
+                    }
+                }
+                s.pop();
+                s
+            }
+            (Value::Ptr(None), _) => "null".into(),
+            (Value::Ptr(Some(p)), TypeKind::Access(d)) => {
+                format!("access to {}", self.show(&p.borrow(), *d))
+            }
+            (Value::Occ(o), _) => self.session.checker.excs[o.exc as usize].name.clone(),
+            (Value::Undef, _) => "(no value)".into(),
+            _ => format!("{v:?}"),
+        }
+    }
+}
+
+/// The comment lines right above a declaration of `name` in the embedded
+/// AdaIR package.
+fn stdlib_doc(name: &str) -> String {
+    let (_, text) = crate::session::STDLIB
+        .iter()
+        .find(|(n, _)| n.ends_with("adair.air"))
+        .copied()
+        .unwrap_or(("", ""));
+    let lines: Vec<&str> = text.lines().collect();
+    let needle_p = format!("procedure {}", name.to_ascii_lowercase());
+    let needle_f = format!("function {}", name.to_ascii_lowercase());
+    for (i, l) in lines.iter().enumerate() {
+        let low = l.trim().to_ascii_lowercase();
+        let starts = |n: &str| low.starts_with(n) && low[n.len()..].starts_with([' ', '(', ';']);
+        if starts(&needle_p) || starts(&needle_f) {
+            let mut doc = Vec::new();
+            let mut j = i;
+            while j > 0 && lines[j - 1].trim().starts_with("--") {
+                j -= 1;
+                doc.push(lines[j].trim().trim_start_matches("--").trim());
+            }
+            doc.reverse();
+            return doc.iter().map(|d| format!("{d}\n")).collect();
+        }
+    }
+    String::new()
+}

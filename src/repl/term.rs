@@ -1,0 +1,272 @@
+//! The terminal front end of the REPL (rustyline) and its piped mode.
+//! With `session_logic` in `super`, this is the only REPL code that touches
+//! a terminal.
+
+use super::Repl;
+use crate::syntax::lexer::lex;
+use crate::syntax::token::Token;
+use rustyline::completion::{Completer, Pair};
+use rustyline::error::ReadlineError;
+use rustyline::highlight::{CmdKind, Highlighter};
+use rustyline::hint::Hinter;
+use rustyline::validate::{ValidationContext, ValidationResult, Validator};
+use rustyline::{Context, Editor, Helper};
+use std::borrow::Cow;
+use std::collections::HashMap;
+use std::io::{BufRead, Write};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// Completion, hints, highlighting and the multi-line decision.
+pub struct AdaHelper {
+    pub names: Vec<String>,
+    pub signatures: HashMap<String, String>,
+    pub color: bool,
+}
+
+impl AdaHelper {
+    fn refresh(&mut self, repl: &Repl) {
+        self.names = repl.completions();
+        let c = &repl.session.checker;
+        self.signatures.clear();
+        for f in 0..c.funcs.len() as u32 {
+            let key = c.funcs[f as usize].name.to_ascii_lowercase();
+            self.signatures.entry(key).or_insert_with(|| c.signature(f));
+        }
+    }
+}
+
+impl Completer for AdaHelper {
+    type Candidate = Pair;
+    fn complete(
+        &self,
+        line: &str,
+        pos: usize,
+        _ctx: &Context<'_>,
+    ) -> rustyline::Result<(usize, Vec<Pair>)> {
+        let start = line[..pos]
+            .rfind(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':' || c == '.'))
+            .map(|i| i + 1)
+            .unwrap_or(0);
+        let word = &line[start..pos];
+        // After a `.`, complete the part after the last dot.
+        let (start, word) = match word.rfind('.') {
+            Some(i) => (start + i + 1, &word[i + 1..]),
+            None => (start, word),
+        };
+        let low = word.to_ascii_lowercase();
+        let cands = self
+            .names
+            .iter()
+            .filter(|n| n.to_ascii_lowercase().starts_with(&low) && !low.is_empty())
+            .map(|n| Pair {
+                display: n.clone(),
+                replacement: n.clone(),
+            })
+            .collect();
+        Ok((start, cands))
+    }
+}
+
+impl Hinter for AdaHelper {
+    type Hint = String;
+    fn hint(&self, line: &str, pos: usize, _ctx: &Context<'_>) -> Option<String> {
+        if pos < line.len() {
+            return None;
+        }
+        let word: String = line
+            .trim_end()
+            .trim_end_matches('(')
+            .trim_end()
+            .rsplit(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .next()?
+            .to_string();
+        let sig = self.signatures.get(&word.to_ascii_lowercase())?;
+        Some(format!("   -- {sig}"))
+    }
+}
+
+impl Highlighter for AdaHelper {
+    fn highlight<'l>(&self, line: &'l str, _pos: usize) -> Cow<'l, str> {
+        if !self.color {
+            return Cow::Borrowed(line);
+        }
+        let (tokens, _) = lex(line, 0);
+        let mut out = String::new();
+        let mut last = 0;
+        for (t, s) in tokens {
+            if s.start < last || s.end > line.len() {
+                continue;
+            }
+            out.push_str(&line[last..s.start]);
+            let text = &line[s.start..s.end];
+            let color = match t {
+                Token::Kw(_) => Some("1;34"),
+                Token::Str(_) | Token::Char(_) => Some("32"),
+                Token::Int(_) | Token::Real(_) => Some("33"),
+                Token::Error => Some("31"),
+                _ => None,
+            };
+            match color {
+                Some(c) => out.push_str(&format!("\x1b[{c}m{text}\x1b[0m")),
+                None => out.push_str(text),
+            }
+            last = s.end;
+        }
+        out.push_str(&line[last..]);
+        Cow::Owned(out)
+    }
+    fn highlight_hint<'h>(&self, hint: &'h str) -> Cow<'h, str> {
+        if self.color {
+            Cow::Owned(format!("\x1b[2m{hint}\x1b[0m"))
+        } else {
+            Cow::Borrowed(hint)
+        }
+    }
+    fn highlight_char(&self, _line: &str, _pos: usize, _kind: CmdKind) -> bool {
+        self.color
+    }
+}
+
+impl Validator for AdaHelper {
+    fn validate(&self, ctx: &mut ValidationContext) -> rustyline::Result<ValidationResult> {
+        if unfinished(ctx.input()) {
+            Ok(ValidationResult::Incomplete)
+        } else {
+            Ok(ValidationResult::Valid(None))
+        }
+    }
+}
+
+impl Helper for AdaHelper {}
+
+/// Only "unexpected end of input" means an entry goes on.
+pub fn unfinished(text: &str) -> bool {
+    if text.trim_start().starts_with(':') || text.trim().is_empty() {
+        return false;
+    }
+    let (tokens, lexd) = lex(text, 0);
+    if !lexd.is_empty() {
+        return false;
+    }
+    // A complete expression is a finished entry (its value is printed).
+    if crate::syntax::parser::parse_expr_entry(&tokens, 0, text.len()).is_some() {
+        return false;
+    }
+    let (_, diags) = crate::syntax::parser::parse(&tokens, 0, text.len());
+    crate::syntax::parser::is_unfinished(&diags, text.len())
+}
+
+fn history_path() -> Option<std::path::PathBuf> {
+    let base = std::env::var_os("XDG_DATA_HOME")
+        .map(std::path::PathBuf::from)
+        .or_else(|| {
+            std::env::var_os("HOME").map(|h| std::path::PathBuf::from(h).join(".local/share"))
+        })?;
+    let dir = base.join("adair");
+    std::fs::create_dir_all(&dir).ok()?;
+    Some(dir.join("history"))
+}
+
+/// The interactive REPL on a terminal. Returns the exit status.
+pub fn interactive(color: bool) -> i32 {
+    let mut repl = Repl::new(
+        Box::new(|| Box::new(std::io::stdout()) as Box<dyn Write>),
+        color,
+    );
+    let flag = Arc::new(AtomicBool::new(false));
+    {
+        let f = flag.clone();
+        let _ = ctrlc::set_handler(move || f.store(true, Ordering::SeqCst));
+    }
+    repl.session.machine.interrupted = Some(flag.clone());
+    repl.session.machine.input = Box::new(std::io::BufReader::new(std::io::stdin()));
+    let mut editor: Editor<AdaHelper, rustyline::history::DefaultHistory> = match Editor::new() {
+        Ok(e) => e,
+        Err(e) => {
+            let _ = writeln!(
+                std::io::stderr(),
+                "adair: cannot start the line editor: {e}"
+            );
+            return 2;
+        }
+    };
+    let mut helper = AdaHelper {
+        names: Vec::new(),
+        signatures: HashMap::new(),
+        color,
+    };
+    helper.refresh(&repl);
+    editor.set_helper(Some(helper));
+    let history = history_path();
+    if let Some(h) = &history {
+        let _ = editor.load_history(h);
+    }
+    let mut out = std::io::stdout();
+    let _ = writeln!(
+        out,
+        "adair {}: AdaIR on a simulated {}. :help lists the services, :quit leaves.",
+        env!("CARGO_PKG_VERSION"),
+        "RV-M1"
+    );
+    loop {
+        match editor.readline("adair> ") {
+            Ok(line) => {
+                let _ = editor.add_history_entry(line.as_str());
+                flag.store(false, Ordering::SeqCst);
+                let reply = repl.entry(&line);
+                let _ = out.flush();
+                let _ = write!(out, "{}", reply.text);
+                if reply.quit {
+                    break;
+                }
+                if let Some(h) = editor.helper_mut() {
+                    h.refresh(&repl);
+                }
+            }
+            Err(ReadlineError::Interrupted) => continue,
+            Err(ReadlineError::Eof) => break,
+            Err(e) => {
+                let _ = writeln!(std::io::stderr(), "adair: {e}");
+                break;
+            }
+        }
+    }
+    if let Some(h) = &history {
+        let _ = editor.save_history(h);
+    }
+    0
+}
+
+/// The REPL on piped input: plain text, one entry after another. Exit status
+/// 0, or 1 when `strict` and an entry failed.
+pub fn piped(input: impl BufRead, out: &mut dyn Write, strict: bool) -> i32 {
+    let mut repl = Repl::new(
+        Box::new(|| Box::new(std::io::stdout()) as Box<dyn Write>),
+        false,
+    );
+    let mut failed = false;
+    let mut buf = String::new();
+    for line in input.lines() {
+        let Ok(line) = line else { break };
+        buf.push_str(&line);
+        buf.push('\n');
+        if unfinished(&buf) {
+            continue;
+        }
+        let reply = repl.entry(&buf);
+        buf.clear();
+        let _ = std::io::stdout().flush();
+        let _ = write!(out, "{}", reply.text);
+        failed |= reply.failed;
+        if reply.quit {
+            break;
+        }
+    }
+    if !buf.trim().is_empty() {
+        let reply = repl.entry(&buf);
+        let _ = write!(out, "{}", reply.text);
+        failed |= reply.failed;
+    }
+    if failed && strict { 1 } else { 0 }
+}
