@@ -283,9 +283,9 @@ impl Checker {
     ) -> TypeId {
         let base = self.types.base(t);
         let l = self.expr(lo, Some(base));
-        let l = self.coerce(l, base);
+        let l = self.coerce_base(l, base);
         let h = self.expr(hi, Some(base));
-        let h = self.coerce(h, base);
+        let h = self.coerce_base(h, base);
         let st = self.types.add_subtype(name, t);
         self.set_range(st, l, h);
         st
@@ -317,9 +317,9 @@ impl Checker {
                     None => self.common_type(&[a, b], INTEGER),
                 };
                 let l = self.expr(a, Some(t));
-                let l = self.coerce(l, self.types.base(t));
+                let l = self.coerce_base(l, t);
                 let h = self.expr(b, Some(t));
-                let h = self.coerce(h, self.types.base(t));
+                let h = self.coerce_base(h, t);
                 if !self.types.is_discrete(t) && t != ERROR {
                     self.err(
                         Diagnostic::ty(

@@ -34,6 +34,16 @@ impl Checker {
     /// Converts a checked expression to the type `t`: reports a mismatch, fixes
     /// the type of universal operands and adds the run-time checks Ada requires
     /// (range of a constrained scalar subtype, length of a constrained array).
+    /// Converts an operand to the base type of `t` (unconstrained, as Ada's
+    /// `T'Base`): compatibility and universal types, but no range check.
+    pub(super) fn coerce_base(&mut self, ex: Ex, t: TypeId) -> Ex {
+        let base = self.types.base(t);
+        let saved = self.types.list[base as usize].range.take();
+        let r = self.coerce(ex, base);
+        self.types.list[base as usize].range = saved;
+        r
+    }
+
     pub(super) fn coerce(&mut self, mut ex: Ex, t: TypeId) -> Ex {
         if ex.ty == ERROR || t == ERROR {
             return ex;
@@ -910,15 +920,15 @@ impl Checker {
                     }
                 };
                 let s = self.expr(subject, Some(t));
-                let s = self.coerce(s, self.types.base(t));
+                let s = self.coerce_base(s, t);
                 let mut ranges = Vec::new();
                 for c in choices {
                     match c {
                         Choice::Range(l, h) => {
                             let l = self.expr(l, Some(t));
-                            let l = self.coerce(l, self.types.base(t));
+                            let l = self.coerce_base(l, t);
                             let h = self.expr(h, Some(t));
-                            let h = self.coerce(h, self.types.base(t));
+                            let h = self.coerce_base(h, t);
                             ranges.push((l, h));
                         }
                         Choice::Expr(x) => {
@@ -939,7 +949,7 @@ impl Checker {
                                 ));
                             } else {
                                 let v = self.expr(x, Some(t));
-                                let v = self.coerce(v, self.types.base(t));
+                                let v = self.coerce_base(v, t);
                                 ranges.push((v.clone(), v));
                             }
                         }
@@ -1277,7 +1287,7 @@ impl Checker {
                     let mut ix = Vec::new();
                     for (a, it) in args.iter().zip(&idx) {
                         let v = self.expr(&a.value, Some(*it));
-                        ix.push(self.coerce(v, self.types.base(*it)));
+                        ix.push(self.coerce_base(v, *it));
                     }
                     return self.mk(ExKind::Index(bx(callee), ix), el, sp);
                 }
@@ -1327,9 +1337,9 @@ impl Checker {
                         return self.err_ex(sp);
                     };
                     let l = self.expr(l, Some(idx[0]));
-                    let l = self.coerce(l, self.types.base(idx[0]));
+                    let l = self.coerce_base(l, idx[0]);
                     let h = self.expr(h, Some(idx[0]));
-                    let h = self.coerce(h, self.types.base(idx[0]));
+                    let h = self.coerce_base(h, idx[0]);
                     let t = self.unconstrained_of(pe.ty);
                     return self.mk(ExKind::Slice(bx(pe), bx(l), bx(h)), t, sp);
                 }
@@ -1351,7 +1361,7 @@ impl Checker {
                         self.err(Diagnostic::syntax(n.span, "array indices cannot be named"));
                     }
                     let v = self.expr(&a.value, Some(*it));
-                    ix.push(self.coerce(v, self.types.base(*it)));
+                    ix.push(self.coerce_base(v, *it));
                 }
                 self.mk(ExKind::Index(bx(pe), ix), el, sp)
             }
@@ -1532,8 +1542,8 @@ impl Checker {
                 } else {
                     t
                 };
-                let x = self.coerce(x, self.types.base(t));
-                let y = self.coerce(y, self.types.base(t));
+                let x = self.coerce_base(x, t);
+                let y = self.coerce_base(y, t);
                 if matches!(op, BinOp::Eq | BinOp::Ne) {
                     return self.mk(ExKind::Eq(op == BinOp::Ne, bx(x), bx(y)), BOOLEAN, sp);
                 }
@@ -1753,7 +1763,7 @@ impl Checker {
         let base = self.types.base(t);
         if op == BinOp::Pow {
             let x = self.expr(a, Some(t));
-            let x = self.coerce(x, base);
+            let x = self.coerce_base(x, base);
             let y = self.expr(b, Some(INTEGER));
             let y = self.coerce(
                 y,
@@ -1770,9 +1780,9 @@ impl Checker {
             };
         }
         let x = self.expr(a, Some(t));
-        let x = self.coerce(x, base);
+        let x = self.coerce_base(x, base);
         let y = self.expr(b, Some(t));
-        let y = self.coerce(y, base);
+        let y = self.coerce_base(y, base);
         if self.types.is_float(t) {
             let fop = match op {
                 BinOp::Add => FloatOp::Add,
@@ -1891,16 +1901,16 @@ impl Checker {
                             }
                         } else {
                             let v = self.expr(x, Some(t));
-                            let v = self.coerce(v, self.types.base(t));
+                            let v = self.coerce_base(v, t);
                             let s = self.static_value(&v);
                             (s.clone(), s, x.span)
                         }
                     }
                     Choice::Range(l, h) => {
                         let l = self.expr(l, Some(t));
-                        let l = self.coerce(l, self.types.base(t));
+                        let l = self.coerce_base(l, t);
                         let h = self.expr(h, Some(t));
-                        let h = self.coerce(h, self.types.base(t));
+                        let h = self.coerce_base(h, t);
                         let sp2 = Span {
                             start: l.span.start,
                             end: h.span.end,
@@ -2123,15 +2133,15 @@ impl Checker {
                             ));
                         } else {
                             let i = self.expr(x, Some(idx[0]));
-                            let i = self.coerce(i, self.types.base(idx[0]));
+                            let i = self.coerce_base(i, idx[0]);
                             ranges.push((i.clone(), i));
                         }
                     }
                     Choice::Range(l, h) => {
                         let l = self.expr(l, Some(idx[0]));
-                        let l = self.coerce(l, self.types.base(idx[0]));
+                        let l = self.coerce_base(l, idx[0]);
                         let h = self.expr(h, Some(idx[0]));
-                        let h = self.coerce(h, self.types.base(idx[0]));
+                        let h = self.coerce_base(h, idx[0]);
                         ranges.push((l, h));
                     }
                 }

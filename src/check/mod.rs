@@ -364,7 +364,11 @@ impl Checker {
         let mut best: Option<(usize, String)> = None;
         for n in self.visible_names() {
             let d = edit_distance(key, &n);
-            if d <= 2.max(key.len() / 4) && d > 0 && best.as_ref().is_none_or(|b| d < b.0) {
+            if key.len() > 2
+                && d <= 1.max(key.len() / 3)
+                && d > 0
+                && best.as_ref().is_none_or(|b| d < b.0)
+            {
                 best = Some((d, n));
             }
         }

@@ -194,10 +194,7 @@ impl Checker {
                         } else {
                             t
                         };
-                        let (lo, hi) = (
-                            self.coerce(lo, self.types.base(t)),
-                            self.coerce(hi, self.types.base(t)),
-                        );
+                        let (lo, hi) = (self.coerce_base(lo, t), self.coerce_base(hi, t));
                         self.push_scope();
                         let v = self.new_slot();
                         self.declare(

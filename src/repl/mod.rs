@@ -126,7 +126,15 @@ impl Repl {
         };
         r.install_robot();
         r.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+        r.script_uses();
         r
+    }
+
+    /// Entries are script mode: the standard packages and AdaIR are visible.
+    fn script_uses(&mut self) {
+        for p in crate::session::SCRIPT_USES {
+            self.session.checker.use_everywhere(p);
+        }
     }
 
     fn install_robot(&mut self) {
@@ -190,6 +198,21 @@ impl Repl {
         {
             let ex = self.session.checker.check_expr(&e);
             let diags = self.session.checker.take_diags();
+            // An expression that cannot be a procedure call: its errors are the ones to show.
+            let callable = matches!(
+                e.kind,
+                crate::syntax::ast::ExprKind::Name(_)
+                    | crate::syntax::ast::ExprKind::Select(..)
+                    | crate::syntax::ast::ExprKind::Apply(..)
+            );
+            if !diags.is_empty() && !callable {
+                self.session.checker = snapshot;
+                return Reply {
+                    text: self.render(&diags),
+                    failed: true,
+                    quit: false,
+                };
+            }
             if diags.is_empty() {
                 return match self.session.machine.eval_expr(&self.session.checker, &ex) {
                     Ok(v) => Reply {
@@ -332,6 +355,7 @@ impl Repl {
                 self.session = Session::new((self.make_out)());
                 self.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
                 self.install_robot();
+                self.script_uses();
                 ok("reset: everything declared is forgotten\n".into())
             }
             other => fail(format!(

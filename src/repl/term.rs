@@ -205,9 +205,8 @@ pub fn interactive(color: bool) -> i32 {
     let mut out = std::io::stdout();
     let _ = writeln!(
         out,
-        "adair {}: AdaIR on a simulated {}. :help lists the services, :quit leaves.",
-        env!("CARGO_PKG_VERSION"),
-        "RV-M1"
+        "adair {}: AdaIR on a simulated RV-M1. :help lists the services, :quit leaves.",
+        env!("CARGO_PKG_VERSION")
     );
     loop {
         match editor.readline("adair> ") {
@@ -241,10 +240,23 @@ pub fn interactive(color: bool) -> i32 {
 /// The REPL on piped input: plain text, one entry after another. Exit status
 /// 0, or 1 when `strict` and an entry failed.
 pub fn piped(input: impl BufRead, out: &mut dyn Write, strict: bool) -> i32 {
-    let mut repl = Repl::new(
+    piped_with(
+        input,
         Box::new(|| Box::new(std::io::stdout()) as Box<dyn Write>),
-        false,
-    );
+        out,
+        strict,
+    )
+}
+
+/// [`piped`] with the program's output going to writers from `make_out`
+/// (transcript tests put both into one buffer).
+pub fn piped_with(
+    input: impl BufRead,
+    make_out: super::WriterFactory,
+    out: &mut dyn Write,
+    strict: bool,
+) -> i32 {
+    let mut repl = Repl::new(make_out, false);
     let mut failed = false;
     let mut buf = String::new();
     for line in input.lines() {

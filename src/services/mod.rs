@@ -645,8 +645,9 @@ fn set_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<V
 
 fn tool_value(st: &RobotState) -> Value {
     let mut g = st.robot.gripper();
-    // Without a sensor there is nothing to read: 0.0. The force is the one
-    // measured while the jaws press, else the force they would apply.
+    // Without a force sensor the force reads 0.0; with one, it is the force
+    // measured while the jaws press, else the force they would apply. The
+    // simulator always knows the opening.
     let t = &st.tool;
     g.force = if t.force_min == 0.0 && t.force_max == 0.0 {
         0.0
@@ -655,9 +656,7 @@ fn tool_value(st: &RobotState) -> Value {
     } else {
         st.force_setting
     };
-    if t.dist_min == 0.0 && t.dist_max == 0.0 {
-        g.opening = 0.0;
-    }
+
     Value::Rec(Rc::new(vec![
         frame_value(&st.tool.trans),
         Value::Real(st.tool.force_min),
@@ -898,9 +897,12 @@ fn value_error_status(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> 
 fn value_error_status_f(
     r: &mut Run,
     _a: &mut [Value],
-    _span: crate::diag::Span,
+    span: crate::diag::Span,
 ) -> R<Option<Value>> {
-    with_state(r, |_, st| Ok(Some(Value::Int(st.error_status))))
+    with_state(r, |r, st| {
+        require_init(r, st, "ValueErrorStatus", span)?;
+        Ok(Some(Value::Int(st.error_status)))
+    })
 }
 
 fn teach_box(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {

@@ -1429,12 +1429,13 @@ pub fn parse_expr_entry(tokens: &[(Token, Span)], file: FileId, src_len: usize) 
 /// True if the error list only says the input ended too early (for the REPL's
 /// continuation prompt).
 pub fn is_unfinished(diags: &[Diagnostic], src_len: usize) -> bool {
-    !diags.is_empty()
-        && diags.iter().all(|d| {
-            d.phase == crate::diag::Phase::Syntax
-                && d.span.start >= src_len
-                && d.label == "end of input"
-        })
+    // The input ran out inside a construct; other errors it caused on the
+    // way (after recovery) do not make it finished.
+    diags.iter().any(|d| {
+        d.phase == crate::diag::Phase::Syntax
+            && d.span.start >= src_len
+            && d.label == "end of input"
+    })
 }
 
 fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnostic {
