@@ -175,6 +175,9 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 None
             };
             s.set_robot(desc, trace, robot.realtime);
+            if std::io::stdin().is_terminal() && std::io::stdout().is_terminal() {
+                s.install_pendant(Box::new(adair::repl::teach::TermPendant::new()));
+            }
             let outcome = s.run_source(&file.to_string_lossy(), &text);
             match &outcome {
                 Outcome::Ok => {}

@@ -97,6 +97,18 @@ impl Session {
         self.machine.robot = Some(Box::new(st));
     }
 
+    /// Lets `TeachBox` open the screen teach pendant (only on a terminal).
+    pub fn install_pendant(&mut self, pendant: Box<dyn crate::services::Pendant>) {
+        if let Some(st) = self
+            .machine
+            .robot
+            .as_mut()
+            .and_then(|b| b.downcast_mut::<crate::services::RobotState>())
+        {
+            st.pendant = Some(pendant);
+        }
+    }
+
     /// Lexes, parses and checks one source. `script` forces script mode (the
     /// REPL); otherwise a file with top-level statements is a script.
     pub fn check_source(

@@ -411,7 +411,7 @@ impl Run<'_> {
         if let Some(flag) = &self.m.interrupted
             && flag.swap(false, std::sync::atomic::Ordering::SeqCst)
         {
-            return Err(self.raise(check::PROGRAM_ERROR, "interrupted", span));
+            return Err(self.raise(check::PROGRAM_ERROR, "interrupted (Ctrl-C)", span));
         }
         Ok(())
     }

@@ -2,6 +2,7 @@
 //! time, checked before it runs, against kept state. The terminal front end
 //! (`term.rs`, rustyline) and the piped mode only feed it lines.
 
+pub mod teach;
 pub mod term;
 
 use crate::check::types::{self, TypeId, TypeKind};
@@ -33,6 +34,7 @@ pub struct Repl {
     robot: String,
     trace: bool,
     entries: usize,
+    terminal: bool,
 }
 
 const COMMANDS: &[(&str, &str)] = &[
@@ -123,6 +125,7 @@ impl Repl {
             robot: "rv-m1".into(),
             trace: false,
             entries: 0,
+            terminal: false,
         };
         r.install_robot();
         r.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
@@ -141,7 +144,18 @@ impl Repl {
         if let Ok(desc) = RobotDescription::builtin(&self.robot) {
             let trace = self.trace.then(|| (self.make_out)());
             self.session.set_robot(desc, trace, false);
+            if self.terminal {
+                self.session
+                    .install_pendant(Box::new(teach::TermPendant::new()));
+            }
         }
+    }
+
+    /// On a terminal, `TeachBox` and `:teach` open the screen teach pendant.
+    pub fn use_terminal(&mut self) {
+        self.terminal = true;
+        self.session
+            .install_pendant(Box::new(teach::TermPendant::new()));
     }
 
     /// Names for completion: keywords, visible names and commands.

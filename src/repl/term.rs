@@ -175,11 +175,8 @@ pub fn interactive(color: bool) -> i32 {
         color,
     );
     let flag = Arc::new(AtomicBool::new(false));
-    {
-        let f = flag.clone();
-        let _ = ctrlc::set_handler(move || f.store(true, Ordering::SeqCst));
-    }
     repl.session.machine.interrupted = Some(flag.clone());
+    repl.use_terminal();
     repl.session.machine.input = Box::new(std::io::BufReader::new(std::io::stdin()));
     let mut editor: Editor<AdaHelper, rustyline::history::DefaultHistory> = match Editor::new() {
         Ok(e) => e,
@@ -191,6 +188,12 @@ pub fn interactive(color: bool) -> i32 {
             return 2;
         }
     };
+    // After the editor: rustyline installs its own SIGINT handler when it
+    // opens the terminal; while an entry runs, Ctrl-C must reach ours.
+    {
+        let f = flag.clone();
+        let _ = ctrlc::set_handler(move || f.store(true, Ordering::SeqCst));
+    }
     let mut helper = AdaHelper {
         names: Vec::new(),
         signatures: HashMap::new(),
@@ -214,6 +217,11 @@ pub fn interactive(color: bool) -> i32 {
                 let _ = editor.add_history_entry(line.as_str());
                 flag.store(false, Ordering::SeqCst);
                 let reply = repl.entry(&line);
+                // End an unfinished output line, or the prompt would overwrite it.
+                if repl.session.machine.col != 0 {
+                    repl.session.machine.write_str("\n");
+                }
+                let _ = repl.session.machine.out.flush();
                 let _ = out.flush();
                 let _ = write!(out, "{}", reply.text);
                 if reply.quit {

@@ -35,6 +35,21 @@ pub struct RobotState {
     pub realtime: bool,
     /// The force the jaws apply when they close on something, N.
     pub force_setting: f64,
+    /// The screen teach pendant, when a terminal is there (installed by the CLI).
+    pub pendant: Option<Box<dyn Pendant>>,
+}
+
+/// The screen teach pendant behind the `TeachBox` service. The terminal
+/// code lives in `repl::teach`; the services only call this trait.
+pub trait Pendant {
+    /// Shows the teach box until the user leaves it; jogs move `st.robot`.
+    fn teach(
+        &mut self,
+        st: &mut RobotState,
+        text: &str,
+        refresh: bool,
+        clear: bool,
+    ) -> Result<(), String>;
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -68,6 +83,7 @@ impl RobotState {
             trace: None,
             realtime: false,
             force_setting: 0.0,
+            pendant: None,
         }
     }
 }
@@ -907,29 +923,38 @@ fn value_error_status_f(
 
 fn teach_box(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let text = a[0].text();
+    let (refresh, clear) = (a[1].int() != 0, a[2].int() != 0);
     with_state(r, |r, st| {
         require_init(r, st, "TeachBox", span)?;
         if text.chars().count() > 60 || text.chars().any(|c| c.is_control()) {
+            let msg = match text.chars().position(|c| c.is_control()) {
+                Some(i) => format!(
+                    "the text has a control character at position {} (none allowed)",
+                    i + 1
+                ),
+                None => format!(
+                    "the text has {} characters (at most 60)",
+                    text.chars().count()
+                ),
+            };
+            return Err(fail(r, st, "TeachBox", "UserInfoInvalid", msg, span));
+        }
+        let Some(mut p) = st.pendant.take() else {
             return Err(fail(
                 r,
                 st,
                 "TeachBox",
-                "UserInfoInvalid",
-                format!(
-                    "the text has {} characters (at most 60, no control characters)",
-                    text.chars().count()
-                ),
+                "CommandNotSupported",
+                "the TeachBox needs an interactive terminal (run the program from a terminal, or use the REPL's :teach)".into(),
                 span,
             ));
+        };
+        let result = p.teach(st, &text, refresh, clear);
+        st.pendant = Some(p);
+        match result {
+            Ok(()) => Ok(None),
+            Err(msg) => Err(fail(r, st, "TeachBox", "CommandNotSupported", msg, span)),
         }
-        Err(fail(
-            r,
-            st,
-            "TeachBox",
-            "CommandNotSupported",
-            "the TeachBox needs an interactive terminal (run the program from a terminal, or use the REPL's :teach)".into(),
-            span,
-        ))
     })
 }
 

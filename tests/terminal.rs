@@ -1,0 +1,157 @@
+//! Terminal tests: the real binary under tmux, driven by keystrokes.
+//! tmux is required (`.ci/run` installs it); without it these tests fail.
+
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+struct Tmux {
+    name: String,
+}
+
+impl Tmux {
+    fn start(name: &str, cmd: &str) -> Tmux {
+        let _ = Command::new("tmux")
+            .args(["kill-session", "-t", name])
+            .output();
+        let ok = Command::new("tmux")
+            .args([
+                "new-session",
+                "-d",
+                "-s",
+                name,
+                "-x",
+                "150",
+                "-y",
+                "45",
+                cmd,
+            ])
+            .status()
+            .expect("tmux must be installed (apt-get install -y tmux)");
+        assert!(ok.success(), "tmux new-session failed");
+        Tmux {
+            name: name.to_string(),
+        }
+    }
+    fn keys(&self, keys: &[&str]) {
+        for k in keys {
+            // Key names are sent as keys, everything else literally (a `;`
+            // would otherwise end the tmux command).
+            let special = matches!(*k, "Enter" | "Tab" | "Escape" | "C-c" | "C-d");
+            let mut args = vec!["send-keys", "-t", &self.name];
+            if !special {
+                args.push("-l");
+            }
+            // tmux reads an argument that ends in `;` as a command separator: `\;` is the character.
+            let escaped = match k.strip_suffix(';') {
+                Some(rest) if !special => format!("{rest}\\;"),
+                _ => k.to_string(),
+            };
+            args.push(&escaped);
+            let ok = Command::new("tmux").args(&args).status().expect("tmux");
+            assert!(ok.success());
+            std::thread::sleep(Duration::from_millis(60));
+        }
+    }
+    fn screen(&self) -> String {
+        let out = Command::new("tmux")
+            .args(["capture-pane", "-p", "-t", &self.name])
+            .output()
+            .expect("tmux");
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    }
+    /// Waits until the screen shows `text`, and returns the screen.
+    fn wait_for(&self, text: &str) -> String {
+        let start = Instant::now();
+        loop {
+            let s = self.screen();
+            if s.contains(text) {
+                return s;
+            }
+            assert!(
+                start.elapsed() < Duration::from_secs(20),
+                "timed out waiting for {text:?}; screen:\n{s}"
+            );
+            std::thread::sleep(Duration::from_millis(100));
+        }
+    }
+}
+
+impl Drop for Tmux {
+    fn drop(&mut self) {
+        let _ = Command::new("tmux")
+            .args(["kill-session", "-t", &self.name])
+            .output();
+    }
+}
+
+fn script(name: &str, text: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("adair-term-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let p = dir.join(name);
+    std::fs::write(&p, text).expect("script");
+    p.to_string_lossy().into_owned()
+}
+
+#[test]
+fn teachbox_jogs_refuses_at_limits_stores_and_returns() {
+    let prog = script(
+        "teach.air",
+        "InitRobot;\nTeachBox (\"Jog J1, then store\");\nPut_Line (\"after: J1 =\" & Float'Image (Deg (ValueAxes (1))));\ndeclare\n   F : Frame;\nbegin\n   ValuePosition (1, 1, F);\n   Put_Line (\"stored:\" & Float'Image (F (3, 4)));\nend;\n",
+    );
+    let t = Tmux::start(
+        "adair-teach",
+        &format!("{} run {prog}; sleep 60", env!("CARGO_BIN_EXE_adair")),
+    );
+    t.wait_for("AdaIR teach box");
+    t.keys(&["q", "q"]);
+    let s = t.wait_for("J1    10.000 deg");
+    assert!(s.contains("side view") && s.contains("top view"), "{s}");
+    // J3 is at its lower limit 0 deg: a jog down is refused and nothing moves.
+    t.keys(&["d"]);
+    let s = t.wait_for("J3 at its limit");
+    assert!(s.contains("J3     0.000 deg"), "{s}");
+    t.keys(&["p"]);
+    t.wait_for("stored as position 1 of path 1");
+    t.keys(&["x"]);
+    let s = t.wait_for("stored:");
+    assert!(s.contains("after: J1 = 1.00000E+01"), "{s}");
+    assert!(s.contains("stored: 8.89000E+02"), "{s}");
+}
+
+#[test]
+fn repl_multiline_completion_and_values() {
+    let t = Tmux::start(
+        "adair-repl",
+        &format!("{} repl; sleep 60", env!("CARGO_BIN_EXE_adair")),
+    );
+    t.wait_for("adair>");
+    // A multi-line entry continues until the parser sees it complete.
+    t.keys(&["for I in 1 .. 3 loop", "Enter"]);
+    t.keys(&["Put (Integer'Image (I));", "Enter"]);
+    t.keys(&["end loop;", "Enter"]);
+    t.wait_for(" 1 2 3");
+    // Tab completes a service name.
+    t.keys(&["InitRob", "Tab"]);
+    t.keys(&["Enter"]);
+    t.keys(&["ValueFrameAbsol", "Tab", "Enter"]);
+    let s = t.wait_for("889.0000");
+    assert!(s.contains("1.0000"), "{s}");
+    t.keys(&[":quit", "Enter"]);
+}
+
+#[test]
+fn repl_ctrl_c_stops_a_running_entry_and_keeps_state() {
+    let t = Tmux::start(
+        "adair-ctrlc",
+        &format!("{} repl; sleep 60", env!("CARGO_BIN_EXE_adair")),
+    );
+    t.wait_for("adair>");
+    t.keys(&["Kept : Integer := 7;", "Enter"]);
+    t.keys(&["loop null; end loop;", "Enter"]);
+    std::thread::sleep(Duration::from_millis(500));
+    t.keys(&["C-c"]);
+    t.wait_for("interrupted");
+    t.keys(&["Kept * 6", "Enter"]);
+    t.wait_for("42");
+    t.keys(&["C-d"]);
+}
