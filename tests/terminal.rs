@@ -155,3 +155,39 @@ fn repl_ctrl_c_stops_a_running_entry_and_keeps_state() {
     t.wait_for("42");
     t.keys(&["C-d"]);
 }
+
+#[test]
+fn repl_ctrl_c_stops_a_long_motion_where_it_is() {
+    let t = Tmux::start(
+        "adair-motion",
+        &format!("{} repl; sleep 60", env!("CARGO_BIN_EXE_adair")),
+    );
+    t.wait_for("adair>");
+    t.keys(&["InitRobot;", "Enter"]);
+    t.keys(&[
+        "MoveAxesAbsolute ((2.0, 0.0, 0.0, 0.0, 0.0), Time => 20.0, RealTime => True);",
+        "Enter",
+    ]);
+    std::thread::sleep(Duration::from_millis(1500));
+    t.keys(&["C-c"]);
+    t.wait_for("the robot stopped there");
+    // The robot is where the motion was stopped: J1 between 0 and 2 rad.
+    t.keys(&["J : Float := ValueAxes (1);", "Enter"]);
+    t.keys(&["J > 0.0 and J < 1.0", "Enter"]);
+    let s = t.wait_for("True");
+    assert!(!s.contains("False"), "{s}");
+}
+
+#[test]
+fn repl_completes_record_fields() {
+    let t = Tmux::start(
+        "adair-fields",
+        &format!("{} repl; sleep 60", env!("CARGO_BIN_EXE_adair")),
+    );
+    t.wait_for("adair>");
+    t.keys(&["InitRobot;", "Enter"]);
+    t.keys(&["T : ToolDescriptor := ValueTool;", "Enter"]);
+    t.keys(&["T.ForceMa", "Tab", "Enter"]);
+    t.wait_for("T.ForceMax");
+    t.wait_for("30.0");
+}

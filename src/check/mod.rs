@@ -352,6 +352,20 @@ impl Checker {
         v
     }
 
+    /// The components of the record a name denotes (a variable of a record
+    /// type, or of an access to one), for completion after `.`.
+    pub fn record_fields_of(&self, name: &str) -> Vec<String> {
+        let ty = match self.lookup(&name.to_ascii_lowercase()).first() {
+            Some(Entity::Var { ty, .. }) => *ty,
+            _ => return Vec::new(),
+        };
+        let ty = self.types.designated(ty).unwrap_or(ty);
+        self.types
+            .fields(ty)
+            .map(|f| f.iter().map(|x| x.name.clone()).collect())
+            .unwrap_or_default()
+    }
+
     /// Names in scope, for REPL completion.
     pub fn completion_names(&self) -> Vec<String> {
         let mut v = self.visible_names();

@@ -172,6 +172,27 @@ impl Machine {
         }
     }
 
+    /// Paces `seconds` to the wall clock in short slices, stopping early
+    /// when the user interrupts; returns the fraction done (1.0 = all).
+    pub fn pace(&mut self, seconds: f64) -> f64 {
+        if seconds <= 0.0 {
+            return 1.0;
+        }
+        let slice: f64 = 0.05;
+        let mut done = 0.0;
+        while done < seconds {
+            if let Some(flag) = &self.interrupted
+                && flag.swap(false, std::sync::atomic::Ordering::SeqCst)
+            {
+                return done / seconds;
+            }
+            let step = slice.min(seconds - done);
+            self.clock.pace(step);
+            done += step;
+        }
+        1.0
+    }
+
     /// Evaluates one checked expression at level 0 (a REPL entry).
     pub fn eval_expr(&mut self, chk: &Checker, e: &Ex) -> Result<Value, Box<Occurrence>> {
         self.bind_natives(chk);

@@ -26,6 +26,8 @@ pub struct TermPendant {
     cartesian: bool,
     step: usize,
     path: i64,
+    /// Position to store at (0 = after the last).
+    position: usize,
     message: String,
 }
 
@@ -35,6 +37,7 @@ impl TermPendant {
             cartesian: false,
             step: 2,
             path: 1,
+            position: 0,
             message: String::new(),
         }
     }
@@ -95,8 +98,14 @@ impl TermPendant {
     fn store(&mut self, st: &mut RobotState) {
         let f = st.kin.fk_tcp(&st.robot.joints(), &st.tool.trans).to_rows();
         let path = st.paths.entry(self.path).or_default();
-        path.push(f);
-        self.message = format!("stored as position {} of path {}", path.len(), self.path);
+        // As InsertPosition: before the chosen position, or after the last.
+        let at = if self.position == 0 {
+            path.len()
+        } else {
+            (self.position - 1).min(path.len())
+        };
+        path.insert(at, f);
+        self.message = format!("stored as position {} of path {}", at + 1, self.path);
     }
 
     /// Handles a key; true to leave.
@@ -117,6 +126,8 @@ impl TermPendant {
             KeyCode::Char('<') => st.velocity = (st.velocity - 10.0).max(10.0),
             KeyCode::Char(']') => self.path = (self.path + 1).min(65000),
             KeyCode::Char('[') => self.path = (self.path - 1).max(1),
+            KeyCode::Char('}') => self.position = (self.position + 1).min(65000),
+            KeyCode::Char('{') => self.position = self.position.saturating_sub(1),
             KeyCode::Char('p') => self.store(st),
             KeyCode::Char('o') | KeyCode::Char('c') => {
                 let g = *st.kin.description().gripper();
@@ -205,9 +216,14 @@ impl TermPendant {
         }
         lines.push(Line::from(""));
         lines.push(Line::from(format!(
-            "path {} ({} positions)   [ ] choose path, p store pose",
+            "path {} ({} positions), store at {}   [ ] path  {{ }} position  p store",
             self.path,
-            st.paths.get(&self.path).map(Vec::len).unwrap_or(0)
+            st.paths.get(&self.path).map(Vec::len).unwrap_or(0),
+            if self.position == 0 {
+                "the end".to_string()
+            } else {
+                format!("position {}", self.position)
+            }
         )));
         lines.push(Line::from(
             "m joint/Cartesian  + - step  < > speed  x or Esc leave",

@@ -20,6 +20,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// Completion, hints, highlighting and the multi-line decision.
 pub struct AdaHelper {
     pub names: Vec<String>,
+    /// Record components by variable name (lower case), for `Var.` completion.
+    pub fields: HashMap<String, Vec<String>>,
     pub signatures: HashMap<String, String>,
     pub color: bool,
 }
@@ -28,6 +30,13 @@ impl AdaHelper {
     fn refresh(&mut self, repl: &Repl) {
         self.names = repl.completions();
         let c = &repl.session.checker;
+        self.fields.clear();
+        for n in c.completion_names() {
+            let f = c.record_fields_of(&n);
+            if !f.is_empty() {
+                self.fields.insert(n, f);
+            }
+        }
         self.signatures.clear();
         for f in 0..c.funcs.len() as u32 {
             let key = c.funcs[f as usize].name.to_ascii_lowercase();
@@ -49,16 +58,29 @@ impl Completer for AdaHelper {
             .map(|i| i + 1)
             .unwrap_or(0);
         let word = &line[start..pos];
-        // After a `.`, complete the part after the last dot.
-        let (start, word) = match word.rfind('.') {
-            Some(i) => (start + i + 1, &word[i + 1..]),
-            None => (start, word),
+        // After `Var.`, complete the record's components; after another
+        // `.`, the part after the last dot.
+        let (start, word, pool) = match word.rfind('.') {
+            Some(i) => {
+                let prefix = word[..i]
+                    .rsplit('.')
+                    .next()
+                    .unwrap_or("")
+                    .to_ascii_lowercase();
+                match self.fields.get(&prefix) {
+                    Some(f) => (start + i + 1, &word[i + 1..], f),
+                    None => (start + i + 1, &word[i + 1..], &self.names),
+                }
+            }
+            None => (start, word, &self.names),
         };
         let low = word.to_ascii_lowercase();
-        let cands = self
-            .names
+        let from_fields = !std::ptr::eq(pool, &self.names);
+        let cands = pool
             .iter()
-            .filter(|n| n.to_ascii_lowercase().starts_with(&low) && !low.is_empty())
+            .filter(|n| {
+                n.to_ascii_lowercase().starts_with(&low) && (from_fields || !low.is_empty())
+            })
             .map(|n| Pair {
                 display: n.clone(),
                 replacement: n.clone(),
@@ -196,6 +218,7 @@ pub fn interactive(color: bool) -> i32 {
     }
     let mut helper = AdaHelper {
         names: Vec::new(),
+        fields: HashMap::new(),
         signatures: HashMap::new(),
         color,
     };

@@ -318,6 +318,27 @@ fn perform(
     span: crate::diag::Span,
 ) -> R<()> {
     let before = st.robot.joints();
+    // Paced to the wall clock: the user can stop the motion (Ctrl-C); the
+    // robot then stays where it had got to.
+    if (o.realtime || st.realtime) && !o.control {
+        let done = r.m.pace(duration);
+        if done < 1.0 {
+            let reached = interpolate(&before, points, done);
+            let _ = st.robot.move_joints(&[reached], duration * done);
+            r.m.clock.sleep(duration * done);
+            return Err(fail(
+                r,
+                st,
+                service,
+                "PROGRAM_ERROR",
+                format!(
+                    "interrupted (Ctrl-C) after {:.3} of {duration:.3} s; the robot stopped there",
+                    duration * done
+                ),
+                span,
+            ));
+        }
+    }
     if let Err(e) = st.robot.move_joints(points, duration) {
         return Err(fail(
             r,
@@ -334,9 +355,6 @@ fn perform(
     } else {
         r.m.clock.sleep(duration);
     }
-    if o.realtime || st.realtime {
-        r.m.clock.pace(duration);
-    }
     if let Some(t) = &mut st.trace {
         let after = st.robot.joints();
         let _ = writeln!(
@@ -348,6 +366,24 @@ fn perform(
         );
     }
     Ok(())
+}
+
+/// The joints a fraction of the way along a motion through `points`.
+fn interpolate(from: &Joints, points: &[Joints], fraction: f64) -> Joints {
+    let n = points.len();
+    if n == 0 {
+        return *from;
+    }
+    let x = fraction.clamp(0.0, 1.0) * n as f64;
+    let i = (x.floor() as usize).min(n - 1);
+    let a = if i == 0 { *from } else { points[i - 1] };
+    let b = points[i];
+    let t = x - i as f64;
+    let mut q = a;
+    for j in 0..q.len() {
+        q[j] = a[j] + (b[j] - a[j]) * t;
+    }
+    q
 }
 
 /// Plans a point-to-point joint motion to `target`.
