@@ -254,16 +254,7 @@ impl Checker {
                 match pes.first() {
                     Some(Entity::Type(t)) => vec![*t],
                     Some(Entity::Func(_)) => {
-                        let fs: Vec<FuncId> = pes
-                            .iter()
-                            .filter_map(|e| {
-                                if let Entity::Func(f) = e {
-                                    Some(*f)
-                                } else {
-                                    None
-                                }
-                            })
-                            .collect();
+                        let fs: Vec<FuncId> = funcs_of(&pes);
                         let mut out = Vec::new();
                         for f in fs {
                             if let Some(r) = self.funcs[f as usize].ret
@@ -1121,16 +1112,7 @@ impl Checker {
                         return self.mk(ExKind::Int(*pos), *t, sp);
                     }
                 }
-                let fs: Vec<FuncId> = es
-                    .iter()
-                    .filter_map(|e| {
-                        if let Entity::Func(f) = e {
-                            Some(*f)
-                        } else {
-                            None
-                        }
-                    })
-                    .collect();
+                let fs: Vec<FuncId> = funcs_of(es);
                 if fs.is_empty() {
                     if let Some(Entity::EnumLit(t, pos)) = es.first() {
                         return self.mk(ExKind::Int(*pos), *t, sp);
@@ -1245,16 +1227,7 @@ impl Checker {
                 self.conversion(t, &args[0].value, sp)
             }
             Some(Entity::Func(_)) => {
-                let fs: Vec<FuncId> = pes
-                    .iter()
-                    .filter_map(|e| {
-                        if let Entity::Func(f) = e {
-                            Some(*f)
-                        } else {
-                            None
-                        }
-                    })
-                    .collect();
+                let fs: Vec<FuncId> = funcs_of(&pes);
                 let name = crate::syntax::parser::expr_text(p);
                 // `ValueAxes (2)`: a parameterless function whose array result is indexed.
                 if !fs.iter().any(|f| self.args_fit(*f, args))
@@ -2558,4 +2531,17 @@ impl Checker {
 /// The slice form `A (L .. H)`, as the parser encodes it.
 fn is_range_arg(e: &ast::Expr) -> bool {
     matches!(&e.kind, ExprKind::Aggregate(items) if items.len() == 1 && matches!(items[0].choices.as_slice(), [Choice::Range(..)]) && matches!(items[0].value.kind, ExprKind::Error))
+}
+
+/// The subprograms among the entities a name denotes.
+fn funcs_of(es: &[Entity]) -> Vec<FuncId> {
+    es.iter()
+        .filter_map(|e| {
+            if let Entity::Func(f) = e {
+                Some(*f)
+            } else {
+                None
+            }
+        })
+        .collect()
 }

@@ -551,15 +551,8 @@ impl Run<'_> {
                 return Ok(());
             }
             // Hot path: `A (I, J) := V` without building a path.
-            ExKind::Index(p, idx) if idx.len() <= 4 && matches!(p.kind, ExKind::Var(_)) => {
-                let mut ix = [0i64; 4];
-                for (k, x) in idx.iter().enumerate() {
-                    ix[k] = self.eval_int(x)?;
-                }
-                let ExKind::Var(v) = p.kind else {
-                    unreachable!()
-                };
-                let slot = self.slot(v);
+            ExKind::Index(p, idx) if fast(p, idx) => {
+                let (slot, ix) = self.fast_index(p, idx)?;
                 let Value::Arr(a) = &mut self.m.stack[slot] else {
                     return Err(self.check_failed("access check failed", target.span));
                 };
@@ -619,6 +612,19 @@ impl Run<'_> {
 
     // ---- expressions ----
 
+    /// The stack slot and index values of `Var (I, J, ...)` (see [`fast`]).
+    fn fast_index(&mut self, p: &Ex, idx: &[Ex]) -> R<(usize, [i64; 4])> {
+        let mut ix = [0i64; 4];
+        for (k, x) in idx.iter().take(4).enumerate() {
+            ix[k] = self.eval_int(x)?;
+        }
+        let slot = match p.kind {
+            ExKind::Var(v) => self.slot(v),
+            _ => 0,
+        };
+        Ok((slot, ix))
+    }
+
     /// Evaluates a discrete expression without building a `Value`.
     fn eval_int(&mut self, e: &Ex) -> R<i64> {
         match &e.kind {
@@ -641,15 +647,9 @@ impl Run<'_> {
         match &e.kind {
             ExKind::Real(v) => Ok(*v),
             ExKind::Var(v) => Ok(self.m.stack[self.slot(*v)].real()),
-            ExKind::Index(p, idx) if idx.len() <= 4 && matches!(p.kind, ExKind::Var(_)) => {
-                let mut ix = [0i64; 4];
-                for (k, x) in idx.iter().enumerate() {
-                    ix[k] = self.eval_int(x)?;
-                }
-                let ExKind::Var(v) = p.kind else {
-                    unreachable!()
-                };
-                match &self.m.stack[self.slot(v)] {
+            ExKind::Index(p, idx) if fast(p, idx) => {
+                let (slot, ix) = self.fast_index(p, idx)?;
+                match &self.m.stack[slot] {
                     Value::Arr(a) => match a.offset(&ix[..idx.len()]) {
                         Some(o) => Ok(a.data[o].real()),
                         None => Err(self.check_failed("index check failed", e.span)),
@@ -677,16 +677,9 @@ impl Run<'_> {
             ExKind::Str(s) => Value::str(s),
             ExKind::Null => Value::Ptr(None),
             ExKind::Var(v) => self.m.stack[self.slot(*v)].clone(),
-            ExKind::Index(p, idx) if idx.len() <= 4 && matches!(p.kind, ExKind::Var(_)) => {
+            ExKind::Index(p, idx) if fast(p, idx) => {
                 // Hot path: index a variable in place, without touching its refcount.
-                let mut ix = [0i64; 4];
-                for (k, x) in idx.iter().enumerate() {
-                    ix[k] = self.eval_int(x)?;
-                }
-                let ExKind::Var(v) = p.kind else {
-                    unreachable!()
-                };
-                let slot = self.slot(v);
+                let (slot, ix) = self.fast_index(p, idx)?;
                 match &self.m.stack[slot] {
                     Value::Arr(a) => match a.offset(&ix[..idx.len()]) {
                         Some(o) => a.data[o].clone(),
@@ -1387,6 +1380,11 @@ impl Run<'_> {
             AttrOp::Rounding => Value::Real(a0.real().round()),
         })
     }
+}
+
+/// Whether `P (I, ...)` indexes a variable directly (the hot path).
+fn fast(p: &Ex, idx: &[Ex]) -> bool {
+    idx.len() <= 4 && matches!(p.kind, ExKind::Var(_))
 }
 
 /// Writes `val` at the end of a path of steps into `root` (copy-on-write).
