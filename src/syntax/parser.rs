@@ -193,18 +193,52 @@ fn paren_part<'t, I: TokIn<'t>>(
     let value = expr
         .clone()
         .or(just(Token::Box).map_with(|_, e| mk(ExprKind::Error, e.span())));
-    let assoc = choice_p
-        .clone()
-        .separated_by(just(Token::Bar))
-        .at_least(1)
-        .collect::<Vec<_>>()
-        .then_ignore(just(Token::Arrow))
-        .or_not()
-        .then(value)
-        .map_with(|(choices, value), e| Assoc {
-            choices: choices.unwrap_or_default(),
-            value,
-            span: e.span(),
+    // The first part of an association is parsed once (as a full expression,
+    // or `others`), and only then is it decided whether it was a choice:
+    // parsing it both ways would take time exponential in the nesting depth.
+    let head = kw!(Others)
+        .map_with(|_, e| Err::<Expr, Span>(e.span()))
+        .or(expr.clone().map(Ok));
+    let assoc = head
+        .then(just(Token::DotDot).ignore_then(simple.clone()).or_not())
+        .then(
+            just(Token::Bar)
+                .ignore_then(choice_p.clone())
+                .repeated()
+                .collect::<Vec<_>>(),
+        )
+        .then(just(Token::Arrow).ignore_then(value).or_not())
+        .validate(|(((head, hi), more), value), e, emitter| {
+            let span: Span = e.span();
+            let first = match (head, hi) {
+                (Err(s), _) => Choice::Others(s),
+                (Ok(a), Some(b)) => Choice::Range(a, b),
+                (Ok(a), None) => Choice::Expr(a),
+            };
+            match (value, first) {
+                (Some(v), first) => {
+                    let mut choices = vec![first];
+                    choices.extend(more);
+                    Assoc {
+                        choices,
+                        value: v,
+                        span,
+                    }
+                }
+                (None, Choice::Expr(a)) if more.is_empty() => Assoc {
+                    choices: Vec::new(),
+                    value: a,
+                    span,
+                },
+                (None, _) => {
+                    emitter.emit(Rich::custom(span, "a choice needs `=>` and a value"));
+                    Assoc {
+                        choices: Vec::new(),
+                        value: mk(ExprKind::Error, span),
+                        span,
+                    }
+                }
+            }
         });
     let if_expr = kw!(If)
         .ignore_then(expr.clone())
