@@ -154,16 +154,14 @@ pub enum ExKind {
     /// `T'First`/`T'Last` of a scalar subtype: evaluated from the type table.
     TypeFirst(TypeId),
     TypeLast(TypeId),
-    /// Membership in ranges / subtypes (each choice: low, high).
+    /// Membership in ranges, subtypes and values (each choice: low, high;
+    /// a value is the range V .. V); the flag is `not in`.
     InRanges(Box<Ex>, Vec<(Ex, Ex)>, bool),
-    /// Membership test against values (for `X in A | B`).
     ArrayAgg(ArrayAgg),
     RecordAgg(Vec<Ex>),
     If(Vec<(Ex, Ex)>, Box<Ex>),
     Case(Box<Ex>, Vec<(Vec<(i64, i64)>, Ex)>, Option<Box<Ex>>),
     Alloc(Option<Box<Ex>>, TypeId),
-    /// Calls a builtin (predefined library or robot service) by index.
-    Builtin(u32, Vec<Arg>),
     /// The default initial value of a type (records with defaults, arrays of them).
     Default(TypeId),
     /// Reads the current exception occurrence of a handler.
@@ -183,9 +181,6 @@ pub enum ArrayAggKind {
     Positional(Vec<Ex>, Option<Box<Ex>>),
     /// Named choices (ranges of indices) and an optional `others`.
     Named(Vec<(Vec<(Ex, Ex)>, Ex)>, Option<Box<Ex>>),
-    /// A multi-dimensional aggregate: rows, each itself an aggregate of the
-    /// remaining dimensions (positional rows only, or named rows).
-    Rows(Vec<Ex>),
 }
 
 #[derive(Clone, Debug)]
@@ -209,7 +204,6 @@ pub enum StmtKind {
     Init(Var, Ex),
     Assign(Ex, Ex),
     Call(FuncId, Vec<Arg>),
-    Builtin(u32, Vec<Arg>),
     If(Vec<(Ex, Vec<Stmt>)>, Vec<Stmt>),
     Case(Ex, CaseArms, Option<Vec<Stmt>>),
     Loop {
@@ -235,8 +229,6 @@ pub enum StmtKind {
     Raise(ExcId, Option<Ex>),
     Reraise,
     Delay(Ex),
-    /// A type whose constraints are evaluated at elaboration (dynamic bounds).
-    ElabType(TypeId),
 }
 
 /// The alternatives of a `case`: static choice ranges and statements.

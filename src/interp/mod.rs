@@ -296,7 +296,7 @@ impl Run<'_> {
 
     fn exec(&mut self, s: &Stmt) -> R<()> {
         match &s.kind {
-            StmtKind::Null | StmtKind::ElabType(_) => Ok(()),
+            StmtKind::Null => Ok(()),
             StmtKind::Init(v, e) => {
                 let val = self.eval(e)?;
                 let i = self.slot(*v);
@@ -311,7 +311,6 @@ impl Run<'_> {
                 self.call(*f, args, s.span)?;
                 Ok(())
             }
-            StmtKind::Builtin(..) => Ok(()),
             StmtKind::If(arms, els) => {
                 for (c, body) in arms {
                     if self.eval_int(c)? != 0 {
@@ -904,7 +903,6 @@ impl Run<'_> {
                 };
                 Value::Ptr(Some(Rc::new(RefCell::new(v))))
             }
-            ExKind::Builtin(..) => Value::Undef,
             ExKind::Default(t) => self.default_value(*t)?,
             ExKind::Error => {
                 return Err(self.raise(check::PROGRAM_ERROR, "erroneous expression", e.span));
@@ -1226,15 +1224,6 @@ impl Run<'_> {
                     }
                 }
                 self.rows_to_array(out, (lo, hi), fixed, span)
-            }
-            ArrayAggKind::Rows(rows) => {
-                let mut vals = Vec::new();
-                for r in rows {
-                    vals.push(self.eval(r)?);
-                }
-                let lo = index_first();
-                let n = vals.len() as i64;
-                self.rows_to_array(vals, (lo, lo + n - 1), fixed, span)
             }
         }
     }
