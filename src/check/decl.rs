@@ -611,33 +611,16 @@ impl Checker {
             }
         }
         // A body completes an earlier declaration with the same profile.
-        let existing: Vec<FuncId> = self
+        let mut existing: Vec<FuncId> = self
             .scopes
             .last()
             .and_then(|s| s.names.get(&key))
-            .map(|es| {
-                es.iter()
-                    .filter_map(|e| {
-                        if let Entity::Func(f) = e {
-                            Some(*f)
-                        } else {
-                            None
-                        }
-                    })
-                    .collect()
-            })
+            .map(|es| super::expr::funcs_of(es))
             .unwrap_or_default();
-        let mut existing = existing;
         if let Some((p, true)) = self.scopes.last().and_then(|s| s.package)
             && let Some(es) = self.packages[p].names.get(&key)
         {
-            existing.extend(es.iter().filter_map(|e| {
-                if let Entity::Func(f) = e {
-                    Some(*f)
-                } else {
-                    None
-                }
-            }));
+            existing.extend(super::expr::funcs_of(es));
         }
         for f in existing {
             let sub = &self.funcs[f as usize];

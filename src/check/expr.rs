@@ -670,28 +670,17 @@ impl Checker {
                         if !self.types.compatible(actual_ty, p.ty)
                             || self.types.is_universal(actual_ty)
                         {
-                            let ex2 = self.coerce(ex.clone(), p.ty);
-                            let _ = ex2;
+                            // Only for its diagnostic: the actual stays a variable.
+                            let _ = self.coerce(ex.clone(), p.ty);
                         }
                         let back_check = (self.types.is_scalar(actual_ty)
                             && actual_ty != p.ty
                             && self.types.get(actual_ty).range.is_some()
                             && actual_ty != INTEGER)
                             .then_some(actual_ty);
-                        let value = if p.mode == ast::Mode::InOut
-                            && self.types.is_scalar(p.ty)
-                            && self.types.get(p.ty).range.is_some()
-                            && p.ty != actual_ty
-                            && p.ty != INTEGER
-                        {
-                            // Copy-in of an `in out` value is checked against the formal's subtype.
-                            ex
-                        } else {
-                            ex
-                        };
                         out.push(Arg {
                             mode: p.mode,
-                            value,
+                            value: ex,
                             back_check,
                         });
                     }
@@ -2534,7 +2523,7 @@ fn is_range_arg(e: &ast::Expr) -> bool {
 }
 
 /// The subprograms among the entities a name denotes.
-fn funcs_of(es: &[Entity]) -> Vec<FuncId> {
+pub(super) fn funcs_of(es: &[Entity]) -> Vec<FuncId> {
     es.iter()
         .filter_map(|e| {
             if let Entity::Func(f) = e {

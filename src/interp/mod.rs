@@ -139,14 +139,7 @@ impl Machine {
         stmts: &[Stmt],
         main: Option<FuncId>,
     ) -> Result<(), Box<Occurrence>> {
-        self.bind_natives(chk);
-        let need = chk.globals as usize;
-        if self.stack.len() < need {
-            self.stack.resize(need, Value::Undef);
-        }
-        self.display[0] = 0;
-        self.depth = 0;
-        self.calls.clear();
+        let need = self.prepare(chk);
         let mut run = Run { m: self, c: chk };
         let r = (|| -> R<()> {
             run.exec_all(stmts)?;
@@ -193,15 +186,23 @@ impl Machine {
         1.0
     }
 
-    /// Evaluates one checked expression at level 0 (a REPL entry).
-    pub fn eval_expr(&mut self, chk: &Checker, e: &Ex) -> Result<Value, Box<Occurrence>> {
+    /// Makes ready for a run at level 0: natives bound, the level-0 slots
+    /// there (kept between runs), no frames. Returns the level-0 slot count.
+    fn prepare(&mut self, chk: &Checker) -> usize {
         self.bind_natives(chk);
         let need = chk.globals as usize;
         if self.stack.len() < need {
             self.stack.resize(need, Value::Undef);
         }
         self.display[0] = 0;
+        self.depth = 0;
         self.calls.clear();
+        need
+    }
+
+    /// Evaluates one checked expression at level 0 (a REPL entry).
+    pub fn eval_expr(&mut self, chk: &Checker, e: &Ex) -> Result<Value, Box<Occurrence>> {
+        let need = self.prepare(chk);
         let mut run = Run { m: self, c: chk };
         let r = run.eval(e);
         run.m.stack.truncate(need);

@@ -186,6 +186,16 @@ impl Repl {
         term::unfinished(text)
     }
 
+    /// The reply for an entry that an exception left.
+    fn raised(&self, o: &crate::interp::Occurrence) -> Reply {
+        let d = self.session.exception_diag(o);
+        Reply {
+            text: self.render(&[d]),
+            failed: true,
+            quit: false,
+        }
+    }
+
     fn render(&self, d: &[Diagnostic]) -> String {
         diag::render(d, &self.session.sources, self.color)
     }
@@ -207,9 +217,13 @@ impl Repl {
         self.session.machine.add_source(id, &name, text);
         self.session.checker.add_text(id, text);
         let (tokens, lex_diags) = crate::syntax::lexer::lex(text, id);
-        if lex_diags.is_empty()
-            && let Some(e) = crate::syntax::parser::parse_expr_entry(&tokens, id, text.len())
-        {
+        let expr = if lex_diags.is_empty() {
+            crate::syntax::parser::parse_expr_entry(&tokens, id, text.len())
+        } else {
+            None
+        };
+        let is_expr = expr.is_some();
+        if let Some(e) = expr {
             let ex = self.session.checker.check_expr(&e);
             let diags = self.session.checker.take_diags();
             // An expression that cannot be a procedure call: its errors are the ones to show.
@@ -233,23 +247,14 @@ impl Repl {
                         text: format!("{}\n", self.show(&v, ex.ty)),
                         ..Reply::default()
                     },
-                    Err(o) => {
-                        let d = self.session.exception_diag(&o);
-                        Reply {
-                            text: self.render(&[d]),
-                            failed: true,
-                            quit: false,
-                        }
-                    }
+                    Err(o) => self.raised(&o),
                 };
             }
             self.session.checker = snapshot.clone();
         }
         // Declarations and statements; a lone call may leave out its `;`.
         let owned;
-        let text = if text.trim_end().ends_with(';')
-            || crate::syntax::parser::parse_expr_entry(&tokens, id, text.len()).is_none()
-        {
+        let text = if text.trim_end().ends_with(';') || !is_expr {
             text
         } else {
             owned = format!("{};", text.trim_end());
@@ -263,14 +268,7 @@ impl Repl {
                     .run(&self.session.checker, &stmts, None);
                 match r {
                     Ok(()) => Reply::default(),
-                    Err(o) => {
-                        let d = self.session.exception_diag(&o);
-                        Reply {
-                            text: self.render(&[d]),
-                            failed: true,
-                            quit: false,
-                        }
-                    }
+                    Err(o) => self.raised(&o),
                 }
             }
             Err(d) => {
@@ -325,10 +323,7 @@ impl Repl {
                                 .run(&self.session.checker, &stmts, main)
                             {
                                 Ok(()) => ok(format!("loaded {f}\n")),
-                                Err(o) => {
-                                    let d = self.session.exception_diag(&o);
-                                    fail(self.render(&[d]))
-                                }
+                                Err(o) => self.raised(&o),
                             }
                         }
                     },

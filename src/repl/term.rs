@@ -1,6 +1,6 @@
 //! The terminal front end of the REPL (rustyline) and its piped mode.
-//! With `session_logic` in `super`, this is the only REPL code that touches
-//! a terminal.
+//! With `teach.rs`, this is the only REPL code that touches a terminal;
+//! the session logic in `super` needs none.
 
 use super::Repl;
 use crate::syntax::lexer::lex;
