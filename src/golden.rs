@@ -58,34 +58,57 @@ pub fn run_case(path: &Path) -> String {
         Ok(t) => t,
         Err(e) => return format!("-- stderr --\nerror: cannot read {name}: {e}\n-- exit: 2\n"),
     };
+    let (robot, trace) = directives(&text);
+    let r = run_text(&name, &text, &robot, trace);
+    let mut out = r.output;
+    if !r.diagnostics.is_empty() {
+        out.push_str("-- stderr --\n");
+        out.push_str(&r.diagnostics);
+    }
+    if r.code != 0 {
+        out.push_str(&format!("-- exit: {}\n", r.code));
+    }
+    out
+}
+
+/// What a run printed: the program's output (with the motion trace, if asked
+/// for, interleaved), the diagnostics without colour, and the exit status.
+pub struct RunText {
+    pub output: String,
+    pub diagnostics: String,
+    pub code: i32,
+}
+
+/// Runs `text` as the script `name` on the simulated `robot`, with no input.
+pub fn run_text(name: &str, text: &str, robot: &str, trace: bool) -> RunText {
     let buf = SharedBuf::default();
     let mut s = Session::new(Box::new(buf.clone()));
     s.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
-    let (robot, trace) = directives(&text);
-    match crate::kinematics::RobotDescription::builtin(&robot) {
+    match crate::kinematics::RobotDescription::builtin(robot) {
         Ok(desc) => s.set_robot(
             desc,
             trace.then(|| Box::new(buf.clone()) as Box<dyn Write>),
             false,
         ),
-        Err(e) => return format!("-- stderr --\nerror: {e:?}\n-- exit: 2\n"),
+        Err(e) => {
+            return RunText {
+                output: String::new(),
+                diagnostics: format!("error: {e:?}\n"),
+                code: 2,
+            };
+        }
     }
-    let outcome = s.run_source(&name, &text);
-    let mut out = buf.take();
-    let stderr = match &outcome {
+    let outcome = s.run_source(name, text);
+    let diagnostics = match &outcome {
         Outcome::Ok => String::new(),
         Outcome::CheckFailed(d) => crate::diag::render(d, &s.sources, false),
         Outcome::Raised(d) => crate::diag::render(std::slice::from_ref(d), &s.sources, false),
     };
-    if !stderr.is_empty() {
-        out.push_str("-- stderr --\n");
-        out.push_str(&stderr);
+    RunText {
+        output: buf.take(),
+        diagnostics,
+        code: outcome.exit_code(),
     }
-    let code = outcome.exit_code();
-    if code != 0 {
-        out.push_str(&format!("-- exit: {code}\n"));
-    }
-    out
 }
 
 /// The expected-output file of a script.
