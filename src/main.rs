@@ -192,9 +192,11 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
         Some(Command::Check { files }) => {
             let mut worst = 0;
             for f in &files {
-                let text = match read(f) {
-                    Ok(t) => t,
-                    Err(_) => return 2,
+                // A file that cannot be read is one problem among the others:
+                // report it and check the rest.
+                let Ok(text) = read(f) else {
+                    worst = 2;
+                    continue;
                 };
                 let mut s = Session::new(Box::new(std::io::sink()));
                 if let Err(d) = s.check_source(&f.to_string_lossy(), &text, false) {

@@ -1,0 +1,52 @@
+//! The command line as a user meets it: the real binary, its exit status and
+//! what it prints.
+
+use std::process::Command;
+
+fn adair(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_adair"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("run adair");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn temp_file(name: &str, text: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("adair-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let p = dir.join(name);
+    std::fs::write(&p, text).expect("write");
+    p.to_string_lossy().into_owned()
+}
+
+#[test]
+fn check_goes_on_past_a_missing_file_and_reports_every_problem() {
+    let bad = temp_file("bad_type.air", "X : Integer := True;\n");
+    let good = temp_file("good.air", "Put_Line (\"hi\");\n");
+    let (code, out, err) = adair(&["check", "no/such/file.air", &bad, &good]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty(), "check prints nothing on stdout: {out}");
+    assert!(err.contains("no/such/file.air"), "{err}");
+    assert!(err.contains("bad_type.air:1:"), "the second file is checked too: {err}");
+}
+
+#[test]
+fn check_of_good_files_exits_0_silently() {
+    let good = temp_file("good2.air", "Put_Line (\"hi\");\n");
+    let (code, out, err) = adair(&["check", &good, "examples/square.air"]);
+    assert_eq!((code, out.as_str(), err.as_str()), (0, "", ""));
+}
+
+#[test]
+fn run_of_a_missing_file_is_one_line_and_exit_2() {
+    let (code, _, err) = adair(&["run", "no/such/file.air"]);
+    assert_eq!(code, 2);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("no/such/file.air"), "{err}");
+}
