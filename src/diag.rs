@@ -28,19 +28,8 @@ pub enum Phase {
     Type,
     Unsupported,
     Runtime,
-}
-
-impl Phase {
-    fn title(self) -> &'static str {
-        match self {
-            Phase::Lexical => "lexical error",
-            Phase::Syntax => "syntax error",
-            Phase::Name => "name error",
-            Phase::Type => "type error",
-            Phase::Unsupported => "not supported by AdaIR",
-            Phase::Runtime => "unhandled exception",
-        }
-    }
+    /// Not an error: the program still runs (unless `--strict`).
+    Warning,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -127,6 +116,19 @@ impl Diagnostic {
     pub fn is_static(&self) -> bool {
         self.phase != Phase::Runtime
     }
+
+    pub fn is_warning(&self) -> bool {
+        self.phase == Phase::Warning
+    }
+
+    /// `error` or `warning`, and the message as the first line shows it.
+    fn severity_and_message(&self) -> (&'static str, String) {
+        match self.phase {
+            Phase::Warning => ("warning", self.message.clone()),
+            Phase::Runtime => ("error", format!("unhandled exception: {}", self.message)),
+            _ => ("error", self.message.clone()),
+        }
+    }
 }
 
 /// All source texts of one run, indexed by [`FileId`].
@@ -197,7 +199,7 @@ fn clamp(sources: &Sources, s: Span) -> (FileId, std::ops::Range<usize>) {
 /// Renders diagnostics as ariadne reports, in colour only when asked.
 pub fn render(diags: &[Diagnostic], sources: &Sources, color: bool) -> String {
     use ariadne::{Color, Config, IndexType, Label, Report, ReportKind};
-    let mut out = Vec::new();
+    let mut out = String::new();
     let mut cache = Cache(
         sources,
         sources
@@ -209,20 +211,14 @@ pub fn render(diags: &[Diagnostic], sources: &Sources, color: bool) -> String {
     for d in diags {
         let primary = clamp(sources, d.span);
         let (line, col) = sources.line_col(d.span.context, d.span.start);
-        let mut report = Report::build(ReportKind::Error, primary.clone())
-            .with_config(
-                Config::default()
-                    .with_color(color)
-                    .with_index_type(IndexType::Byte),
-            )
-            .with_message(format!(
-                "{}: {} ({}:{}:{})",
-                d.phase.title(),
-                d.message,
-                sources.name(d.span.context),
-                line,
-                col
-            ));
+        // The first line is `FILE:LINE:COL: error: message`, the form editors
+        // and grep understand; ariadne's snippet follows.
+        let (severity, message) = d.severity_and_message();
+        let mut report = Report::build(ReportKind::Error, primary.clone()).with_config(
+            Config::default()
+                .with_color(color)
+                .with_index_type(IndexType::Byte),
+        );
         let mut label = Label::new(primary).with_order(0);
         if !d.label.is_empty() {
             label = label.with_message(&d.label);
@@ -243,23 +239,35 @@ pub fn render(diags: &[Diagnostic], sources: &Sources, color: bool) -> String {
         if let Some(h) = &d.hint {
             report.set_help(h);
         }
-        let _ = report.finish().write(&mut cache, &mut out);
+        // The first line is `FILE:LINE:COL: error: message`, the form editors
+        // and grep understand; it replaces ariadne's header, and the snippet
+        // follows.
+        let head = format!("{}:{line}:{col}: ", sources.name(d.span.context));
+        let (on, off) = match (color, d.is_warning()) {
+            (false, _) => ("", ""),
+            (true, false) => ("\x1b[1;31m", "\x1b[0m"),
+            (true, true) => ("\x1b[1;33m", "\x1b[0m"),
+        };
+        let _ = writeln!(out, "{head}{on}{severity}:{off} {message}");
+        let mut body = Vec::new();
+        let _ = report.finish().write(&mut cache, &mut body);
+        let body = String::from_utf8_lossy(&body);
+        out.push_str(body.split_once('\n').map_or("", |(_, rest)| rest));
     }
-    String::from_utf8_lossy(&out).into_owned()
+    out
 }
 
-/// A one-line form of a diagnostic (`file:line:col: message`), for logs and tests.
+/// The first line of a diagnostic (`file:line:col: error: message`), for logs and tests.
 pub fn one_line(d: &Diagnostic, sources: &Sources) -> String {
     let (line, col) = sources.line_col(d.span.context, d.span.start);
+    let (severity, message) = d.severity_and_message();
     let mut s = String::new();
     let _ = write!(
         s,
-        "{}:{}:{}: {}: {}",
+        "{}:{}:{}: {severity}: {message}",
         sources.name(d.span.context),
         line,
         col,
-        d.phase.title(),
-        d.message
     );
     s
 }

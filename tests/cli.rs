@@ -33,7 +33,10 @@ fn check_goes_on_past_a_missing_file_and_reports_every_problem() {
     assert_eq!(code, 2, "{err}");
     assert!(out.is_empty(), "check prints nothing on stdout: {out}");
     assert!(err.contains("no/such/file.air"), "{err}");
-    assert!(err.contains("bad_type.air:1:"), "the second file is checked too: {err}");
+    assert!(
+        err.contains("bad_type.air:1:"),
+        "the second file is checked too: {err}"
+    );
 }
 
 #[test]
@@ -49,4 +52,16 @@ fn run_of_a_missing_file_is_one_line_and_exit_2() {
     assert_eq!(code, 2);
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("no/such/file.air"), "{err}");
+}
+
+#[test]
+fn a_diagnostic_starts_with_file_line_col_error() {
+    let bad = temp_file("typo.air", "Put_Line (\"a\");\nPut_Lin (\"b\");\n");
+    let (code, _, err) = adair(&["run", &bad]);
+    assert_eq!(code, 2);
+    let first = err.lines().next().unwrap_or("");
+    assert!(
+        first.starts_with(&format!("{bad}:2:1: error: ")),
+        "first line: {first}"
+    );
 }

@@ -124,8 +124,8 @@ fn trial(path: &Path, work: &Path, mode: Mode) -> Result<(), Failed> {
                     rec_path.display()
                 )
             })?;
-            let recorded = parse_recording(&text)
-                .map_err(|e| format!("{}: {e}", rec_path.display()))?;
+            let recorded =
+                parse_recording(&text).map_err(|e| format!("{}: {e}", rec_path.display()))?;
             if mode == Mode::Verify {
                 let live = gnat_output(path, work).map_err(Failed::from)?;
                 compare("recording (-) against live GNAT (+)", &recorded, &live)?;

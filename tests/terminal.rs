@@ -202,10 +202,22 @@ fn tmux_available() -> bool {
 
 fn main() {
     let tests: &[(&str, fn())] = &[
-        ("teachbox_jogs_refuses_at_limits_stores_and_returns", teachbox_jogs_refuses_at_limits_stores_and_returns),
-        ("repl_multiline_completion_and_values", repl_multiline_completion_and_values),
-        ("repl_ctrl_c_stops_a_running_entry_and_keeps_state", repl_ctrl_c_stops_a_running_entry_and_keeps_state),
-        ("repl_ctrl_c_stops_a_long_motion_where_it_is", repl_ctrl_c_stops_a_long_motion_where_it_is),
+        (
+            "teachbox_jogs_refuses_at_limits_stores_and_returns",
+            teachbox_jogs_refuses_at_limits_stores_and_returns,
+        ),
+        (
+            "repl_multiline_completion_and_values",
+            repl_multiline_completion_and_values,
+        ),
+        (
+            "repl_ctrl_c_stops_a_running_entry_and_keeps_state",
+            repl_ctrl_c_stops_a_running_entry_and_keeps_state,
+        ),
+        (
+            "repl_ctrl_c_stops_a_long_motion_where_it_is",
+            repl_ctrl_c_stops_a_long_motion_where_it_is,
+        ),
         ("repl_completes_record_fields", repl_completes_record_fields),
     ];
     let have_tmux = tmux_available();
