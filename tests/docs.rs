@@ -126,8 +126,11 @@ fn snippets(text: &str) -> Result<Vec<(usize, Snippet)>, String> {
     Ok(out)
 }
 
-/// What a snippet prints: (expected lines' range, actual text) pairs.
-fn run(lines: &[&str], s: &Snippet) -> Result<Vec<((usize, usize), String)>, String> {
+/// The lines (0-based, end exclusive) of an expected text, and what was printed there.
+type Printed = ((usize, usize), String);
+
+/// What a snippet prints, for each of its expected texts.
+fn run(lines: &[&str], s: &Snippet) -> Result<Vec<Printed>, String> {
     match s {
         Snippet::Script {
             code,
