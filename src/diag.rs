@@ -220,9 +220,9 @@ pub fn render(diags: &[Diagnostic], sources: &Sources, color: bool) -> String {
                 .with_index_type(IndexType::Byte),
         );
         let mut label = Label::new(primary).with_order(0);
-        if !d.label.is_empty() {
-            label = label.with_message(&d.label);
-        }
+        // ariadne underlines only a label with a message: an error always
+        // shows where it is.
+        label = label.with_message(if d.label.is_empty() { "here" } else { &d.label });
         if color {
             label = label.with_color(Color::Red);
         }

@@ -193,6 +193,24 @@ fn repl_completes_record_fields() {
     t.wait_for("30.0");
 }
 
+fn repl_teach_opens_the_teachbox_and_the_repl_reads_the_new_pose() {
+    let t = Tmux::start(
+        "adair-replteach",
+        &format!("{} repl; sleep 60", env!("CARGO_BIN_EXE_adair")),
+    );
+    t.wait_for("adair>");
+    t.keys(&["InitRobot;", "Enter"]);
+    t.keys(&[":teach jog J1 twice", "Enter"]);
+    t.wait_for("jog J1 twice");
+    t.keys(&["q", "q"]);
+    t.wait_for("J1    10.000 deg");
+    t.keys(&["x"]);
+    t.wait_for("adair>");
+    t.keys(&["Deg (ValueAxes (1))", "Enter"]);
+    // The REPL reads the pose the TeachBox left: J1 at 10 degrees.
+    t.wait_for("adair> Deg (ValueAxes (1))\n10.0\n");
+}
+
 fn tmux_available() -> bool {
     Command::new("tmux")
         .arg("-V")
@@ -219,6 +237,10 @@ fn main() {
             repl_ctrl_c_stops_a_long_motion_where_it_is,
         ),
         ("repl_completes_record_fields", repl_completes_record_fields),
+        (
+            "repl_teach_opens_the_teachbox_and_the_repl_reads_the_new_pose",
+            repl_teach_opens_the_teachbox_and_the_repl_reads_the_new_pose,
+        ),
     ];
     let have_tmux = tmux_available();
     let required = std::env::var_os("ADAIR_REQUIRE_TMUX").is_some();

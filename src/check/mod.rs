@@ -246,7 +246,7 @@ impl Checker {
     }
 
     fn declare(&mut self, name: &str, e: Entity) {
-        let key = name.to_ascii_lowercase();
+        let key = name.to_lowercase();
         if !self.spelling.contains_key(&key) {
             self.spelling.insert(key.clone(), name.to_string());
         }
@@ -355,7 +355,7 @@ impl Checker {
     /// The components of the record a name denotes (a variable of a record
     /// type, or of an access to one), for completion after `.`.
     pub fn record_fields_of(&self, name: &str) -> Vec<String> {
-        let ty = match self.lookup(&name.to_ascii_lowercase()).first() {
+        let ty = match self.lookup(&name.to_lowercase()).first() {
             Some(Entity::Var { ty, .. }) => *ty,
             _ => return Vec::new(),
         };
@@ -477,7 +477,7 @@ impl Checker {
     fn with_clause(&mut self, n: &ast::Expr) {
         if self.package_of(n, false).is_none() {
             let text = crate::syntax::parser::expr_text(n);
-            self.missing_units.push(text.to_ascii_lowercase());
+            self.missing_units.push(text.to_lowercase());
             self.err(
                 Diagnostic::name(n.span, format!("no library unit named `{text}`"))
                     .with_hint("AdaIR provides Ada.Text_IO, Ada.Integer_Text_IO, Ada.Float_Text_IO, Ada.Numerics, Ada.Numerics.Elementary_Functions, Ada.Calendar, Ada.Exceptions and AdaIR"),
@@ -488,7 +488,7 @@ impl Checker {
     fn use_clause(&mut self, names: &[ast::Expr]) {
         for n in names {
             // A unit whose `with` already failed is not reported again.
-            let text = crate::syntax::parser::expr_text(n).to_ascii_lowercase();
+            let text = crate::syntax::parser::expr_text(n).to_lowercase();
             if self.missing_units.contains(&text) {
                 continue;
             }
@@ -624,7 +624,7 @@ impl Checker {
                 let p = self.package(parent);
                 self.packages[p]
                     .names
-                    .entry(last.to_ascii_lowercase())
+                    .entry(last.to_lowercase())
                     .or_default()
                     .push(Entity::Package(idx));
             }
@@ -632,7 +632,7 @@ impl Checker {
                 // Library-level packages are visible in the outermost scope.
                 self.scopes[0]
                     .names
-                    .entry(full.to_ascii_lowercase())
+                    .entry(full.to_lowercase())
                     .or_default()
                     .push(Entity::Package(idx));
             }
@@ -686,7 +686,7 @@ impl Checker {
         ) else {
             return;
         };
-        let key = name.to_ascii_lowercase();
+        let key = name.to_lowercase();
         if let Some(es) = self.packages[from].names.get(&key).cloned() {
             self.packages[to].names.insert(key, es);
         }

@@ -357,8 +357,16 @@ impl Repl {
                 }
                 _ => fail(":trace on or :trace off\n".into()),
             },
+            // `:teach [TEXT]` is the `TeachBox` service with the user's text,
+            // run as an entry: the same pendant, limits, trace and clock.
             "teach" => {
-                fail("the TeachBox screen is not available in this version of adair\n".into())
+                let rest = cmd.trim_start().strip_prefix(head).unwrap_or("").trim();
+                let text = if rest.is_empty() {
+                    "REPL: jog, store, x returns"
+                } else {
+                    rest
+                };
+                self.entry(&format!("TeachBox (\"{}\");", text.replace('"', "\"\"")))
             }
             "reset" => {
                 self.session = Session::new((self.make_out)());

@@ -16,7 +16,8 @@ impl Ident {
     pub fn new(name: &str, span: Span) -> Self {
         Ident {
             name: name.to_string(),
-            key: name.to_ascii_lowercase(),
+            // Ada identifiers are case-insensitive in every script.
+            key: name.to_lowercase(),
             span,
         }
     }

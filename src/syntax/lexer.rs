@@ -10,7 +10,9 @@ use logos::Logos;
 #[logos(skip r"[ \t\r\n\f\v]+")]
 #[logos(skip(r"--[^\n]*", allow_greedy = true))]
 enum Raw {
-    #[regex(r"[A-Za-z][A-Za-z0-9_]*")]
+    // Ada 2012 identifiers (RM 2.3): letters of any script, then letters,
+    // digits, marks and `_` (`Größe`, as GNAT accepts with -gnatW8).
+    #[regex(r"[\p{L}\p{Nl}][\p{L}\p{Nl}\p{Mn}\p{Mc}\p{Nd}\p{Pc}]*")]
     Word,
     #[regex(r"[0-9][0-9_]*(\.[0-9][0-9_]*)?([eE][+-]?[0-9][0-9_]*)?")]
     Decimal,
@@ -82,7 +84,8 @@ pub type Spanned = (Token, Span);
 pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
     let mut toks: Vec<Spanned> = Vec::new();
     let mut diags = Vec::new();
-    let mut base = 0usize;
+    // A UTF-8 byte-order mark (editors on Windows write one) is not source.
+    let mut base = if src.starts_with('\u{feff}') { 3 } else { 0 };
     'restart: loop {
         let mut lx = Raw::lexer(&src[base..]);
         while let Some(r) = lx.next() {

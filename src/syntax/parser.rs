@@ -74,6 +74,19 @@ fn soft_semi<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
         }))
 }
 
+/// `:=` before an initial value or a default; `=` there is a beginner's
+/// slip, reported once and read as `:=`.
+fn assign_or_eq<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
+    just(Token::Assign)
+        .ignored()
+        .or(just(Token::Eq).validate(|_, e, emitter| {
+            emitter.emit(Rich::custom(
+                e.span(),
+                "`=` compares; an initial value is given with `:=` (`V : Float := 50.0;`)",
+            ));
+        }))
+}
+
 fn mk(kind: ExprKind, span: Span) -> Expr {
     Expr { kind, span }
 }
@@ -576,7 +589,7 @@ fn params<'t, I: TokIn<'t>>(
         .then_ignore(just(Token::Colon))
         .then(mode)
         .then(kw!(Access).or_not().ignore_then(name()))
-        .then(just(Token::Assign).ignore_then(expr).or_not())
+        .then(assign_or_eq().ignore_then(expr).or_not())
         .map_with(|(((names, mode), ty), default), e| Param {
             names,
             mode,
@@ -890,9 +903,24 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .clone()
         .then(just(Token::Assign).ignore_then(expr.clone()).or_not())
         .then_ignore(soft_semi())
-        .map(|(target, value)| match value {
-            Some(v) => StmtKind::Assign(target, v),
-            None => StmtKind::Call(target),
+        .validate(|(target, value), _, emitter| match (target, value) {
+            (t, Some(v)) => StmtKind::Assign(t, v),
+            // `X = 5;` as a statement: a beginner's assignment. Say so, and
+            // go on as if it were one, so that this is the only error.
+            (
+                Expr {
+                    kind: ExprKind::Binary(BinOp::Eq, l, r),
+                    span,
+                },
+                None,
+            ) => {
+                emitter.emit(Rich::custom(
+                    span,
+                    "`=` compares; an assignment is written `:=` (`X := 5;`)",
+                ));
+                StmtKind::Assign(*l, *r)
+            }
+            (t, None) => StmtKind::Call(t),
         });
 
     // A declaration in statement position (script mode): `X : T := ...;` etc.
@@ -945,7 +973,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .at_least(1)
         .collect::<Vec<_>>()
         .boxed();
-    let init = just(Token::Assign).ignore_then(expr.clone()).or_not();
+    let init = assign_or_eq().ignore_then(expr.clone()).or_not();
     let enum_lit = ident()
         .map(EnumLit::Ident)
         .or(select! { Token::Char(c) = e => EnumLit::Char(c, e.span()) });
@@ -1442,8 +1470,61 @@ pub fn parse(
             d.label = "expected `;` here".into();
         }
     }
+    explain_unclosed(&mut diags, tokens, src_len);
     (out, diags)
 }
+
+/// The file ended inside a `loop`, `if` or `case`: name the construct and
+/// point at it rather than at the end of the file.
+fn explain_unclosed(diags: &mut [Diagnostic], tokens: &[(Token, Span)], src_len: usize) {
+    let Some(d) = diags
+        .iter_mut()
+        .find(|d| d.span.start >= src_len && d.label == "end of input")
+    else {
+        return;
+    };
+    // Open constructs at parenthesis depth 0 (an `if` or `case` inside
+    // parentheses is an expression and has no `end`).
+    let mut open: Vec<(Kw, Span)> = Vec::new();
+    let mut depth = 0usize;
+    let mut prev_end = false;
+    for (t, sp) in tokens {
+        match t {
+            Token::LParen => depth += 1,
+            Token::RParen => depth = depth.saturating_sub(1),
+            Token::Kw(k @ (Kw::Loop | Kw::If | Kw::Case)) if depth == 0 => {
+                if prev_end {
+                    if let Some(i) = open.iter().rposition(|(o, _)| o == k) {
+                        open.truncate(i);
+                    }
+                } else {
+                    open.push((*k, *sp));
+                }
+            }
+            _ => {}
+        }
+        prev_end = matches!(t, Token::Kw(Kw::End));
+    }
+    let Some((k, at)) = open.last().copied() else {
+        return;
+    };
+    let word = match k {
+        Kw::Loop => "loop",
+        Kw::If => "if",
+        _ => "case",
+    };
+    let end_of_input = d.span;
+    d.message = format!("this `{word}` has no `end {word};`");
+    d.span = at;
+    d.label = format!("this `{word}` is never closed");
+    d.hint = Some(format!(
+        "end it with `end {word};` after its last statement"
+    ));
+    d.notes.push((end_of_input, UNFINISHED_NOTE.to_string()));
+}
+
+/// The note at the end of the input of an unclosed construct.
+const UNFINISHED_NOTE: &str = "the text ends here";
 
 /// Parses a whole entry as one expression (optionally ending in `;`), for
 /// the REPL. `None` if it is not exactly an expression.
@@ -1467,8 +1548,10 @@ pub fn is_unfinished(diags: &[Diagnostic], src_len: usize) -> bool {
     // way (after recovery) do not make it finished.
     diags.iter().any(|d| {
         d.phase == crate::diag::Phase::Syntax
-            && d.span.start >= src_len
-            && d.label == "end of input"
+            && ((d.span.start >= src_len && d.label == "end of input")
+                || d.notes
+                    .iter()
+                    .any(|(s, n)| s.start >= src_len && n == UNFINISHED_NOTE))
     })
 }
 
@@ -1485,7 +1568,8 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
         format!("unexpected {found}")
     };
     match e.reason() {
-        RichReason::Custom(msg) => Diagnostic::syntax(span, msg.clone()).with_label(label),
+        // A custom error explains itself; it has no token of its own to show.
+        RichReason::Custom(msg) => Diagnostic::syntax(span, msg.clone()),
         _ => {
             let mut expected: Vec<String> = e
                 .expected()
