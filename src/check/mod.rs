@@ -374,6 +374,15 @@ impl Checker {
         v
     }
 
+    /// The first (predefined, then user) package that declares `key`
+    /// visibly: the usual cause of an undeclared `Put_Line` is a missing `with`.
+    fn package_declaring(&self, key: &str) -> Option<String> {
+        self.packages
+            .iter()
+            .find(|p| p.names.contains_key(key))
+            .map(|p| p.name.clone())
+    }
+
     fn suggest(&self, key: &str) -> Option<String> {
         let mut best: Option<(usize, String)> = None;
         for n in self.visible_names() {
@@ -529,7 +538,12 @@ impl Checker {
                 if es.is_empty() && report {
                     let mut d = Diagnostic::name(id.span, format!("`{}` is not declared", id.name))
                         .with_label("undefined name");
-                    if let Some(s) = self.suggest(&id.key) {
+                    if let Some(pkg) = self.package_declaring(&id.key) {
+                        d = d.with_hint(format!(
+                            "`{}` is declared in `{pkg}`: add `with {pkg}; use {pkg};` at the top of the file",
+                            id.name
+                        ));
+                    } else if let Some(s) = self.suggest(&id.key) {
                         d = d.with_hint(format!("did you mean `{s}`?"));
                     }
                     self.err(d);
