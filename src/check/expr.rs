@@ -74,6 +74,26 @@ impl Checker {
                     self.types.name(t),
                     self.snippet(ex.span)
                 ));
+            } else if t == types::STRING
+                && matches!(
+                    self.types.kind(self.types.base(ex.ty)),
+                    TypeKind::Integer
+                        | TypeKind::Float
+                        | TypeKind::Enum(_)
+                        | TypeKind::UnivInt
+                        | TypeKind::UnivReal
+                )
+            {
+                // `Put_Line (Count)`: text is made with 'Image.
+                let tn = match self.types.kind(ex.ty) {
+                    TypeKind::UnivInt => "Integer".to_string(),
+                    TypeKind::UnivReal => "Float".to_string(),
+                    _ => self.types.name(ex.ty).to_string(),
+                };
+                d = d.with_hint(format!(
+                    "make it text: `{tn}'Image ({})`",
+                    self.snippet(ex.span)
+                ));
             }
             self.err(d);
             ex.ty = ERROR;
