@@ -11,6 +11,8 @@
 # (`--lib --test 'kinematics_*'`); any other file by the whole suite. Set
 # MUTANTS_TEST_ARGS to choose other `cargo test` arguments. Results go to
 # mutants.out/FILE/ (caught.txt, missed.txt, timeout.txt, unviable.txt).
+# MUTANTS_ARGS adds cargo-mutants options (for example `--in-place`, which
+# reuses ./target instead of building a copy of the tree from scratch).
 # Install the tool once with: flock /work/cargo.lock cargo install cargo-mutants
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -38,7 +40,8 @@ for f in "${files[@]}"; do
     fi
     out="mutants.out/$(basename "$f" .rs)"
     mkdir -p "$out"
-    cmd=(cargo mutants -j 1 --timeout "$timeout" --file "$f" --output "$out" -- "${test_args[@]}")
+    read -r -a extra <<<"${MUTANTS_ARGS:-}"
+    cmd=(cargo mutants -j 1 --timeout "$timeout" "${extra[@]}" --file "$f" --output "$out" -- "${test_args[@]}")
     echo "== $f" >&2
     if [ -e "$lock" ]; then
         flock "$lock" "${cmd[@]}" || status=$?
