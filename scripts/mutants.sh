@@ -41,7 +41,10 @@ for f in "${files[@]}"; do
     out="mutants.out/$(basename "$f" .rs)"
     mkdir -p "$out"
     read -r -a extra <<<"${MUTANTS_ARGS:-}"
-    cmd=(cargo mutants -j 1 --timeout "$timeout" "${extra[@]}" --file "$f" --output "$out" -- "${test_args[@]}")
+    jobs=(-j 1)
+    # --in-place runs one mutant at a time by itself and refuses -j.
+    [[ " ${extra[*]} " == *" --in-place "* ]] && jobs=()
+    cmd=(cargo mutants "${jobs[@]}" --timeout "$timeout" "${extra[@]}" --file "$f" --output "$out" -- "${test_args[@]}")
     echo "== $f" >&2
     if [ -e "$lock" ]; then
         flock "$lock" "${cmd[@]}" || status=$?
