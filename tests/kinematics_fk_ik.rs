@@ -2,7 +2,8 @@
 //! classes, joint targets.
 
 use adair::kinematics::{
-    AdaException, Arm, Elbow, KinError, Kinematics, Pose, RobotDescription, joints_from_deg,
+    AdaException, Arm, Elbow, Joints, KinError, Kinematics, Pose, RobotDescription, Solution,
+    joints_from_deg,
 };
 use nalgebra::{Matrix3, Vector3};
 
@@ -147,19 +148,98 @@ fn ik_zero_pose_on_axis_keeps_j1() {
 fn ik_on_axis_takes_j1_from_approach() {
     let k = wide();
     let tool = k.standard_tool();
-    // TCP on the axis, approach horizontal towards -y: J1 = -90 or +90.
+    let tool_len = tool.translation.z;
+    assert!(tool_len > 1.0);
+    // The *flange* on the waist axis (the TCP is a tool length beside it),
+    // approach horizontal towards -y: only the approach can give J1, which
+    // is -90 or +90 deg. (A TCP on the axis would leave the flange off it,
+    // and J1 would come from the position.)
     let mut goal =
         Pose::rot_z(-std::f64::consts::FRAC_PI_2) * Pose::rot_y(std::f64::consts::FRAC_PI_2);
-    goal.translation = Vector3::new(0.0, 0.0, 500.0);
-    let sols = k.ik_all(&goal, &tool, &[0.0; 5]).unwrap();
-    assert!(!sols.is_empty());
-    for s in &sols {
-        let j1 = s.joints[0].to_degrees();
-        assert!((j1.abs() - 90.0).abs() < 1e-9, "{j1}");
-        let back = k.fk_tcp(&s.joints, &tool);
-        assert_close(back.translation, goal.translation, 1e-9);
-        assert!((back.rotation - goal.rotation).amax() < 1e-12);
+    goal.translation = Vector3::new(0.0, -tool_len, 500.0);
+    let flange = goal * tool.inverse();
+    assert!(flange.translation.xy().norm() < 1e-9, "{flange:?}");
+    for current in [[0.0; 5], joints_from_deg([40.0, 0.0, 0.0, 0.0, 0.0])] {
+        let sols = k.ik_all(&goal, &tool, &current).unwrap();
+        assert!(!sols.is_empty());
+        for s in &sols {
+            let j1 = s.joints[0].to_degrees();
+            assert!((j1.abs() - 90.0).abs() < 1e-9, "{j1}");
+            let back = k.fk_tcp(&s.joints, &tool);
+            assert_close(back.translation, goal.translation, 1e-9);
+            assert!((back.rotation - goal.rotation).amax() < 1e-12);
+        }
     }
+}
+
+/// The index of the solution nearest `current` by the documented metric
+/// (time of the slowest joint at full speed, then summed squares), computed
+/// here independently of the library.
+fn nearest_by_metric(k: &Kinematics, sols: &[Solution], current: &Joints) -> usize {
+    let key = |q: &Joints| {
+        let mut time = 0.0f64;
+        let mut sq = 0.0;
+        for ((a, b), spec) in q.iter().zip(current).zip(k.description().joints()) {
+            time = time.max((a - b).abs() / spec.max_speed);
+            sq += (a - b) * (a - b);
+        }
+        (time, sq)
+    };
+    (0..sols.len())
+        .min_by(|&a, &b| {
+            let (ta, sa) = key(&sols[a].joints);
+            let (tb, sb) = key(&sols[b].joints);
+            ta.total_cmp(&tb).then(sa.total_cmp(&sb))
+        })
+        .unwrap()
+}
+
+/// The index of the solution nearest by summed squares alone.
+fn nearest_by_squares(sols: &[Solution], current: &Joints) -> usize {
+    let sq = |q: &Joints| {
+        q.iter()
+            .zip(current)
+            .map(|(a, b)| (a - b) * (a - b))
+            .sum::<f64>()
+    };
+    (0..sols.len())
+        .min_by(|&a, &b| sq(&sols[a].joints).total_cmp(&sq(&sols[b].joints)))
+        .unwrap()
+}
+
+/// A seeded search for a current pose (not itself a solution) from which
+/// the slowest-joint time and the summed squares pick different solutions
+/// among `allowed`: only there does the metric's order show.
+fn discriminating_current(
+    k: &Kinematics,
+    goal: &Pose,
+    tool: &Pose,
+    base: &Joints,
+    allowed: impl Fn(&Solution) -> bool,
+) -> Joints {
+    let mut state = 7u64;
+    let mut next = || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..20_000 {
+        let mut c = *base;
+        for (v, spec) in c.iter_mut().zip(k.description().joints()) {
+            *v = (*v + (next() - 0.5) * 4.0).clamp(spec.min, spec.max);
+        }
+        let sols: Vec<Solution> = k
+            .ik_all(goal, tool, &c)
+            .unwrap()
+            .into_iter()
+            .filter(|s| allowed(s))
+            .collect();
+        if sols.len() > 1 && nearest_by_metric(k, &sols, &c) != nearest_by_squares(&sols, &c) {
+            return c;
+        }
+    }
+    panic!("no discriminating current pose found");
 }
 
 #[test]
@@ -195,6 +275,28 @@ fn all_four_branches() {
         .ik_choose(&goal, &tool, &q, Arm::Backward, Elbow::None)
         .unwrap();
     assert_eq!(s.arm, Arm::Backward);
+    // From a current pose that is no solution, where the slowest-joint time
+    // and the summed squares disagree: the time decides, with and without a
+    // preference that leaves two branches.
+    let c = discriminating_current(&k, &goal, &tool, &q, |_| true);
+    let all = k.ik_all(&goal, &tool, &c).unwrap();
+    let s = k
+        .ik_choose(&goal, &tool, &c, Arm::None, Elbow::None)
+        .unwrap();
+    assert_eq!(s, all[nearest_by_metric(&k, &all, &c)], "from {c:?}");
+    assert_ne!(s, all[nearest_by_squares(&all, &c)]);
+    let backward = |s: &Solution| s.arm == Arm::Backward;
+    let c = discriminating_current(&k, &goal, &tool, &q, backward);
+    let two: Vec<Solution> = k
+        .ik_all(&goal, &tool, &c)
+        .unwrap()
+        .into_iter()
+        .filter(backward)
+        .collect();
+    let s = k
+        .ik_choose(&goal, &tool, &c, Arm::Backward, Elbow::None)
+        .unwrap();
+    assert_eq!(s, two[nearest_by_metric(&k, &two, &c)], "from {c:?}");
 }
 
 #[test]
@@ -202,13 +304,25 @@ fn preference_falls_back_to_nearest() {
     // RV-M1: J3 >= 0, so ElbowBelow never exists; the nearest is taken.
     let k = rv_m1();
     let tool = k.standard_tool();
-    let q = joints_from_deg([10.0, 20.0, 50.0, 30.0, 10.0]);
+    // A pose with both arm branches within the RV-M1's limits
+    // (J1 -60 deg backward, 120 deg forward).
+    let q = joints_from_deg([-60.0, -25.0, 20.0, -60.0, 0.0]);
     let goal = k.fk_tcp(&q, &tool);
     let s = k
         .ik_choose(&goal, &tool, &q, Arm::Forward, Elbow::Below)
         .unwrap();
     assert_eq!(s.elbow, Elbow::Above);
     assert!(s.joints.iter().zip(&q).all(|(a, b)| (a - b).abs() < 1e-9));
+    // The fallback is the nearest of all by the metric, also from a current
+    // pose that is no solution and where summed squares would pick another.
+    let c = discriminating_current(&k, &goal, &tool, &q, |_| true);
+    let all = k.ik_all(&goal, &tool, &c).unwrap();
+    assert!(all.iter().all(|s| s.elbow == Elbow::Above));
+    let s = k
+        .ik_choose(&goal, &tool, &c, Arm::Forward, Elbow::Below)
+        .unwrap();
+    assert_eq!(s, all[nearest_by_metric(&k, &all, &c)], "from {c:?}");
+    assert_ne!(s, all[nearest_by_squares(&all, &c)]);
 }
 
 #[test]
@@ -472,28 +586,35 @@ fn no_panic_on_garbage() {
 
 #[test]
 fn two_pi_representation_nearest_current() {
-    // A wrist roll with more than a turn of range: the IK picks the
-    // representation next to the current value.
+    // A wrist roll with more than two turns of range (-500 .. 500 deg): the
+    // goal's J5 has three representations (100, -260, 460 deg), so the
+    // nearest one is found by rounding, not by the limits cutting all but
+    // one or two.
     let text = RobotDescription::builtin_text("rv-m1")
         .unwrap()
-        .replace("min_deg = -180.0", "min_deg = -270.0")
-        .replace("max_deg = 180.0", "max_deg = 270.0");
+        .replace("min_deg = -180.0", "min_deg = -500.0")
+        .replace("max_deg = 180.0", "max_deg = 500.0");
     let k = Kinematics::new(RobotDescription::from_toml_str(&text).unwrap());
     let tool = k.standard_tool();
     let q = joints_from_deg([10.0, 20.0, 50.0, 30.0, 100.0]);
     let goal = k.fk_tcp(&q, &tool);
-    let near_plus = joints_from_deg([10.0, 20.0, 50.0, 30.0, 200.0]);
-    let s = k
-        .ik_choose(&goal, &tool, &near_plus, Arm::None, Elbow::None)
-        .unwrap();
-    assert!((s.joints[4] - 100.0f64.to_radians()).abs() < 1e-9);
-    let near_minus = joints_from_deg([10.0, 20.0, 50.0, 30.0, -200.0]);
-    let s = k
-        .ik_choose(&goal, &tool, &near_minus, Arm::None, Elbow::None)
-        .unwrap();
-    assert!(
-        (s.joints[4] - (-260.0f64).to_radians()).abs() < 1e-9,
-        "{:?}",
-        s.joints
-    );
+    for (current_j5, expected_j5) in [
+        (200.0, 100.0),
+        (300.0, 460.0),
+        (390.0, 460.0),
+        (-100.0, -260.0),
+        (-75.0, 100.0),
+        (-390.0, -260.0),
+        (0.0, 100.0),
+    ] {
+        let current = joints_from_deg([10.0, 20.0, 50.0, 30.0, current_j5]);
+        let s = k
+            .ik_choose(&goal, &tool, &current, Arm::None, Elbow::None)
+            .unwrap();
+        assert!(
+            (s.joints[4] - f64::to_radians(expected_j5)).abs() < 1e-9,
+            "from J5 = {current_j5} deg: {:?}",
+            s.joints
+        );
+    }
 }

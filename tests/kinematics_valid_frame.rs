@@ -125,16 +125,40 @@ fn perpendicular_approach_points_outward() {
     // A reachable pose with a horizontal approach along +x ...
     let reachable = k.fk_tcp(&[0.0, 0.7, 0.9, FRAC_PI_2 - 1.6, 0.0], &tool);
     assert!((reachable.approach() - Vector3::x()).amax() < 1e-12);
-    // ... asked for with the approach along +y, perpendicular to the plane.
-    let goal = Pose::new(Pose::rot_x(-FRAC_PI_2).rotation, reachable.translation);
-    assert!((goal.approach() - Vector3::new(0.0, 1.0, 0.0)).amax() < 1e-15);
-    let v = k.valid_frame(&goal, &tool).unwrap();
-    assert!((v.approach() - Vector3::new(1.0, 0.0, 0.0)).amax() < 1e-15);
-    assert!((goal.rotation_angle_to(&v) - FRAC_PI_2).abs() < 1e-12);
-    k.classify(&v, &tool, &[0.0; 5]).unwrap();
-    let e = k.classify(&goal, &tool, &[0.0; 5]).unwrap_err();
-    assert_eq!(e.exception(), AdaException::FrameInvalid);
-    assert!(e.to_string().contains("90.000 deg"), "{e}");
+    // ... asked for with the approach along +y, perpendicular to the plane;
+    // then the whole scene turned about the waist axis, so that the TCP is
+    // off the x axis (y != 0) and x and y play different parts.
+    let at_x = Pose::new(Pose::rot_x(-FRAC_PI_2).rotation, reachable.translation);
+    for turn in [0.0, 0.7, 2.0, -2.5, -0.3] {
+        let goal = Pose::rot_z(turn) * at_x;
+        let (s, c) = f64::sin_cos(turn);
+        assert!((goal.approach() - Vector3::new(-s, c, 0.0)).amax() < 1e-15);
+        let v = k.valid_frame(&goal, &tool).unwrap();
+        // Horizontal, pointing away from the waist axis.
+        assert!(
+            (v.approach() - Vector3::new(c, s, 0.0)).amax() < 1e-15,
+            "turn {turn}: {:?}",
+            v.approach()
+        );
+        assert_eq!(v.translation, goal.translation);
+        assert!((goal.rotation_angle_to(&v) - FRAC_PI_2).abs() < 1e-12);
+        let current = [turn, 0.0, 0.0, 0.0, 0.0];
+        if turn.abs() < 150f64.to_radians() {
+            k.classify(&v, &tool, &current).unwrap();
+        }
+        let e = k.classify(&goal, &tool, &current).unwrap_err();
+        assert_eq!(e.exception(), AdaException::FrameInvalid);
+        assert!(e.to_string().contains("90.000 deg"), "{e}");
+    }
+}
+
+/// The flange axis's angle to the vertical plane through the waist axis and
+/// the flange: 0 for an orientation the arm can take.
+fn flange_off_plane(pose: &Pose, tool: &Pose) -> f64 {
+    let flange = *pose * tool.inverse();
+    let p = flange.translation;
+    let m = Vector3::new(-p.y, p.x, 0.0).normalize();
+    flange.approach().dot(&m).abs().asin()
 }
 
 #[test]
@@ -149,10 +173,49 @@ fn off_axis_tool_converges() {
             Vector3::new(300.0 * angle.cos(), 300.0 * angle.sin(), 350.0),
         );
         let v = k.valid_frame(&goal, &tool).unwrap();
+        // Position kept.
         assert_eq!(v.translation, goal.translation);
-        if let Err(e) = k.classify(&v, &tool, &[0.0; 5]) {
-            assert_ne!(e.exception(), AdaException::FrameInvalid, "{e}");
+        // Reachable orientation: the flange axis lies in the arm plane.
+        assert!(flange_off_plane(&v, &tool) < 1e-9, "{v:?}");
+        // Nearest (locally): every reachable orientation made from a small
+        // turn of the result is no closer to the goal.
+        let best = goal.rotation_angle_to(&v);
+        for _ in 0..20 {
+            let nudge = Pose::new(
+                UnitQuaternion::from_scaled_axis(
+                    Vector3::new(rng.next() - 0.5, rng.next() - 0.5, rng.next() - 0.5) * 0.1,
+                )
+                .to_rotation_matrix()
+                .into_inner(),
+                Vector3::zeros(),
+            );
+            let mut turned = nudge * v;
+            turned.translation = v.translation;
+            let w = k.valid_frame(&turned, &tool).unwrap();
+            assert!(flange_off_plane(&w, &tool) < 1e-9);
+            assert!(
+                goal.rotation_angle_to(&w) >= best - 1e-9,
+                "{} < {best}",
+                goal.rotation_angle_to(&w)
+            );
         }
+    }
+    // An orientation the arm already takes comes back unchanged.
+    for _ in 0..100 {
+        let q: Vec<f64> = k
+            .description()
+            .joints()
+            .iter()
+            .map(|s| s.min + (s.max - s.min) * rng.next())
+            .collect();
+        let reachable = k.fk_tcp(&[q[0], q[1], q[2], q[3], q[4]], &tool);
+        let v = k.valid_frame(&reachable, &tool).unwrap();
+        assert_eq!(v.translation, reachable.translation);
+        assert!(
+            (v.rotation - reachable.rotation).amax() < 1e-9,
+            "{q:?}: turned by {}",
+            reachable.rotation_angle_to(&v)
+        );
     }
 }
 

@@ -71,23 +71,38 @@ impl LimitViolation {
     }
 }
 
+/// Decimals (1 ..= 9) needed to show an excess of `excess_deg` degrees as
+/// a non-zero number, so that a target just past a limit does not read as
+/// the limit itself ("110.0 .. by 0.0 deg").
+pub(crate) fn decimals_for(excess_deg: f64) -> usize {
+    let mut d = 1;
+    while d < 9 && (excess_deg.abs() * 10f64.powi(d as i32)) < 1.0 {
+        d += 1;
+    }
+    d
+}
+
 impl fmt::Display for LimitViolation {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let excess = self.excess().to_degrees();
+        let d = decimals_for(excess);
         write!(
             f,
-            "joint {} target {:.1} deg outside {:.1} .. {:.1} deg by {:.1} deg",
+            "joint {} target {:.d$} deg outside {:.1} .. {:.1} deg by {:.d$} deg",
             self.joint,
             self.target.to_degrees(),
             self.min.to_degrees(),
             self.max.to_degrees(),
-            self.excess().to_degrees()
+            excess
         )?;
         if let Some(other) = self.other_way {
+            let excess = Self::excess_of(other, self.min, self.max).to_degrees();
+            let d = decimals_for(excess);
             write!(
                 f,
-                " (the other way round, {:.1} deg, by {:.1} deg)",
+                " (the other way round, {:.d$} deg, by {:.d$} deg)",
                 other.to_degrees(),
-                Self::excess_of(other, self.min, self.max).to_degrees()
+                excess
             )?;
         }
         Ok(())

@@ -1,5 +1,7 @@
 //! Straight-line (Cartesian) interpolation.
 
+use std::f64::consts::TAU;
+
 use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
 use super::error::{KinError, LimitViolation};
@@ -127,6 +129,35 @@ impl Kinematics {
             });
         }
         let n = n as usize;
+        let first = self.walk(&line, from, n);
+        let Err(refusal) = first else {
+            return first;
+        };
+        if !matches!(&refusal, KinError::LineBlocked { cause, .. } if matches!(**cause, KinError::JointLimit(_)))
+        {
+            return Err(refusal);
+        }
+        // A joint whose start value has another 2 pi representation inside
+        // its limits (J5 at +-180 deg on a range of exactly one turn) may do
+        // the whole line in that one instead: the same pose, so try it
+        // rather than refuse.
+        for (j, spec) in self.desc.joints().iter().enumerate() {
+            for other in [from[j] - TAU, from[j] + TAU] {
+                if spec.contains(other) {
+                    let mut alt = *from;
+                    alt[j] = other.clamp(spec.min, spec.max);
+                    if let Ok(points) = self.walk(&line, &alt, n) {
+                        return Ok(points);
+                    }
+                }
+            }
+        }
+        Err(refusal)
+    }
+
+    /// The support points of `line` in `n` steps from the joints `from`
+    /// (see [`Kinematics::straight_line`]).
+    fn walk(&self, line: &Line, from: &Joints, n: usize) -> Result<Vec<Joints>, KinError> {
         let min_piece = if line.length > 0.0 {
             (continuity::MIN_PIECE / line.length).max(1e-12)
         } else {
@@ -141,7 +172,7 @@ impl Kinematics {
             // Walk from s0 to s_end, halving the step while a joint moves too
             // far, doubling it again after each accepted step.
             loop {
-                let q1 = self.track(&line, s1, &q)?;
+                let q1 = self.track(line, s1, &q)?;
                 let (joint, step) = q1
                     .iter()
                     .zip(&q)

@@ -22,6 +22,8 @@ mod profile;
 mod robot;
 mod valid;
 
+#[cfg(test)]
+mod tests;
 pub use error::{AdaException, KinError, LimitViolation};
 pub use ik::{Arm, Elbow, Solution};
 pub use pose::Pose;

@@ -80,9 +80,11 @@ impl Kinematics {
     ///   approach points horizontally away from the waist axis.
     /// - A tool whose TCP is off the flange axis: the plane runs through the
     ///   flange, which moves when the orientation changes; the projection is
-    ///   repeated until it settles (nearest in practice, not proven);
-    ///   `NoValidOrientation` if it does not settle (flange crossing the
-    ///   waist axis).
+    ///   repeated until it settles, then a local search over reachable
+    ///   orientations turns it nearer the goal while it can (the settled
+    ///   point alone can be off by a fraction of a degree): locally nearest,
+    ///   not proven globally; `NoValidOrientation` if the projection does not
+    ///   settle (flange crossing the waist axis).
     ///
     /// Errors: `goal` or `tool` not a rigid transform (`FrameInvalid`).
     pub fn valid_frame(&self, goal: &Pose, tool: &Pose) -> Result<Pose, KinError> {
@@ -98,24 +100,78 @@ impl Kinematics {
             return Ok(Pose::new(turn * rotation, p));
         }
         let t = tool.translation;
-        let mut flange_rot = rotation * tool_rot.transpose();
-        let mut residual = f64::INFINITY;
-        for _ in 0..200 {
-            let flange_pos = p - flange_rot * t;
-            let axis: Vector3<f64> = flange_rot.column(2).into_owned();
-            let turn = into_plane(&axis, &flange_pos);
-            flange_rot = orthonormalize(&(turn * flange_rot));
-            let new_pos = p - flange_rot * t;
-            residual = out_of_plane(&flange_rot.column(2).into_owned(), &new_pos);
-            if residual <= 1e-14 {
-                break;
+        // The fixed point of the projection is reachable but not always the
+        // nearest: descend from it over reachable orientations (a pattern
+        // search, each trial turned back into reachability by the same
+        // projection) while the angle to the goal shrinks.
+        let mut best = settle(&(rotation * tool_rot.transpose()), &t, &p)?;
+        let angle_of = |flange: &Matrix3<f64>| angle_between(&rotation, &(flange * tool_rot));
+        let mut best_angle = angle_of(&best);
+        let mut step = 0.05;
+        let mut rounds = 0;
+        while step > 1e-9 && rounds < 2000 {
+            rounds += 1;
+            let mut improved = false;
+            for axis in [
+                Vector3::x(),
+                -Vector3::x(),
+                Vector3::y(),
+                -Vector3::y(),
+                Vector3::z(),
+                -Vector3::z(),
+            ] {
+                let nudge = nalgebra::Rotation3::from_scaled_axis(axis * step).into_inner();
+                if let Ok(candidate) = settle(&(nudge * best), &t, &p) {
+                    let a = angle_of(&candidate);
+                    if a < best_angle {
+                        best = candidate;
+                        best_angle = a;
+                        improved = true;
+                    }
+                }
+            }
+            if !improved {
+                step *= 0.5;
             }
         }
-        if residual <= tolerance::PLANE {
-            Ok(Pose::new(flange_rot * tool_rot, p))
-        } else {
-            Err(KinError::NoValidOrientation { residual })
+        Ok(Pose::new(best * tool_rot, p))
+    }
+}
+
+/// Angle (rad) of the rotation between two rotation matrices, from the
+/// Frobenius norm of their difference (`2 sqrt 2 sin(angle / 2)`): exact
+/// for small angles too, where the trace formula's `acos` is not.
+fn angle_between(a: &Matrix3<f64>, b: &Matrix3<f64>) -> f64 {
+    let chord = (a - b).norm() / (2.0 * std::f64::consts::SQRT_2);
+    2.0 * chord.min(1.0).asin()
+}
+
+/// The flange orientation nearest `flange_rot` whose axis lies in the
+/// vertical plane through the waist axis and the flange (at `p - R t` for
+/// the TCP `p` and the tool offset `t`): the projection repeated until it
+/// settles (up to 200 rounds), or `NoValidOrientation`.
+fn settle(
+    flange_rot: &Matrix3<f64>,
+    t: &Vector3<f64>,
+    p: &Vector3<f64>,
+) -> Result<Matrix3<f64>, KinError> {
+    let mut flange_rot = *flange_rot;
+    let mut residual = f64::INFINITY;
+    for _ in 0..200 {
+        let flange_pos = p - flange_rot * t;
+        let axis: Vector3<f64> = flange_rot.column(2).into_owned();
+        let turn = into_plane(&axis, &flange_pos);
+        flange_rot = orthonormalize(&(turn * flange_rot));
+        let new_pos = p - flange_rot * t;
+        residual = out_of_plane(&flange_rot.column(2).into_owned(), &new_pos);
+        if residual <= 1e-14 {
+            break;
         }
+    }
+    if residual <= tolerance::PLANE {
+        Ok(flange_rot)
+    } else {
+        Err(KinError::NoValidOrientation { residual })
     }
 }
 

@@ -426,8 +426,35 @@ mod tests {
 
     #[test]
     fn errors_continue() {
-        let (t, d) = lex("A $ B := 'abc' \"open", 0);
-        assert_eq!(d.len(), 3);
-        assert_eq!(t.len(), 5);
+        // Each bad piece gives one diagnostic at its own place, and lexing
+        // goes on after it: the tokens around the errors all come out.
+        let src = "A $ B := 'abc' \"open";
+        let (t, d) = lex(src, 0);
+        let got: Vec<(String, &str)> = d
+            .iter()
+            .map(|d| (d.message.clone(), &src[d.span.start..d.span.end]))
+            .collect();
+        let toks: Vec<(Token, &str)> = t
+            .iter()
+            .map(|(tok, sp)| (tok.clone(), &src[sp.start..sp.end]))
+            .collect();
+        assert_eq!(
+            got,
+            [
+                ("unexpected character `$`".to_string(), "$"),
+                ("string literal in single quotes".to_string(), "'abc'"),
+                ("unterminated string literal".to_string(), "\"open"),
+            ]
+        );
+        assert_eq!(
+            toks,
+            [
+                (Token::Ident("A".into()), "A"),
+                (Token::Ident("B".into()), "B"),
+                (Token::Assign, ":="),
+                (Token::Str("abc".into()), "'abc'"),
+                (Token::Str("open".into()), "\"open"),
+            ]
+        );
     }
 }
