@@ -54,66 +54,14 @@ const COMMANDS: &[(&str, &str)] = &[
     (":quit", "leave (Ctrl-D too)"),
 ];
 
-/// The services by group, for `:help`.
-const GROUPS: &[(&str, &[&str])] = &[
-    (
-        "start and stop",
-        &["InitRobot", "EndRobot", "CalibrateRobot"],
-    ),
-    (
-        "settings",
-        &[
-            "SetVelocity",
-            "SetMoveMode",
-            "SetInterpolation",
-            "SetRobotConfig",
-            "SetTool",
-            "SetBase",
-        ],
-    ),
-    (
-        "motion",
-        &[
-            "MoveAxesAbsolute",
-            "MoveAxesRelative",
-            "MoveFrameAbsolute",
-            "MoveFrameRelative",
-            "MovePath",
-            "ValidFrame",
-        ],
-    ),
-    ("gripper", &["MoveTool", "PlaceObject"]),
-    (
-        "paths",
-        &[
-            "CreatePath",
-            "DeletePath",
-            "InsertPosition",
-            "DeletePosition",
-            "ValuePosition",
-            "SavePathSystem",
-            "LoadPathSystem",
-        ],
-    ),
-    (
-        "values",
-        &[
-            "ValueAxes",
-            "ValueFrameAbsolute",
-            "ValueFrameRelative",
-            "ValueRobotConfig",
-            "ValueTool",
-            "ValueErrorStatus",
-        ],
-    ),
-    (
-        "frames",
-        &[
-            "Identity", "Trans", "RotX", "RotY", "RotZ", "Inverse", "Deg", "Rad", "Put",
-        ],
-    ),
-    ("teaching", &["TeachBox"]),
-];
+/// The stdlib helpers by group, for `:help` (the services' groups come
+/// from the service table).
+const HELPER_GROUPS: &[(&str, &[&str])] = &[(
+    "frames",
+    &[
+        "Identity", "Trans", "RotX", "RotY", "RotZ", "Inverse", "Deg", "Rad", "Put",
+    ],
+)];
 
 impl Repl {
     pub fn new(make_out: WriterFactory, color: bool) -> Repl {
@@ -388,7 +336,15 @@ impl Repl {
 
     fn help(&self) -> String {
         let mut s = String::from("AdaIR services and helpers (`:help NAME` for one):\n");
-        for (g, names) in GROUPS {
+        for g in crate::services::Group::ALL {
+            let names: Vec<&str> = crate::services::SERVICES
+                .iter()
+                .filter(|x| x.group == g && !x.function)
+                .map(|x| x.name)
+                .collect();
+            s.push_str(&format!("  {:<15} {}\n", g.title(), names.join(", ")));
+        }
+        for (g, names) in HELPER_GROUPS {
             s.push_str(&format!("  {g:<15} {}\n", names.join(", ")));
         }
         s.push_str("Commands:\n");
@@ -414,13 +370,14 @@ impl Repl {
             s.push_str(&c.signature(*f));
             s.push('\n');
         }
-        if let Some(svc) = crate::services::SERVICES
-            .iter()
-            .find(|x| x.name.eq_ignore_ascii_case(name) && x.code > 0)
-        {
+        let svc = crate::services::table::by_name(name);
+        if let Some(svc) = svc.filter(|x| x.code > 0) {
             s.push_str(&format!("command code {}\n", svc.code));
         }
-        let doc = stdlib_doc(name);
+        let doc = match svc {
+            Some(svc) => svc.doc.lines().map(|l| format!("{l}\n")).collect(),
+            None => stdlib_doc(name),
+        };
         if !doc.is_empty() {
             s.push_str(&doc);
         }
