@@ -85,6 +85,15 @@ enum Command {
         /// With piped input: exit 1 if an entry failed.
         #[arg(long)]
         strict: bool,
+        /// Drive a real arm on this serial port instead of the simulator.
+        #[arg(long, value_name = "PATH")]
+        port: Option<String>,
+        /// Baud rate of --port.
+        #[arg(long, default_value_t = 9600, requires = "port")]
+        baud: u32,
+        /// Seconds a reply may take beyond a motion's expected time.
+        #[arg(long, value_name = "SECONDS", default_value_t = 2.0, requires = "port")]
+        serial_timeout: f64,
     },
     /// A virtual RV-M1 (or RM-501) controller on a pseudo-terminal; prints the device path to give to --port.
     SimController {
@@ -190,12 +199,28 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             );
             2
         }
-        Some(Command::Repl { strict }) => {
+        Some(Command::Repl {
+            strict,
+            port,
+            baud,
+            serial_timeout,
+        }) => {
+            let port = port.map(|path| adair::driver::serial::PortSettings {
+                path,
+                baud,
+                timeout: serial_timeout,
+            });
             if std::io::stdin().is_terminal() {
-                adair::repl::term::interactive(color) as u8
+                adair::repl::term::interactive_on(color, port) as u8
             } else {
                 let stdin = std::io::stdin();
-                adair::repl::term::piped(stdin.lock(), &mut std::io::stdout(), strict) as u8
+                adair::repl::term::piped_on(
+                    stdin.lock(),
+                    Box::new(|| Box::new(std::io::stdout()) as Box<dyn std::io::Write>),
+                    &mut std::io::stdout(),
+                    strict,
+                    port,
+                ) as u8
             }
         }
         Some(Command::Run { file, robot }) => {

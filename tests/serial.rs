@@ -417,3 +417,42 @@ fn the_controller_speaks_the_units_language() {
     assert_eq!(ask("RS"), None);
     assert_eq!(ask("DR").as_deref(), Some("&H0005A,&H0000\r\n"));
 }
+
+#[test]
+fn the_repl_jogs_a_real_arm() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let mut child = Command::new(BIN)
+        .args([
+            "repl",
+            "--strict",
+            "--serial-timeout",
+            "0.5",
+            "--port",
+            &c.path,
+        ])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(b"InitRobot;\nMoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0));\n")
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let sent = c.received();
+    assert!(
+        sent.iter().any(|l| l == "MJ +10.0,+0.0,+0.0,+0.0,+0.0"),
+        "{sent:?}"
+    );
+}

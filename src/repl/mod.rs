@@ -35,6 +35,8 @@ pub struct Repl {
     trace: bool,
     entries: usize,
     terminal: bool,
+    /// A real arm to drive instead of the simulator (`--port`).
+    port: Option<crate::driver::serial::PortSettings>,
 }
 
 const COMMANDS: &[(&str, &str)] = &[
@@ -74,6 +76,7 @@ impl Repl {
             trace: false,
             entries: 0,
             terminal: false,
+            port: None,
         };
         r.install_robot();
         r.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
@@ -88,10 +91,26 @@ impl Repl {
         }
     }
 
+    /// Drives a real arm on `port` instead of the simulator (`--port`).
+    pub fn use_port(&mut self, port: crate::driver::serial::PortSettings) {
+        self.port = Some(port);
+        self.install_robot();
+    }
+
     fn install_robot(&mut self) {
         if let Ok(desc) = RobotDescription::builtin(&self.robot) {
             let trace = self.trace.then(|| (self.make_out)());
-            self.session.set_robot(desc, trace, false);
+            match &self.port {
+                None => self.session.set_robot(desc, trace, false),
+                Some(p) => {
+                    let d = crate::driver::serial::Serial::new(
+                        desc.clone(),
+                        p.clone(),
+                        self.session.machine.interrupted.clone(),
+                    );
+                    self.session.set_driver(desc, Box::new(d), trace, false);
+                }
+            }
             if self.terminal {
                 self.session
                     .install_pendant(Box::new(teach::TermPendant::new()));
