@@ -17,4 +17,5 @@ pub mod kinematics;
 pub mod repl;
 pub mod services;
 pub mod session;
+pub mod simctl;
 pub mod syntax;

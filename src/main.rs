@@ -35,6 +35,19 @@ struct RobotOpts {
     /// Pace the simulator to the wall clock.
     #[arg(long)]
     realtime: bool,
+    /// Drive a real arm on this serial port instead of the simulator.
+    #[arg(long, value_name = "PATH")]
+    port: Option<String>,
+    /// Baud rate of --port.
+    #[arg(long, default_value_t = 9600, requires = "port")]
+    baud: u32,
+    /// Seconds a reply may take beyond a motion's expected time.
+    #[arg(long, value_name = "SECONDS", default_value_t = 2.0, requires = "port")]
+    serial_timeout: f64,
+    /// With --port: run the whole program on the simulator from the arm's pose
+    /// first, and move the arm only if that run ends without an unhandled exception.
+    #[arg(long, requires = "port")]
+    rehearse: bool,
 }
 
 impl RobotOpts {
@@ -72,7 +85,45 @@ enum Command {
         /// With piped input: exit 1 if an entry failed.
         #[arg(long)]
         strict: bool,
+        /// Drive a real arm on this serial port instead of the simulator.
+        #[arg(long, value_name = "PATH")]
+        port: Option<String>,
+        /// Baud rate of --port.
+        #[arg(long, default_value_t = 9600, requires = "port")]
+        baud: u32,
+        /// Seconds a reply may take beyond a motion's expected time.
+        #[arg(long, value_name = "SECONDS", default_value_t = 2.0, requires = "port")]
+        serial_timeout: f64,
     },
+    /// A virtual RV-M1 (or RM-501) controller on a pseudo-terminal; prints the device path to give to --port.
+    SimController {
+        /// The unit: rv-m1 (D/U-M1, default) or rm-501 (Movemaster II).
+        #[arg(long, default_value = "rv-m1")]
+        robot: String,
+        /// Log every byte each way, timestamped, to this file.
+        #[arg(long, value_name = "FILE")]
+        log: Option<PathBuf>,
+        /// Fault: answer nothing after N commands.
+        #[arg(long, value_name = "N")]
+        silent_after: Option<u64>,
+        /// Fault: garble the reply to the Nth command.
+        #[arg(long, value_name = "N")]
+        corrupt: Option<u64>,
+        /// Fault: hang up after N commands.
+        #[arg(long, value_name = "N")]
+        hangup_after: Option<u64>,
+        /// Fault: refuse the Nth command with error mode 1 or 2 (N:MODE).
+        #[arg(long, value_name = "N:MODE")]
+        refuse: Option<String>,
+        /// Fault: wait this many seconds before every reply.
+        #[arg(long, value_name = "SECONDS", default_value_t = 0.0)]
+        slow: f64,
+        /// Multiply motion times by this factor (tests use a small one).
+        #[arg(long, value_name = "F", default_value_t = 1.0)]
+        time_scale: f64,
+    },
+    /// List the serial ports of this machine.
+    Ports,
     /// Golden tests: run each X.air and compare its output with X.out beside it.
     Test {
         /// Scripts or directories (default: the current directory).
@@ -148,12 +199,28 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             );
             2
         }
-        Some(Command::Repl { strict }) => {
+        Some(Command::Repl {
+            strict,
+            port,
+            baud,
+            serial_timeout,
+        }) => {
+            let port = port.map(|path| adair::driver::serial::PortSettings {
+                path,
+                baud,
+                timeout: serial_timeout,
+            });
             if std::io::stdin().is_terminal() {
-                adair::repl::term::interactive(color) as u8
+                adair::repl::term::interactive_on(color, port) as u8
             } else {
                 let stdin = std::io::stdin();
-                adair::repl::term::piped(stdin.lock(), &mut std::io::stdout(), strict) as u8
+                adair::repl::term::piped_on(
+                    stdin.lock(),
+                    Box::new(|| Box::new(std::io::stdout()) as Box<dyn std::io::Write>),
+                    &mut std::io::stdout(),
+                    strict,
+                    port,
+                ) as u8
             }
         }
         Some(Command::Run { file, robot }) => {
@@ -168,27 +235,121 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 Ok(t) => t,
                 Err(_) => return 2,
             };
-            let mut s = Session::new(Box::new(std::io::LineWriter::new(std::io::stdout())));
-            let trace: Option<Box<dyn std::io::Write>> = if robot.trace {
-                Some(Box::new(std::io::stderr()))
-            } else {
-                None
+            let trace = || -> Option<Box<dyn std::io::Write>> {
+                if robot.trace {
+                    Some(Box::new(std::io::stderr()))
+                } else {
+                    None
+                }
             };
-            s.set_robot(desc, trace, robot.realtime);
+            let mut s = Session::new(Box::new(std::io::LineWriter::new(std::io::stdout())));
+            match &robot.port {
+                None => s.set_robot(desc, trace(), robot.realtime),
+                Some(port) => {
+                    let settings = adair::driver::serial::PortSettings {
+                        path: port.clone(),
+                        baud: robot.baud,
+                        timeout: robot.serial_timeout,
+                    };
+                    let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+                    let f2 = flag.clone();
+                    let _ = ctrlc::set_handler(move || {
+                        f2.store(true, std::sync::atomic::Ordering::SeqCst)
+                    });
+                    if robot.rehearse {
+                        match rehearse(&desc, &settings, &file, &text, color) {
+                            Ok(()) => eprintln!(
+                                "adair: the rehearsal on the simulator ended without an unhandled exception; moving the arm now (a rehearsal cannot cover branches that depend on input)"
+                            ),
+                            Err(code) => return code,
+                        }
+                    }
+                    let driver =
+                        adair::driver::serial::Serial::new(desc.clone(), settings, Some(flag));
+                    s.set_driver(desc, Box::new(driver), trace(), false);
+                }
+            }
             if std::io::stdin().is_terminal() && std::io::stdout().is_terminal() {
                 s.install_pendant(Box::new(adair::repl::teach::TermPendant::new()));
             }
             let outcome = s.run_source(&file.to_string_lossy(), &text);
-            match &outcome {
-                Outcome::Ok => {}
-                Outcome::CheckFailed(d) => eprint!("{}", adair::diag::render(d, &s.sources, color)),
-                Outcome::Raised(d) => eprint!(
-                    "{}",
-                    adair::diag::render(std::slice::from_ref(d), &s.sources, color)
-                ),
-            }
+            report(&outcome, &s, color);
             outcome.exit_code() as u8
         }
+        Some(Command::SimController {
+            robot,
+            log,
+            silent_after,
+            corrupt,
+            hangup_after,
+            refuse,
+            slow,
+            time_scale,
+        }) => {
+            let desc = match adair::kinematics::RobotDescription::builtin(&robot) {
+                Ok(d) => d,
+                Err(e) => {
+                    eprintln!("adair: {e}");
+                    return 2;
+                }
+            };
+            let refuse = match refuse.as_deref().map(parse_refuse) {
+                None => None,
+                Some(Ok(r)) => Some(r),
+                Some(Err(e)) => {
+                    eprintln!("adair: --refuse {e}");
+                    return 2;
+                }
+            };
+            let log = match log.map(std::fs::File::create) {
+                None => None,
+                Some(Ok(f)) => Some(f),
+                Some(Err(e)) => {
+                    eprintln!("adair: cannot write the log: {e}");
+                    return 2;
+                }
+            };
+            let faults = adair::simctl::Faults {
+                silent_after,
+                corrupt,
+                hangup_after,
+                refuse,
+                slow,
+                time_scale,
+            };
+            match adair::simctl::serve(desc, faults, log, &mut std::io::stdout()) {
+                Ok(()) => 0,
+                Err(e) => {
+                    eprintln!("adair: sim-controller: {e}");
+                    1
+                }
+            }
+        }
+        Some(Command::Ports) => match serialport::available_ports() {
+            Ok(ports) if ports.is_empty() => {
+                println!("no serial ports found");
+                0
+            }
+            Ok(ports) => {
+                for p in ports {
+                    match p.port_type {
+                        serialport::SerialPortType::UsbPort(u) => println!(
+                            "{}  USB {:04x}:{:04x}{}",
+                            p.port_name,
+                            u.vid,
+                            u.pid,
+                            u.product.map(|s| format!(" {s}")).unwrap_or_default()
+                        ),
+                        _ => println!("{}", p.port_name),
+                    }
+                }
+                0
+            }
+            Err(e) => {
+                eprintln!("adair: cannot list the serial ports: {e}");
+                1
+            }
+        },
         Some(Command::Check { files }) => {
             let mut worst = 0;
             for f in &files {
@@ -249,4 +410,61 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             if fail > 0 { 1 } else { 0 }
         }
     }
+}
+
+fn report(outcome: &Outcome, s: &Session, color: bool) {
+    match outcome {
+        Outcome::Ok => {}
+        Outcome::CheckFailed(d) => eprint!("{}", adair::diag::render(d, &s.sources, color)),
+        Outcome::Raised(d) => eprint!(
+            "{}",
+            adair::diag::render(std::slice::from_ref(d), &s.sources, color)
+        ),
+    }
+}
+
+fn parse_refuse(s: &str) -> Result<(u64, u8), String> {
+    let (n, m) = s
+        .split_once(':')
+        .ok_or_else(|| format!("`{s}`: expected N:MODE, e.g. 3:2"))?;
+    let n: u64 = n.parse().map_err(|_| format!("`{s}`: N is not a number"))?;
+    match m {
+        "1" => Ok((n, 1)),
+        "2" => Ok((n, 2)),
+        _ => Err(format!("`{s}`: MODE is 1 or 2")),
+    }
+}
+
+/// `--rehearse`: the arm's pose without motion, then the whole program on
+/// the simulator from there. `Err` holds the exit code when the rehearsal
+/// failed (nothing was sent that moves the arm).
+fn rehearse(
+    desc: &adair::kinematics::RobotDescription,
+    settings: &adair::driver::serial::PortSettings,
+    file: &std::path::Path,
+    text: &str,
+    color: bool,
+) -> Result<(), u8> {
+    let mut probe = adair::driver::serial::Serial::new(desc.clone(), settings.clone(), None);
+    let pose = match probe.read_pose() {
+        Ok(q) => q,
+        Err(e) => {
+            eprintln!("adair: rehearsal: cannot read the arm's pose: {e}");
+            return Err(1);
+        }
+    };
+    drop(probe);
+    let mut sim = adair::driver::sim::Simulator::new(desc.clone());
+    sim.set_joints(pose);
+    let mut s = Session::new(Box::new(std::io::sink()));
+    // The rehearsal must not eat the real run's input: it reads none.
+    s.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+    s.set_driver(desc.clone(), Box::new(sim), None, false);
+    let outcome = s.run_source(&file.to_string_lossy(), text);
+    if let Outcome::Ok = outcome {
+        return Ok(());
+    }
+    report(&outcome, &s, color);
+    eprintln!("adair: the rehearsal on the simulator failed: the arm was not moved");
+    Err(outcome.exit_code() as u8)
 }

@@ -28,6 +28,21 @@ pub fn resolve(name: &str) -> Option<crate::interp::Native> {
     builtins::lookup(name).or_else(|| crate::services::lookup(name))
 }
 
+/// The text of a stdlib file as the session checks it: the AdaIR package's
+/// service declarations are generated from the service table.
+pub fn stdlib_text(text: &str) -> std::borrow::Cow<'_, str> {
+    const MARKER: &str = "   --  @services\n";
+    match text.find(MARKER) {
+        Some(i) => std::borrow::Cow::Owned(format!(
+            "{}{}{}",
+            &text[..i],
+            crate::services::table::spec_text(),
+            &text[i + MARKER.len()..]
+        )),
+        None => std::borrow::Cow::Borrowed(text),
+    }
+}
+
 fn known(name: &str) -> bool {
     resolve(name).is_some()
 }
@@ -66,11 +81,15 @@ impl Session {
             machine: Machine::new(out),
         };
         s.machine.resolver = resolve;
+        s.checker
+            .set_import_profiles(crate::services::import_profile);
         for (name, text) in STDLIB {
-            let (stmts, _) = s.check_source(name, text, false).unwrap_or_else(|d| {
-                // The embedded library is tested; a failure here is a bug in adair.
-                panic!("stdlib does not check: {d:?}")
-            });
+            let (stmts, _) = s
+                .check_source(name, &stdlib_text(text), false)
+                .unwrap_or_else(|d| {
+                    // The embedded library is tested; a failure here is a bug in adair.
+                    panic!("stdlib does not check: {d:?}")
+                });
             let _ = s.machine.run(&s.checker, &stmts, None);
         }
         for pkg in ["AdaIR", "Ada.Text_IO"] {
@@ -89,10 +108,36 @@ impl Session {
         trace: Option<Box<dyn Write>>,
         realtime: bool,
     ) {
-        let mut st = crate::services::RobotState::new(desc);
+        let sim = Box::new(crate::driver::sim::Simulator::new(desc.clone()));
+        self.set_driver(desc, sim, trace, realtime);
+    }
+
+    /// As [`Session::set_robot`] with any driver; a driver whose motions take
+    /// real time (a real arm) brings the wall clock with it.
+    pub fn set_driver(
+        &mut self,
+        desc: crate::kinematics::RobotDescription,
+        driver: Box<dyn crate::driver::Robot>,
+        trace: Option<Box<dyn Write>>,
+        realtime: bool,
+    ) {
+        let excs = crate::services::ExcIds::bind(&self.checker)
+            .unwrap_or_else(|e| panic!("stdlib does not declare {e}"));
+        if driver.real_time() {
+            self.machine.clock = Box::new(crate::services::WallClock::default());
+        }
+        let mut st = crate::services::RobotState::with_driver(desc, excs, driver);
         st.trace = trace;
         st.realtime = realtime;
         self.machine.robot = Some(Box::new(st));
+    }
+
+    /// The services' robot state, once a robot is chosen.
+    pub fn robot_state(&self) -> Option<&crate::services::RobotState> {
+        self.machine
+            .robot
+            .as_ref()
+            .and_then(|b| b.downcast_ref::<crate::services::RobotState>())
     }
 
     /// Lets `TeachBox` open the screen teach pendant (only on a terminal).

@@ -151,3 +151,18 @@ fn controller_conversion_and_quantisation() {
     assert!((quant[3] - 9.975).abs() < 1e-9, "{quant:?}");
     assert!((quant[4] - 10.05).abs() < 1e-9, "{quant:?}");
 }
+
+#[test]
+fn the_nest_pose_is_read_and_checked_against_the_limits() {
+    let d = RobotDescription::builtin("rm-501").unwrap();
+    let nest: Vec<f64> = d.nest().iter().map(|q| q.to_degrees()).collect();
+    for (a, b) in nest.iter().zip([0.0, 0.0, 90.0, 90.0, 0.0]) {
+        assert!((a - b).abs() < 1e-9, "{nest:?}");
+    }
+    let text = RobotDescription::builtin_text("rv-m1").unwrap().replace(
+        "nest_deg = [0.0, 0.0, 90.0, 90.0, 0.0]",
+        "nest_deg = [0.0, 0.0, 120.0, 90.0, 0.0]",
+    );
+    let e = RobotDescription::from_toml_str(&text).unwrap_err();
+    assert!(e.to_string().contains("nest_deg[3]"), "{e}");
+}

@@ -94,6 +94,16 @@ impl Checker {
                             spec.span,
                             format!("no builtin named \"{name}\""),
                         ));
+                    } else if let Some(want) = self.import_mismatch(f, name) {
+                        let declared = self.signature(f);
+                        self.err(Diagnostic::ty(
+                            spec.span,
+                            format!(
+                                "this profile does not match the import \"{name}\": declared `{declared}`, the service is `{}`",
+                                want.text
+                            ),
+                        )
+                        .with_label("the service's natives would read the wrong arguments"));
                     }
                     self.imports[f as usize] = Some(name.clone());
                 }

@@ -71,6 +71,21 @@ struct FuncCtx {
 /// Whether an import name names a builtin the runtime knows.
 pub type KnownBuiltin = fn(&str) -> bool;
 
+/// The profile an import name expects (from the service table), so that a
+/// `with Import` declaration with another profile is a check error instead of
+/// a native reading arguments that are not there.
+#[derive(Clone, Debug)]
+pub struct ImportProfile {
+    /// Mode and type name of each parameter.
+    pub params: Vec<(ast::Mode, String)>,
+    /// The result type name of a function.
+    pub ret: Option<String>,
+    /// The expected declaration, for the message.
+    pub text: String,
+}
+
+pub type ImportProfileOf = fn(&str) -> Option<ImportProfile>;
+
 /// Cloning a checker snapshots its state, so that the REPL can undo an
 /// entry that does not check.
 #[derive(Clone)]
@@ -92,6 +107,7 @@ pub struct Checker {
     pub diags: Vec<Diagnostic>,
     texts: HashMap<u32, Rc<str>>,
     known_builtin: KnownBuiltin,
+    import_profile: Option<ImportProfileOf>,
     /// Level-0 slot count so far.
     pub globals: u32,
     /// Script mode: the standard packages are use-visible at the top level.
@@ -134,6 +150,7 @@ impl Checker {
             diags: Vec::new(),
             texts: HashMap::new(),
             known_builtin,
+            import_profile: None,
             globals: 0,
             script: false,
             missing_units: Vec::new(),
@@ -708,6 +725,30 @@ impl Checker {
 
     pub fn known_builtin(&self, name: &str) -> bool {
         (self.known_builtin)(name)
+    }
+
+    /// Where the expected profiles of import names come from.
+    pub fn set_import_profiles(&mut self, f: ImportProfileOf) {
+        self.import_profile = Some(f);
+    }
+
+    /// The expected profile of `name` when `f`'s declared one differs from it.
+    pub fn import_mismatch(&self, f: FuncId, name: &str) -> Option<ImportProfile> {
+        let want = (self.import_profile?)(name)?;
+        let sub = &self.funcs[f as usize];
+        let same_type = |t: TypeId, n: &str| self.types.name(t).eq_ignore_ascii_case(n);
+        let params_match = sub.params.len() == want.params.len()
+            && sub
+                .params
+                .iter()
+                .zip(&want.params)
+                .all(|(p, (m, n))| p.mode == *m && same_type(p.ty, n));
+        let ret_match = match (sub.ret, &want.ret) {
+            (None, None) => true,
+            (Some(t), Some(n)) => same_type(t, n),
+            _ => false,
+        };
+        (!(params_match && ret_match)).then_some(want)
     }
 }
 

@@ -1,19 +1,57 @@
-//! The one boundary between the services and a robot: the [`Robot`] trait.
-//! The simulator implements it today; a serial driver for the real
-//! controllers will implement it beside it. Drivers never do kinematics:
-//! they receive joint vectors and report joint vectors.
+//! The one boundary between the services and a robot: the [`Robot`] trait,
+//! implemented by the simulator and by the serial driver for the real
+//! controllers. Every operation that talks to a robot is fallible; the
+//! services map a [`DriverError`] to the handbook's exceptions (appendix B)
+//! per robots.md's fault table. The serial driver turns the unit's replies
+//! into joints (`WH`); motion planning stays in the services.
 
+pub mod protocol;
+pub mod serial;
 pub mod sim;
+pub mod wh;
 
 use crate::kinematics::{Joints, RobotDescription};
 
-/// Why a driver could not do what it was asked (a real link can fail).
+/// Why a driver could not do what it was asked.
 #[derive(Debug, Clone, PartialEq)]
 pub enum DriverError {
-    /// The controller did not answer or the link dropped.
+    /// The port does not open, or the link is down (`NoConnection`).
     NoConnection(String),
-    /// The controller refused the command.
+    /// The port opened but no unit answered (`NoRobotInstalled`).
+    NoRobot(String),
+    /// Another unit than the robot description names (`WrongRobotInstalled`).
+    WrongRobot(String),
+    /// No reply in time (`MessageLost`).
+    Lost(String),
+    /// A reply that does not parse (`MessageInvalid`).
+    Invalid(String),
+    /// End of file, EIO, the port vanished (`FatalCommunicationError`).
+    Fatal(String),
+    /// The unit refused a command: error mode I (`CommandNotSupported`).
     Refused(String),
+    /// The unit found a target out of range: error mode II (`OutOfReach`).
+    UnitOutOfRange(String),
+    /// A joint vector outside the limits reached the driver (`OutOfReach`).
+    Limit(String),
+    /// The user stopped the motion (Ctrl-C).
+    Interrupted,
+}
+
+impl std::fmt::Display for DriverError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            DriverError::NoConnection(m)
+            | DriverError::NoRobot(m)
+            | DriverError::WrongRobot(m)
+            | DriverError::Lost(m)
+            | DriverError::Invalid(m)
+            | DriverError::Fatal(m)
+            | DriverError::Refused(m)
+            | DriverError::UnitOutOfRange(m)
+            | DriverError::Limit(m) => f.write_str(m),
+            DriverError::Interrupted => f.write_str("interrupted (Ctrl-C)"),
+        }
+    }
 }
 
 /// The gripper as the driver reports it.
@@ -31,7 +69,21 @@ pub trait Robot {
     fn joints(&self) -> Joints;
     /// The joints as the controller reads them back (quantised).
     fn read_joints(&self) -> Joints;
-    /// Moves through the joint vectors in order, taking `duration` seconds in all.
+    /// True when motions take wall-clock time in the driver (a real arm):
+    /// the services then do not advance a clock of their own.
+    fn real_time(&self) -> bool {
+        false
+    }
+    /// Connects and finds the arm's pose (`InitRobot`, before its motion).
+    fn init(&mut self) -> Result<(), DriverError> {
+        Ok(())
+    }
+    /// The speed for later motions, percent of the maximum.
+    fn set_speed(&mut self, _percent: f64) -> Result<(), DriverError> {
+        Ok(())
+    }
+    /// Moves through the joint vectors in order, taking `duration` seconds
+    /// in all, and returns when the motion has ended (or was stopped).
     fn move_joints(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError>;
     /// Calibrates (the simulator has no drift to remove).
     fn calibrate(&mut self) -> Result<(), DriverError>;
@@ -43,6 +95,8 @@ pub trait Robot {
         opening: f64,
         force_limit: Option<f64>,
     ) -> Result<GripperState, DriverError>;
-    /// Simulator only: an object of `width` mm between the jaws (0 = none).
-    fn place_object(&mut self, width: f64) -> Result<(), DriverError>;
+    /// The simulator, for what only it can do (placing an object).
+    fn as_simulator(&mut self) -> Option<&mut sim::Simulator> {
+        None
+    }
 }

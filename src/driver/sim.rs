@@ -28,6 +28,25 @@ impl Simulator {
     }
 }
 
+impl Simulator {
+    /// Starts from `joints` (a rehearsal starts where the real arm is).
+    pub fn set_joints(&mut self, joints: Joints) {
+        self.joints = joints;
+    }
+
+    /// An object of `width` mm between the jaws (0 = none).
+    pub fn place_object(&mut self, width: f64) -> Result<(), String> {
+        if width > self.gripper.opening + 1e-9 && width > 0.0 {
+            return Err(format!(
+                "an object of {width:.1} mm does not fit between jaws open {:.1} mm",
+                self.gripper.opening
+            ));
+        }
+        self.object = width.max(0.0);
+        Ok(())
+    }
+}
+
 impl Robot for Simulator {
     fn description(&self) -> &RobotDescription {
         &self.desc
@@ -43,7 +62,7 @@ impl Robot for Simulator {
             // The services check limits before anything moves; a driver
             // still refuses to leave them.
             if let Err(v) = self.desc.check_limits(p) {
-                return Err(DriverError::Refused(format!("{v:?}")));
+                return Err(DriverError::Limit(v.to_string()));
             }
         }
         if let Some(last) = points.last() {
@@ -90,14 +109,7 @@ impl Robot for Simulator {
         }
         Ok(self.gripper)
     }
-    fn place_object(&mut self, width: f64) -> Result<(), DriverError> {
-        if width > self.gripper.opening + 1e-9 && width > 0.0 {
-            return Err(DriverError::Refused(format!(
-                "an object of {width:.1} mm does not fit between jaws open {:.1} mm",
-                self.gripper.opening
-            )));
-        }
-        self.object = width.max(0.0);
-        Ok(())
+    fn as_simulator(&mut self) -> Option<&mut Simulator> {
+        Some(self)
     }
 }

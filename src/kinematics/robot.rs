@@ -85,6 +85,8 @@ pub struct RobotDescription {
     links: Links,
     joints: [JointSpec; JOINTS],
     gripper: Gripper,
+    /// Where the controller's `NT` (nest) leaves the arm, rad.
+    nest: [f64; JOINTS],
 }
 
 /// Why a robot description could not be loaded: every problem found.
@@ -115,6 +117,8 @@ struct RawFile {
     links: Option<RawLinks>,
     gripper: Option<RawGripper>,
     joint: Option<Vec<RawJoint>>,
+    /// The nest pose, degrees J1..J5 (unpublished: see robots.md).
+    nest_deg: Option<[f64; JOINTS]>,
 }
 
 #[derive(Deserialize)]
@@ -371,6 +375,21 @@ impl RobotDescription {
             }
         }
 
+        // Optional: robots.md's reading (upper arm up, forearm level, hand
+        // down) when a user's file has none.
+        let nest_deg = raw.nest_deg.unwrap_or([0.0, 0.0, 90.0, 90.0, 0.0]);
+        let nest = nest_deg.map(f64::to_radians);
+        if c.problems.is_empty() {
+            for (i, (q, spec)) in nest.iter().zip(&joints).enumerate() {
+                if !spec.contains(*q) {
+                    c.problems.push(format!(
+                        "field `nest_deg[{}]` = {}: outside the joint's limits",
+                        i + 1,
+                        nest_deg[i]
+                    ));
+                }
+            }
+        }
         let joints: Result<[JointSpec; JOINTS], _> = joints.try_into();
         match (links, gripper, joints) {
             (Some(links), Some(gripper), Ok(joints)) if c.problems.is_empty() => {
@@ -379,6 +398,7 @@ impl RobotDescription {
                     links,
                     joints,
                     gripper,
+                    nest,
                 })
             }
             _ => Err(DescriptionError {
@@ -391,6 +411,11 @@ impl RobotDescription {
     /// The robot's name ("RV-M1").
     pub fn name(&self) -> &str {
         &self.name
+    }
+
+    /// Where the controller's `NT` leaves the arm (our joint angles, rad).
+    pub fn nest(&self) -> [f64; JOINTS] {
+        self.nest
     }
 
     /// Link lengths.

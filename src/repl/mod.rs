@@ -35,6 +35,8 @@ pub struct Repl {
     trace: bool,
     entries: usize,
     terminal: bool,
+    /// A real arm to drive instead of the simulator (`--port`).
+    port: Option<crate::driver::serial::PortSettings>,
 }
 
 const COMMANDS: &[(&str, &str)] = &[
@@ -54,66 +56,14 @@ const COMMANDS: &[(&str, &str)] = &[
     (":quit", "leave (Ctrl-D too)"),
 ];
 
-/// The services by group, for `:help`.
-const GROUPS: &[(&str, &[&str])] = &[
-    (
-        "start and stop",
-        &["InitRobot", "EndRobot", "CalibrateRobot"],
-    ),
-    (
-        "settings",
-        &[
-            "SetVelocity",
-            "SetMoveMode",
-            "SetInterpolation",
-            "SetRobotConfig",
-            "SetTool",
-            "SetBase",
-        ],
-    ),
-    (
-        "motion",
-        &[
-            "MoveAxesAbsolute",
-            "MoveAxesRelative",
-            "MoveFrameAbsolute",
-            "MoveFrameRelative",
-            "MovePath",
-            "ValidFrame",
-        ],
-    ),
-    ("gripper", &["MoveTool", "PlaceObject"]),
-    (
-        "paths",
-        &[
-            "CreatePath",
-            "DeletePath",
-            "InsertPosition",
-            "DeletePosition",
-            "ValuePosition",
-            "SavePathSystem",
-            "LoadPathSystem",
-        ],
-    ),
-    (
-        "values",
-        &[
-            "ValueAxes",
-            "ValueFrameAbsolute",
-            "ValueFrameRelative",
-            "ValueRobotConfig",
-            "ValueTool",
-            "ValueErrorStatus",
-        ],
-    ),
-    (
-        "frames",
-        &[
-            "Identity", "Trans", "RotX", "RotY", "RotZ", "Inverse", "Deg", "Rad", "Put",
-        ],
-    ),
-    ("teaching", &["TeachBox"]),
-];
+/// The stdlib helpers by group, for `:help` (the services' groups come
+/// from the service table).
+const HELPER_GROUPS: &[(&str, &[&str])] = &[(
+    "frames",
+    &[
+        "Identity", "Trans", "RotX", "RotY", "RotZ", "Inverse", "Deg", "Rad", "Put",
+    ],
+)];
 
 impl Repl {
     pub fn new(make_out: WriterFactory, color: bool) -> Repl {
@@ -126,6 +76,7 @@ impl Repl {
             trace: false,
             entries: 0,
             terminal: false,
+            port: None,
         };
         r.install_robot();
         r.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
@@ -140,10 +91,26 @@ impl Repl {
         }
     }
 
+    /// Drives a real arm on `port` instead of the simulator (`--port`).
+    pub fn use_port(&mut self, port: crate::driver::serial::PortSettings) {
+        self.port = Some(port);
+        self.install_robot();
+    }
+
     fn install_robot(&mut self) {
         if let Ok(desc) = RobotDescription::builtin(&self.robot) {
             let trace = self.trace.then(|| (self.make_out)());
-            self.session.set_robot(desc, trace, false);
+            match &self.port {
+                None => self.session.set_robot(desc, trace, false),
+                Some(p) => {
+                    let d = crate::driver::serial::Serial::new(
+                        desc.clone(),
+                        p.clone(),
+                        self.session.machine.interrupted.clone(),
+                    );
+                    self.session.set_driver(desc, Box::new(d), trace, false);
+                }
+            }
             if self.terminal {
                 self.session
                     .install_pendant(Box::new(teach::TermPendant::new()));
@@ -396,7 +363,15 @@ impl Repl {
 
     fn help(&self) -> String {
         let mut s = String::from("AdaIR services and helpers (`:help NAME` for one):\n");
-        for (g, names) in GROUPS {
+        for g in crate::services::Group::ALL {
+            let names: Vec<&str> = crate::services::SERVICES
+                .iter()
+                .filter(|x| x.group == g && !x.function)
+                .map(|x| x.name)
+                .collect();
+            s.push_str(&format!("  {:<15} {}\n", g.title(), names.join(", ")));
+        }
+        for (g, names) in HELPER_GROUPS {
             s.push_str(&format!("  {g:<15} {}\n", names.join(", ")));
         }
         s.push_str("Commands:\n");
@@ -422,13 +397,14 @@ impl Repl {
             s.push_str(&c.signature(*f));
             s.push('\n');
         }
-        if let Some(svc) = crate::services::SERVICES
-            .iter()
-            .find(|x| x.name.eq_ignore_ascii_case(name) && x.code > 0)
-        {
+        let svc = crate::services::table::by_name(name);
+        if let Some(svc) = svc.filter(|x| x.code > 0) {
             s.push_str(&format!("command code {}\n", svc.code));
         }
-        let doc = stdlib_doc(name);
+        let doc = match svc {
+            Some(svc) => svc.doc.lines().map(|l| format!("{l}\n")).collect(),
+            None => stdlib_doc(name),
+        };
         if !doc.is_empty() {
             s.push_str(&doc);
         }

@@ -3,6 +3,7 @@
 //! the base axes), open and close the hand, change step and speed, and store
 //! the current pose into a path. Limits are shown and never crossed.
 
+use crate::interp::Clock;
 use crate::kinematics::{Joints, deg, joints_to_deg, rad};
 use crate::services::{Pendant, RobotState};
 use ratatui::Terminal;
@@ -53,7 +54,7 @@ const KEYS: [(char, char, &str, &str); 5] = [
 ];
 
 impl TermPendant {
-    fn jog_joint(&mut self, st: &mut RobotState, j: usize, sign: f64) {
+    fn jog_joint(&mut self, st: &mut RobotState, clock: &mut dyn Clock, j: usize, sign: f64) {
         let mut q = st.robot.joints();
         q[j] += sign * rad(STEPS[self.step]);
         let spec = &st.kin.description().joints()[j];
@@ -66,10 +67,16 @@ impl TermPendant {
             );
             return;
         }
-        self.go(st, q);
+        self.go(st, clock, q);
     }
 
-    fn jog_cartesian(&mut self, st: &mut RobotState, axis: usize, sign: f64) {
+    fn jog_cartesian(
+        &mut self,
+        st: &mut RobotState,
+        clock: &mut dyn Clock,
+        axis: usize,
+        sign: f64,
+    ) {
         let q = st.robot.joints();
         let mut pose = st.kin.fk_tcp(&q, &st.tool.trans);
         pose.translation[axis] += sign * STEPS[self.step];
@@ -77,7 +84,7 @@ impl TermPendant {
             .kin
             .ik_choose(&pose, &st.tool.trans, &q, st.arm, st.elbow)
         {
-            Ok(s) => self.go(st, s.joints),
+            Ok(s) => self.go(st, clock, s.joints),
             Err(e) => {
                 self.message = format!(
                     "{} {}: refused: {e}",
@@ -88,10 +95,12 @@ impl TermPendant {
         }
     }
 
-    fn go(&mut self, st: &mut RobotState, q: Joints) {
-        match st.robot.move_joints(&[q], 0.0) {
+    /// A jog goes through the same service code as a program's motion:
+    /// limits, speed, driver, clock and trace.
+    fn go(&mut self, st: &mut RobotState, clock: &mut dyn Clock, q: Joints) {
+        match crate::services::jog(st, clock, q) {
             Ok(()) => self.message.clear(),
-            Err(e) => self.message = format!("refused: {e:?}"),
+            Err(e) => self.message = format!("refused: {e}"),
         }
     }
 
@@ -109,7 +118,7 @@ impl TermPendant {
     }
 
     /// Handles a key; true to leave.
-    fn key(&mut self, st: &mut RobotState, c: KeyCode) -> bool {
+    fn key(&mut self, st: &mut RobotState, clock: &mut dyn Clock, c: KeyCode) -> bool {
         match c {
             KeyCode::Esc | KeyCode::Char('x') => return true,
             KeyCode::Char('m') => {
@@ -138,7 +147,7 @@ impl TermPendant {
                 };
                 self.message = match r {
                     Ok(s) => format!("hand: opening {:.1} mm, force {:.1} N", s.opening, s.force),
-                    Err(e) => format!("hand refused: {e:?}"),
+                    Err(e) => format!("hand refused: {e}"),
                 };
             }
             KeyCode::Char(ch) => {
@@ -151,9 +160,9 @@ impl TermPendant {
                         continue;
                     };
                     if self.cartesian && j < 3 {
-                        self.jog_cartesian(st, j, sign);
+                        self.jog_cartesian(st, clock, j, sign);
                     } else {
-                        self.jog_joint(st, j, sign);
+                        self.jog_joint(st, clock, j, sign);
                     }
                 }
             }
@@ -313,6 +322,7 @@ impl Pendant for TermPendant {
     fn teach(
         &mut self,
         st: &mut RobotState,
+        clock: &mut dyn Clock,
         text: &str,
         refresh: bool,
         clear: bool,
@@ -336,7 +346,9 @@ impl Pendant for TermPendant {
                 }
                 draw = true;
                 match event::read().map_err(|e| e.to_string())? {
-                    Event::Key(k) if k.kind == KeyEventKind::Press && self.key(st, k.code) => {
+                    Event::Key(k)
+                        if k.kind == KeyEventKind::Press && self.key(st, clock, k.code) =>
+                    {
                         return Ok(());
                     }
                     _ => {}

@@ -192,12 +192,20 @@ fn history_path() -> Option<std::path::PathBuf> {
 
 /// The interactive REPL on a terminal. Returns the exit status.
 pub fn interactive(color: bool) -> i32 {
+    interactive_on(color, None)
+}
+
+/// [`interactive`], driving a real arm on `port` when one is given.
+pub fn interactive_on(color: bool, port: Option<crate::driver::serial::PortSettings>) -> i32 {
     let mut repl = Repl::new(
         Box::new(|| Box::new(std::io::stdout()) as Box<dyn Write>),
         color,
     );
     let flag = Arc::new(AtomicBool::new(false));
     repl.session.machine.interrupted = Some(flag.clone());
+    if let Some(p) = port {
+        repl.use_port(p);
+    }
     repl.use_terminal();
     repl.session.machine.input = Box::new(std::io::BufReader::new(std::io::stdin()));
     let mut editor: Editor<AdaHelper, rustyline::history::DefaultHistory> = match Editor::new() {
@@ -287,7 +295,21 @@ pub fn piped_with(
     out: &mut dyn Write,
     strict: bool,
 ) -> i32 {
+    piped_on(input, make_out, out, strict, None)
+}
+
+/// [`piped_with`], driving a real arm on `port` when one is given.
+pub fn piped_on(
+    input: impl BufRead,
+    make_out: super::WriterFactory,
+    out: &mut dyn Write,
+    strict: bool,
+    port: Option<crate::driver::serial::PortSettings>,
+) -> i32 {
     let mut repl = Repl::new(make_out, false);
+    if let Some(p) = port {
+        repl.use_port(p);
+    }
     let mut failed = false;
     let mut buf = String::new();
     for line in input.lines() {

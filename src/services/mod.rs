@@ -4,12 +4,16 @@
 //! every raised exception leaves the state as it was.
 
 mod paths;
+pub mod table;
+
+mod exc;
 
 use crate::driver::{Robot, sim::Simulator};
-use crate::interp::{Flow, Native, R, Run, Value, value::Array};
+use crate::interp::{Clock, Flow, Native, R, Run, Value, value::Array};
 use crate::kinematics::{
     Arm, Elbow, Joints, KinError, Kinematics, MotionProfile, Pose, RobotDescription,
 };
+pub use exc::{Exc, ExcIds};
 use std::collections::BTreeMap;
 use std::io::Write;
 use std::rc::Rc;
@@ -37,6 +41,8 @@ pub struct RobotState {
     pub force_setting: f64,
     /// The screen teach pendant, when a terminal is there (installed by the CLI).
     pub pendant: Option<Box<dyn Pendant>>,
+    /// The exceptions of the program the services run in.
+    pub excs: ExcIds,
 }
 
 /// The screen teach pendant behind the `TeachBox` service. The terminal
@@ -46,6 +52,7 @@ pub trait Pendant {
     fn teach(
         &mut self,
         st: &mut RobotState,
+        clock: &mut dyn Clock,
         text: &str,
         refresh: bool,
         clear: bool,
@@ -62,12 +69,18 @@ pub struct Tool {
 }
 
 impl RobotState {
-    pub fn new(desc: RobotDescription) -> RobotState {
+    pub fn new(desc: RobotDescription, excs: ExcIds) -> RobotState {
+        let sim = Box::new(Simulator::new(desc.clone()));
+        RobotState::with_driver(desc, excs, sim)
+    }
+
+    /// The state for `desc` driven by `robot` (the simulator or a real arm).
+    pub fn with_driver(desc: RobotDescription, excs: ExcIds, robot: Box<dyn Robot>) -> RobotState {
         let kin = Kinematics::new(desc.clone());
         let tool = standard_tool(&kin);
         RobotState {
             kin,
-            robot: Box::new(Simulator::new(desc)),
+            robot,
             initialized: false,
             velocity: 50.0,
             straight: false,
@@ -84,6 +97,7 @@ impl RobotState {
             realtime: false,
             force_setting: 0.0,
             pendant: None,
+            excs,
         }
     }
 }
@@ -99,75 +113,20 @@ fn standard_tool(kin: &Kinematics) -> Tool {
     }
 }
 
-/// A service: its import name, its command code (for `ValueErrorStatus`)
-/// and its body.
-pub struct Service {
-    pub name: &'static str,
-    pub code: i64,
-    pub body: Native,
-}
+pub use table::{Group, SERVICES, Service};
 
-macro_rules! services {
-    ($($name:literal, $code:expr, $f:expr;)*) => {
-        pub const SERVICES: &[Service] = &[$(Service { name: $name, code: $code, body: $f }),*];
-    };
-}
-
-services! {
-    "InitRobot", 150, init_robot;
-    "EndRobot", 110, end_robot;
-    "CalibrateRobot", 40, calibrate;
-    "SetVelocity", 330, set_velocity;
-    "SetMoveMode", 290, set_move_mode;
-    "SetInterpolation", 300, set_interpolation;
-    "SetRobotConfig", 310, set_robot_config;
-    "ValueRobotConfig", 430, value_robot_config;
-    "SetTool", 320, set_tool;
-    "ValueTool", 440, value_tool;
-    "ValueTool_F", 440, value_tool_f;
-    "MoveTool", 230, move_tool;
-    "MoveAxesAbsolute", 180, move_axes_absolute;
-    "MoveAxesRelative", 190, move_axes_relative;
-    "MoveFrameAbsolute", 200, move_frame_absolute;
-    "MoveFrameRelative", 210, move_frame_relative;
-    "SetBase", 280, set_base;
-    "ValidFrame", 370, valid_frame;
-    "ValueAxes", 380, value_axes;
-    "ValueAxes_F", 380, value_axes_f;
-    "ValueFrameAbsolute", 400, value_frame_absolute;
-    "ValueFrameAbsolute_F", 400, value_frame_absolute_f;
-    "ValueFrameRelative", 410, value_frame_relative;
-    "ValueFrameRelative_F", 410, value_frame_relative_f;
-    "ValueErrorStatus", 390, value_error_status;
-    "ValueErrorStatus_F", 390, value_error_status_f;
-    "CreatePath", 70, paths::create_path;
-    "DeletePath", 80, paths::delete_path;
-    "InsertPosition", 160, paths::insert_position;
-    "DeletePosition", 90, paths::delete_position;
-    "ValuePosition", 420, paths::value_position;
-    "MovePath", 220, paths::move_path;
-    "SavePathSystem", 260, paths::save_path_system;
-    "LoadPathSystem", 170, paths::load_path_system;
-    "TeachBox", 350, teach_box;
-    "PlaceObject", 0, place_object;
-    "PutS_String", 0, puts_string;
-    "PutS_Integer", 0, puts_integer;
-    "New_LineS", 0, new_lines;
-    "Get_LineS", 0, get_lines;
-    "Get_LineS_Text", 0, get_lines_text;
-    "put_fixed", 0, put_fixed;
-}
-
+/// The native body bound to an import name.
 pub fn lookup(name: &str) -> Option<Native> {
-    SERVICES.iter().find(|s| s.name == name).map(|s| s.body)
+    table::by_import(name).map(|s| s.body)
+}
+
+/// The profile an import name expects, for the checker.
+pub fn import_profile(name: &str) -> Option<crate::check::ImportProfile> {
+    table::by_import(name).map(|s| s.import_profile())
 }
 
 fn code_of(name: &str) -> i64 {
-    SERVICES
-        .iter()
-        .find(|s| s.name == name)
-        .map(|s| s.code)
-        .unwrap_or(0)
+    table::code_of(name)
 }
 
 // ---- plumbing ----
@@ -177,18 +136,12 @@ pub(crate) fn fail(
     r: &mut Run,
     st: &mut RobotState,
     service: &str,
-    exc: &str,
+    exc: Exc,
     msg: String,
     span: crate::diag::Span,
 ) -> Flow {
     st.error_status = code_of(service);
-    let full = if exc.contains('.') || exc.chars().all(|c| c.is_ascii_uppercase() || c == '_') {
-        exc.to_string()
-    } else {
-        format!("ADAIR.{}", exc.to_uppercase())
-    };
-    let id = r.exc_by_name(&full);
-    r.raise(id, msg, span)
+    r.raise(st.excs.id(exc), msg, span)
 }
 
 fn kin_fail(
@@ -198,31 +151,34 @@ fn kin_fail(
     e: &KinError,
     span: crate::diag::Span,
 ) -> Flow {
-    let exc = e.exception();
-    let name = match exc {
-        crate::kinematics::AdaException::ConstraintError => "CONSTRAINT_ERROR",
-        other => other.name(),
-    };
-    fail(r, st, service, name, e.to_string(), span)
+    fail(r, st, service, e.exception().into(), e.to_string(), span)
 }
 
-/// Runs a service body with the robot state taken out of the machine.
+/// Runs a service body with the robot state taken out of the machine. A
+/// session without a robot (one that never chose one) raises
+/// `Program_Error`: there is no default robot to drive silently.
 fn with_state(
     r: &mut Run,
+    span: crate::diag::Span,
     f: impl FnOnce(&mut Run, &mut RobotState) -> R<Option<Value>>,
 ) -> R<Option<Value>> {
-    let mut boxed = match r.m.robot.take() {
-        Some(b) => b,
-        None => Box::new(RobotState::new(
-            RobotDescription::builtin("rv-m1").expect("built-in robot"),
-        )),
+    let Some(mut boxed) = r.m.robot.take() else {
+        return Err(no_robot(r, span));
     };
     let result = match boxed.downcast_mut::<RobotState>() {
         Some(st) => f(r, st),
-        None => Ok(None),
+        None => Err(no_robot(r, span)),
     };
     r.m.robot = Some(boxed);
     result
+}
+
+fn no_robot(r: &mut Run, span: crate::diag::Span) -> Flow {
+    r.raise(
+        crate::check::PROGRAM_ERROR,
+        "no robot: this session was started without one (choose one with --robot)",
+        span,
+    )
 }
 
 fn require_init(r: &mut Run, st: &mut RobotState, service: &str, span: crate::diag::Span) -> R<()> {
@@ -231,17 +187,21 @@ fn require_init(r: &mut Run, st: &mut RobotState, service: &str, span: crate::di
             r,
             st,
             service,
-            "SystemNotInitialized",
+            Exc::SystemNotInitialized,
             format!("{service} before InitRobot: call InitRobot first"),
             span,
         ));
     }
-    // A `Control => True` motion still running: wait for its end.
+    wait_for_control(r, st);
+    Ok(())
+}
+
+/// A `Control => True` motion still running: wait for its end.
+fn wait_for_control(r: &mut Run, st: &RobotState) {
     let now = r.m.clock.now();
     if st.busy_until > now {
         r.m.clock.sleep(st.busy_until - now);
     }
-    Ok(())
 }
 
 pub fn frame_value(p: &Pose) -> Value {
@@ -318,9 +278,10 @@ fn perform(
     span: crate::diag::Span,
 ) -> R<()> {
     let before = st.robot.joints();
+    let real = st.robot.real_time();
     // Paced to the wall clock: the user can stop the motion (Ctrl-C); the
-    // robot then stays where it had got to.
-    if (o.realtime || st.realtime) && !o.control {
+    // robot then stays where it had got to. A real arm takes its own time.
+    if (o.realtime || st.realtime) && !o.control && !real {
         let done = r.m.pace(duration);
         if done < 1.0 {
             let reached = interpolate(&before, points, done);
@@ -330,7 +291,7 @@ fn perform(
                 r,
                 st,
                 service,
-                "PROGRAM_ERROR",
+                Exc::ProgramError,
                 format!(
                     "interrupted (Ctrl-C) after {:.3} of {duration:.3} s; the robot stopped there",
                     duration * done
@@ -339,18 +300,13 @@ fn perform(
             ));
         }
     }
-    if let Err(e) = st.robot.move_joints(points, duration) {
-        return Err(fail(
-            r,
-            st,
-            service,
-            "FatalCommunicationError",
-            format!("{e:?}"),
-            span,
-        ));
-    }
     let start = r.m.clock.now();
-    if o.control {
+    if let Err(e) = st.robot.move_joints(points, duration) {
+        return Err(driver_fail(r, st, service, e, span));
+    }
+    if real {
+        // The driver returned when the arm had finished (wall clock).
+    } else if o.control {
         st.busy_until = start + duration;
     } else {
         r.m.clock.sleep(duration);
@@ -366,6 +322,81 @@ fn perform(
         );
     }
     Ok(())
+}
+
+/// A jog of the teach pendant to `target`: checked against the limits,
+/// timed at the current velocity, driven, clocked and traced like a
+/// program's joint motion.
+pub fn jog(st: &mut RobotState, clock: &mut dyn Clock, target: Joints) -> Result<(), String> {
+    let from = st.robot.joints();
+    let desc = st.kin.description();
+    desc.check_limits(&target).map_err(|v| v.to_string())?;
+    let d = MotionProfile::plan(&from, &target, st.velocity, desc, None)
+        .map_err(|e| e.to_string())?
+        .duration();
+    let start = clock.now();
+    st.robot
+        .move_joints(&[target], d)
+        .map_err(|e| e.to_string())?;
+    if !st.robot.real_time() {
+        clock.sleep(d);
+    }
+    if let Some(t) = &mut st.trace {
+        let _ = writeln!(
+            t,
+            "[t={start:9.3} s] TeachBox jog: {} -> {} deg, {d:.3} s",
+            deg5(&from),
+            deg5(&st.robot.joints())
+        );
+    }
+    Ok(())
+}
+
+/// Wall-clock time, for a real arm: motions take the time they take.
+pub struct WallClock {
+    start: std::time::Instant,
+}
+
+impl Default for WallClock {
+    fn default() -> Self {
+        WallClock {
+            start: std::time::Instant::now(),
+        }
+    }
+}
+
+impl Clock for WallClock {
+    fn now(&self) -> f64 {
+        self.start.elapsed().as_secs_f64()
+    }
+    fn sleep(&mut self, seconds: f64) {
+        if seconds > 0.0 {
+            std::thread::sleep(std::time::Duration::from_secs_f64(seconds.min(86_400.0)));
+        }
+    }
+}
+
+/// A driver's failure as the handbook's exception (robots.md's fault table).
+pub(crate) fn driver_fail(
+    r: &mut Run,
+    st: &mut RobotState,
+    service: &str,
+    e: crate::driver::DriverError,
+    span: crate::diag::Span,
+) -> Flow {
+    use crate::driver::DriverError as D;
+    let exc = match &e {
+        D::NoConnection(_) => Exc::NoConnection,
+        D::NoRobot(_) => Exc::NoRobotInstalled,
+        D::WrongRobot(_) => Exc::WrongRobotInstalled,
+        D::Lost(_) => Exc::MessageLost,
+        D::Invalid(_) => Exc::MessageInvalid,
+        D::Fatal(_) => Exc::FatalCommunicationError,
+        D::Refused(_) => Exc::CommandNotSupported,
+        D::UnitOutOfRange(_) | D::Limit(_) => Exc::OutOfReach,
+        D::Interrupted => Exc::ProgramError,
+    };
+    fail(r, st, service, exc, e.to_string(), span)
 }
 
 /// The joints a fraction of the way along a motion through `points`.
@@ -461,7 +492,7 @@ fn move_frame(
                     r,
                     st,
                     service,
-                    "TimeInvalid",
+                    Exc::TimeInvalid,
                     format!("Time => {t:.3} s is shorter than the fastest straight line, {d:.3} s"),
                     span,
                 ));
@@ -480,12 +511,15 @@ fn move_frame(
 // ---- services ----
 
 fn init_robot(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         let o = MotionOpts {
             time: None,
             control: false,
             realtime: false,
         };
+        if let Err(e) = st.robot.init() {
+            return Err(driver_fail(r, st, "InitRobot", e, span));
+        }
         st.initialized = true;
         st.velocity = 50.0;
         st.straight = false;
@@ -496,34 +530,30 @@ fn init_robot(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Optio
         st.tool = standard_tool(&st.kin);
         st.base = Pose::identity();
         st.busy_until = r.m.clock.now();
-        if let Err(e) = st.robot.calibrate() {
-            return Err(fail(
-                r,
-                st,
-                "InitRobot",
-                "FatalCommunicationError",
-                format!("{e:?}"),
-                span,
-            ));
+        if let Err(e) = st.robot.set_speed(st.velocity) {
+            st.initialized = false;
+            return Err(driver_fail(r, st, "InitRobot", e, span));
         }
         let zero = [0.0; 5];
         let d = plan(r, st, "InitRobot", &zero, &o, span)?;
         perform(r, st, "InitRobot", &[zero], d, &o, span)?;
         let g = *st.kin.description().gripper();
-        let _ = st.robot.move_gripper(g.opening_max, None);
+        if let Err(e) = st.robot.move_gripper(g.opening_max, None) {
+            return Err(driver_fail(r, st, "InitRobot", e, span));
+        }
         st.force_setting = g.init_force;
         Ok(None)
     })
 }
 
 fn end_robot(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         if !st.initialized {
             return Err(fail(
                 r,
                 st,
                 "EndRobot",
-                "SystemNotInitialized",
+                Exc::SystemNotInitialized,
                 "EndRobot before InitRobot".into(),
                 span,
             ));
@@ -534,7 +564,7 @@ fn end_robot(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option
                 r,
                 st,
                 "EndRobot",
-                "ControlCommandActive",
+                Exc::ControlCommandActive,
                 format!(
                     "a Control => True motion runs until t = {:.3} s (now {now:.3} s)",
                     st.busy_until
@@ -559,17 +589,10 @@ fn end_robot(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option
 }
 
 fn calibrate(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "CalibrateRobot", span)?;
         if let Err(e) = st.robot.calibrate() {
-            return Err(fail(
-                r,
-                st,
-                "CalibrateRobot",
-                "FatalCommunicationError",
-                format!("{e:?}"),
-                span,
-            ));
+            return Err(driver_fail(r, st, "CalibrateRobot", e, span));
         }
         Ok(None)
     })
@@ -577,19 +600,22 @@ fn calibrate(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option
 
 fn set_velocity(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let v = a[0].real();
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "SetVelocity", span)?;
         if v <= 0.0 {
             return Err(fail(
                 r,
                 st,
                 "SetVelocity",
-                "CONSTRAINT_ERROR",
+                Exc::ConstraintError,
                 format!(
                     "velocity {v:.1} % would never arrive: give a velocity above 0.0 %, up to 100.0 %"
                 ),
                 span,
             ));
+        }
+        if let Err(e) = st.robot.set_speed(v) {
+            return Err(driver_fail(r, st, "SetVelocity", e, span));
         }
         st.velocity = v;
         Ok(None)
@@ -598,7 +624,7 @@ fn set_velocity(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Opti
 
 fn set_move_mode(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let k = a[0].int();
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "SetMoveMode", span)?;
         st.straight = k == 1;
         Ok(None)
@@ -607,7 +633,7 @@ fn set_move_mode(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Opt
 
 fn set_interpolation(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let w = a[0].real();
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "SetInterpolation", span)?;
         st.interpolation = w;
         Ok(None)
@@ -616,7 +642,7 @@ fn set_interpolation(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R
 
 fn set_robot_config(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let (arm, elbow, hand) = (a[0].int(), a[1].int(), a[2].int());
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "SetRobotConfig", span)?;
         st.arm = match arm {
             0 => Arm::Forward,
@@ -634,7 +660,7 @@ fn set_robot_config(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<
 }
 
 fn value_robot_config(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "ValueRobotConfig", span)?;
         let (arm, elbow) = st.kin.config_of(&st.robot.read_joints());
         a[0] = Value::Int(match arm {
@@ -659,7 +685,7 @@ fn set_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<V
     };
     let trans = Pose::from_rows(frame_rows(&rec[0]));
     let (fmin, fmax, dmin, dmax) = (rec[1].real(), rec[2].real(), rec[4].real(), rec[5].real());
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "SetTool", span)?;
         if let Err(e) = trans.check_rigid("tool transform") {
             return Err(kin_fail(r, st, "SetTool", &e, span));
@@ -669,7 +695,7 @@ fn set_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<V
                 r,
                 st,
                 "SetTool",
-                "ForceInvalid",
+                Exc::ForceInvalid,
                 format!("ForceMin {fmin:.1} N is above ForceMax {fmax:.1} N"),
                 span,
             ));
@@ -679,7 +705,7 @@ fn set_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<V
                 r,
                 st,
                 "SetTool",
-                "DistanceInvalid",
+                Exc::DistanceInvalid,
                 format!("DistMin {dmin:.1} mm is above DistMax {dmax:.1} mm"),
                 span,
             ));
@@ -721,7 +747,7 @@ fn tool_value(st: &RobotState) -> Value {
 }
 
 fn value_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "ValueTool", span)?;
         a[0] = tool_value(st);
         Ok(None)
@@ -729,7 +755,7 @@ fn value_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option
 }
 
 fn value_tool_f(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "ValueTool", span)?;
         Ok(Some(tool_value(st)))
     })
@@ -741,7 +767,7 @@ fn value_tool_f(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Opt
 /// only the distance counts. The distance wins over the force.
 fn move_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let (dist, force) = (a[0].real(), a[1].real());
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "MoveTool", span)?;
         let t = st.tool;
         let has_dist = !(t.dist_min == 0.0 && t.dist_max == 0.0);
@@ -751,7 +777,7 @@ fn move_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<
                 r,
                 st,
                 "MoveTool",
-                "DistanceInvalid",
+                Exc::DistanceInvalid,
                 format!(
                     "distance {dist:.1} mm outside {:.1} .. {:.1} mm",
                     t.dist_min, t.dist_max
@@ -764,7 +790,7 @@ fn move_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<
                 r,
                 st,
                 "MoveTool",
-                "ForceInvalid",
+                Exc::ForceInvalid,
                 format!(
                     "force {force:.1} N outside {:.1} .. {:.1} N",
                     t.force_min, t.force_max
@@ -790,7 +816,9 @@ fn move_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<
                 // The jaws move at 100 mm/s at full velocity.
                 let d =
                     (before.opening - g2.opening).abs() / (100.0 * st.velocity / 100.0).max(1e-6);
-                r.m.clock.sleep(d);
+                if !st.robot.real_time() {
+                    r.m.clock.sleep(d);
+                }
                 if let Some(tr) = &mut st.trace {
                     let _ = writeln!(
                         tr,
@@ -804,14 +832,7 @@ fn move_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<
                 }
                 Ok(None)
             }
-            Err(e) => Err(fail(
-                r,
-                st,
-                "MoveTool",
-                "FatalCommunicationError",
-                format!("{e:?}"),
-                span,
-            )),
+            Err(e) => Err(driver_fail(r, st, "MoveTool", e, span)),
         }
     })
 }
@@ -819,7 +840,7 @@ fn move_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<
 fn move_axes_absolute(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let axes = axes_of(&a[0]);
     let o = opts(a, 1);
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "MoveAxesAbsolute", span)?;
         let target = match st.kin.joint_target(&axes) {
             Ok(t) => t,
@@ -834,7 +855,7 @@ fn move_axes_absolute(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> 
 fn move_axes_relative(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let delta = axes_of(&a[0]);
     let o = opts(a, 1);
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "MoveAxesRelative", span)?;
         let current = st.robot.joints();
         let target = match st.kin.relative_joint_target(&current, &delta) {
@@ -850,7 +871,7 @@ fn move_axes_relative(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> 
 fn move_frame_absolute(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let goal = Pose::from_rows(frame_rows(&a[0]));
     let o = opts(a, 1);
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "MoveFrameAbsolute", span)?;
         move_frame(r, st, "MoveFrameAbsolute", goal, o, span)
     })
@@ -859,7 +880,7 @@ fn move_frame_absolute(r: &mut Run, a: &mut [Value], span: crate::diag::Span) ->
 fn move_frame_relative(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let goal = Pose::from_rows(frame_rows(&a[0]));
     let o = opts(a, 1);
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "MoveFrameRelative", span)?;
         let g = st.base * goal;
         move_frame(r, st, "MoveFrameRelative", g, o, span)
@@ -868,7 +889,7 @@ fn move_frame_relative(r: &mut Run, a: &mut [Value], span: crate::diag::Span) ->
 
 fn set_base(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let base = Pose::from_rows(frame_rows(&a[0]));
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "SetBase", span)?;
         if let Err(e) = base.check_rigid("base frame") {
             return Err(kin_fail(r, st, "SetBase", &e, span));
@@ -880,7 +901,7 @@ fn set_base(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<V
 
 fn valid_frame(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let f = Pose::from_rows(frame_rows(&a[0]));
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "ValidFrame", span)?;
         match st.kin.valid_frame(&f, &st.tool.trans) {
             Ok(v) => {
@@ -899,7 +920,7 @@ fn value_axes(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option
 }
 
 fn value_axes_f(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "ValueAxes", span)?;
         Ok(Some(axes_value(&st.robot.read_joints())))
     })
@@ -919,7 +940,7 @@ fn value_frame_absolute_f(
     _a: &mut [Value],
     span: crate::diag::Span,
 ) -> R<Option<Value>> {
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "ValueFrameAbsolute", span)?;
         Ok(Some(frame_value(&current_frame(st))))
     })
@@ -935,7 +956,7 @@ fn value_frame_relative_f(
     _a: &mut [Value],
     span: crate::diag::Span,
 ) -> R<Option<Value>> {
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "ValueFrameRelative", span)?;
         Ok(Some(frame_value(&(st.base.inverse() * current_frame(st)))))
     })
@@ -951,8 +972,10 @@ fn value_error_status_f(
     _a: &mut [Value],
     span: crate::diag::Span,
 ) -> R<Option<Value>> {
-    with_state(r, |r, st| {
-        require_init(r, st, "ValueErrorStatus", span)?;
+    // Always answers, before InitRobot too: a handler must be able to ask
+    // which service raised, SystemNotInitialized included.
+    with_state(r, span, |r, st| {
+        wait_for_control(r, st);
         Ok(Some(Value::Int(st.error_status)))
     })
 }
@@ -960,7 +983,7 @@ fn value_error_status_f(
 fn teach_box(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let text = a[0].text();
     let (refresh, clear) = (a[1].int() != 0, a[2].int() != 0);
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "TeachBox", span)?;
         if text.chars().count() > 60 || text.chars().any(|c| c.is_control()) {
             let msg = match text.chars().position(|c| c.is_control()) {
@@ -973,42 +996,41 @@ fn teach_box(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<
                     text.chars().count()
                 ),
             };
-            return Err(fail(r, st, "TeachBox", "UserInfoInvalid", msg, span));
+            return Err(fail(r, st, "TeachBox", Exc::UserInfoInvalid, msg, span));
         }
         let Some(mut p) = st.pendant.take() else {
             return Err(fail(
                 r,
                 st,
                 "TeachBox",
-                "CommandNotSupported",
+                Exc::CommandNotSupported,
                 "the TeachBox needs an interactive terminal (run the program from a terminal, or use the REPL's :teach)".into(),
                 span,
             ));
         };
-        let result = p.teach(st, &text, refresh, clear);
+        let result = p.teach(st, &mut *r.m.clock, &text, refresh, clear);
         st.pendant = Some(p);
         match result {
             Ok(()) => Ok(None),
-            Err(msg) => Err(fail(r, st, "TeachBox", "CommandNotSupported", msg, span)),
+            Err(msg) => Err(fail(r, st, "TeachBox", Exc::CommandNotSupported, msg, span)),
         }
     })
 }
 
 fn place_object(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
     let w = a[0].real();
-    with_state(r, |r, st| match st.robot.place_object(w) {
-        Ok(()) => Ok(None),
-        Err(e) => Err(fail(
-            r,
-            st,
-            "PlaceObject",
-            "CONSTRAINT_ERROR",
-            match e {
-                crate::driver::DriverError::Refused(m)
-                | crate::driver::DriverError::NoConnection(m) => m,
-            },
-            span,
-        )),
+    with_state(r, span, |r, st| {
+        let result = match st.robot.as_simulator() {
+            Some(sim) => sim.place_object(w).map_err(|m| (Exc::ConstraintError, m)),
+            None => Err((
+                Exc::CommandNotSupported,
+                "PlaceObject exists only on the simulator: a real hand holds real objects".into(),
+            )),
+        };
+        match result {
+            Ok(()) => Ok(None),
+            Err((exc, m)) => Err(fail(r, st, "PlaceObject", exc, m, span)),
+        }
     })
 }
 

@@ -20,7 +20,7 @@ fn path_of(r: &mut Run, st: &mut RobotState, service: &str, p: i64, span: Span) 
             r,
             st,
             service,
-            "PathNotDefined",
+            Exc::PathNotDefined,
             format!("path {p} is not defined (CreatePath ({p}) first)"),
             span,
         ));
@@ -30,14 +30,14 @@ fn path_of(r: &mut Run, st: &mut RobotState, service: &str, p: i64, span: Span) 
 
 pub fn create_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let p = a[0].int();
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "CreatePath", span)?;
         if st.paths.contains_key(&p) {
             return Err(fail(
                 r,
                 st,
                 "CreatePath",
-                "PathAlreadyDefined",
+                Exc::PathAlreadyDefined,
                 format!("path {p} is already defined"),
                 span,
             ));
@@ -49,7 +49,7 @@ pub fn create_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>>
 
 pub fn delete_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let p = a[0].int();
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "DeletePath", span)?;
         path_of(r, st, "DeletePath", p, span)?;
         st.paths.remove(&p);
@@ -60,7 +60,7 @@ pub fn delete_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>>
 /// Inserts before position N; an N beyond the end appends as last + 1.
 pub fn insert_position(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let (p, n, f) = (a[0].int(), a[1].int(), frame_rows(&a[2]));
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "InsertPosition", span)?;
         path_of(r, st, "InsertPosition", p, span)?;
         if let Err(e) = Pose::from_rows(f).check_rigid("position") {
@@ -88,7 +88,7 @@ fn position_index(
             r,
             st,
             service,
-            "PathElementNotDefined",
+            Exc::PathElementNotDefined,
             format!("path {p} has {len} position(s), there is no position {n}"),
             span,
         ));
@@ -98,7 +98,7 @@ fn position_index(
 
 pub fn delete_position(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let (p, n) = (a[0].int(), a[1].int());
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "DeletePosition", span)?;
         let i = position_index(r, st, "DeletePosition", p, n, span)?;
         if let Some(path) = st.paths.get_mut(&p) {
@@ -110,7 +110,7 @@ pub fn delete_position(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Val
 
 pub fn value_position(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let (p, n) = (a[0].int(), a[1].int());
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "ValuePosition", span)?;
         let i = position_index(r, st, "ValuePosition", p, n, span)?;
         let f = st.paths[&p][i];
@@ -123,7 +123,7 @@ pub fn value_position(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Valu
 pub fn move_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let p = a[0].int();
     let o = opts(a, 1);
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "MovePath", span)?;
         path_of(r, st, "MovePath", p, span)?;
         let frames = st.paths[&p].clone();
@@ -132,7 +132,7 @@ pub fn move_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
                 r,
                 st,
                 "MovePath",
-                "PathElementNotDefined",
+                Exc::PathElementNotDefined,
                 format!("path {p} has no positions"),
                 span,
             ));
@@ -148,11 +148,7 @@ pub fn move_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
                 }
                 Err(e) => {
                     let msg = format!("position {} of path {p}: {e}", k + 1);
-                    let exc = match e.exception() {
-                        crate::kinematics::AdaException::ConstraintError => "CONSTRAINT_ERROR",
-                        x => x.name(),
-                    };
-                    return Err(fail(r, st, "MovePath", exc, msg, span));
+                    return Err(fail(r, st, "MovePath", e.exception().into(), msg, span));
                 }
             }
         }
@@ -168,7 +164,7 @@ pub fn move_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
                     r,
                     st,
                     "MovePath",
-                    "TimeInvalid",
+                    Exc::TimeInvalid,
                     format!(
                         "Time => {t:.3} s is shorter than the fastest run of path {p}, {d:.3} s"
                     ),
@@ -187,7 +183,7 @@ fn io_error(
     r: &mut Run,
     st: &mut RobotState,
     service: &str,
-    exc: &str,
+    exc: Exc,
     msg: String,
     span: Span,
 ) -> Flow {
@@ -196,7 +192,7 @@ fn io_error(
 
 pub fn save_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let name = a[0].text();
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "SavePathSystem", span)?;
         let mut text = String::from("adair-paths 1\n");
         for (p, frames) in &st.paths {
@@ -219,7 +215,7 @@ pub fn save_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Va
                 r,
                 st,
                 "SavePathSystem",
-                "ADA.IO_EXCEPTIONS.NAME_ERROR",
+                Exc::NameError,
                 format!("\"{name}\" is not a file name"),
                 span,
             ));
@@ -231,7 +227,7 @@ pub fn save_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Va
                 r,
                 st,
                 "SavePathSystem",
-                "ADA.IO_EXCEPTIONS.NAME_ERROR",
+                Exc::NameError,
                 format!("the directory {} does not exist", dir.display()),
                 span,
             ));
@@ -244,7 +240,7 @@ pub fn save_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Va
                 r,
                 st,
                 "SavePathSystem",
-                "ADA.IO_EXCEPTIONS.USE_ERROR",
+                Exc::UseError,
                 format!("cannot write {name}: {e}"),
                 span,
             ));
@@ -348,7 +344,7 @@ fn parse(text: &str) -> Result<PathList, (usize, String)> {
 
 pub fn load_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let name = a[0].text();
-    with_state(r, |r, st| {
+    with_state(r, span, |r, st| {
         require_init(r, st, "LoadPathSystem", span)?;
         let text = match std::fs::read_to_string(&name) {
             Ok(t) => t,
@@ -357,7 +353,7 @@ pub fn load_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Va
                     r,
                     st,
                     "LoadPathSystem",
-                    "ADA.IO_EXCEPTIONS.NAME_ERROR",
+                    Exc::NameError,
                     format!("no file {name}"),
                     span,
                 ));
@@ -367,7 +363,7 @@ pub fn load_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Va
                     r,
                     st,
                     "LoadPathSystem",
-                    "ADA.IO_EXCEPTIONS.USE_ERROR",
+                    Exc::UseError,
                     format!("cannot read {name}: {e}"),
                     span,
                 ));
@@ -380,7 +376,7 @@ pub fn load_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Va
                     r,
                     st,
                     "LoadPathSystem",
-                    "ADA.IO_EXCEPTIONS.DATA_ERROR",
+                    Exc::DataError,
                     format!("{name}:{line}: {msg}"),
                     span,
                 ));
@@ -392,7 +388,7 @@ pub fn load_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Va
                 r,
                 st,
                 "LoadPathSystem",
-                "PathAlreadyDefined",
+                Exc::PathAlreadyDefined,
                 format!("{name} defines path {p}, which is already defined; nothing was loaded"),
                 span,
             ));

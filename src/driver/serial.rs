@@ -1,0 +1,495 @@
+//! The serial driver: the robot's own controller language over RS-232
+//! (robots.md). The driver tracks the joint state itself, sends joint moves
+//! (`MJ` degrees on the RV-M1, `MI` counts on the RM-501), checks every motion
+//! with `ER` (RV-M1; the reply comes when the motion has ended) and re-reads
+//! `WH` after every fault, so the state the program sees is the arm's.
+//! Every read has a timeout; nothing blocks forever.
+
+use super::protocol::{self, Unit};
+use super::{DriverError, GripperState, Robot, wh};
+use crate::kinematics::{JOINTS, Joints, Kinematics, RobotDescription};
+use std::io::{Read, Write};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::{Duration, Instant};
+
+/// A line-oriented link to a unit: the serial port, or a test double.
+pub trait Link {
+    /// Sends one command line (the link appends CR).
+    fn send(&mut self, line: &str) -> Result<(), DriverError>;
+    /// The next reply line (ended by CR, LF or CR LF) within `timeout`.
+    fn read_line(&mut self, timeout: Duration) -> Result<String, DriverError>;
+}
+
+/// How to reach the unit.
+#[derive(Clone, Debug)]
+pub struct PortSettings {
+    pub path: String,
+    pub baud: u32,
+    /// Seconds a reply may take beyond a motion's expected time.
+    pub timeout: f64,
+}
+
+/// A `serialport` port as a [`Link`].
+pub struct SerialLink {
+    port: Box<dyn serialport::SerialPort>,
+    buf: Vec<u8>,
+    interrupt: Option<Arc<AtomicBool>>,
+}
+
+impl SerialLink {
+    /// Opens the port with the unit's framing; a port that does not open is
+    /// `NoConnection` naming the port and the OS error.
+    pub fn open(
+        s: &PortSettings,
+        unit: Unit,
+        interrupt: Option<Arc<AtomicBool>>,
+    ) -> Result<SerialLink, DriverError> {
+        let (data, stop) = unit.framing();
+        let port = serialport::new(&s.path, s.baud)
+            .data_bits(if data == 7 {
+                serialport::DataBits::Seven
+            } else {
+                serialport::DataBits::Eight
+            })
+            .parity(serialport::Parity::Even)
+            .stop_bits(if stop == 2 {
+                serialport::StopBits::Two
+            } else {
+                serialport::StopBits::One
+            })
+            .flow_control(serialport::FlowControl::Hardware)
+            .timeout(Duration::from_millis(50))
+            .open()
+            .map_err(|e| DriverError::NoConnection(format!("port {}: {e}", s.path)))?;
+        Ok(SerialLink {
+            port,
+            buf: Vec::new(),
+            interrupt,
+        })
+    }
+}
+
+impl Link for SerialLink {
+    fn send(&mut self, line: &str) -> Result<(), DriverError> {
+        let mut bytes = line.as_bytes().to_vec();
+        bytes.push(b'\r');
+        self.port
+            .write_all(&bytes)
+            .and_then(|()| self.port.flush())
+            .map_err(|e| DriverError::Fatal(format!("writing `{line}`: {e}")))
+    }
+
+    fn read_line(&mut self, timeout: Duration) -> Result<String, DriverError> {
+        let end = Instant::now() + timeout;
+        loop {
+            // A complete line in the buffer (CR, LF or CR LF; empty lines are
+            // the second half of a CR LF).
+            while let Some(i) = self.buf.iter().position(|b| *b == b'\r' || *b == b'\n') {
+                let line: Vec<u8> = self.buf.drain(..=i).collect();
+                let text = String::from_utf8_lossy(&line[..line.len() - 1]).to_string();
+                if !text.trim().is_empty() {
+                    return Ok(text.trim().to_string());
+                }
+            }
+            if self
+                .interrupt
+                .as_ref()
+                .is_some_and(|f| f.swap(false, Ordering::SeqCst))
+            {
+                return Err(DriverError::Interrupted);
+            }
+            if Instant::now() >= end {
+                return Err(DriverError::Lost(format!(
+                    "no reply within {:.1} s",
+                    timeout.as_secs_f64()
+                )));
+            }
+            let mut chunk = [0u8; 256];
+            match self.port.read(&mut chunk) {
+                Ok(0) => return Err(DriverError::Fatal("the port reached end of file".into())),
+                Ok(n) => self.buf.extend_from_slice(&chunk[..n]),
+                Err(e) if e.kind() == std::io::ErrorKind::TimedOut => {}
+                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+                Err(e) => return Err(DriverError::Fatal(format!("reading: {e}"))),
+            }
+        }
+    }
+}
+
+/// Opens links: the real port, or (in tests) anything else.
+pub type Opener = Box<dyn FnMut(Unit) -> Result<Box<dyn Link>, DriverError>>;
+
+/// The serial driver.
+pub struct Serial {
+    kin: Kinematics,
+    unit: Unit,
+    settings: PortSettings,
+    open: Opener,
+    link: Option<Box<dyn Link>>,
+    /// The joints the arm has (as far as the driver knows).
+    joints: Joints,
+    /// The controller position the commands add up to (controller deg).
+    sent: [f64; JOINTS],
+    gripper: GripperState,
+    speed: Option<u8>,
+    interrupt: Option<Arc<AtomicBool>>,
+}
+
+impl Serial {
+    /// A driver for `desc` on the port of `settings`; the port opens at `init`.
+    pub fn new(
+        desc: RobotDescription,
+        settings: PortSettings,
+        interrupt: Option<Arc<AtomicBool>>,
+    ) -> Serial {
+        let s2 = settings.clone();
+        let flag = interrupt.clone();
+        let open: Opener = Box::new(move |unit| {
+            SerialLink::open(&s2, unit, flag.clone()).map(|l| Box::new(l) as Box<dyn Link>)
+        });
+        Serial::with_opener(desc, settings, open, interrupt)
+    }
+
+    pub fn with_opener(
+        desc: RobotDescription,
+        settings: PortSettings,
+        open: Opener,
+        interrupt: Option<Arc<AtomicBool>>,
+    ) -> Serial {
+        let unit = Unit::of_robot(desc.name());
+        let nest = desc.nest();
+        let sent = desc.to_controller_deg(&nest);
+        let opening = desc.gripper().opening_max;
+        Serial {
+            kin: Kinematics::new(desc),
+            unit,
+            settings,
+            open,
+            link: None,
+            joints: nest,
+            sent,
+            gripper: GripperState {
+                opening,
+                force: 0.0,
+            },
+            speed: None,
+            interrupt,
+        }
+    }
+
+    fn timeout(&self, expected: f64) -> Duration {
+        Duration::from_secs_f64((expected.max(0.0) + self.settings.timeout).min(86_400.0))
+    }
+
+    fn link(&mut self) -> Result<&mut Box<dyn Link>, DriverError> {
+        self.link.as_mut().ok_or_else(|| {
+            DriverError::NoConnection(format!(
+                "port {}: the link is down; InitRobot opens it again",
+                self.settings.path
+            ))
+        })
+    }
+
+    /// Sends a line; a fatal error takes the link down.
+    fn send(&mut self, line: &str) -> Result<(), DriverError> {
+        let r = self.link()?.send(line);
+        self.check_fatal(r)
+    }
+
+    fn read(&mut self, expected: f64) -> Result<String, DriverError> {
+        let t = self.timeout(expected);
+        let r = self.link()?.read_line(t);
+        self.check_fatal(r)
+    }
+
+    fn check_fatal<T>(&mut self, r: Result<T, DriverError>) -> Result<T, DriverError> {
+        if let Err(DriverError::Fatal(_)) = &r {
+            self.link = None;
+        }
+        r
+    }
+
+    /// `ER`, waiting up to `expected` + the margin: the end of a motion.
+    fn error_status(&mut self, expected: f64, line: &str) -> Result<(), DriverError> {
+        self.send("ER")?;
+        let reply = self.read(expected)?;
+        match protocol::parse_er(&reply) {
+            Some(0) => Ok(()),
+            Some(mode) => {
+                self.send("RS")?;
+                Err(if mode == 1 {
+                    DriverError::Refused(format!("the unit refused `{line}` (error mode I)"))
+                } else {
+                    DriverError::UnitOutOfRange(format!(
+                        "the unit says `{line}` is out of range (error mode II); model and unit disagree"
+                    ))
+                })
+            }
+            None => Err(DriverError::Invalid(format!(
+                "`ER` answered `{reply}`, not 0, 1 or 2"
+            ))),
+        }
+    }
+
+    /// `WH`: the joint state from the arm itself.
+    fn where_is(&mut self, near: Joints) -> Result<Joints, DriverError> {
+        self.send("WH")?;
+        let reply = self.read(0.0)?;
+        let Some(pose) = protocol::parse_wh(&reply) else {
+            return Err(DriverError::Invalid(format!(
+                "`WH` answered `{reply}`, not five numbers"
+            )));
+        };
+        let tl = self.kin.description().links().tool;
+        let q = wh::to_joints(&self.kin, &pose, tl, &near).map_err(|e| {
+            DriverError::Invalid(format!(
+                "`WH` answered `{reply}`, a pose the model cannot take: {e}"
+            ))
+        })?;
+        self.joints = q;
+        self.sent = self.kin.description().to_controller_deg(&q);
+        Ok(q)
+    }
+
+    /// After a fault: the joints from the arm, when the link is still up.
+    fn resync(&mut self, e: DriverError) -> DriverError {
+        if self.unit == Unit::RvM1 && self.link.is_some() {
+            let near = self.joints;
+            let _ = self.where_is(near);
+        }
+        e
+    }
+
+    fn sleep_interruptible(&mut self, seconds: f64) -> Result<(), DriverError> {
+        let end = Instant::now() + Duration::from_secs_f64(seconds.clamp(0.0, 86_400.0));
+        while Instant::now() < end {
+            if self
+                .interrupt
+                .as_ref()
+                .is_some_and(|f| f.swap(false, Ordering::SeqCst))
+            {
+                return Err(DriverError::Interrupted);
+            }
+            std::thread::sleep((end - Instant::now()).min(Duration::from_millis(20)));
+        }
+        Ok(())
+    }
+
+    fn motion(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError> {
+        let desc = self.kin.description().clone();
+        let mut last = String::new();
+        for p in points {
+            let target = desc.to_controller_deg(p);
+            match self.unit {
+                Unit::RvM1 => {
+                    let delta: [f64; JOINTS] =
+                        std::array::from_fn(|j| ((target[j] - self.sent[j]) * 10.0).round() / 10.0);
+                    if delta.iter().all(|d| *d == 0.0) {
+                        continue;
+                    }
+                    last = protocol::mj(&delta);
+                    self.send(&last)?;
+                    for (s, d) in self.sent.iter_mut().zip(delta) {
+                        *s += d;
+                    }
+                }
+                Unit::Rm501 => {
+                    let cpd = self.unit.counts_per_deg();
+                    let counts: [i64; JOINTS] = std::array::from_fn(|j| {
+                        ((target[j] - self.sent[j]) * cpd[j]).round() as i64
+                    });
+                    if counts.iter().all(|c| *c == 0) {
+                        continue;
+                    }
+                    last = protocol::mi(&counts);
+                    self.send(&last)?;
+                    for ((s, c), k) in self.sent.iter_mut().zip(counts).zip(cpd) {
+                        *s += c as f64 / k;
+                    }
+                }
+            }
+        }
+        match self.unit {
+            // The reply to ER comes when the motion has ended.
+            Unit::RvM1 => self.error_status(duration, &last)?,
+            // The RM-501 never answers: time the move ourselves.
+            Unit::Rm501 => self.sleep_interruptible(duration)?,
+        }
+        self.joints = desc.from_controller_deg(&self.sent);
+        Ok(())
+    }
+}
+
+impl Serial {
+    /// The arm's pose without moving it (for `--rehearse`): `WH` on the
+    /// RV-M1; the RM-501 cannot say, so its `nest`.
+    pub fn read_pose(&mut self) -> Result<Joints, DriverError> {
+        self.link = Some((self.open)(self.unit)?);
+        self.send("ER")?;
+        let answered = match self.read(0.0) {
+            Ok(_) => true,
+            Err(DriverError::Lost(_)) => false,
+            Err(e) => return Err(e),
+        };
+        match (self.unit, answered) {
+            (Unit::RvM1, true) => {
+                self.send("RS")?;
+                let tl = self.kin.description().links().tool;
+                self.send(&format!("TL {}", protocol::num(tl)))?;
+                let nest = self.kin.description().nest();
+                self.where_is(nest)
+            }
+            (Unit::RvM1, false) => Err(DriverError::NoRobot(format!(
+                "port {}: no reply to `ER`",
+                self.settings.path
+            ))),
+            (Unit::Rm501, true) => Err(DriverError::WrongRobot(format!(
+                "port {}: the unit answered `ER`: an RV-M1, not an RM-501",
+                self.settings.path
+            ))),
+            (Unit::Rm501, false) => {
+                self.send("RS")?;
+                Ok(self.kin.description().nest())
+            }
+        }
+    }
+}
+
+impl Robot for Serial {
+    fn description(&self) -> &RobotDescription {
+        self.kin.description()
+    }
+    fn joints(&self) -> Joints {
+        self.joints
+    }
+    fn read_joints(&self) -> Joints {
+        self.kin.description().quantize(&self.joints)
+    }
+    fn real_time(&self) -> bool {
+        true
+    }
+
+    fn init(&mut self) -> Result<(), DriverError> {
+        self.link = None;
+        self.link = Some((self.open)(self.unit)?);
+        // A reply to the first ER proves an RV-M1 is there; an RM-501 never
+        // answers (and takes the unknown ER as a command error: RS clears it).
+        self.send("ER")?;
+        let answered = match self.read(0.0) {
+            Ok(reply) => Some(reply),
+            Err(DriverError::Lost(_)) => None,
+            Err(e) => return Err(e),
+        };
+        match (self.unit, answered) {
+            (Unit::RvM1, None) => {
+                return Err(DriverError::NoRobot(format!(
+                    "port {}: no reply to `ER` within {:.1} s: is the drive unit on and connected?",
+                    self.settings.path, self.settings.timeout
+                )));
+            }
+            (Unit::Rm501, Some(reply)) => {
+                return Err(DriverError::WrongRobot(format!(
+                    "port {}: the unit answered `ER` with `{reply}`: an RV-M1, not the RM-501 that --robot names",
+                    self.settings.path
+                )));
+            }
+            (Unit::RvM1, Some(reply)) => {
+                if protocol::parse_er(&reply).is_none() {
+                    return Err(DriverError::Invalid(format!(
+                        "`ER` answered `{reply}`, not 0, 1 or 2"
+                    )));
+                }
+                self.send("RS")?;
+                let tl = self.kin.description().links().tool;
+                self.send(&format!("TL {}", protocol::num(tl)))?;
+                self.send("NT")?;
+                // The nest run's length is not published: allow a minute.
+                self.error_status(60.0, "NT")?;
+                let nest = self.kin.description().nest();
+                self.where_is(nest)?;
+            }
+            (Unit::Rm501, None) => {
+                self.send("RS")?;
+                self.send("NT")?;
+                self.sleep_interruptible(0.0)?;
+                let nest = self.kin.description().nest();
+                self.joints = nest;
+                self.sent = self.kin.description().to_controller_deg(&nest);
+            }
+        }
+        self.speed = None;
+        Ok(())
+    }
+
+    fn set_speed(&mut self, percent: f64) -> Result<(), DriverError> {
+        let level = (percent / 100.0 * 9.0).round().clamp(0.0, 9.0) as u8;
+        if self.speed != Some(level) && self.link.is_some() {
+            self.send(&format!("SP {level}"))?;
+            self.speed = Some(level);
+        }
+        Ok(())
+    }
+
+    fn move_joints(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError> {
+        for p in points {
+            if let Err(v) = self.kin.description().check_limits(p) {
+                return Err(DriverError::Limit(v.to_string()));
+            }
+        }
+        let r = self.motion(points, duration);
+        r.map_err(|e| self.resync(e))
+    }
+
+    fn calibrate(&mut self) -> Result<(), DriverError> {
+        if self.unit == Unit::RvM1 {
+            let near = self.joints;
+            self.where_is(near)?;
+        }
+        Ok(())
+    }
+
+    fn gripper(&self) -> GripperState {
+        self.gripper
+    }
+
+    fn move_gripper(
+        &mut self,
+        opening: f64,
+        force_limit: Option<f64>,
+    ) -> Result<GripperState, DriverError> {
+        let g = *self.kin.description().gripper();
+        let line = if opening > self.gripper.opening || opening >= g.opening_max {
+            "GO".to_string()
+        } else {
+            // Grip force levels 0..15 (start, hold) and 0.3 s of start force.
+            let f = force_limit.unwrap_or(g.init_force).clamp(0.0, g.force_max);
+            let level = if g.force_max > 0.0 {
+                (f / g.force_max * 15.0).round() as i64
+            } else {
+                0
+            };
+            self.send(&format!("GP {level},{level},3"))?;
+            "GC".to_string()
+        };
+        self.send(&line)?;
+        if self.unit == Unit::RvM1 {
+            self.error_status(1.0, &line).map_err(|e| self.resync(e))?;
+        } else {
+            self.sleep_interruptible(0.5)?;
+        }
+        // The hand has no opening sensor: report what was commanded.
+        self.gripper = if line == "GO" {
+            GripperState {
+                opening: g.opening_max,
+                force: 0.0,
+            }
+        } else {
+            GripperState {
+                opening: opening.clamp(g.opening_min, g.opening_max),
+                force: force_limit.unwrap_or(g.init_force),
+            }
+        };
+        Ok(self.gripper)
+    }
+}

@@ -1,0 +1,100 @@
+//! The exceptions the services raise: an enum, bound to the program's
+//! exception identities once when the robot is chosen (no look-up by name
+//! when a service fails).
+
+use crate::check::Checker;
+use crate::check::ir::ExcId;
+use crate::kinematics::AdaException;
+
+macro_rules! excs {
+    ($($v:ident = $full:literal,)*) => {
+        /// An exception a service can raise: appendix B, and the Ada ones.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+        pub enum Exc { $($v,)* }
+        impl Exc {
+            pub const ALL: &'static [Exc] = &[$(Exc::$v,)*];
+            /// The full name the checker gives the exception.
+            pub fn full_name(self) -> &'static str {
+                match self { $(Exc::$v => $full,)* }
+            }
+        }
+    };
+}
+
+excs! {
+    CommandNotImplemented = "ADAIR.COMMANDNOTIMPLEMENTED",
+    CommandNotSupported = "ADAIR.COMMANDNOTSUPPORTED",
+    ControlCommandActive = "ADAIR.CONTROLCOMMANDACTIVE",
+    DistanceInvalid = "ADAIR.DISTANCEINVALID",
+    FatalCommunicationError = "ADAIR.FATALCOMMUNICATIONERROR",
+    ForceInvalid = "ADAIR.FORCEINVALID",
+    FrameInvalid = "ADAIR.FRAMEINVALID",
+    MessageInvalid = "ADAIR.MESSAGEINVALID",
+    MessageLost = "ADAIR.MESSAGELOST",
+    NoConnection = "ADAIR.NOCONNECTION",
+    NoRobotInstalled = "ADAIR.NOROBOTINSTALLED",
+    OutOfReach = "ADAIR.OUTOFREACH",
+    PathAlreadyDefined = "ADAIR.PATHALREADYDEFINED",
+    PathElementNotDefined = "ADAIR.PATHELEMENTNOTDEFINED",
+    PathNotDefined = "ADAIR.PATHNOTDEFINED",
+    SystemNotInitialized = "ADAIR.SYSTEMNOTINITIALIZED",
+    TimeInvalid = "ADAIR.TIMEINVALID",
+    UserInfoInvalid = "ADAIR.USERINFOINVALID",
+    WrongRobotInstalled = "ADAIR.WRONGROBOTINSTALLED",
+    ConstraintError = "CONSTRAINT_ERROR",
+    ProgramError = "PROGRAM_ERROR",
+    NameError = "ADA.IO_EXCEPTIONS.NAME_ERROR",
+    UseError = "ADA.IO_EXCEPTIONS.USE_ERROR",
+    DataError = "ADA.IO_EXCEPTIONS.DATA_ERROR",
+}
+
+impl From<AdaException> for Exc {
+    fn from(e: AdaException) -> Exc {
+        match e {
+            AdaException::FrameInvalid => Exc::FrameInvalid,
+            AdaException::OutOfReach => Exc::OutOfReach,
+            AdaException::TimeInvalid => Exc::TimeInvalid,
+            AdaException::ConstraintError => Exc::ConstraintError,
+        }
+    }
+}
+
+/// The exception identity of each [`Exc`] in one checked program.
+#[derive(Clone, Debug)]
+pub struct ExcIds(Vec<ExcId>);
+
+impl ExcIds {
+    /// Binds every [`Exc`] to its identity; `None` names the first one the
+    /// program does not declare (the stdlib is broken).
+    pub fn bind(chk: &Checker) -> Result<ExcIds, &'static str> {
+        let mut ids = Vec::with_capacity(Exc::ALL.len());
+        for e in Exc::ALL {
+            match chk.excs.iter().position(|x| x.name == e.full_name()) {
+                Some(i) => ids.push(i as ExcId),
+                None => return Err(e.full_name()),
+            }
+        }
+        Ok(ExcIds(ids))
+    }
+
+    pub fn id(&self, e: Exc) -> ExcId {
+        self.0[e as usize]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_exception_is_bound_to_its_own_identity() {
+        let s = crate::session::Session::new(Box::new(std::io::sink()));
+        let ids = ExcIds::bind(&s.checker).expect("stdlib declares them all");
+        for (i, a) in Exc::ALL.iter().enumerate() {
+            assert_eq!(s.checker.excs[ids.id(*a) as usize].name, a.full_name());
+            for b in &Exc::ALL[i + 1..] {
+                assert_ne!(ids.id(*a), ids.id(*b));
+            }
+        }
+    }
+}

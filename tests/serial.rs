@@ -1,0 +1,458 @@
+//! The serial driver against the virtual controller over a real
+//! pseudo-terminal, for both robots: the same joints as the simulator, every
+//! fault class as its exception (and the program goes on), a missing port,
+//! a silent unit, the wrong robot, `--rehearse`, golden logs of the lines
+//! sent, and the controller on its own with raw byte exchanges. Where the OS
+//! has no pseudo-terminals, each test says so and passes without running.
+
+#![allow(clippy::print_stderr)] // a skipped test and the measured difference say so
+
+use adair::driver::serial::{PortSettings, Serial};
+use adair::golden::SharedBuf;
+use adair::kinematics::RobotDescription;
+use adair::session::{Outcome, Session};
+use std::io::{BufRead, BufReader, Read, Write};
+use std::process::{Child, Command, Stdio};
+use std::sync::mpsc;
+use std::time::Duration;
+
+const BIN: &str = env!("CARGO_BIN_EXE_adair");
+
+/// A running `adair sim-controller`; killed (by its own pid) when dropped.
+struct Controller {
+    child: Child,
+    path: String,
+    log: std::path::PathBuf,
+}
+
+impl Drop for Controller {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+        let _ = std::fs::remove_file(&self.log);
+    }
+}
+
+impl Controller {
+    /// The lines the controller received, in order.
+    fn received(&self) -> Vec<String> {
+        let text = std::fs::read_to_string(&self.log).unwrap_or_default();
+        let mut bytes = String::new();
+        for l in text.lines() {
+            if let Some(i) = l.find(" < ") {
+                bytes.push_str(&l[i + 3..]);
+            }
+        }
+        bytes
+            .split("\\r")
+            .filter(|s| !s.is_empty())
+            .map(str::to_string)
+            .collect()
+    }
+}
+
+static COUNTER: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+
+/// Starts a controller; `None` (after saying so) when there are no ptys.
+fn controller(robot: &str, extra: &[&str]) -> Option<Controller> {
+    let n = COUNTER.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+    let log = std::env::temp_dir().join(format!("adair-simctl-{}-{n}.log", std::process::id()));
+    let mut child = Command::new(BIN)
+        .args([
+            "sim-controller",
+            "--robot",
+            robot,
+            "--time-scale",
+            "0.02",
+            "--log",
+        ])
+        .arg(&log)
+        .args(extra)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("adair runs");
+    let stdout = child.stdout.take().unwrap();
+    let (tx, rx) = mpsc::channel();
+    std::thread::spawn(move || {
+        let mut line = String::new();
+        let _ = BufReader::new(stdout).read_line(&mut line);
+        let _ = tx.send(line);
+    });
+    let line = rx.recv_timeout(Duration::from_secs(10)).unwrap_or_default();
+    if line.trim().is_empty() {
+        let mut err = String::new();
+        if let Some(mut e) = child.stderr.take() {
+            let _ = e.read_to_string(&mut err);
+        }
+        let _ = child.kill();
+        let _ = child.wait();
+        assert!(
+            err.contains("no pseudo-terminal"),
+            "sim-controller failed: {err}"
+        );
+        eprintln!("SKIPPED: this OS has no pseudo-terminals ({})", err.trim());
+        return None;
+    }
+    Some(Controller {
+        child,
+        path: line.trim().to_string(),
+        log,
+    })
+}
+
+/// Runs `script` on `robot`, over `port` or (None) on the simulator:
+/// (outcome, output, final joints read back in degrees).
+fn run(robot: &str, port: Option<&str>, script: &str) -> (Outcome, String, [f64; 5]) {
+    let desc = RobotDescription::builtin(robot).unwrap();
+    let buf = SharedBuf::default();
+    let mut s = Session::new(Box::new(buf.clone()));
+    s.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+    match port {
+        None => s.set_robot(desc, None, false),
+        Some(p) => {
+            let settings = PortSettings {
+                path: p.to_string(),
+                baud: 9600,
+                timeout: 0.5,
+            };
+            let d = Serial::new(desc.clone(), settings, None);
+            s.set_driver(desc, Box::new(d), None, false);
+        }
+    }
+    let outcome = s.run_source("test.air", script);
+    let q = s.robot_state().unwrap().robot.read_joints();
+    let out = buf.take();
+    (outcome, out, q.map(f64::to_degrees))
+}
+
+const MOTIONS: &str = "
+F : Frame;
+InitRobot;
+MoveAxesAbsolute ((Rad (30.0), Rad (20.0), Rad (40.0), Rad (-10.0), Rad (50.0)));
+MoveAxesRelative ((Rad (-5.5), Rad (3.3), Rad (1.1), Rad (7.7), Rad (-20.2)));
+SetVelocity (80.0);
+F := ValueFrameAbsolute;
+MoveAxesRelative ((Rad (12.0), Rad (-6.0), Rad (9.0), Rad (-4.0), Rad (33.0)));
+MoveFrameAbsolute (F);
+MoveTool (10.0, 5.0);
+Put_Line (\"done\");
+";
+
+fn same_joints(robot: &str) {
+    let Some(c) = controller(robot, &[]) else {
+        return;
+    };
+    let (o1, out1, sim) = run(robot, None, MOTIONS);
+    let (o2, out2, ser) = run(robot, Some(&c.path), MOTIONS);
+    assert!(matches!(o1, Outcome::Ok), "{o1:?}");
+    assert!(matches!(o2, Outcome::Ok), "{o2:?}");
+    assert_eq!(out1, out2);
+    let worst = sim
+        .iter()
+        .zip(ser)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    eprintln!("{robot}: largest simulator-vs-serial joint difference {worst:.4} deg");
+    // One decimal in MJ (0.05 deg) plus the read-back resolution.
+    assert!(worst <= 0.05 + 0.075 + 1e-9, "{sim:?} vs {ser:?}");
+}
+
+#[test]
+fn same_joints_on_the_simulator_and_over_the_line_rv_m1() {
+    same_joints("rv-m1");
+}
+
+#[test]
+fn same_joints_on_the_simulator_and_over_the_line_rm_501() {
+    same_joints("rm-501");
+}
+
+/// The script for the fault tests: the exception's name, then the program
+/// goes on (a second service, whose exception is printed too).
+const FAULT: &str = "
+InitRobot;
+begin
+   MoveAxesAbsolute ((Rad (10.0), 0.0, 0.0, 0.0, 0.0));
+   Put_Line (\"moved\");
+exception
+   when E : others => Put_Line (Ada.Exceptions.Exception_Name (E) & \": \" & Ada.Exceptions.Exception_Message (E));
+end;
+begin
+   MoveAxesAbsolute ((Rad (20.0), 0.0, 0.0, 0.0, 0.0));
+   Put_Line (\"moved again\");
+exception
+   when E : others => Put_Line (Ada.Exceptions.Exception_Name (E) & \": \" & Ada.Exceptions.Exception_Message (E));
+end;
+Put_Line (\"went on\");
+";
+
+/// InitRobot sends ER RS TL NT ER WH SP MJ ER GO ER: the first motion's MJ
+/// is command 12, its ER command 13.
+fn fault(extra: &[&str]) -> Option<String> {
+    let c = controller("rv-m1", extra)?;
+    let t = std::time::Instant::now();
+    let (o, out, _) = run("rv-m1", Some(&c.path), FAULT);
+    assert!(matches!(o, Outcome::Ok), "{o:?}\n{out}");
+    assert!(out.ends_with("went on\n"), "{out}");
+    assert!(
+        t.elapsed() < Duration::from_secs(20),
+        "took {:?}",
+        t.elapsed()
+    );
+    Some(out)
+}
+
+#[test]
+fn a_silent_unit_is_message_lost() {
+    let Some(out) = fault(&["--silent-after", "12"]) else {
+        return;
+    };
+    assert!(out.contains("ADAIR.MESSAGELOST: no reply"), "{out}");
+}
+
+#[test]
+fn a_garbled_reply_is_message_invalid() {
+    let Some(out) = fault(&["--corrupt", "13"]) else {
+        return;
+    };
+    assert!(out.contains("ADAIR.MESSAGEINVALID"), "{out}");
+    assert!(out.contains("moved again"), "{out}");
+}
+
+#[test]
+fn error_mode_one_is_command_not_supported_and_reset() {
+    let Some(out) = fault(&["--refuse", "12:1"]) else {
+        return;
+    };
+    assert!(
+        out.contains("ADAIR.COMMANDNOTSUPPORTED: the unit refused `MJ +10.0"),
+        "{out}"
+    );
+    assert!(out.contains("moved again"), "{out}");
+}
+
+#[test]
+fn error_mode_two_is_out_of_reach_and_reset() {
+    let Some(out) = fault(&["--refuse", "12:2"]) else {
+        return;
+    };
+    assert!(out.contains("ADAIR.OUTOFREACH: the unit says"), "{out}");
+    assert!(out.contains("moved again"), "{out}");
+}
+
+#[test]
+fn a_hang_up_is_fatal_then_no_connection() {
+    let Some(out) = fault(&["--hangup-after", "12"]) else {
+        return;
+    };
+    assert!(out.contains("ADAIR.FATALCOMMUNICATIONERROR"), "{out}");
+    assert!(out.contains("ADAIR.NOCONNECTION"), "{out}");
+}
+
+const INIT: &str = "
+begin
+   InitRobot;
+exception
+   when E : others => Put_Line (Ada.Exceptions.Exception_Name (E) & \": \" & Ada.Exceptions.Exception_Message (E));
+end;
+";
+
+#[test]
+fn a_missing_port_is_no_connection_naming_it() {
+    let (o, out, _) = run("rv-m1", Some("/dev/adair-no-such-port"), INIT);
+    assert!(matches!(o, Outcome::Ok));
+    assert!(
+        out.starts_with("ADAIR.NOCONNECTION: port /dev/adair-no-such-port: "),
+        "{out}"
+    );
+}
+
+#[test]
+fn a_unit_that_never_answers_is_no_robot_installed() {
+    let Some(c) = controller("rv-m1", &["--silent-after", "0"]) else {
+        return;
+    };
+    let (_, out, _) = run("rv-m1", Some(&c.path), INIT);
+    assert!(out.starts_with("ADAIR.NOROBOTINSTALLED"), "{out}");
+}
+
+#[test]
+fn an_rv_m1_where_an_rm_501_is_expected_is_wrong_robot() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let (_, out, _) = run("rm-501", Some(&c.path), INIT);
+    assert!(out.starts_with("ADAIR.WRONGROBOTINSTALLED"), "{out}");
+}
+
+#[test]
+fn a_failed_rehearsal_sends_no_motion() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let dir = std::env::temp_dir().join(format!("adair-rehearse-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = dir.join("fails_later.air");
+    std::fs::write(
+        &script,
+        "InitRobot;\nMoveAxesAbsolute ((Rad (10.0), 0.0, 0.0, 0.0, 0.0));\nMoveAxesAbsolute ((0.0, Rad (150.0), 0.0, 0.0, 0.0));\n",
+    )
+    .unwrap();
+    let out = Command::new(BIN)
+        .args([
+            "run",
+            "--port",
+            &c.path,
+            "--serial-timeout",
+            "0.5",
+            "--rehearse",
+        ])
+        .arg(&script)
+        .output()
+        .unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(err.contains("OUTOFREACH"), "{err}");
+    assert!(err.contains("the arm was not moved"), "{err}");
+    let sent = c.received();
+    assert!(
+        sent.iter()
+            .all(|l| ["ER", "RS", "WH"].contains(&l.as_str()) || l.starts_with("TL")),
+        "{sent:?}"
+    );
+}
+
+/// The exact lines sent for a script, against `tests/serial/NAME.log`
+/// (`BLESS=1` rewrites it), so that a protocol change shows in review.
+fn golden_log(robot: &str, name: &str, script: &str) {
+    let Some(c) = controller(robot, &[]) else {
+        return;
+    };
+    let (o, out, _) = run(robot, Some(&c.path), script);
+    assert!(matches!(o, Outcome::Ok), "{o:?}\n{out}");
+    let got = c.received().join("\n") + "\n";
+    let path = format!("{}/tests/serial/{name}.log", env!("CARGO_MANIFEST_DIR"));
+    if std::env::var_os("BLESS").is_some() {
+        std::fs::write(&path, &got).unwrap();
+    }
+    let want = std::fs::read_to_string(&path).unwrap_or_default();
+    assert_eq!(
+        got, want,
+        "lines sent differ from {path} (BLESS=1 rewrites)"
+    );
+}
+
+#[test]
+fn golden_lines_rv_m1() {
+    golden_log("rv-m1", "rv_m1_motions", MOTIONS);
+}
+
+#[test]
+fn golden_lines_rm_501() {
+    golden_log("rm-501", "rm_501_motions", MOTIONS);
+}
+
+#[test]
+fn golden_lines_straight_line_rv_m1() {
+    golden_log(
+        "rv-m1",
+        "rv_m1_straight_line",
+        "InitRobot;\nMoveFrameAbsolute (Trans (250.0, 0.0, 300.0) * RotY (Rad (180.0)));\nSetMoveMode (StraightLine);\nSetInterpolation (25.0);\nMoveFrameAbsolute (Trans (250.0, 100.0, 300.0) * RotY (Rad (180.0)));\n",
+    );
+}
+
+/// The controller on its own: raw bytes, as robots.md describes the unit.
+#[test]
+fn the_controller_speaks_the_units_language() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let mut port = std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .open(&c.path)
+        .unwrap();
+    let (tx, rx) = mpsc::channel::<String>();
+    let mut reader = port.try_clone().unwrap();
+    std::thread::spawn(move || {
+        let mut buf = Vec::new();
+        let mut b = [0u8; 1];
+        while reader.read(&mut b).is_ok_and(|n| n == 1) {
+            buf.push(b[0]);
+            if buf.ends_with(b"\r\n") {
+                let _ = tx.send(String::from_utf8_lossy(&buf).to_string());
+                buf.clear();
+            }
+        }
+    });
+    let mut ask = |line: &str| -> Option<String> {
+        port.write_all(format!("{line}\r").as_bytes()).unwrap();
+        rx.recv_timeout(Duration::from_millis(800)).ok()
+    };
+    assert_eq!(ask("ER").as_deref(), Some("0\r\n"));
+    assert_eq!(ask("NT"), None);
+    let wh = ask("WH").unwrap();
+    // Nest: J = 0, 0, 90, 90, 0 with the 107 mm tool: hand pointing down.
+    assert_eq!(wh, "+160.0,+0.0,+371.0,-90.0,+0.0\r\n");
+    assert_eq!(ask("XY"), None);
+    assert_eq!(ask("ER").as_deref(), Some("1\r\n"));
+    assert_eq!(ask("RS"), None);
+    assert_eq!(ask("ER").as_deref(), Some("0\r\n"));
+    assert_eq!(ask("MJ +10.0,+5.0,-10.0,-20.0,+0.0"), None);
+    let there = ask("WH").unwrap();
+    assert_ne!(there, wh);
+    assert_eq!(ask("MJ -10.0,-5.0,+10.0,+20.0,+0.0"), None);
+    assert_eq!(ask("WH").as_deref(), Some(wh.as_str()));
+    assert_eq!(ask(&format!("PD 7,{}", there.trim())), None);
+    assert_eq!(ask("MO 7"), None);
+    assert_eq!(ask("WH").as_deref(), Some(there.as_str()));
+    assert_eq!(ask("ER").as_deref(), Some("0\r\n"));
+    assert_eq!(ask("MO 8"), None);
+    assert_eq!(ask("ER").as_deref(), Some("2\r\n"));
+    assert_eq!(ask("RS"), None);
+    assert_eq!(ask("MJ +0.0,+200.0,+0.0,+0.0,+0.0"), None);
+    assert_eq!(ask("ER").as_deref(), Some("2\r\n"));
+    assert_eq!(ask("RS"), None);
+    assert_eq!(ask("DR").as_deref(), Some("&H0005A,&H0000\r\n"));
+}
+
+#[test]
+fn the_repl_jogs_a_real_arm() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let mut child = Command::new(BIN)
+        .args([
+            "repl",
+            "--strict",
+            "--serial-timeout",
+            "0.5",
+            "--port",
+            &c.path,
+        ])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(b"InitRobot;\nMoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0));\n")
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let sent = c.received();
+    assert!(
+        sent.iter().any(|l| l == "MJ +10.0,+0.0,+0.0,+0.0,+0.0"),
+        "{sent:?}"
+    );
+}
