@@ -221,7 +221,37 @@ impl Checker {
     }
 
     /// The types an expression could have (without reporting anything).
+    /// Memoised per node while an outermost expression is checked (see
+    /// `Checker::memo`), which keeps overload resolution linear.
     pub(super) fn interps(&mut self, e: &ast::Expr) -> Vec<TypeId> {
+        let outer = self.memo.is_none();
+        if outer {
+            self.memo = Some(HashMap::new());
+        }
+        let key = (
+            e.span.start,
+            e.span.end,
+            e.span.context,
+            std::mem::discriminant(&e.kind),
+        );
+        let found = self.memo.as_ref().and_then(|m| m.get(&key).cloned());
+        let r = match found {
+            Some(r) => r,
+            None => {
+                let r = self.interps_uncached(e);
+                if let Some(m) = self.memo.as_mut() {
+                    m.insert(key, r.clone());
+                }
+                r
+            }
+        };
+        if outer {
+            self.memo = None;
+        }
+        r
+    }
+
+    fn interps_uncached(&mut self, e: &ast::Expr) -> Vec<TypeId> {
         match &e.kind {
             ExprKind::Int(_) => vec![UNIV_INT],
             ExprKind::Real(_) => vec![UNIV_REAL],
@@ -805,7 +835,18 @@ impl Checker {
     }
 
     /// Checks an expression; `want` is the type the context expects, if known.
+    /// Checks an expression against the type it should have (if known).
     pub(super) fn expr(&mut self, e: &ast::Expr, want: Option<TypeId>) -> Ex {
+        if self.memo.is_some() {
+            return self.expr_inner(e, want);
+        }
+        self.memo = Some(HashMap::new());
+        let r = self.expr_inner(e, want);
+        self.memo = None;
+        r
+    }
+
+    fn expr_inner(&mut self, e: &ast::Expr, want: Option<TypeId>) -> Ex {
         let sp = e.span;
         match &e.kind {
             ExprKind::Int(v) => match i64::try_from(*v) {
@@ -1782,7 +1823,32 @@ impl Checker {
                 BinOp::Mod => IntOp::Mod,
                 _ => IntOp::Rem,
             };
-            self.mk(ExKind::IntBin(iop, bx(x), bx(y)), base, sp)
+            let folded = match (&x.kind, &y.kind) {
+                (ExKind::Int(_), ExKind::Int(_)) if iop != IntOp::Pow => {
+                    let e = self.mk(ExKind::IntBin(iop, bx(x.clone()), bx(y.clone())), base, sp);
+                    self.static_value(&e)
+                }
+                _ => None,
+            };
+            // Two literals fold to one (what the run time would compute: only
+            // when it raises nothing), so a long chain of static operations
+            // costs one step per operator, here and in `static_value`.
+            // The folded literal must also need no range check that the
+            // operation would have had (its value lies in the base range).
+            let info = self.types.get(base);
+            let fits_base = |v: i128| match (info.range.is_some(), info.static_range) {
+                (false, _) => true,
+                (true, Some((l, h))) => l <= v && v <= h,
+                (true, None) => false,
+            };
+            match folded {
+                Some(Static::Int(v))
+                    if (i32::MIN as i128..=i32::MAX as i128).contains(&v) && fits_base(v) =>
+                {
+                    self.mk(ExKind::Int(v as i64), base, sp)
+                }
+                _ => self.mk(ExKind::IntBin(iop, bx(x), bx(y)), base, sp),
+            }
         }
     }
 

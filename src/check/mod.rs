@@ -116,7 +116,18 @@ pub struct Checker {
     missing_units: Vec<String>,
     /// Declared spelling of each name, for messages.
     spelling: HashMap<String, String>,
+    /// What each subexpression of the expression being checked can mean
+    /// (`interps`), so that overload resolution visits every node once
+    /// instead of once per candidate of each enclosing operator. It lives
+    /// for one outermost `expr` or `interps` call: no declaration happens
+    /// inside an expression, so visibility is fixed while it lives.
+    memo: Option<HashMap<MemoKey, Vec<TypeId>>>,
 }
+
+/// A node of the expression being checked: its source range and its kind.
+/// A clone of a node (the operands of a user operator become call
+/// arguments) has the same key and the same meaning.
+type MemoKey = (usize, usize, u32, std::mem::Discriminant<ast::ExprKind>);
 
 pub const CONSTRAINT_ERROR: ExcId = 0;
 pub const PROGRAM_ERROR: ExcId = 1;
@@ -155,6 +166,7 @@ impl Checker {
             script: false,
             missing_units: Vec::new(),
             spelling: HashMap::new(),
+            memo: None,
         };
         c.standard();
         c
