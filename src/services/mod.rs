@@ -311,15 +311,18 @@ fn perform(
     } else {
         r.m.clock.sleep(duration);
     }
-    if let Some(t) = &mut st.trace {
+    if st.trace.is_some() {
         let after = st.robot.joints();
-        let _ = writeln!(
-            t,
-            "[t={start:9.3} s] {service} at {}: {} -> {} deg, {duration:.3} s",
-            r.m.location(span),
-            deg5(&before),
-            deg5(&after)
-        );
+        let (from, to) = (tcp_mm(st, &before), tcp_mm(st, &after));
+        if let Some(t) = &mut st.trace {
+            let _ = writeln!(
+                t,
+                "[t={start:9.3} s] {service} at {}: {} -> {} deg, TCP {from} -> {to} mm, {duration:.3} s",
+                r.m.location(span),
+                deg5(&before),
+                deg5(&after)
+            );
+        }
     }
     Ok(())
 }
@@ -341,13 +344,17 @@ pub fn jog(st: &mut RobotState, clock: &mut dyn Clock, target: Joints) -> Result
     if !st.robot.real_time() {
         clock.sleep(d);
     }
-    if let Some(t) = &mut st.trace {
-        let _ = writeln!(
-            t,
-            "[t={start:9.3} s] TeachBox jog: {} -> {} deg, {d:.3} s",
-            deg5(&from),
-            deg5(&st.robot.joints())
-        );
+    if st.trace.is_some() {
+        let to = st.robot.joints();
+        let (p, q) = (tcp_mm(st, &from), tcp_mm(st, &to));
+        if let Some(t) = &mut st.trace {
+            let _ = writeln!(
+                t,
+                "[t={start:9.3} s] TeachBox jog: {} -> {} deg, TCP {p} -> {q} mm, {d:.3} s",
+                deg5(&from),
+                deg5(&to)
+            );
+        }
     }
     Ok(())
 }
@@ -924,6 +931,12 @@ fn value_axes_f(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Opt
         require_init(r, st, "ValueAxes", span)?;
         Ok(Some(axes_value(&st.robot.read_joints())))
     })
+}
+
+/// The tool centre point at joints `q`, `(x, y, z)` in mm, for the trace.
+fn tcp_mm(st: &RobotState, q: &Joints) -> String {
+    let p = st.kin.fk_tcp(q, &st.tool.trans).translation;
+    format!("({:.1}, {:.1}, {:.1})", p.x, p.y, p.z)
 }
 
 fn current_frame(st: &RobotState) -> Pose {
