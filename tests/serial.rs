@@ -3,7 +3,7 @@
 //! fault class as its exception (and the program goes on), a missing port,
 //! a silent unit, the wrong robot, `--rehearse`, golden logs of the lines
 //! sent, and the controller on its own with raw byte exchanges. Where the OS
-//! has no pseudo-terminals, each test says so and passes without running.
+//! has no pseudo-terminals, the tests are reported as ignored, with a message.
 
 #![allow(clippy::print_stderr)] // a skipped test and the measured difference say so
 
@@ -11,6 +11,7 @@ use adair::driver::serial::{PortSettings, Serial};
 use adair::golden::SharedBuf;
 use adair::kinematics::RobotDescription;
 use adair::session::{Outcome, Session};
+use libtest_mimic::{Arguments, Failed, Trial};
 use std::io::{BufRead, BufReader, Read, Write};
 use std::process::{Child, Command, Stdio};
 use std::sync::mpsc;
@@ -158,12 +159,10 @@ fn same_joints(robot: &str) {
     assert!(worst <= 0.05 + 0.075 + 1e-9, "{sim:?} vs {ser:?}");
 }
 
-#[test]
 fn same_joints_on_the_simulator_and_over_the_line_rv_m1() {
     same_joints("rv-m1");
 }
 
-#[test]
 fn same_joints_on_the_simulator_and_over_the_line_rm_501() {
     same_joints("rm-501");
 }
@@ -203,7 +202,6 @@ fn fault(extra: &[&str]) -> Option<String> {
     Some(out)
 }
 
-#[test]
 fn a_silent_unit_is_message_lost() {
     let Some(out) = fault(&["--silent-after", "12"]) else {
         return;
@@ -211,7 +209,6 @@ fn a_silent_unit_is_message_lost() {
     assert!(out.contains("ADAIR.MESSAGELOST: no reply"), "{out}");
 }
 
-#[test]
 fn a_garbled_reply_is_message_invalid() {
     let Some(out) = fault(&["--corrupt", "13"]) else {
         return;
@@ -220,7 +217,6 @@ fn a_garbled_reply_is_message_invalid() {
     assert!(out.contains("moved again"), "{out}");
 }
 
-#[test]
 fn error_mode_one_is_command_not_supported_and_reset() {
     let Some(out) = fault(&["--refuse", "12:1"]) else {
         return;
@@ -232,7 +228,6 @@ fn error_mode_one_is_command_not_supported_and_reset() {
     assert!(out.contains("moved again"), "{out}");
 }
 
-#[test]
 fn error_mode_two_is_out_of_reach_and_reset() {
     let Some(out) = fault(&["--refuse", "12:2"]) else {
         return;
@@ -241,7 +236,6 @@ fn error_mode_two_is_out_of_reach_and_reset() {
     assert!(out.contains("moved again"), "{out}");
 }
 
-#[test]
 fn a_hang_up_is_fatal_then_no_connection() {
     let Some(out) = fault(&["--hangup-after", "12"]) else {
         return;
@@ -258,7 +252,6 @@ exception
 end;
 ";
 
-#[test]
 fn a_missing_port_is_no_connection_naming_it() {
     let (o, out, _) = run("rv-m1", Some("/dev/adair-no-such-port"), INIT);
     assert!(matches!(o, Outcome::Ok));
@@ -268,7 +261,6 @@ fn a_missing_port_is_no_connection_naming_it() {
     );
 }
 
-#[test]
 fn a_unit_that_never_answers_is_no_robot_installed() {
     let Some(c) = controller("rv-m1", &["--silent-after", "0"]) else {
         return;
@@ -277,7 +269,6 @@ fn a_unit_that_never_answers_is_no_robot_installed() {
     assert!(out.starts_with("ADAIR.NOROBOTINSTALLED"), "{out}");
 }
 
-#[test]
 fn an_rv_m1_where_an_rm_501_is_expected_is_wrong_robot() {
     let Some(c) = controller("rv-m1", &[]) else {
         return;
@@ -286,7 +277,6 @@ fn an_rv_m1_where_an_rm_501_is_expected_is_wrong_robot() {
     assert!(out.starts_with("ADAIR.WRONGROBOTINSTALLED"), "{out}");
 }
 
-#[test]
 fn a_failed_rehearsal_sends_no_motion() {
     let Some(c) = controller("rv-m1", &[]) else {
         return;
@@ -344,17 +334,14 @@ fn golden_log(robot: &str, name: &str, script: &str) {
     );
 }
 
-#[test]
 fn golden_lines_rv_m1() {
     golden_log("rv-m1", "rv_m1_motions", MOTIONS);
 }
 
-#[test]
 fn golden_lines_rm_501() {
     golden_log("rm-501", "rm_501_motions", MOTIONS);
 }
 
-#[test]
 fn golden_lines_straight_line_rv_m1() {
     golden_log(
         "rv-m1",
@@ -364,7 +351,6 @@ fn golden_lines_straight_line_rv_m1() {
 }
 
 /// The controller on its own: raw bytes, as robots.md describes the unit.
-#[test]
 fn the_controller_speaks_the_units_language() {
     let Some(c) = controller("rv-m1", &[]) else {
         return;
@@ -418,7 +404,6 @@ fn the_controller_speaks_the_units_language() {
     assert_eq!(ask("DR").as_deref(), Some("&H0005A,&H0000\r\n"));
 }
 
-#[test]
 fn the_repl_jogs_a_real_arm() {
     let Some(c) = controller("rv-m1", &[]) else {
         return;
@@ -455,4 +440,88 @@ fn the_repl_jogs_a_real_arm() {
         sent.iter().any(|l| l == "MJ +10.0,+0.0,+0.0,+0.0,+0.0"),
         "{sent:?}"
     );
+}
+
+fn main() {
+    let tests: &[(&str, fn())] = &[
+        (
+            "same_joints_on_the_simulator_and_over_the_line_rv_m1",
+            same_joints_on_the_simulator_and_over_the_line_rv_m1,
+        ),
+        (
+            "same_joints_on_the_simulator_and_over_the_line_rm_501",
+            same_joints_on_the_simulator_and_over_the_line_rm_501,
+        ),
+        (
+            "a_silent_unit_is_message_lost",
+            a_silent_unit_is_message_lost,
+        ),
+        (
+            "a_garbled_reply_is_message_invalid",
+            a_garbled_reply_is_message_invalid,
+        ),
+        (
+            "error_mode_one_is_command_not_supported_and_reset",
+            error_mode_one_is_command_not_supported_and_reset,
+        ),
+        (
+            "error_mode_two_is_out_of_reach_and_reset",
+            error_mode_two_is_out_of_reach_and_reset,
+        ),
+        (
+            "a_hang_up_is_fatal_then_no_connection",
+            a_hang_up_is_fatal_then_no_connection,
+        ),
+        (
+            "a_missing_port_is_no_connection_naming_it",
+            a_missing_port_is_no_connection_naming_it,
+        ),
+        (
+            "a_unit_that_never_answers_is_no_robot_installed",
+            a_unit_that_never_answers_is_no_robot_installed,
+        ),
+        (
+            "an_rv_m1_where_an_rm_501_is_expected_is_wrong_robot",
+            an_rv_m1_where_an_rm_501_is_expected_is_wrong_robot,
+        ),
+        (
+            "a_failed_rehearsal_sends_no_motion",
+            a_failed_rehearsal_sends_no_motion,
+        ),
+        ("golden_lines_rv_m1", golden_lines_rv_m1),
+        ("golden_lines_rm_501", golden_lines_rm_501),
+        (
+            "golden_lines_straight_line_rv_m1",
+            golden_lines_straight_line_rv_m1,
+        ),
+        (
+            "the_controller_speaks_the_units_language",
+            the_controller_speaks_the_units_language,
+        ),
+        ("the_repl_jogs_a_real_arm", the_repl_jogs_a_real_arm),
+    ];
+    let ptys = nix::pty::openpty(None, None).is_ok();
+    if !ptys {
+        eprintln!(
+            "serial tests: this OS has no pseudo-terminals, so the {} tests below are IGNORED",
+            tests.len()
+        );
+    }
+    let trials = tests
+        .iter()
+        .map(|&(name, f)| {
+            Trial::test(name, move || {
+                std::panic::catch_unwind(f).map_err(|e| {
+                    Failed::from(
+                        e.downcast_ref::<String>()
+                            .cloned()
+                            .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
+                            .unwrap_or_else(|| "panicked".into()),
+                    )
+                })
+            })
+            .with_ignored_flag(!ptys)
+        })
+        .collect();
+    libtest_mimic::run(&Arguments::from_args(), trials).exit();
 }
