@@ -11,7 +11,8 @@ use adair::driver::serial::{PortSettings, Serial};
 use adair::golden::SharedBuf;
 use adair::kinematics::RobotDescription;
 use adair::session::{Outcome, Session};
-use libtest_mimic::{Arguments, Failed, Trial};
+mod common;
+
 use std::io::{BufRead, BufReader, Read, Write};
 use std::process::{Child, Command, Stdio};
 use std::sync::mpsc;
@@ -507,21 +508,5 @@ fn main() {
             tests.len()
         );
     }
-    let trials = tests
-        .iter()
-        .map(|&(name, f)| {
-            Trial::test(name, move || {
-                std::panic::catch_unwind(f).map_err(|e| {
-                    Failed::from(
-                        e.downcast_ref::<String>()
-                            .cloned()
-                            .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
-                            .unwrap_or_else(|| "panicked".into()),
-                    )
-                })
-            })
-            .with_ignored_flag(!ptys)
-        })
-        .collect();
-    libtest_mimic::run(&Arguments::from_args(), trials).exit();
+    common::run_fns(tests, !ptys);
 }

@@ -5,7 +5,7 @@
 //! a missing tmux a failure instead, so CI always runs them.
 #![allow(clippy::print_stderr)]
 
-use libtest_mimic::{Arguments, Failed, Trial};
+mod common;
 
 use std::process::Command;
 use std::time::{Duration, Instant};
@@ -274,21 +274,5 @@ fn main() {
             tests.len()
         );
     }
-    let trials = tests
-        .iter()
-        .map(|&(name, f)| {
-            Trial::test(name, move || {
-                std::panic::catch_unwind(f).map_err(|e| {
-                    Failed::from(
-                        e.downcast_ref::<String>()
-                            .cloned()
-                            .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
-                            .unwrap_or_else(|| "panicked".into()),
-                    )
-                })
-            })
-            .with_ignored_flag(!have_tmux)
-        })
-        .collect();
-    libtest_mimic::run(&Arguments::from_args(), trials).exit();
+    common::run_fns(tests, !have_tmux);
 }
