@@ -74,6 +74,10 @@ enum Command {
         file: PathBuf,
         #[command(flatten)]
         robot: RobotOpts,
+        /// Write every support point of every motion to FILE.csv or FILE.json
+        /// (t, j1..j5, x, y, z, grip), also when the run ends with an exception.
+        #[arg(long, value_name = "FILE")]
+        record: Option<PathBuf>,
     },
     /// Parse and check only; report every diagnostic; nothing runs.
     Check {
@@ -223,7 +227,17 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 ) as u8
             }
         }
-        Some(Command::Run { file, robot }) => {
+        Some(Command::Run {
+            file,
+            robot,
+            record,
+        }) => {
+            if let Some(p) = &record
+                && let Err(e) = record_target(p)
+            {
+                eprintln!("adair: --record {}: {e}", p.display());
+                return 2;
+            }
             let desc = match robot.description() {
                 Ok(d) => d,
                 Err(e) => {
@@ -272,8 +286,17 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             if std::io::stdin().is_terminal() && std::io::stdout().is_terminal() {
                 s.install_pendant(Box::new(adair::repl::teach::TermPendant::new()));
             }
+            if record.is_some() {
+                s.start_recording();
+            }
             let outcome = s.run_source(&file.to_string_lossy(), &text);
             report(&outcome, &s, color);
+            if let Some(p) = &record
+                && let Err(e) = write_record(p, &s)
+            {
+                eprintln!("adair: --record {}: {e}", p.display());
+                return 2;
+            }
             outcome.exit_code() as u8
         }
         Some(Command::SimController {
@@ -467,4 +490,35 @@ fn rehearse(
     report(&outcome, &s, color);
     eprintln!("adair: the rehearsal on the simulator failed: the arm was not moved");
     Err(outcome.exit_code() as u8)
+}
+
+/// Checks a `--record` path before the run: a known extension and an
+/// existing directory.
+fn record_target(p: &std::path::Path) -> Result<(), String> {
+    match p.extension().and_then(|e| e.to_str()) {
+        Some("csv") | Some("json") => {}
+        _ => return Err("the file must end in .csv or .json".into()),
+    }
+    let dir = match p.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => std::path::Path::new("."),
+    };
+    if !dir.is_dir() {
+        return Err(format!("directory {} does not exist", dir.display()));
+    }
+    Ok(())
+}
+
+/// Writes the recorded support points when the run has ended.
+fn write_record(p: &std::path::Path, s: &Session) -> Result<(), String> {
+    let samples = s
+        .robot_state()
+        .and_then(|st| st.record.as_deref())
+        .unwrap_or(&[]);
+    let text = if p.extension().and_then(|e| e.to_str()) == Some("json") {
+        adair::services::record::to_json(samples)
+    } else {
+        adair::services::record::to_csv(samples)
+    };
+    std::fs::write(p, text).map_err(|e| e.to_string())
 }

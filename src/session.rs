@@ -140,6 +140,18 @@ impl Session {
             .and_then(|b| b.downcast_ref::<crate::services::RobotState>())
     }
 
+    /// Starts collecting the support points of every motion (`--record`).
+    pub fn start_recording(&mut self) {
+        if let Some(st) = self
+            .machine
+            .robot
+            .as_mut()
+            .and_then(|b| b.downcast_mut::<crate::services::RobotState>())
+        {
+            st.record = Some(Vec::new());
+        }
+    }
+
     /// Lets `TeachBox` open the screen teach pendant (only on a terminal).
     pub fn install_pendant(&mut self, pendant: Box<dyn crate::services::Pendant>) {
         if let Some(st) = self

@@ -4,6 +4,7 @@
 //! every raised exception leaves the state as it was.
 
 mod paths;
+pub mod record;
 pub mod table;
 
 mod exc;
@@ -36,6 +37,8 @@ pub struct RobotState {
     /// Virtual time at which a `Control => True` motion ends.
     pub busy_until: f64,
     pub trace: Option<Box<dyn Write>>,
+    /// The support points of every motion, when `--record`/`--plot` asked.
+    pub record: Option<Vec<record::Sample>>,
     pub realtime: bool,
     /// The force the jaws apply when they close on something, N.
     pub force_setting: f64,
@@ -94,6 +97,7 @@ impl RobotState {
             error_status: 0,
             busy_until: 0.0,
             trace: None,
+            record: None,
             realtime: false,
             force_setting: 0.0,
             pendant: None,
@@ -311,6 +315,7 @@ fn perform(
     } else {
         r.m.clock.sleep(duration);
     }
+    record::motion(st, start, &before, points, duration);
     if st.trace.is_some() {
         let after = st.robot.joints();
         let (from, to) = (tcp_mm(st, &before), tcp_mm(st, &after));
@@ -826,6 +831,7 @@ fn move_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<
                 if !st.robot.real_time() {
                     r.m.clock.sleep(d);
                 }
+                record::point(st, r.m.clock.now());
                 if let Some(tr) = &mut st.trace {
                     let _ = writeln!(
                         tr,

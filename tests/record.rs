@@ -1,0 +1,144 @@
+//! `adair run --record FILE.csv|FILE.json` through the real binary.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// Moves to a frame, draws a 60 mm line, opens the jaws, prints the final
+/// TCP and joints, then fails with an unhandled exception (unreachable frame).
+const SCRIPT: &str = r#"F : Frame;
+A : AxesVector;
+InitRobot;
+MoveFrameAbsolute (((-1.0, 0.0, 0.0, 280.0), (0.0, 1.0, 0.0, 0.0), (0.0, 0.0, -1.0, 150.0)));
+SetMoveMode (StraightLine);
+MoveFrameAbsolute (((-1.0, 0.0, 0.0, 280.0), (0.0, 1.0, 0.0, 60.0), (0.0, 0.0, -1.0, 150.0)));
+MoveTool (20.0, 5.0);
+F := ValueFrameAbsolute;
+A := ValueAxes;
+Put_Line (Float'Image (F (1, 4)) & Float'Image (F (2, 4)) & Float'Image (F (3, 4)));
+Put_Line (Float'Image (A (1)) & Float'Image (A (2)) & Float'Image (A (3)) & Float'Image (A (4)) & Float'Image (A (5)));
+MoveFrameAbsolute (((-1.0, 0.0, 0.0, 5000.0), (0.0, 1.0, 0.0, 0.0), (0.0, 0.0, -1.0, 150.0)));
+"#;
+
+fn dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("adair-record-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn run(d: &Path, out: &str) -> std::process::Output {
+    let script = d.join("t.air");
+    std::fs::write(&script, SCRIPT).unwrap();
+    Command::new(env!("CARGO_BIN_EXE_adair"))
+        .arg("run")
+        .arg(&script)
+        .arg("--record")
+        .arg(d.join(out))
+        .output()
+        .unwrap()
+}
+
+fn floats(line: &str) -> Vec<f64> {
+    line.split_whitespace()
+        .map(|w| w.parse().unwrap())
+        .collect()
+}
+
+fn close(a: f64, b: f64, tol: f64) -> bool {
+    (a - b).abs() <= tol
+}
+
+/// The rows of the CSV; checks the header and the final pose against what
+/// the script printed.
+fn check_csv(text: &str, stdout: &str) -> Vec<Vec<f64>> {
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("t,j1,j2,j3,j4,j5,x,y,z,grip"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert!(rows.len() > 10, "{} rows", rows.len());
+    assert!(rows.iter().all(|r| r.len() == 10));
+    for w in rows.windows(2) {
+        assert!(
+            w[1][0] >= w[0][0],
+            "time goes back: {:?} -> {:?}",
+            w[0],
+            w[1]
+        );
+    }
+    let mut out = stdout.lines();
+    let tcp = floats(out.next().unwrap());
+    let axes = floats(out.next().unwrap());
+    let last = rows.last().unwrap();
+    for i in 0..3 {
+        assert!(close(last[6 + i], tcp[i], 0.05), "{last:?} vs {tcp:?}");
+    }
+    for i in 0..5 {
+        assert!(
+            close(last[1 + i], axes[i].to_degrees(), 0.01),
+            "{last:?} vs {axes:?}"
+        );
+    }
+    assert!(close(last[9], 20.0, 1e-6), "gripper {last:?}");
+    // The straight line: y runs from 0 to 60 at x = 280, z = 150.
+    assert!(
+        rows.iter()
+            .any(|r| close(r[7], 30.0, 1.5) && close(r[6], 280.0, 0.5))
+    );
+    rows
+}
+
+#[test]
+fn csv_is_written_even_when_the_run_ends_with_an_exception() {
+    let d = dir("csv");
+    let o = run(&d, "m.csv");
+    assert_eq!(o.status.code(), Some(1), "{o:?}");
+    let text = std::fs::read_to_string(d.join("m.csv")).unwrap();
+    check_csv(&text, &String::from_utf8_lossy(&o.stdout));
+}
+
+#[test]
+fn json_has_the_same_rows_as_csv() {
+    let d = dir("json");
+    let c = run(&d, "m.csv");
+    let rows = check_csv(
+        &std::fs::read_to_string(d.join("m.csv")).unwrap(),
+        &String::from_utf8_lossy(&c.stdout),
+    );
+    let j = run(&d, "m.json");
+    assert_eq!(j.status.code(), Some(1));
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(d.join("m.json")).unwrap()).unwrap();
+    let arr = v.as_array().unwrap();
+    assert_eq!(arr.len(), rows.len());
+    let keys = ["t", "j1", "j2", "j3", "j4", "j5", "x", "y", "z", "grip"];
+    for (o, r) in arr.iter().zip(&rows) {
+        for (k, x) in keys.iter().zip(r) {
+            assert!(close(o[k].as_f64().unwrap(), *x, 1e-9), "{k}: {o} vs {r:?}");
+        }
+    }
+}
+
+#[test]
+fn a_missing_directory_is_refused_before_running() {
+    let d = dir("missing");
+    let o = run(&d, "no/such/dir/m.csv");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(o.stdout.is_empty(), "the program ran: {o:?}");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("--record") && err.contains("does not exist"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+}
+
+#[test]
+fn an_unwritable_file_is_one_error_line() {
+    let d = dir("unwritable");
+    std::fs::create_dir_all(d.join("m.csv")).unwrap();
+    let o = run(&d, "m.csv");
+    assert_eq!(o.status.code(), Some(2), "{o:?}");
+    let err = String::from_utf8_lossy(&o.stderr);
+    let rec: Vec<&str> = err.lines().filter(|l| l.contains("--record")).collect();
+    assert_eq!(rec.len(), 1, "{err}");
+}
