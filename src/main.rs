@@ -2,7 +2,7 @@
 #![allow(clippy::print_stdout, clippy::print_stderr)]
 
 use adair::session::{Outcome, Session};
-use clap::{Parser, Subcommand};
+use clap::{Args, Parser, Subcommand};
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -21,7 +21,7 @@ struct Cli {
     command: Option<Command>,
 }
 
-#[derive(clap::Args)]
+#[derive(Args)]
 struct RobotOpts {
     /// The simulated robot: rv-m1 (default) or rm-501.
     #[arg(long, default_value = "rv-m1")]
@@ -35,6 +35,17 @@ struct RobotOpts {
     /// Pace the simulator to the wall clock.
     #[arg(long)]
     realtime: bool,
+    #[command(flatten)]
+    serial: SerialOpts,
+    /// With --port: run the whole program on the simulator from the arm's pose
+    /// first, and move the arm only if that run ends without an unhandled exception.
+    #[arg(long, requires = "port")]
+    rehearse: bool,
+}
+
+/// The serial port options of `run` and `repl`.
+#[derive(Args)]
+struct SerialOpts {
     /// Drive a real arm on this serial port instead of the simulator.
     #[arg(long, value_name = "PATH")]
     port: Option<String>,
@@ -44,10 +55,19 @@ struct RobotOpts {
     /// Seconds a reply may take beyond a motion's expected time.
     #[arg(long, value_name = "SECONDS", default_value_t = 2.0, requires = "port")]
     serial_timeout: f64,
-    /// With --port: run the whole program on the simulator from the arm's pose
-    /// first, and move the arm only if that run ends without an unhandled exception.
-    #[arg(long, requires = "port")]
-    rehearse: bool,
+}
+
+impl SerialOpts {
+    /// The port settings, when a port was given.
+    fn settings(&self) -> Option<adair::driver::serial::PortSettings> {
+        self.port
+            .as_ref()
+            .map(|path| adair::driver::serial::PortSettings {
+                path: path.clone(),
+                baud: self.baud,
+                timeout: self.serial_timeout,
+            })
+    }
 }
 
 impl RobotOpts {
@@ -89,15 +109,8 @@ enum Command {
         /// With piped input: exit 1 if an entry failed.
         #[arg(long)]
         strict: bool,
-        /// Drive a real arm on this serial port instead of the simulator.
-        #[arg(long, value_name = "PATH")]
-        port: Option<String>,
-        /// Baud rate of --port.
-        #[arg(long, default_value_t = 9600, requires = "port")]
-        baud: u32,
-        /// Seconds a reply may take beyond a motion's expected time.
-        #[arg(long, value_name = "SECONDS", default_value_t = 2.0, requires = "port")]
-        serial_timeout: f64,
+        #[command(flatten)]
+        serial: SerialOpts,
     },
     /// A virtual RV-M1 (or RM-501) controller on a pseudo-terminal; prints the device path to give to --port.
     SimController {
@@ -203,17 +216,8 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             );
             2
         }
-        Some(Command::Repl {
-            strict,
-            port,
-            baud,
-            serial_timeout,
-        }) => {
-            let port = port.map(|path| adair::driver::serial::PortSettings {
-                path,
-                baud,
-                timeout: serial_timeout,
-            });
+        Some(Command::Repl { strict, serial }) => {
+            let port = serial.settings();
             if std::io::stdin().is_terminal() {
                 adair::repl::term::interactive_on(color, port) as u8
             } else {
@@ -257,14 +261,9 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 }
             };
             let mut s = Session::new(Box::new(std::io::LineWriter::new(std::io::stdout())));
-            match &robot.port {
+            match robot.serial.settings() {
                 None => s.set_robot(desc, trace(), robot.realtime),
-                Some(port) => {
-                    let settings = adair::driver::serial::PortSettings {
-                        path: port.clone(),
-                        baud: robot.baud,
-                        timeout: robot.serial_timeout,
-                    };
+                Some(settings) => {
                     let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
                     let f2 = flag.clone();
                     let _ = ctrlc::set_handler(move || {
