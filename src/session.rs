@@ -221,8 +221,43 @@ impl Session {
         let mut d =
             Diagnostic::new(Phase::Runtime, o.span, msg).with_label(format!("{name} raised here"));
         let real = |s: &Span| !(s.start == 0 && s.end == 0);
+        // Consecutive calls from one place (recursion) are one note.
+        let mut runs: Vec<(Span, usize)> = Vec::new();
         for s in o.chain.iter().filter(|s| real(s) && **s != o.span) {
-            d = d.with_note(*s, "called from here");
+            match runs.last_mut() {
+                Some((last, n)) if last == s => *n += 1,
+                _ => runs.push((*s, 1)),
+            }
+        }
+        let note = |(s, n): (Span, usize), more: usize| {
+            let mut text = if n == 1 {
+                "called from here".to_string()
+            } else {
+                format!("called from here {n} times in a row")
+            };
+            if more > 0 {
+                text.push_str(&format!(", and {more} more calls not shown"));
+            }
+            (s, text)
+        };
+        // A deep chain shows its innermost and outermost places only (an
+        // exception 20,000 calls deep is one screen, built in linear time).
+        const INNER: usize = 6;
+        const OUTER: usize = 3;
+        let notes: Vec<(Span, String)> = if runs.len() > INNER + OUTER + 1 {
+            let hidden: usize = runs[INNER + 1..runs.len() - OUTER]
+                .iter()
+                .map(|r| r.1)
+                .sum();
+            let mut v: Vec<(Span, String)> = runs[..INNER].iter().map(|r| note(*r, 0)).collect();
+            v.push(note(runs[INNER], hidden));
+            v.extend(runs[runs.len() - OUTER..].iter().map(|r| note(*r, 0)));
+            v
+        } else {
+            runs.iter().map(|r| note(*r, 0)).collect()
+        };
+        for (s, text) in notes {
+            d = d.with_note(s, text);
         }
         d
     }

@@ -21,7 +21,7 @@ fn main() {
         .into_iter()
         .map(|path| {
             let name = path.with_extension("").to_string_lossy().replace('/', "::");
-            Trial::test(name, move || match golden::check_case(&path, bless) {
+            Trial::test(name, move || match on_big_stack(path.clone(), bless) {
                 Verdict::Pass | Verdict::Blessed => Ok(()),
                 Verdict::Missing => Err(Failed::from(format!(
                     "{} has no .out file (run with BLESS=1)",
@@ -35,4 +35,19 @@ fn main() {
         })
         .collect();
     libtest_mimic::run(&Arguments::from_args(), trials).exit();
+}
+
+/// Runs a case on a thread with the stack `adair` itself gives a program
+/// (main.rs: 512 MiB, reserved lazily), so deep recursion behaves as on the
+/// command line rather than overflowing the test runner's 2 MiB thread.
+fn on_big_stack(path: PathBuf, bless: bool) -> Verdict {
+    std::thread::Builder::new()
+        .stack_size(512 << 20)
+        .spawn(move || golden::check_case(&path, bless))
+        .expect("spawn a test thread")
+        .join()
+        .unwrap_or_else(|_| Verdict::Differs {
+            expected: String::new(),
+            actual: "the run panicked".into(),
+        })
 }
