@@ -308,7 +308,9 @@ impl Checker {
         info.static_frange = None;
         match (sl, sh) {
             (Some(Static::Int(a)), Some(Static::Int(b))) => info.static_range = Some((a, b)),
-            (Some(Static::Real(a)), Some(Static::Real(b))) => info.static_frange = Some((a, b)),
+            (Some(Static::Real(a)), Some(Static::Real(b))) => {
+                info.static_frange = Some((exact::to_f64(&a), exact::to_f64(&b)))
+            }
             _ => {}
         }
         info.range = Some((l, h));
@@ -834,9 +836,22 @@ impl Checker {
         use Static::*;
         Some(match &e.kind {
             ExKind::Int(v) => Int(*v as i128),
-            ExKind::Real(v) => Real(*v),
+            ExKind::Real(v) => Real(
+                self.exact_reals
+                    .get(&(e.span.start, e.span.end, e.span.context))
+                    .cloned()
+                    .or_else(|| exact::of_f64(*v))?,
+            ),
             ExKind::IntNeg(a) => match self.static_value(a)? {
                 Int(v) => Int(-v),
+                _ => return None,
+            },
+            ExKind::IntAbs(a) => match self.static_value(a)? {
+                Int(v) => Int(v.abs()),
+                _ => return None,
+            },
+            ExKind::FloatAbs(a) => match self.static_value(a)? {
+                Real(v) => Real(num_traits::Signed::abs(&v)),
                 _ => return None,
             },
             ExKind::FloatNeg(a) => match self.static_value(a)? {
@@ -863,30 +878,63 @@ impl Checker {
                 })
             }
             ExKind::FloatBin(op, a, b) => {
-                let x = match self.static_value(a)? {
+                let real = |s: Static| match s {
                     Real(v) => v,
-                    Int(v) => v as f64,
+                    Int(v) => exact::of_int(v),
                 };
-                let y = match self.static_value(b)? {
-                    Real(v) => v,
-                    Int(v) => v as f64,
-                };
+                let x = real(self.static_value(a)?);
+                if *op == FloatOp::PowI {
+                    let Int(n) = self.static_value(b)? else {
+                        return None;
+                    };
+                    return exact::pow(&x, n).map(Real);
+                }
+                let y = real(self.static_value(b)?);
                 Real(match op {
                     FloatOp::Add => x + y,
                     FloatOp::Sub => x - y,
                     FloatOp::Mul => x * y,
+                    FloatOp::Div if num_traits::Zero::is_zero(&y) => return None,
                     FloatOp::Div => x / y,
-                    FloatOp::PowI => x.powi(y as i32),
+                    FloatOp::PowI => return None,
                 })
             }
             ExKind::IntToFloat(a) => match self.static_value(a)? {
-                Int(v) => Real(v as f64),
+                Int(v) => Real(exact::of_int(v)),
                 r => r,
             },
             ExKind::RangeCheck(a, _) => self.static_value(a)?,
             ExKind::TypeFirst(t) => Int(self.types.discrete_bounds(*t)?.0),
             ExKind::TypeLast(t) => Int(self.types.discrete_bounds(*t)?.1),
             ExKind::Attr(AttrOp::Pos, a) => self.static_value(a.first()?)?,
+            // `T'Val (N)`, `T'Succ (X)`, `T'Pred (X)` of static arguments are
+            // static when the result is a value of T.
+            ExKind::Attr(op @ (AttrOp::Val | AttrOp::Succ | AttrOp::Pred), a) => {
+                let Int(v) = self.static_value(a.first()?)? else {
+                    return None;
+                };
+                let v = match op {
+                    AttrOp::Succ => v + 1,
+                    AttrOp::Pred => v - 1,
+                    _ => v,
+                };
+                let (l, h) = self.types.discrete_bounds(self.types.base(e.ty))?;
+                if v < l || v > h {
+                    return None;
+                }
+                Int(v)
+            }
+            ExKind::Attr(op @ (AttrOp::Min | AttrOp::Max), a) if a.len() == 2 => {
+                let (Int(x), Int(y)) = (self.static_value(&a[0])?, self.static_value(&a[1])?)
+                else {
+                    return None;
+                };
+                Int(if *op == AttrOp::Min {
+                    x.min(y)
+                } else {
+                    x.max(y)
+                })
+            }
             _ => return None,
         })
     }

@@ -99,6 +99,28 @@ impl Checker {
             ex.ty = ERROR;
             return ex;
         }
+        if let ExKind::Int(v) = ex.kind
+            && self.types.is_integer(t)
+            && !self.types.is_universal(t)
+            && i32::try_from(v).is_err()
+        {
+            self.err(
+                Diagnostic::ty(
+                    ex.span,
+                    format!(
+                        "the static value {v} is not in range of `{}` ({} .. {})",
+                        self.tname(t),
+                        i32::MIN,
+                        i32::MAX
+                    ),
+                )
+                .with_hint(
+                    "a static expression is computed exactly, and its value must fit its type",
+                ),
+            );
+            ex.ty = ERROR;
+            return ex;
+        }
         let from = ex.ty;
         if self.types.is_universal(ex.ty)
             || matches!(
@@ -134,7 +156,10 @@ impl Checker {
                 info.static_frange,
             ) {
                 (Some(Static::Int(v)), Some((l, h)), _) => l <= v && v <= h,
-                (Some(Static::Real(v)), _, Some((l, h))) => l <= v && v <= h,
+                (Some(Static::Real(v)), _, Some((l, h))) => {
+                    let v = exact::to_f64(&v);
+                    l <= v && v <= h
+                }
                 _ => false,
             };
             let same_range = !computed
@@ -404,11 +429,17 @@ impl Checker {
                 }
             },
             ExprKind::Unary(UnOp::Not, _) => vec![BOOLEAN],
-            ExprKind::Unary(_, a) => self
-                .interps(a)
-                .into_iter()
-                .filter(|t| self.types.is_numeric(*t))
-                .collect(),
+            ExprKind::Unary(op, a) => {
+                let mut out: Vec<TypeId> = self
+                    .interps(a)
+                    .into_iter()
+                    .filter(|t| self.types.is_numeric(*t))
+                    .collect();
+                if out.is_empty() {
+                    out = self.user_op_types(op.symbol(), &[a]);
+                }
+                out
+            }
             ExprKind::Membership { .. } => vec![BOOLEAN],
             ExprKind::If { arms, .. } => {
                 arms.first().map(|a| self.interps(&a.1)).unwrap_or_default()
@@ -943,7 +974,11 @@ impl Checker {
                                 refs.push(l);
                                 refs.push(h);
                             }
-                            Choice::Expr(x) if self.denote_quiet_type(x).is_none() => refs.push(x),
+                            Choice::Expr(x)
+                                if !is_range_attr(x) && self.denote_quiet_type(x).is_none() =>
+                            {
+                                refs.push(x)
+                            }
                             _ => {}
                         }
                     }
@@ -973,7 +1008,23 @@ impl Checker {
                             ranges.push((l, h));
                         }
                         Choice::Expr(x) => {
-                            if let Some(tt) = self.denote_quiet_type(x) {
+                            if let ExprKind::Attr(prefix, _, args) = &x.kind
+                                && is_range_attr(x)
+                            {
+                                // `X in A'Range`, `X in A'Range (N)`
+                                let (l, h, rt) = self.range_attr(prefix, args, x.span);
+                                if rt != ERROR && !self.types.compatible(rt, s.ty) {
+                                    self.err(Diagnostic::ty(
+                                        x.span,
+                                        format!(
+                                            "this range is of `{}`, not `{}`",
+                                            self.types.name(rt),
+                                            self.tname(s.ty)
+                                        ),
+                                    ));
+                                }
+                                ranges.push((l, h));
+                            } else if let Some(tt) = self.denote_quiet_type(x) {
                                 if !self.types.compatible(tt, s.ty) {
                                     self.err(Diagnostic::ty(
                                         x.span,
@@ -1145,14 +1196,20 @@ impl Checker {
         match first {
             Entity::Var { var, ty, value, .. } => match value {
                 Some(Static::Int(v)) => self.mk(ExKind::Int(*v as i64), *ty, sp),
-                Some(Static::Real(v)) => self.mk(ExKind::Real(*v), *ty, sp),
+                Some(Static::Real(v)) => {
+                    let v = v.clone();
+                    self.real_lit(v, *ty, sp)
+                }
                 None => self.mk(ExKind::Var(*var), *ty, sp),
             },
             Entity::Number(Static::Int(v)) => match i64::try_from(*v) {
                 Ok(v) => self.mk(ExKind::Int(v), UNIV_INT, sp),
                 Err(_) => self.err_ex(sp),
             },
-            Entity::Number(Static::Real(v)) => self.mk(ExKind::Real(*v), UNIV_REAL, sp),
+            Entity::Number(Static::Real(v)) => {
+                let v = v.clone();
+                self.real_lit(v, UNIV_REAL, sp)
+            }
             Entity::EnumLit(..) | Entity::Func(_) => {
                 // Enumeration literals first, by the expected type; then parameterless functions.
                 for e in es {
@@ -1525,6 +1582,33 @@ impl Checker {
                 None => this.err_ex(sp),
             }
         };
+        // `/=` of a type with a user-defined `=` is `not (A = B)`.
+        let (user_fit, negate) = if op == BinOp::Ne && user_fit.is_empty() {
+            let eq: Vec<FuncId> = self
+                .op_funcs("=", 2)
+                .into_iter()
+                .filter(|f| {
+                    let fi = &self.funcs[*f as usize];
+                    let (ret, p0, p1) = (fi.ret, fi.params[0].ty, fi.params[1].ty);
+                    ret.is_some_and(|r| self.types.base(r) == BOOLEAN)
+                        && self.fits(a, p0)
+                        && self.fits(b, p1)
+                })
+                .collect();
+            let neg = !eq.is_empty();
+            (eq, neg)
+        } else {
+            (user_fit, false)
+        };
+        let user_call = |this: &mut Self, f: FuncId| {
+            let e = user_call(this, f);
+            if negate && e.ty != ERROR {
+                let esp = e.span;
+                this.mk(ExKind::Not(bx(e)), BOOLEAN, esp)
+            } else {
+                e
+            }
+        };
         match op {
             BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge => {
                 let (li, ri) = (self.interps(a), self.interps(b));
@@ -1567,6 +1651,25 @@ impl Checker {
                 };
                 let x = self.coerce_base(x, t);
                 let y = self.coerce_base(y, t);
+                // A comparison of static values is static, and exact (for
+                // named numbers, `0.1 + 0.2 = 0.3` is True).
+                let order = match (self.shallow_static(&x), self.shallow_static(&y)) {
+                    (Some(Static::Int(p)), Some(Static::Int(q))) => Some(p.cmp(&q)),
+                    (Some(Static::Real(p)), Some(Static::Real(q))) => Some(p.cmp(&q)),
+                    _ => None,
+                };
+                if let Some(o) = order {
+                    use std::cmp::Ordering::*;
+                    let r = match op {
+                        BinOp::Eq => o == Equal,
+                        BinOp::Ne => o != Equal,
+                        BinOp::Lt => o == Less,
+                        BinOp::Le => o != Greater,
+                        BinOp::Gt => o == Greater,
+                        _ => o != Less,
+                    };
+                    return self.mk(ExKind::Int(r as i64), BOOLEAN, sp);
+                }
                 if matches!(op, BinOp::Eq | BinOp::Ne) {
                     return self.mk(ExKind::Eq(op == BinOp::Ne, bx(x), bx(y)), BOOLEAN, sp);
                 }
@@ -1796,16 +1899,31 @@ impl Checker {
                     NATURAL
                 },
             );
-            return if self.types.is_float(t) {
+            let e = if self.types.is_float(t) {
                 self.mk(ExKind::FloatBin(FloatOp::PowI, bx(x), bx(y)), base, sp)
             } else {
                 self.mk(ExKind::IntBin(IntOp::Pow, bx(x), bx(y)), base, sp)
             };
+            return self.fold(e);
         }
         let x = self.expr(a, Some(t));
-        let x = self.coerce_base(x, base);
         let y = self.expr(b, Some(t));
-        let y = self.coerce_base(y, base);
+        // Both operands static: the result is computed exactly, as Ada's
+        // static expressions are (`Integer'Last + 1 - 1` is fine); only the
+        // value of the whole static expression must fit its type, which
+        // `coerce` checks where it is used.
+        let static_operands = self.shallow_static(&x).is_some()
+            && self.shallow_static(&y).is_some()
+            && self.types.compatible(x.ty, base)
+            && self.types.compatible(y.ty, base);
+        let (x, y) = if static_operands {
+            let (mut x, mut y) = (x, y);
+            x.ty = base;
+            y.ty = base;
+            (x, y)
+        } else {
+            (self.coerce_base(x, base), self.coerce_base(y, base))
+        };
         if self.types.is_float(t) {
             let fop = match op {
                 BinOp::Add => FloatOp::Add,
@@ -1813,7 +1931,8 @@ impl Checker {
                 BinOp::Mul => FloatOp::Mul,
                 _ => FloatOp::Div,
             };
-            self.mk(ExKind::FloatBin(fop, bx(x), bx(y)), base, sp)
+            let e = self.mk(ExKind::FloatBin(fop, bx(x), bx(y)), base, sp);
+            self.fold(e)
         } else {
             let iop = match op {
                 BinOp::Add => IntOp::Add,
@@ -1823,32 +1942,70 @@ impl Checker {
                 BinOp::Mod => IntOp::Mod,
                 _ => IntOp::Rem,
             };
-            let folded = match (&x.kind, &y.kind) {
-                (ExKind::Int(_), ExKind::Int(_)) if iop != IntOp::Pow => {
-                    let e = self.mk(ExKind::IntBin(iop, bx(x.clone()), bx(y.clone())), base, sp);
-                    self.static_value(&e)
-                }
-                _ => None,
-            };
-            // Two literals fold to one (what the run time would compute: only
-            // when it raises nothing), so a long chain of static operations
-            // costs one step per operator, here and in `static_value`.
-            // The folded literal must also need no range check that the
-            // operation would have had (its value lies in the base range).
-            let info = self.types.get(base);
-            let fits_base = |v: i128| match (info.range.is_some(), info.static_range) {
-                (false, _) => true,
-                (true, Some((l, h))) => l <= v && v <= h,
-                (true, None) => false,
-            };
-            match folded {
-                Some(Static::Int(v))
-                    if (i32::MIN as i128..=i32::MAX as i128).contains(&v) && fits_base(v) =>
-                {
-                    self.mk(ExKind::Int(v as i64), base, sp)
-                }
-                _ => self.mk(ExKind::IntBin(iop, bx(x), bx(y)), base, sp),
+            let e = self.mk(ExKind::IntBin(iop, bx(x), bx(y)), base, sp);
+            self.fold(e)
+        }
+    }
+
+    /// The value of `e` when it is a static leaf: a literal (every static
+    /// operation is folded into one as soon as it is checked) or a scalar
+    /// type's bound. Constant time, so folding a chain stays linear.
+    pub(super) fn shallow_static(&self, e: &Ex) -> Option<Static> {
+        match &e.kind {
+            ExKind::Int(_) | ExKind::Real(_) | ExKind::TypeFirst(_) | ExKind::TypeLast(_) => {
+                self.static_value(e)
             }
+            _ => None,
+        }
+    }
+
+    /// A real literal node for a static value, remembering its exact value
+    /// for the static expressions it is part of.
+    pub(super) fn real_lit(&mut self, v: exact::Exact, ty: TypeId, sp: Span) -> Ex {
+        let f = exact::to_f64(&v);
+        self.exact_reals.insert((sp.start, sp.end, sp.context), v);
+        self.mk(ExKind::Real(f), ty, sp)
+    }
+
+    /// An operation whose operands are static leaves becomes a literal of
+    /// its exact value. An integer value of a type with its own range is
+    /// folded only inside that range (the run-time check would raise); an
+    /// `Integer` intermediate may leave the 32-bit range, and `coerce`
+    /// refuses a final value outside it.
+    fn fold(&mut self, e: Ex) -> Ex {
+        let leaves = match &e.kind {
+            ExKind::IntBin(_, a, b) | ExKind::FloatBin(_, a, b) => {
+                self.shallow_static(a).is_some() && self.shallow_static(b).is_some()
+            }
+            ExKind::IntNeg(a) | ExKind::FloatNeg(a) | ExKind::IntAbs(a) | ExKind::FloatAbs(a) => {
+                self.shallow_static(a).is_some()
+            }
+            _ => false,
+        };
+        if !leaves {
+            return e;
+        }
+        let base = self.types.base(e.ty);
+        match self.static_value(&e) {
+            Some(Static::Int(v)) => {
+                let info = self.types.get(base);
+                let fits = if base == INTEGER || self.types.is_universal(base) {
+                    i64::try_from(v).is_ok()
+                } else {
+                    match (info.range.is_some(), info.static_range) {
+                        (false, _) => i64::try_from(v).is_ok(),
+                        (true, Some((l, h))) => l <= v && v <= h,
+                        (true, None) => false,
+                    }
+                };
+                if fits {
+                    self.mk(ExKind::Int(v as i64), e.ty, e.span)
+                } else {
+                    e
+                }
+            }
+            Some(Static::Real(r)) if !exact::overflows(&r) => self.real_lit(r, e.ty, e.span),
+            _ => e,
         }
     }
 
@@ -1857,6 +2014,34 @@ impl Checker {
             let x = self.expr(a, Some(BOOLEAN));
             let x = self.coerce(x, BOOLEAN);
             return self.mk(ExKind::Not(bx(x)), BOOLEAN, sp);
+        }
+        // A user-defined `"-"`, `"+"` or `"abs"` on a non-numeric type (a
+        // record, say).
+        if !self.interps(a).iter().any(|t| self.types.is_numeric(*t)) {
+            let user: Vec<FuncId> = self
+                .op_funcs(op.symbol(), 1)
+                .into_iter()
+                .filter(|f| {
+                    let fi = &self.funcs[*f as usize];
+                    let (p, r) = (fi.params[0].ty, fi.ret);
+                    self.fits(a, p)
+                        && want.is_none_or(|w| r.is_some_and(|r| self.types.compatible(r, w)))
+                })
+                .collect();
+            if !user.is_empty() {
+                let args = [ast::Arg {
+                    name: None,
+                    value: a.clone(),
+                    span: a.span,
+                }];
+                return match self.call(&user, &args, want, false, sp, op.symbol()) {
+                    Some((f, args)) => {
+                        let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
+                        self.mk(ExKind::Call(f, args), r, sp)
+                    }
+                    None => self.err_ex(sp),
+                };
+            }
         }
         let t = match want {
             Some(w) if self.types.is_numeric(w) && self.fits(a, w) => w,
@@ -1889,8 +2074,10 @@ impl Checker {
         } else {
             self.types.base(x.ty)
         };
-        let x = if self.types.is_universal(x.ty) {
-            x
+        let x = if self.types.is_universal(x.ty) || self.shallow_static(&x).is_some() {
+            // A static operand may be an intermediate outside the type
+            // (`-(2 ** 31)`): the folded result is what must fit.
+            Ex { ty, ..x }
         } else {
             self.coerce(x, ty)
         };
@@ -1902,7 +2089,8 @@ impl Checker {
             (UnOp::Abs, false) => ExKind::IntAbs(bx(x)),
             _ => ExKind::FloatAbs(bx(x)),
         };
-        self.mk(kind, ty, sp)
+        let e = self.mk(kind, ty, sp);
+        self.fold(e)
     }
 
     /// Static choices of a `case`: per arm, the ranges; and the index of the
@@ -2619,4 +2807,9 @@ pub(super) fn funcs_of(es: &[Entity]) -> Vec<FuncId> {
             }
         })
         .collect()
+}
+
+/// `P'Range` or `P'Range (N)`: a range, not a value.
+fn is_range_attr(x: &ast::Expr) -> bool {
+    matches!(&x.kind, ExprKind::Attr(_, a, _) if a.key == "range")
 }

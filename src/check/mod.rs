@@ -6,6 +6,7 @@
 //! entry at a time against everything declared before.
 
 mod decl;
+pub mod exact;
 mod expr;
 pub mod ir;
 mod stmt;
@@ -21,7 +22,8 @@ use types::*;
 #[derive(Clone, Debug, PartialEq)]
 pub enum Static {
     Int(i128),
-    Real(f64),
+    /// Exact, as Ada's universal arithmetic requires.
+    Real(exact::Exact),
 }
 
 #[derive(Clone, Debug)]
@@ -104,6 +106,9 @@ pub struct Checker {
     in_handler: u32,
     /// Enclosing unit names, for full exception names.
     unit_path: Vec<String>,
+    /// The exact value of each static real expression the checker folded
+    /// or took from a named number, by the span of its `Real` node.
+    exact_reals: HashMap<(usize, usize, u32), exact::Exact>,
     pub diags: Vec<Diagnostic>,
     texts: HashMap<u32, Rc<str>>,
     known_builtin: KnownBuiltin,
@@ -158,6 +163,7 @@ impl Checker {
             next_loop: 0,
             in_handler: 0,
             unit_path: Vec::new(),
+            exact_reals: HashMap::new(),
             diags: Vec::new(),
             texts: HashMap::new(),
             known_builtin,

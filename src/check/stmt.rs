@@ -104,8 +104,28 @@ impl Checker {
                 let t = self.expr(target, None);
                 self.check_variable(&t, target.span, "the target of an assignment");
                 let ty = t.ty;
-                let v = self.expr(value, Some(ty));
-                let v = self.coerce(v, ty);
+                // An aggregate assigned to a slice takes the slice's bounds
+                // (`A (2 .. 4) := (others => 9);`).
+                let vty = match (&t.kind, &value.kind) {
+                    (ExKind::Slice(_, l, h), ast::ExprKind::Aggregate(_)) => {
+                        match self.types.array(ty).map(|(i, e, _)| (i.to_vec(), e)) {
+                            Some((index, elem)) => {
+                                let name = self.types.name(ty).to_string();
+                                let st = self.types.add_subtype(&name, ty);
+                                self.types.list[st as usize].kind = TypeKind::Array {
+                                    index,
+                                    elem,
+                                    bounds: Some(vec![(l.as_ref().clone(), h.as_ref().clone())]),
+                                };
+                                st
+                            }
+                            None => ty,
+                        }
+                    }
+                    _ => ty,
+                };
+                let v = self.expr(value, Some(vty));
+                let v = self.coerce(v, vty);
                 StmtKind::Assign(t, v)
             }
             S::Call(e) => match self.call_stmt(e) {
@@ -195,6 +215,21 @@ impl Checker {
                             t
                         };
                         let (lo, hi) = (self.coerce_base(lo, t), self.coerce_base(hi, t));
+                        // With static bounds the loop parameter has a static
+                        // subtype (a `case` on it needs no `others`).
+                        let t = match (self.static_value(&lo), self.static_value(&hi)) {
+                            (Some(Static::Int(l)), Some(Static::Int(h)))
+                                if self.types.is_discrete(t) =>
+                            {
+                                let name = self.types.name(t).to_string();
+                                let st = self.types.add_subtype(&name, t);
+                                let info = &mut self.types.list[st as usize];
+                                info.range = Some((lo.clone(), hi.clone()));
+                                info.static_range = Some((l, h));
+                                st
+                            }
+                            _ => t,
+                        };
                         self.push_scope();
                         let v = self.new_slot();
                         self.declare(
@@ -286,10 +321,16 @@ impl Checker {
                 self.push_scope();
                 if let Some(l) = label {
                     self.name_scope(&l.key);
+                    // An exception declared in a named block is
+                    // `UNIT.BLOCK.NAME` (as GNAT's Exception_Name).
+                    self.unit_path.push(l.name.clone());
                 }
                 let mut elab = Vec::new();
                 self.decls(decls, &mut elab);
                 let inner = self.block(body);
+                if label.is_some() {
+                    self.unit_path.pop();
+                }
                 self.pop_scope();
                 if elab.is_empty() {
                     StmtKind::Block(Box::new(inner))

@@ -189,12 +189,11 @@ pub fn expr<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, Expr, Ex<'t>> {
     .boxed()
 }
 
-/// A parenthesised part: `(expr)`, an aggregate, an `if`/`case` expression.
-fn paren_part<'t, I: TokIn<'t>>(
-    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+/// A choice of a `case` alternative: `others`, a value or a range.
+fn case_choice<'t, I: TokIn<'t>>(
     simple: impl Parser<'t, I, Expr, Ex<'t>> + Clone + 't,
-) -> Boxed<'t, 't, I, Expr, Ex<'t>> {
-    let choice_p = kw!(Others)
+) -> Boxed<'t, 't, I, Choice, Ex<'t>> {
+    kw!(Others)
         .map_with(|_, e| Choice::Others(e.span()))
         .or(simple
             .clone()
@@ -202,57 +201,18 @@ fn paren_part<'t, I: TokIn<'t>>(
             .map(|(a, b)| match b {
                 Some(b) => Choice::Range(a, b),
                 None => Choice::Expr(a),
-            }));
-    let value = expr
-        .clone()
-        .or(just(Token::Box).map_with(|_, e| mk(ExprKind::Error, e.span())));
-    // The first part of an association is parsed once (as a full expression,
-    // or `others`), and only then is it decided whether it was a choice:
-    // parsing it both ways would take time exponential in the nesting depth.
-    let head = kw!(Others)
-        .map_with(|_, e| Err::<Expr, Span>(e.span()))
-        .or(expr.clone().map(Ok));
-    let assoc = head
-        .then(just(Token::DotDot).ignore_then(simple.clone()).or_not())
-        .then(
-            just(Token::Bar)
-                .ignore_then(choice_p.clone())
-                .repeated()
-                .collect::<Vec<_>>(),
-        )
-        .then(just(Token::Arrow).ignore_then(value).or_not())
-        .validate(|(((head, hi), more), value), e, emitter| {
-            let span: Span = e.span();
-            let first = match (head, hi) {
-                (Err(s), _) => Choice::Others(s),
-                (Ok(a), Some(b)) => Choice::Range(a, b),
-                (Ok(a), None) => Choice::Expr(a),
-            };
-            match (value, first) {
-                (Some(v), first) => {
-                    let mut choices = vec![first];
-                    choices.extend(more);
-                    Assoc {
-                        choices,
-                        value: v,
-                        span,
-                    }
-                }
-                (None, Choice::Expr(a)) if more.is_empty() => Assoc {
-                    choices: Vec::new(),
-                    value: a,
-                    span,
-                },
-                (None, _) => {
-                    emitter.emit(Rich::custom(span, "a choice needs `=>` and a value"));
-                    Assoc {
-                        choices: Vec::new(),
-                        value: mk(ExprKind::Error, span),
-                        span,
-                    }
-                }
-            }
-        });
+            }))
+        .boxed()
+}
+
+/// An `if` or `case` expression without its parentheses: they are those of
+/// a parenthesised expression or, for the sole argument of a call, the
+/// call's own (`Put_Line (if X then "a" else "b")`).
+fn cond_expr<'t, I: TokIn<'t>>(
+    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+    simple: impl Parser<'t, I, Expr, Ex<'t>> + Clone + 't,
+) -> Boxed<'t, 't, I, Expr, Ex<'t>> {
+    let choice_p = case_choice(simple);
     let if_expr = kw!(If)
         .ignore_then(expr.clone())
         .then_ignore(kw!(Then))
@@ -308,9 +268,68 @@ fn paren_part<'t, I: TokIn<'t>>(
                 e.span(),
             )
         });
+    if_expr.or(case_expr).boxed()
+}
+
+/// A parenthesised part: `(expr)`, an aggregate, an `if`/`case` expression.
+fn paren_part<'t, I: TokIn<'t>>(
+    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+    simple: impl Parser<'t, I, Expr, Ex<'t>> + Clone + 't,
+    cond: Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, Expr, Ex<'t>> {
+    let choice_p = case_choice(simple.clone());
+    let value = expr
+        .clone()
+        .or(just(Token::Box).map_with(|_, e| mk(ExprKind::Error, e.span())));
+    // The first part of an association is parsed once (as a full expression,
+    // or `others`), and only then is it decided whether it was a choice:
+    // parsing it both ways would take time exponential in the nesting depth.
+    let head = kw!(Others)
+        .map_with(|_, e| Err::<Expr, Span>(e.span()))
+        .or(expr.clone().map(Ok));
+    let assoc = head
+        .then(just(Token::DotDot).ignore_then(simple.clone()).or_not())
+        .then(
+            just(Token::Bar)
+                .ignore_then(choice_p.clone())
+                .repeated()
+                .collect::<Vec<_>>(),
+        )
+        .then(just(Token::Arrow).ignore_then(value).or_not())
+        .validate(|(((head, hi), more), value), e, emitter| {
+            let span: Span = e.span();
+            let first = match (head, hi) {
+                (Err(s), _) => Choice::Others(s),
+                (Ok(a), Some(b)) => Choice::Range(a, b),
+                (Ok(a), None) => Choice::Expr(a),
+            };
+            match (value, first) {
+                (Some(v), first) => {
+                    let mut choices = vec![first];
+                    choices.extend(more);
+                    Assoc {
+                        choices,
+                        value: v,
+                        span,
+                    }
+                }
+                (None, Choice::Expr(a)) if more.is_empty() => Assoc {
+                    choices: Vec::new(),
+                    value: a,
+                    span,
+                },
+                (None, _) => {
+                    emitter.emit(Rich::custom(span, "a choice needs `=>` and a value"));
+                    Assoc {
+                        choices: Vec::new(),
+                        value: mk(ExprKind::Error, span),
+                        span,
+                    }
+                }
+            }
+        });
     choice((
-        if_expr,
-        case_expr,
+        cond,
         assoc
             .separated_by(just(Token::Comma))
             .at_least(1)
@@ -337,6 +356,7 @@ fn paren_part<'t, I: TokIn<'t>>(
 fn name_with<'t, I: TokIn<'t>>(
     expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
     paren: Boxed<'t, 't, I, Expr, Ex<'t>>,
+    cond: Boxed<'t, 't, I, Expr, Ex<'t>>,
 ) -> Boxed<'t, 't, I, Expr, Ex<'t>> {
     #[derive(Clone)]
     enum Suffix {
@@ -395,11 +415,22 @@ fn name_with<'t, I: TokIn<'t>>(
                     .or_not(),
             )
             .map(|(a, args)| Suffix::Attr(a, args.unwrap_or_default())),
-        arg.separated_by(just(Token::Comma))
+        // An `if`/`case` expression as the sole argument shares the call's
+        // parentheses; it starts with a keyword, so trying it first costs
+        // one token.
+        cond.map_with(|value, e| {
+            vec![Arg {
+                name: None,
+                value,
+                span: e.span(),
+            }]
+        })
+        .or(arg
+            .separated_by(just(Token::Comma))
             .at_least(1)
-            .collect::<Vec<_>>()
-            .delimited_by(just(Token::LParen), just(Token::RParen))
-            .map(Suffix::Args),
+            .collect::<Vec<_>>())
+        .delimited_by(just(Token::LParen), just(Token::RParen))
+        .map(Suffix::Args),
     ));
     let head = ident().map(|i| {
         let sp = i.span;
@@ -425,8 +456,9 @@ fn simple_expr<'t, I: TokIn<'t>>(
 ) -> Boxed<'t, 't, I, Expr, Ex<'t>> {
     recursive(|simple| {
         let simple: Boxed<'t, 't, I, Expr, Ex<'t>> = simple.boxed();
-        let paren = paren_part(expr.clone(), simple.clone());
-        let name = name_with(expr.clone(), paren.clone());
+        let cond = cond_expr(expr.clone(), simple.clone());
+        let paren = paren_part(expr.clone(), simple.clone(), cond.clone());
+        let name = name_with(expr.clone(), paren.clone(), cond);
         let literal = select! {
             Token::Int(i) = e => mk(ExprKind::Int(i), e.span()),
             Token::Real(r) = e => mk(ExprKind::Real(r), e.span()),
@@ -435,7 +467,50 @@ fn simple_expr<'t, I: TokIn<'t>>(
             Token::Kw(Kw::Null) = e => mk(ExprKind::Null, e.span()),
             Token::Error = e => mk(ExprKind::Error, e.span()),
         };
-        // An operator symbol used as a function name: "*" (A, B).
+        // An operator symbol used as a function name: `"*" (A, B)`,
+        // `"abs" (X)`: the same as the operator, so predefined and user
+        // operators resolve alike. Only a string that names an operator and
+        // is followed by `(` is taken (a string literal cannot be called).
+        let op_call = select! { Token::Str(s) = e => (s, e.span()) }
+            .try_map(|(s, sp): (String, Span), _| {
+                operator_of(&s).map(|o| (o, sp)).ok_or_else(|| Rich::custom(sp, "not an operator symbol"))
+            })
+            .then(
+                expr.clone()
+                    .separated_by(just(Token::Comma))
+                    .at_least(1)
+                    .at_most(2)
+                    .collect::<Vec<_>>()
+                    .delimited_by(just(Token::LParen), just(Token::RParen)),
+            )
+            .validate(|((op, _), mut args), e, emitter| {
+                let sp: Span = e.span();
+                match (op, args.len()) {
+                    (OpSym::Bin(b), 2) => {
+                        let r = args.pop().map(Box::new);
+                        let l = args.pop().map(Box::new);
+                        match (l, r) {
+                            (Some(l), Some(r)) => mk(ExprKind::Binary(b, l, r), sp),
+                            _ => mk(ExprKind::Error, sp),
+                        }
+                    }
+                    (OpSym::Un(u), 1) | (OpSym::Both(_, u), 1) => {
+                        mk(ExprKind::Unary(u, Box::new(args.remove(0))), sp)
+                    }
+                    (OpSym::Both(b, _), 2) => {
+                        let r = Box::new(args.remove(1));
+                        let l = Box::new(args.remove(0));
+                        mk(ExprKind::Binary(b, l, r), sp)
+                    }
+                    _ => {
+                        emitter.emit(Rich::custom(
+                            sp,
+                            "this operator takes a different number of operands",
+                        ));
+                        mk(ExprKind::Error, sp)
+                    }
+                }
+            });
         let allocator = kw!(New).ignore_then(name.clone()).map_with(|n, e| {
             let sp = e.span();
             match n.kind {
@@ -443,7 +518,9 @@ fn simple_expr<'t, I: TokIn<'t>>(
                 _ => mk(ExprKind::Allocator(Box::new(n), None), sp),
             }
         });
-        let primary = choice((literal, allocator, name, paren)).labelled("expression").boxed();
+        let primary = choice((op_call, literal, allocator, name, paren))
+            .labelled("expression")
+            .boxed();
         primary
             .pratt((
                 infix(none(6), just(Token::StarStar), |a: Expr, _, b: Expr, e| {
@@ -1632,4 +1709,39 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
             Diagnostic::syntax(span, format!("unexpected {found}{exp}")).with_label(label)
         }
     }
+}
+
+/// What an operator symbol string names, for `"+" (A, B)`.
+#[derive(Clone, Copy)]
+enum OpSym {
+    Bin(BinOp),
+    Un(UnOp),
+    /// `"+"` and `"-"`: binary with two operands, unary with one.
+    Both(BinOp, UnOp),
+}
+
+fn operator_of(s: &str) -> Option<OpSym> {
+    use OpSym::*;
+    Some(match s.to_ascii_lowercase().as_str() {
+        "+" => Both(BinOp::Add, UnOp::Plus),
+        "-" => Both(BinOp::Sub, UnOp::Neg),
+        "abs" => Un(UnOp::Abs),
+        "not" => Un(UnOp::Not),
+        "and" => Bin(BinOp::And),
+        "or" => Bin(BinOp::Or),
+        "xor" => Bin(BinOp::Xor),
+        "=" => Bin(BinOp::Eq),
+        "/=" => Bin(BinOp::Ne),
+        "<" => Bin(BinOp::Lt),
+        "<=" => Bin(BinOp::Le),
+        ">" => Bin(BinOp::Gt),
+        ">=" => Bin(BinOp::Ge),
+        "&" => Bin(BinOp::Cat),
+        "*" => Bin(BinOp::Mul),
+        "/" => Bin(BinOp::Div),
+        "mod" => Bin(BinOp::Mod),
+        "rem" => Bin(BinOp::Rem),
+        "**" => Bin(BinOp::Pow),
+        _ => return None,
+    })
 }
