@@ -261,14 +261,20 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 }
             };
             let mut s = Session::new(Box::new(std::io::LineWriter::new(std::io::stdout())));
+            // Ctrl-C stops the motion and ends the program (exit 130).
+            let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+            let seen = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+            {
+                let (f2, s2) = (flag.clone(), seen.clone());
+                let _ = ctrlc::set_handler(move || {
+                    f2.store(true, std::sync::atomic::Ordering::SeqCst);
+                    s2.store(true, std::sync::atomic::Ordering::SeqCst);
+                });
+            }
+            s.machine.interrupted = Some(flag.clone());
             match robot.serial.settings() {
                 None => s.set_robot(desc, trace(), robot.realtime),
                 Some(settings) => {
-                    let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
-                    let f2 = flag.clone();
-                    let _ = ctrlc::set_handler(move || {
-                        f2.store(true, std::sync::atomic::Ordering::SeqCst)
-                    });
                     if robot.rehearse {
                         match rehearse(&desc, &settings, &file, &text, color) {
                             Ok(()) => eprintln!(
@@ -289,12 +295,23 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 s.start_recording();
             }
             let outcome = s.run_source(&file.to_string_lossy(), &text);
-            report(&outcome, &s, color);
+            let stopped = s.take_stopped();
+            if stopped.is_none() {
+                report(&outcome, &s, color);
+            }
             if let Some(p) = &record
                 && let Err(e) = write_record(p, &s)
             {
                 eprintln!("adair: --record {}: {e}", p.display());
                 return 2;
+            }
+            if let Some(m) = stopped {
+                eprintln!("adair: {m}");
+                return 130;
+            }
+            if seen.load(std::sync::atomic::Ordering::SeqCst) {
+                eprintln!("adair: interrupted (Ctrl-C)");
+                return 130;
             }
             outcome.exit_code() as u8
         }

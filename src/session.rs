@@ -140,6 +140,16 @@ impl Session {
             .and_then(|b| b.downcast_ref::<crate::services::RobotState>())
     }
 
+    /// Where the program was when the user stopped it (Ctrl-C during or
+    /// before a motion), once: the run has ended there.
+    pub fn take_stopped(&mut self) -> Option<String> {
+        self.machine
+            .robot
+            .as_mut()
+            .and_then(|b| b.downcast_mut::<crate::services::RobotState>())
+            .and_then(|st| st.stopped.take())
+    }
+
     /// Starts collecting the support points of every motion (`--record`).
     pub fn start_recording(&mut self) {
         if let Some(st) = self

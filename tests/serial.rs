@@ -59,15 +59,15 @@ static COUNTER: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize:
 fn controller(robot: &str, extra: &[&str]) -> Option<Controller> {
     let n = COUNTER.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
     let log = std::env::temp_dir().join(format!("adair-simctl-{}-{n}.log", std::process::id()));
+    let scale: &[&str] = if extra.contains(&"--time-scale") {
+        &[]
+    } else {
+        &["--time-scale", "0.02"]
+    };
     let mut child = Command::new(BIN)
-        .args([
-            "sim-controller",
-            "--robot",
-            robot,
-            "--time-scale",
-            "0.02",
-            "--log",
-        ])
+        .args(["sim-controller", "--robot", robot])
+        .args(scale)
+        .arg("--log")
         .arg(&log)
         .args(extra)
         .stdout(Stdio::piped())
@@ -245,6 +245,31 @@ fn a_hang_up_is_fatal_then_no_connection() {
     assert!(out.contains("ADAIR.NOCONNECTION"), "{out}");
 }
 
+/// Replies slower than usual but within `--serial-timeout` (0.5 s here):
+/// everything works, only later.
+fn slow_replies_within_the_timeout_work() {
+    let Some(out) = fault(&["--slow", "0.2"]) else {
+        return;
+    };
+    assert_eq!(out, "moved\nmoved again\nwent on\n");
+}
+
+/// Replies beyond the timeout: the first `ER` at `InitRobot` finds no unit
+/// (`NoRobotInstalled`), in about the timeout, not forever.
+fn slow_replies_beyond_the_timeout_are_no_robot() {
+    let Some(c) = controller("rv-m1", &["--slow", "1.5"]) else {
+        return;
+    };
+    let t = std::time::Instant::now();
+    let (_, out, _) = run("rv-m1", Some(&c.path), INIT);
+    assert!(out.starts_with("ADAIR.NOROBOTINSTALLED"), "{out}");
+    assert!(
+        t.elapsed() < Duration::from_secs(5),
+        "took {:?}",
+        t.elapsed()
+    );
+}
+
 const INIT: &str = "
 begin
    InitRobot;
@@ -405,6 +430,66 @@ fn the_controller_speaks_the_units_language() {
     assert_eq!(ask("DR").as_deref(), Some("&H0005A,&H0000\r\n"));
 }
 
+/// Ctrl-C during a long motion over the line: the driver stops waiting and
+/// sends nothing more (the unit finishes the line it has, robots.md), the
+/// program ends (no handler catches it), stderr says where it was, exit 130.
+fn sigint_stops_a_real_motion() {
+    let Some(c) = controller("rv-m1", &["--time-scale", "1.0"]) else {
+        return;
+    };
+    let dir = std::env::temp_dir().join(format!("adair-sigint-serial-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = dir.join("long.air");
+    std::fs::write(
+        &script,
+        "InitRobot;\nSetVelocity (5.0);\nbegin\n   MoveAxesAbsolute ((Rad (150.0), 0.0, 0.0, 0.0, 0.0));\n\
+         exception\n   when others => Put_Line (\"caught (wrong)\");\nend;\nPut_Line (\"went on (wrong)\");\n",
+    )
+    .unwrap();
+    let child = Command::new(BIN)
+        .args(["run", "--serial-timeout", "0.5", "--port", &c.path])
+        .arg(&script)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Wait until the long motion's line has gone out.
+    let t0 = std::time::Instant::now();
+    while !c.received().iter().any(|l| l.starts_with("MJ +150.0")) {
+        assert!(t0.elapsed() < Duration::from_secs(30), "{:?}", c.received());
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    std::thread::sleep(Duration::from_millis(300));
+    let t = std::time::Instant::now();
+    let _ = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status();
+    let out = child.wait_with_output().unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let (stdout, stderr) = (
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr),
+    );
+    assert!(
+        t.elapsed() < Duration::from_secs(3),
+        "took {:?}",
+        t.elapsed()
+    );
+    assert_eq!(out.status.code(), Some(130), "{stdout}\n{stderr}");
+    assert_eq!(stdout, "");
+    assert!(
+        stderr.contains("interrupted (Ctrl-C) at long.air:4 in MoveAxesAbsolute"),
+        "{stderr}"
+    );
+    // Nothing was sent after the motion's ER.
+    let sent = c.received();
+    let mj = sent
+        .iter()
+        .position(|l| l.starts_with("MJ +150.0"))
+        .unwrap();
+    assert_eq!(&sent[mj + 1..], ["ER"], "{sent:?}");
+}
+
 fn the_repl_jogs_a_real_arm() {
     let Some(c) = controller("rv-m1", &[]) else {
         return;
@@ -474,6 +559,14 @@ fn main() {
             a_hang_up_is_fatal_then_no_connection,
         ),
         (
+            "slow_replies_within_the_timeout_work",
+            slow_replies_within_the_timeout_work,
+        ),
+        (
+            "slow_replies_beyond_the_timeout_are_no_robot",
+            slow_replies_beyond_the_timeout_are_no_robot,
+        ),
+        (
             "a_missing_port_is_no_connection_naming_it",
             a_missing_port_is_no_connection_naming_it,
         ),
@@ -500,6 +593,7 @@ fn main() {
             the_controller_speaks_the_units_language,
         ),
         ("the_repl_jogs_a_real_arm", the_repl_jogs_a_real_arm),
+        ("sigint_stops_a_real_motion", sigint_stops_a_real_motion),
     ];
     let ptys = nix::pty::openpty(None, None).is_ok();
     if !ptys {

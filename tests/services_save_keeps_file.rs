@@ -52,3 +52,64 @@ fn failed_save_leaves_the_previous_file_whole() {
     );
     assert_eq!(after, before, "the previous file was changed");
 }
+
+/// A path file that is not UTF-8 text is malformed content: `Data_Error`
+/// naming the line, not `Use_Error`; nothing is loaded.
+#[test]
+fn a_path_file_that_is_not_utf8_is_a_data_error() {
+    let dir = std::env::temp_dir().join(format!("adair_utf8_{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let target = dir.join("bad.paths");
+    std::fs::write(&target, b"adair-paths 1\npath 1\npos 1 \xff\xfe 0.0\nend\n").unwrap();
+    let out = run(
+        &dir,
+        "load.air",
+        &format!(
+            "InitRobot;\nbegin\n   LoadPathSystem (\"{}\");\n   Put_Line (\"loaded (wrong)\");\n\
+             exception\n   when E : others => Put_Line (Ada.Exceptions.Exception_Name (E) & \": \" & Ada.Exceptions.Exception_Message (E));\nend;\n\
+             begin\n   DeletePath (1);\n   Put_Line (\"path 1 exists (wrong)\");\n\
+             exception\n   when PathNotDefined => Put_Line (\"nothing loaded\");\nend;\n",
+            target.display()
+        ),
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(
+        out.starts_with("ADA.IO_EXCEPTIONS.DATA_ERROR: ") && out.contains("bad.paths:3: not UTF-8"),
+        "{out}"
+    );
+    assert!(out.ends_with("nothing loaded\n"), "{out}");
+}
+
+/// A save killed half-way leaves its temporary file; the next save writes
+/// over it and renames it, so no `*-tmp` file is left behind.
+#[test]
+fn a_stale_temporary_file_is_gone_after_the_next_save() {
+    let dir = std::env::temp_dir().join(format!("adair_stale_tmp_{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let target = dir.join("cell.paths");
+    // What a save killed between writing and renaming leaves: a partial file.
+    std::fs::write(
+        target.with_extension("adair-tmp"),
+        "adair-paths 1\npath 1\npos 1 1.0",
+    )
+    .unwrap();
+    let out = run(
+        &dir,
+        "save.air",
+        &format!(
+            "InitRobot;\nCreatePath (2);\nInsertPosition (2, 1, Trans (300.0, 0.0, 200.0));\n\
+             SavePathSystem (\"{0}\");\nDeletePath (2);\nLoadPathSystem (\"{0}\");\nPut_Line (\"saved and loaded\");\n",
+            target.display()
+        ),
+    );
+    let left: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with("-tmp"))
+        .collect();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert_eq!(out, "saved and loaded\n");
+    assert!(left.is_empty(), "left behind: {left:?}");
+}

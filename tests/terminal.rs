@@ -127,6 +127,8 @@ fn teachbox_jogs_refuses_at_limits_stores_and_returns() {
     t.keys(&["q", "q"]);
     let s = t.wait_for("J1    10.000 deg");
     assert!(s.contains("side view") && s.contains("top view"), "{s}");
+    // The grip force after InitRobot is InitToolForce, as ValueTool says.
+    assert!(s.contains("hand: opening 60.0 mm, force 10.0 N"), "{s}");
     // J3 is at its lower limit 0 deg: a jog down is refused and nothing moves.
     t.keys(&["d"]);
     let s = t.wait_for("J3 at its limit");
@@ -188,7 +190,7 @@ fn repl_ctrl_c_stops_a_long_motion_where_it_is() {
     ]);
     std::thread::sleep(Duration::from_millis(1500));
     t.keys(&["C-c"]);
-    t.wait_for("the robot stopped there");
+    t.wait_for("the robot stopped at");
     // The robot is where the motion was stopped: J1 between 0 and 2 rad.
     t.keys(&["J : Float := ValueAxes (1);", "Enter"]);
     t.keys(&["J > 0.0 and J < 1.0", "Enter"]);

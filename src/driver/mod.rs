@@ -82,9 +82,33 @@ pub trait Robot {
     fn set_speed(&mut self, _percent: f64) -> Result<(), DriverError> {
         Ok(())
     }
-    /// Moves through the joint vectors in order, taking `duration` seconds
-    /// in all, and returns when the motion has ended (or was stopped).
-    fn move_joints(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError>;
+    /// Starts a motion through the joint vectors in order, taking `duration`
+    /// seconds in all, and returns as soon as the robot has it (a real arm:
+    /// the lines are sent). The motion then runs until [`Robot::wait_motion`]
+    /// sees its end or [`Robot::stop_motion`] stops it; a driver finishes a
+    /// running motion before its next command.
+    fn start_motion(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError>;
+    /// Waits until the running motion (if any) has ended. A user interrupt
+    /// (Ctrl-C) ends the wait with [`DriverError::Interrupted`]; the caller
+    /// then calls [`Robot::stop_motion`].
+    fn wait_motion(&mut self) -> Result<(), DriverError> {
+        Ok(())
+    }
+    /// True while a started motion may still run (not yet waited for).
+    fn motion_pending(&self) -> bool {
+        false
+    }
+    /// Stops the running motion: afterwards [`Robot::joints`] is where the
+    /// arm stays. The serial units cannot abort a line (robots.md): the
+    /// driver sends nothing more, and the arm ends at the line's target.
+    fn stop_motion(&mut self) -> Result<(), DriverError> {
+        Ok(())
+    }
+    /// Start, then wait: a whole motion.
+    fn move_joints(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError> {
+        self.start_motion(points, duration)?;
+        self.wait_motion()
+    }
     /// Calibrates (the simulator has no drift to remove).
     fn calibrate(&mut self) -> Result<(), DriverError>;
     fn gripper(&self) -> GripperState;

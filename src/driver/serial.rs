@@ -134,6 +134,9 @@ pub struct Serial {
     gripper: GripperState,
     speed: Option<u8>,
     interrupt: Option<Arc<AtomicBool>>,
+    /// A started motion not yet waited for: its expected duration and the
+    /// last line sent (for messages).
+    pending: Option<(f64, String)>,
 }
 
 impl Serial {
@@ -175,6 +178,7 @@ impl Serial {
             },
             speed: None,
             interrupt,
+            pending: None,
         }
     }
 
@@ -191,8 +195,12 @@ impl Serial {
         })
     }
 
-    /// Sends a line; a fatal error takes the link down.
+    /// Sends a line; a fatal error takes the link down. A motion still
+    /// running (`Control => True`) is waited for first.
     fn send(&mut self, line: &str) -> Result<(), DriverError> {
+        if self.pending.is_some() {
+            self.wait_motion()?;
+        }
         let r = self.link()?.send(line);
         self.check_fatal(r)
     }
@@ -252,9 +260,10 @@ impl Serial {
         Ok(q)
     }
 
-    /// After a fault: the joints from the arm, when the link is still up.
+    /// After a fault: the joints from the arm, when the link is still up
+    /// (after a user's stop the driver sends nothing more).
     fn resync(&mut self, e: DriverError) -> DriverError {
-        if self.unit == Unit::RvM1 && self.link.is_some() {
+        if self.unit == Unit::RvM1 && self.link.is_some() && e != DriverError::Interrupted {
             let near = self.joints;
             let _ = self.where_is(near);
         }
@@ -276,6 +285,7 @@ impl Serial {
         Ok(())
     }
 
+    /// Sends the lines of a motion; its end is checked by `finish`.
     fn motion(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError> {
         let desc = self.kin.description().clone();
         let mut last = String::new();
@@ -310,14 +320,24 @@ impl Serial {
                 }
             }
         }
+        // The unit runs the lines: as far as the program knows, the arm is
+        // at their target once the motion has ended (or been stopped).
+        self.joints = desc.from_controller_deg(&self.sent);
+        self.pending = Some((duration, last));
+        Ok(())
+    }
+
+    /// Waits for the end of the pending motion.
+    fn finish(&mut self) -> Result<(), DriverError> {
+        let Some((duration, last)) = self.pending.take() else {
+            return Ok(());
+        };
         match self.unit {
             // The reply to ER comes when the motion has ended.
-            Unit::RvM1 => self.error_status(duration, &last)?,
+            Unit::RvM1 => self.error_status(duration, &last),
             // The RM-501 never answers: time the move ourselves.
-            Unit::Rm501 => self.sleep_interruptible(duration)?,
+            Unit::Rm501 => self.sleep_interruptible(duration),
         }
-        self.joints = desc.from_controller_deg(&self.sent);
-        Ok(())
     }
 }
 
@@ -431,7 +451,7 @@ impl Robot for Serial {
         Ok(())
     }
 
-    fn move_joints(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError> {
+    fn start_motion(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError> {
         for p in points {
             if let Err(v) = self.kin.description().check_limits(p) {
                 return Err(DriverError::Limit(v.to_string()));
@@ -439,6 +459,22 @@ impl Robot for Serial {
         }
         let r = self.motion(points, duration);
         r.map_err(|e| self.resync(e))
+    }
+
+    fn wait_motion(&mut self) -> Result<(), DriverError> {
+        let r = self.finish();
+        r.map_err(|e| self.resync(e))
+    }
+
+    fn motion_pending(&self) -> bool {
+        self.pending.is_some()
+    }
+
+    fn stop_motion(&mut self) -> Result<(), DriverError> {
+        // The unit cannot abort a line: send nothing more; it ends at the
+        // line's target, which `joints` already is.
+        self.pending = None;
+        Ok(())
     }
 
     fn calibrate(&mut self) -> Result<(), DriverError> {

@@ -36,6 +36,11 @@ impl Simulator {
 
     /// An object of `width` mm between the jaws (0 = none).
     pub fn place_object(&mut self, width: f64) -> Result<(), String> {
+        if !width.is_finite() || width < 0.0 {
+            return Err(format!(
+                "an object {width} mm wide: give a width of 0.0 mm or more (0.0 removes the object)"
+            ));
+        }
         if width > self.gripper.opening + 1e-9 && width > 0.0 {
             return Err(format!(
                 "an object of {width:.1} mm does not fit between jaws open {:.1} mm",
@@ -57,7 +62,9 @@ impl Robot for Simulator {
     fn read_joints(&self) -> Joints {
         self.desc.quantize(&self.joints)
     }
-    fn move_joints(&mut self, points: &[Joints], _duration: f64) -> Result<(), DriverError> {
+    /// The simulator's motion is its joint state at the end; the services
+    /// keep the virtual time it takes (and stop it part-way by `set_joints`).
+    fn start_motion(&mut self, points: &[Joints], _duration: f64) -> Result<(), DriverError> {
         for p in points {
             // The services check limits before anything moves; a driver
             // still refuses to leave them.

@@ -421,6 +421,11 @@ impl Run<'_> {
             }
             StmtKind::Delay(d) => {
                 let secs = self.eval(d)?.real();
+                // Duration is fixed point in Ada: no NaN, no infinity. A
+                // negative delay is no delay (RM 9.6).
+                if !secs.is_finite() {
+                    return Err(self.check_failed("delay of a non-finite duration", s.span));
+                }
                 self.m.clock.sleep(secs);
                 Ok(())
             }

@@ -234,7 +234,15 @@ impl Repl {
                     .machine
                     .run(&self.session.checker, &stmts, None);
                 match r {
-                    Ok(()) => Reply::default(),
+                    Ok(()) => match self.session.take_stopped() {
+                        // Ctrl-C stopped the motion: say where, raise nothing.
+                        Some(m) => Reply {
+                            text: format!("{m}\n"),
+                            failed: true,
+                            quit: false,
+                        },
+                        None => Reply::default(),
+                    },
                     Err(o) => self.raised(&o),
                 }
             }

@@ -146,7 +146,10 @@ impl TermPendant {
                     st.robot.move_gripper(g.opening_min, Some(st.force_setting))
                 };
                 self.message = match r {
-                    Ok(s) => format!("hand: opening {:.1} mm, force {:.1} N", s.opening, s.force),
+                    Ok(_) => {
+                        let s = crate::services::grip_reading(st);
+                        format!("hand: opening {:.1} mm, force {:.1} N", s.opening, s.force)
+                    }
                     Err(e) => format!("hand refused: {e}"),
                 };
             }
@@ -180,7 +183,7 @@ impl TermPendant {
         let q = st.robot.read_joints();
         let d = joints_to_deg(&q);
         let tcp = st.kin.fk_tcp(&q, &st.tool.trans).to_rows();
-        let g = st.robot.gripper();
+        let g = crate::services::grip_reading(st);
         let mut lines: Vec<Line> = Vec::new();
         lines.push(Line::from(format!(
             "TeachBox  {}",

@@ -46,7 +46,16 @@ pub struct RobotState {
     pub pendant: Option<Box<dyn Pendant>>,
     /// The exceptions of the program the services run in.
     pub excs: ExcIds,
+    /// Set when the user stopped the program (Ctrl-C) during or before a
+    /// motion: where it was and where the robot stayed. The run has ended.
+    pub stopped: Option<String>,
 }
+
+/// The label of the `exit` by which a service ends the whole program when
+/// the user stops it (Ctrl-C): no loop carries it and no handler catches an
+/// exit, so it leaves every frame; `Machine::run` ends there normally and the
+/// caller reads [`RobotState::stopped`].
+pub const STOP_LABEL: u32 = u32::MAX;
 
 /// The screen teach pendant behind the `TeachBox` service. The terminal
 /// code lives in `repl::teach`; the services only call this trait.
@@ -102,6 +111,7 @@ impl RobotState {
             force_setting: 0.0,
             pendant: None,
             excs,
+            stopped: None,
         }
     }
 }
@@ -196,16 +206,63 @@ fn require_init(r: &mut Run, st: &mut RobotState, service: &str, span: crate::di
             span,
         ));
     }
-    wait_for_control(r, st);
-    Ok(())
+    wait_for_control(r, st, service, span)
 }
 
-/// A `Control => True` motion still running: wait for its end.
-fn wait_for_control(r: &mut Run, st: &RobotState) {
+/// A `Control => True` motion still running: wait for its end (virtual
+/// time on the simulator; the arm's reply on a real one).
+fn wait_for_control(
+    r: &mut Run,
+    st: &mut RobotState,
+    service: &str,
+    span: crate::diag::Span,
+) -> R<()> {
     let now = r.m.clock.now();
     if st.busy_until > now {
         r.m.clock.sleep(st.busy_until - now);
     }
+    if st.robot.motion_pending() {
+        match st.robot.wait_motion() {
+            Ok(()) => {}
+            Err(crate::driver::DriverError::Interrupted) => {
+                let _ = st.robot.stop_motion();
+                return Err(stop(
+                    r,
+                    st,
+                    service,
+                    span,
+                    "waiting for a Control => True motion",
+                ));
+            }
+            Err(e) => return Err(driver_fail(r, st, service, e, span)),
+        }
+    }
+    Ok(())
+}
+
+/// True (once) when the user has asked to stop (Ctrl-C).
+fn interrupt_requested(r: &Run) -> bool {
+    r.m.interrupted
+        .as_ref()
+        .is_some_and(|f| f.swap(false, std::sync::atomic::Ordering::SeqCst))
+}
+
+/// Ends the program because the user stopped it: records where the program
+/// was and where the robot stayed, and leaves every frame (`STOP_LABEL`).
+fn stop(
+    r: &mut Run,
+    st: &mut RobotState,
+    service: &str,
+    span: crate::diag::Span,
+    what: &str,
+) -> Flow {
+    let q = st.robot.joints();
+    st.stopped = Some(format!(
+        "interrupted (Ctrl-C) at {} in {service} ({what}); the robot stopped at {} deg",
+        r.m.location(span),
+        deg5(&q)
+    ));
+    Flow::Exit(STOP_LABEL)
 }
 
 pub fn frame_value(p: &Pose) -> Value {
@@ -258,6 +315,8 @@ fn deg5(j: &Joints) -> String {
 /// Motion options common to every motion service.
 struct MotionOpts {
     time: Option<f64>,
+    /// `Time` as given (0.0 = as fast as the velocity allows).
+    time_arg: f64,
     control: bool,
     realtime: bool,
 }
@@ -266,9 +325,34 @@ fn opts(a: &[Value], first: usize) -> MotionOpts {
     let t = a.get(first).map(|v| v.real()).unwrap_or(0.0);
     MotionOpts {
         time: if t > 0.0 { Some(t) } else { None },
+        time_arg: t,
         control: a.get(first + 1).is_some_and(|v| v.int() != 0),
         realtime: a.get(first + 2).is_some_and(|v| v.int() != 0),
     }
+}
+
+/// `require_init` for a motion service, and its `Time`: a NaN, an infinite
+/// or a negative duration is `TimeInvalid` before anything moves.
+fn require_motion(
+    r: &mut Run,
+    st: &mut RobotState,
+    service: &str,
+    o: &MotionOpts,
+    span: crate::diag::Span,
+) -> R<()> {
+    require_init(r, st, service, span)?;
+    let t = o.time_arg;
+    if !t.is_finite() || t < 0.0 {
+        return Err(fail(
+            r,
+            st,
+            service,
+            Exc::TimeInvalid,
+            format!("Time => {t} s: a duration must be a finite number of seconds, 0.0 or more"),
+            span,
+        ));
+    }
+    Ok(())
 }
 
 /// Executes a planned joint motion: driver, clock, trace.
@@ -283,6 +367,9 @@ fn perform(
 ) -> R<()> {
     let before = st.robot.joints();
     let real = st.robot.real_time();
+    if interrupt_requested(r) {
+        return Err(stop(r, st, service, span, "before the motion started"));
+    }
     // Paced to the wall clock: the user can stop the motion (Ctrl-C); the
     // robot then stays where it had got to. A real arm takes its own time.
     if (o.realtime || st.realtime) && !o.control && !real {
@@ -291,25 +378,31 @@ fn perform(
             let reached = interpolate(&before, points, done);
             let _ = st.robot.move_joints(&[reached], duration * done);
             r.m.clock.sleep(duration * done);
-            return Err(fail(
-                r,
-                st,
-                service,
-                Exc::ProgramError,
-                format!(
-                    "interrupted (Ctrl-C) after {:.3} of {duration:.3} s; the robot stopped there",
-                    duration * done
-                ),
-                span,
-            ));
+            let what = format!("after {:.3} of {duration:.3} s", duration * done);
+            return Err(stop(r, st, service, span, &what));
         }
     }
     let start = r.m.clock.now();
-    if let Err(e) = st.robot.move_joints(points, duration) {
+    if let Err(e) = st.robot.start_motion(points, duration) {
         return Err(driver_fail(r, st, service, e, span));
     }
     if real {
-        // The driver returned when the arm had finished (wall clock).
+        // A real arm takes its own (wall-clock) time: wait for its end,
+        // unless the program goes on computing (`Control => True`).
+        if !o.control {
+            match st.robot.wait_motion() {
+                Ok(()) => {}
+                Err(crate::driver::DriverError::Interrupted) => {
+                    let _ = st.robot.stop_motion();
+                    let what = format!(
+                        "{:.3} s into the motion; the unit finishes the line it has",
+                        r.m.clock.now() - start
+                    );
+                    return Err(stop(r, st, service, span, &what));
+                }
+                Err(e) => return Err(driver_fail(r, st, service, e, span)),
+            }
+        }
     } else if o.control {
         st.busy_until = start + duration;
     } else {
@@ -526,6 +619,7 @@ fn init_robot(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Optio
     with_state(r, span, |r, st| {
         let o = MotionOpts {
             time: None,
+            time_arg: 0.0,
             control: false,
             realtime: false,
         };
@@ -584,15 +678,16 @@ fn end_robot(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option
                 span,
             ));
         }
-        // The nest (rest) position is the zero pose.
+        // The nest (rest) position of the robot description (robots.md).
         let o = MotionOpts {
             time: None,
+            time_arg: 0.0,
             control: false,
             realtime: false,
         };
-        let zero = [0.0; 5];
-        let d = plan(r, st, "EndRobot", &zero, &o, span)?;
-        perform(r, st, "EndRobot", &[zero], d, &o, span)?;
+        let nest = st.kin.description().nest();
+        let d = plan(r, st, "EndRobot", &nest, &o, span)?;
+        perform(r, st, "EndRobot", &[nest], d, &o, span)?;
         st.initialized = false;
         st.tool = standard_tool(&st.kin);
         st.base = Pose::identity();
@@ -733,11 +828,13 @@ fn set_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<V
     })
 }
 
-fn tool_value(st: &RobotState) -> Value {
+/// The gripper as every reader reports it (`ValueTool`, the trace, the
+/// TeachBox): the opening, and the grip force. The grip force is the
+/// handbook's *Greifkraft*, a setting: `InitToolForce` after `InitRobot`,
+/// the `Force` of the last `MoveTool`; while the jaws press on something it
+/// is the force they press with. Without a force sensor it reads 0.0.
+pub fn grip_reading(st: &RobotState) -> crate::driver::GripperState {
     let mut g = st.robot.gripper();
-    // Without a force sensor the force reads 0.0; with one, it is the force
-    // measured while the jaws press, else the force they would apply. The
-    // simulator always knows the opening.
     let t = &st.tool;
     g.force = if t.force_min == 0.0 && t.force_max == 0.0 {
         0.0
@@ -746,6 +843,11 @@ fn tool_value(st: &RobotState) -> Value {
     } else {
         st.force_setting
     };
+    g
+}
+
+fn tool_value(st: &RobotState) -> Value {
+    let g = grip_reading(st);
 
     Value::Rec(Rc::new(vec![
         frame_value(&st.tool.trans),
@@ -832,6 +934,7 @@ fn move_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<
                     r.m.clock.sleep(d);
                 }
                 record::point(st, r.m.clock.now());
+                let g2 = grip_reading(st);
                 if let Some(tr) = &mut st.trace {
                     let _ = writeln!(
                         tr,
@@ -854,7 +957,7 @@ fn move_axes_absolute(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> 
     let axes = axes_of(&a[0]);
     let o = opts(a, 1);
     with_state(r, span, |r, st| {
-        require_init(r, st, "MoveAxesAbsolute", span)?;
+        require_motion(r, st, "MoveAxesAbsolute", &o, span)?;
         let target = match st.kin.joint_target(&axes) {
             Ok(t) => t,
             Err(e) => return Err(kin_fail(r, st, "MoveAxesAbsolute", &e, span)),
@@ -869,7 +972,7 @@ fn move_axes_relative(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> 
     let delta = axes_of(&a[0]);
     let o = opts(a, 1);
     with_state(r, span, |r, st| {
-        require_init(r, st, "MoveAxesRelative", span)?;
+        require_motion(r, st, "MoveAxesRelative", &o, span)?;
         let current = st.robot.joints();
         let target = match st.kin.relative_joint_target(&current, &delta) {
             Ok(t) => t,
@@ -885,7 +988,7 @@ fn move_frame_absolute(r: &mut Run, a: &mut [Value], span: crate::diag::Span) ->
     let goal = Pose::from_rows(frame_rows(&a[0]));
     let o = opts(a, 1);
     with_state(r, span, |r, st| {
-        require_init(r, st, "MoveFrameAbsolute", span)?;
+        require_motion(r, st, "MoveFrameAbsolute", &o, span)?;
         move_frame(r, st, "MoveFrameAbsolute", goal, o, span)
     })
 }
@@ -894,7 +997,7 @@ fn move_frame_relative(r: &mut Run, a: &mut [Value], span: crate::diag::Span) ->
     let goal = Pose::from_rows(frame_rows(&a[0]));
     let o = opts(a, 1);
     with_state(r, span, |r, st| {
-        require_init(r, st, "MoveFrameRelative", span)?;
+        require_motion(r, st, "MoveFrameRelative", &o, span)?;
         let g = st.base * goal;
         move_frame(r, st, "MoveFrameRelative", g, o, span)
     })
@@ -994,7 +1097,7 @@ fn value_error_status_f(
     // Always answers, before InitRobot too: a handler must be able to ask
     // which service raised, SystemNotInitialized included.
     with_state(r, span, |r, st| {
-        wait_for_control(r, st);
+        wait_for_control(r, st, "ValueErrorStatus", span)?;
         Ok(Some(Value::Int(st.error_status)))
     })
 }

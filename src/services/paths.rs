@@ -124,7 +124,7 @@ pub fn move_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let p = a[0].int();
     let o = opts(a, 1);
     with_state(r, span, |r, st| {
-        require_init(r, st, "MovePath", span)?;
+        require_motion(r, st, "MovePath", &o, span)?;
         path_of(r, st, "MovePath", p, span)?;
         let frames = st.paths[&p].clone();
         if frames.is_empty() {
@@ -346,8 +346,23 @@ pub fn load_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Va
     let name = a[0].text();
     with_state(r, span, |r, st| {
         require_init(r, st, "LoadPathSystem", span)?;
-        let text = match std::fs::read_to_string(&name) {
-            Ok(t) => t,
+        let text = match std::fs::read(&name) {
+            Ok(bytes) => match String::from_utf8(bytes) {
+                Ok(t) => t,
+                Err(e) => {
+                    // Malformed content: Data_Error, naming the line.
+                    let good = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+                    let line = good.iter().filter(|b| **b == b'\n').count() + 1;
+                    return Err(io_error(
+                        r,
+                        st,
+                        "LoadPathSystem",
+                        Exc::DataError,
+                        format!("{name}:{line}: not UTF-8 text (a path file is text)"),
+                        span,
+                    ));
+                }
+            },
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
                 return Err(io_error(
                     r,
