@@ -442,14 +442,16 @@ fn error_wrist_too_far() {
     let k = rv_m1();
     let e = err(&k, &down_at(800.0, 0.0, 200.0));
     match &e {
-        KinError::WristTooFar { distance, reach } => {
+        KinError::WristTooFar {
+            distance, reach, ..
+        } => {
             assert!(*reach == 410.0 && *distance > 410.0);
         }
         _ => panic!("{e:?}"),
     }
     assert_eq!(e.exception(), AdaException::OutOfReach);
     assert!(
-        e.to_string().contains("mm from shoulder, reach 410.0 mm"),
+        e.to_string().contains("goal (800.0, 0.0, 200.0) mm out of reach: wrist point") && e.to_string().contains("mm from shoulder, reach 410.0 mm; nearest within the arm's length with this orientation ("),
         "{e}"
     );
 }
@@ -615,6 +617,49 @@ fn two_pi_representation_nearest_current() {
             (s.joints[4] - f64::to_radians(expected_j5)).abs() < 1e-9,
             "from J5 = {current_j5} deg: {:?}",
             s.joints
+        );
+    }
+}
+
+/// Too far and too close: the message names the goal (TCP, not flange) and
+/// the nearest point with the same orientation, which is within the arm's
+/// length.
+#[test]
+fn out_of_reach_names_goal_and_a_reachable_nearest_point() {
+    let k = rv_m1();
+    for goal in [
+        down_at(800.0, 100.0, 200.0),
+        down_at(30.0, 0.0, 300.0 + 30.0 - 179.0),
+    ] {
+        let e = err(&k, &goal);
+        let (g, nearest) = match &e {
+            KinError::WristTooFar { goal, nearest, .. }
+            | KinError::WristTooClose { goal, nearest, .. } => (*goal, *nearest),
+            _ => panic!("{e:?}"),
+        };
+        assert!((g - goal.translation).norm() < 1e-9, "{e}");
+        let mut near = goal;
+        near.translation = nearest;
+        if let Err(e2) = k.ik_all(&near, &k.standard_tool(), &[0.0; 5]) {
+            assert!(
+                !matches!(
+                    e2,
+                    KinError::WristTooFar { .. } | KinError::WristTooClose { .. }
+                ),
+                "nearest point of `{e}` out of the arm's length: {e2}"
+            );
+        }
+        let msg = e.to_string();
+        assert!(
+            msg.starts_with(&format!("goal ({:.1}, {:.1}, {:.1}) mm", g.x, g.y, g.z)),
+            "{msg}"
+        );
+        assert!(
+            msg.contains(&format!(
+                "nearest within the arm's length with this orientation ({:.1}, ",
+                nearest.x
+            )),
+            "{msg}"
         );
     }
 }

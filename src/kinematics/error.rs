@@ -2,6 +2,8 @@
 
 use std::fmt;
 
+use nalgebra::Vector3;
+
 use super::ik::{Arm, Elbow};
 
 /// The AdaIR exception a [`KinError`] is raised as.
@@ -149,6 +151,11 @@ pub enum KinError {
         distance: f64,
         /// `L2 + L3`, mm.
         reach: f64,
+        /// The goal position (TCP, robot base coordinates), mm.
+        goal: Vector3<f64>,
+        /// The nearest position with the same orientation within the arm's
+        /// length (joint limits may still refuse it), mm.
+        nearest: Vector3<f64>,
     },
     /// The wrist point is closer to the shoulder than the folded arm.
     /// `OutOfReach`.
@@ -157,6 +164,11 @@ pub enum KinError {
         distance: f64,
         /// `|L2 - L3|`, mm.
         min_reach: f64,
+        /// The goal position (TCP, robot base coordinates), mm.
+        goal: Vector3<f64>,
+        /// The nearest position with the same orientation within the arm's
+        /// length (joint limits may still refuse it), mm.
+        nearest: Vector3<f64>,
     },
     /// One joint target outside its limits. `OutOfReach`.
     JointLimit(LimitViolation),
@@ -213,7 +225,41 @@ pub enum KinError {
     },
 }
 
+/// A position shown as `(x, y, z) mm` with one decimal.
+struct Point<'a>(&'a Vector3<f64>);
+
+impl fmt::Display for Point<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // `+ 0.0` turns -0.0 into 0.0.
+        let r = |v: f64| (v * 10.0).round() / 10.0 + 0.0;
+        write!(
+            f,
+            "({:.1}, {:.1}, {:.1}) mm",
+            r(self.0.x),
+            r(self.0.y),
+            r(self.0.z)
+        )
+    }
+}
+
 impl KinError {
+    /// The error with the positions it names moved by `by`: the inverse
+    /// kinematics solve for the flange, the message names the TCP.
+    pub(crate) fn shifted(mut self, by: Vector3<f64>) -> KinError {
+        match &mut self {
+            KinError::WristTooFar { goal, nearest, .. }
+            | KinError::WristTooClose { goal, nearest, .. } => {
+                *goal += by;
+                *nearest += by;
+            }
+            KinError::LineBlocked { cause, .. } => {
+                **cause = cause.as_ref().clone().shifted(by);
+            }
+            _ => {}
+        }
+        self
+    }
+
     /// The AdaIR exception this error is raised as.
     pub fn exception(&self) -> AdaException {
         match self {
@@ -251,16 +297,27 @@ impl fmt::Display for KinError {
                 "orientation not reachable by a 5-axis arm: approach vector {:.3} deg out of the arm plane (ValidFrame gives the nearest reachable one)",
                 angle.to_degrees()
             ),
-            KinError::WristTooFar { distance, reach } => write!(
+            KinError::WristTooFar {
+                distance,
+                reach,
+                goal,
+                nearest,
+            } => write!(
                 f,
-                "wrist point {distance:.1} mm from shoulder, reach {reach:.1} mm"
+                "goal {} out of reach: wrist point {distance:.1} mm from shoulder, reach {reach:.1} mm; nearest within the arm's length with this orientation {}",
+                Point(goal),
+                Point(nearest)
             ),
             KinError::WristTooClose {
                 distance,
                 min_reach,
+                goal,
+                nearest,
             } => write!(
                 f,
-                "wrist point {distance:.1} mm from shoulder, closer than the folded arm's {min_reach:.1} mm"
+                "goal {} too close to the base: wrist point {distance:.1} mm from shoulder, closer than the folded arm's {min_reach:.1} mm; nearest within the arm's length with this orientation {}",
+                Point(goal),
+                Point(nearest)
             ),
             KinError::JointLimit(v) => write!(f, "{v}"),
             KinError::NoBranchWithinLimits { branches } => {

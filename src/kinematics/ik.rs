@@ -142,13 +142,27 @@ impl Kinematics {
         let d = (rw * rw + zw * zw).sqrt();
         let reach = l.l2 + l.l3;
         let min_reach = (l.l2 - l.l3).abs();
+        // The flange moved along shoulder -> wrist point until the wrist
+        // point is `to` mm from the shoulder (same orientation), 0.05 mm
+        // inside so that the stretched or folded arm is not on its J3 limit.
+        let moved = |to: f64| {
+            let k = if d > 0.0 { to / d - 1.0 } else { 0.0 };
+            p + Vector3::new(c1 * rw * k, s1 * rw * k, zw * k)
+        };
         if d.is_nan() || d > reach + tolerance::REACH {
-            return Err(KinError::WristTooFar { distance: d, reach });
+            return Err(KinError::WristTooFar {
+                distance: d,
+                reach,
+                goal: p,
+                nearest: moved(reach - 0.05),
+            });
         }
         if d < min_reach - tolerance::REACH {
             return Err(KinError::WristTooClose {
                 distance: d,
                 min_reach,
+                goal: p,
+                nearest: moved(min_reach + 0.05),
             });
         }
         let c3 = ((d * d - l.l2 * l.l2 - l.l3 * l.l3) / (2.0 * l.l2 * l.l3)).clamp(-1.0, 1.0);
@@ -291,12 +305,13 @@ impl Kinematics {
     ) -> Result<Vec<Solution>, KinError> {
         super::joints::check_finite(current, "current joints")?;
         let flange = self.flange_goal(goal, tool)?;
+        let to_tcp = goal.translation - flange.translation;
         let branches = match self.branches(&flange, current) {
             Ok(b) => b,
             Err(e @ KinError::OrientationUnreachable { .. }) => {
                 return Err(self.orientation_or_reach(goal, tool, current, e));
             }
-            Err(e) => return Err(e),
+            Err(e) => return Err(e.shifted(to_tcp)),
         };
         let mut solutions = Vec::with_capacity(4);
         let mut violations = Vec::new();
@@ -413,7 +428,9 @@ impl Kinematics {
         current: &Joints,
     ) -> Result<(), KinError> {
         let flange = self.flange_goal(goal, tool)?;
-        let branches = self.branches(&flange, current)?;
+        let branches = self
+            .branches(&flange, current)
+            .map_err(|e| e.shifted(goal.translation - flange.translation))?;
         let mut violations = Vec::new();
         for (raw, &(arm, elbow)) in branches.as_slice().iter().zip(&branches.configs) {
             match self.fit_limits(raw, current) {

@@ -232,7 +232,10 @@ impl Kinematics {
         };
         let pose = self.line_pose(line, s).map_err(blocked)?;
         let flange = pose * line.tool_inv;
-        let branches = self.branches(&flange, previous).map_err(blocked)?;
+        let to_tcp = pose.translation - flange.translation;
+        let branches = self
+            .branches(&flange, previous)
+            .map_err(|e| blocked(e.shifted(to_tcp)))?;
         let mut best: Option<(Joints, (f64, f64))> = None;
         for raw in branches.as_slice() {
             let q = Self::nearest_representation(raw, previous);
