@@ -65,3 +65,44 @@ fn a_diagnostic_starts_with_file_line_col_error() {
         "first line: {first}"
     );
 }
+
+/// Runs `adair ARGS` with `input` (raw bytes) on standard input.
+fn adair_stdin(args: &[&str], input: &[u8]) -> (i32, String, String) {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_adair"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("NO_COLOR", "1")
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("run adair");
+    child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(input)
+        .expect("write stdin");
+    let out = child.wait_with_output().expect("wait");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn piped_repl_reports_a_line_that_is_not_utf8_and_goes_on() {
+    let input = b"Put_Line (\"a\");\nPut_Line (\"\xff\");\nPut_Line (\"b\");\n";
+    let (code, out, err) = adair_stdin(&["repl"], input);
+    let all = format!("{out}{err}");
+    assert!(
+        all.contains("<stdin>:2:12: error: this line is not valid UTF-8"),
+        "{all}"
+    );
+    assert!(out.contains("a\n") && out.contains("b\n"), "{all}");
+    assert_eq!(code, 0, "{all}");
+    let (code, _, _) = adair_stdin(&["repl", "--strict"], input);
+    assert_eq!(code, 1, "--strict: exit 1 after a bad line");
+}
