@@ -177,12 +177,26 @@ fn floor_char_boundary(s: &str, mut i: usize) -> usize {
     i
 }
 
-struct Cache<'a>(&'a Sources, Vec<ariadne::Source<&'a str>>);
+/// ariadne's view of the sources, each indexed only when a report shows it
+/// (a REPL session has one source per entry: indexing them all for every
+/// diagnostic made a long session quadratic).
+struct Cache<'a>(
+    &'a Sources,
+    std::collections::HashMap<FileId, ariadne::Source<&'a str>>,
+);
 
 impl<'a> ariadne::Cache<FileId> for Cache<'a> {
     type Storage = &'a str;
     fn fetch(&mut self, id: &FileId) -> Result<&ariadne::Source<&'a str>, impl std::fmt::Debug> {
-        self.1.get(*id as usize).ok_or("unknown source")
+        if (*id as usize) >= self.0.files.len() {
+            return Err("unknown source");
+        }
+        let text: &'a str = self.0.text(*id);
+        Ok::<_, &str>(
+            self.1
+                .entry(*id)
+                .or_insert_with(|| ariadne::Source::from(text)),
+        )
     }
     fn display<'b>(&self, id: &'b FileId) -> Option<impl std::fmt::Display + 'b> {
         Some(self.0.name(*id).to_string())
@@ -200,14 +214,7 @@ fn clamp(sources: &Sources, s: Span) -> (FileId, std::ops::Range<usize>) {
 pub fn render(diags: &[Diagnostic], sources: &Sources, color: bool) -> String {
     use ariadne::{Color, Config, IndexType, Label, Report, ReportKind};
     let mut out = String::new();
-    let mut cache = Cache(
-        sources,
-        sources
-            .files
-            .iter()
-            .map(|(_, t)| ariadne::Source::from(t.as_str()))
-            .collect(),
-    );
+    let mut cache = Cache(sources, std::collections::HashMap::new());
     for d in diags {
         let primary = clamp(sources, d.span);
         let (line, col) = sources.line_col(d.span.context, d.span.start);

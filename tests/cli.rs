@@ -65,3 +65,88 @@ fn a_diagnostic_starts_with_file_line_col_error() {
         "first line: {first}"
     );
 }
+
+/// Runs `adair ARGS` with `input` (raw bytes) on standard input.
+fn adair_stdin(args: &[&str], input: &[u8]) -> (i32, String, String) {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_adair"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("NO_COLOR", "1")
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("run adair");
+    child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(input)
+        .expect("write stdin");
+    let out = child.wait_with_output().expect("wait");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn piped_repl_reports_a_line_that_is_not_utf8_and_goes_on() {
+    let input = b"Put_Line (\"a\");\nPut_Line (\"\xff\");\nPut_Line (\"b\");\n";
+    let (code, out, err) = adair_stdin(&["repl"], input);
+    let all = format!("{out}{err}");
+    assert!(
+        all.contains("<stdin>:2:12: error: this line is not valid UTF-8"),
+        "{all}"
+    );
+    assert!(out.contains("a\n") && out.contains("b\n"), "{all}");
+    assert_eq!(code, 0, "{all}");
+    let (code, _, _) = adair_stdin(&["repl", "--strict"], input);
+    assert_eq!(code, 1, "--strict: exit 1 after a bad line");
+}
+
+#[test]
+fn nesting_past_the_limit_is_one_error_with_its_place_and_below_it_runs() {
+    let n = 100_000;
+    let deep = format!(
+        "X : Integer := {}1{};\nPut_Line (Integer'Image (X));\n",
+        "(".repeat(n),
+        ")".repeat(n)
+    );
+    let f = temp_file("deep_parens.air", &deep);
+    let (code, _, err) = adair(&["run", &f]);
+    assert_eq!(code, 2, "{err}");
+    // The 10,001st `(` is at column 15 + 10,000.
+    assert!(
+        err.contains(":1:10016: error: nesting too deep: more than 10000 levels of parentheses"),
+        "{}",
+        &err[..err.len().min(400)]
+    );
+    assert_eq!(err.matches("error:").count(), 1, "one error only");
+
+    let calls = format!(
+        "function F (X : Integer) return Integer is begin return X; end F;\n\
+         X : Integer := {}1{};\nPut_Line (Integer'Image (X));\n",
+        "F (".repeat(9_000),
+        ")".repeat(9_000)
+    );
+    let f = temp_file("deep_calls.air", &calls);
+    let (code, out, err) = adair(&["run", &f]);
+    assert_eq!((code, out.as_str()), (0, " 1\n"), "{err}");
+
+    let blocks = format!(
+        "X : Integer := 0;\n{}X := 1;\n{}",
+        "if X = 0 then\n".repeat(20_000),
+        "end if;\n".repeat(20_000)
+    );
+    let f = temp_file("deep_ifs.air", &blocks);
+    let (code, _, err) = adair(&["check", &f]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains(":10002:1: error: nesting too deep: more than 10000 levels of blocks"),
+        "{}",
+        &err[..err.len().min(400)]
+    );
+}

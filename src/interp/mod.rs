@@ -269,6 +269,13 @@ impl Run<'_> {
         }))
     }
 
+    /// A `'Value` of text that is no value of the type: GNAT's message, with
+    /// the text and without a location (`bad input for 'Value: "12x"`).
+    fn bad_value(&self, text: &Value, span: Span) -> Flow {
+        let msg = format!("bad input for 'Value: \"{}\"", text.text());
+        self.raise(check::CONSTRAINT_ERROR, msg, span)
+    }
+
     /// `Constraint_Error` with GNAT's message form (`file.adb:9 index check failed`).
     fn check_failed(&self, what: &str, span: Span) -> Flow {
         let loc = self.m.location(span);
@@ -406,6 +413,15 @@ impl Run<'_> {
             StmtKind::Raise(e, msg) => {
                 let m = match msg {
                     Some(x) => self.eval(x)?.text(),
+                    // GNAT: the place, and for the language-defined checks'
+                    // exceptions "explicit raise" (`file.adb:6 explicit raise`).
+                    None if matches!(
+                        *e,
+                        check::CONSTRAINT_ERROR | check::PROGRAM_ERROR | check::STORAGE_ERROR
+                    ) =>
+                    {
+                        format!("{} explicit raise", self.m.location(s.span))
+                    }
                     None => self.m.location(s.span),
                 };
                 Err(self.raise(*e, m, s.span))
@@ -843,7 +859,8 @@ impl Run<'_> {
                 let x = self.eval(a)?.real();
                 let r = x.round();
                 if !(r >= i32::MIN as f64 && r <= i32::MAX as f64) {
-                    return Err(self.check_failed("range check failed", e.span));
+                    // Outside the 32-bit base type: GNAT's "overflow check".
+                    return Err(self.check_failed("overflow check failed", e.span));
                 }
                 Value::Int(r as i64)
             }
@@ -1137,6 +1154,9 @@ impl Run<'_> {
     fn array_agg(&mut self, agg: &ArrayAgg, span: Span) -> R<Value> {
         let t = agg.ty;
         let fixed = self.array_bounds(t)?;
+        // Rows of a multi-dimensional aggregate are flattened, also when the
+        // type is unconstrained and the bounds come from the rows.
+        let dims = self.c.types.array(t).map_or(1, |(i, _, _)| i.len());
         let index_first = || -> i64 {
             self.c
                 .types
@@ -1176,7 +1196,7 @@ impl Run<'_> {
                         vals.push(self.eval(o)?);
                     }
                 }
-                self.rows_to_array(vals, (lo, hi), fixed, span)
+                self.rows_to_array(vals, (lo, hi), fixed, dims, span)
             }
             ArrayAggKind::Named(choices, others) => {
                 let mut pairs = Vec::new();
@@ -1229,7 +1249,7 @@ impl Run<'_> {
                         },
                     }
                 }
-                self.rows_to_array(out, (lo, hi), fixed, span)
+                self.rows_to_array(out, (lo, hi), fixed, dims, span)
             }
         }
     }
@@ -1241,10 +1261,11 @@ impl Run<'_> {
         vals: Vec<Value>,
         first: (i64, i64),
         fixed: Option<Vec<(i64, i64)>>,
+        dims: usize,
         span: Span,
     ) -> R<Value> {
         let multi = fixed.as_ref().map(|b| b.len() > 1).unwrap_or(false)
-            || matches!(vals.first(), Some(Value::Arr(_))) && self.is_multi(&fixed);
+            || matches!(vals.first(), Some(Value::Arr(_))) && dims > 1;
         if !multi {
             return Ok(Value::Arr(Rc::new(Array {
                 bounds: vec![first],
@@ -1277,10 +1298,6 @@ impl Run<'_> {
         };
         bounds.extend(inner);
         Ok(Value::Arr(Rc::new(Array { bounds, data })))
-    }
-
-    fn is_multi(&self, fixed: &Option<Vec<(i64, i64)>>) -> bool {
-        fixed.as_ref().is_some_and(|b| b.len() > 1)
     }
 
     fn attr(&mut self, op: AttrOp, args: &[Ex], e: &Ex) -> R<Value> {
@@ -1325,11 +1342,11 @@ impl Run<'_> {
             }
             AttrOp::ValueInt => match value::value_int(&a0.text()) {
                 Some(v) if v >= i32::MIN as i64 && v <= i32::MAX as i64 => Value::Int(v),
-                _ => return Err(self.check_failed("bad input for 'Value", sp)),
+                _ => return Err(self.bad_value(&a0, sp)),
             },
             AttrOp::ValueFloat => match value::value_float(&a0.text()) {
                 Some(v) => Value::Real(v),
-                None => return Err(self.check_failed("bad input for 'Value", sp)),
+                None => return Err(self.bad_value(&a0, sp)),
             },
             AttrOp::ValueEnum(t) => {
                 let s = a0.text();
@@ -1343,7 +1360,7 @@ impl Run<'_> {
                 };
                 match found {
                     Some(i) => Value::Int(i as i64),
-                    None => return Err(self.check_failed("bad input for 'Value", sp)),
+                    None => return Err(self.bad_value(&a0, sp)),
                 }
             }
             AttrOp::Succ => Value::Int(a0.int() + 1),

@@ -163,6 +163,53 @@ impl Validator for AdaHelper {
 impl Helper for AdaHelper {}
 
 /// Only "unexpected end of input" means an entry goes on.
+/// Openers and `end`s of the block constructs on one line, counted from its
+/// tokens (keywords inside parentheses, like an `if` expression, do not
+/// count). While the openers of an entry outnumber its `end`s the entry is
+/// certainly unfinished, and the piped REPL need not parse it again: a long
+/// open entry costs one parse, not one per line.
+#[derive(Default, Clone, Copy)]
+pub struct Balance {
+    opens: i64,
+    ends: i64,
+    parens: i64,
+    after_end: bool,
+    after_null: bool,
+}
+
+impl Balance {
+    pub fn add_line(&mut self, line: &str) {
+        use crate::syntax::token::Kw;
+        let (tokens, _) = lex(line, 0);
+        for (t, _) in tokens {
+            let (was_end, was_null) = (self.after_end, self.after_null);
+            self.after_end = false;
+            self.after_null = false;
+            match t {
+                Token::LParen => self.parens += 1,
+                Token::RParen => self.parens -= 1,
+                Token::Kw(Kw::End) => {
+                    self.ends += 1;
+                    self.after_end = true;
+                }
+                Token::Kw(Kw::Null) => self.after_null = true,
+                Token::Kw(Kw::Record) if was_null => {}
+                Token::Kw(Kw::Begin | Kw::Loop | Kw::If | Kw::Case | Kw::Record | Kw::Select)
+                    if !was_end && self.parens <= 0 =>
+                {
+                    self.opens += 1
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// More openers than `end`s so far.
+    pub fn surely_open(&self) -> bool {
+        self.opens > self.ends
+    }
+}
+
 pub fn unfinished(text: &str) -> bool {
     if text.trim_start().starts_with(':') || text.trim().is_empty() {
         return false;
@@ -310,15 +357,58 @@ pub fn piped_on(
     if let Some(p) = port {
         repl.use_port(p);
     }
+    let mut input = input;
     let mut failed = false;
     let mut buf = String::new();
-    for line in input.lines() {
-        let Ok(line) = line else { break };
-        buf.push_str(&line);
+    let mut raw = Vec::new();
+    let mut number = 0usize;
+    let mut balance = Balance::default();
+    loop {
+        raw.clear();
+        match input.read_until(b'\n', &mut raw) {
+            Ok(0) => break,
+            Ok(_) => {}
+            Err(e) => {
+                let _ = writeln!(out, "<stdin>:{}: error: cannot read input: {e}", number + 1);
+                failed = true;
+                break;
+            }
+        }
+        number += 1;
+        if raw.ends_with(b"\n") {
+            raw.pop();
+            if raw.ends_with(b"\r") {
+                raw.pop();
+            }
+        }
+        // A line that is not UTF-8 is reported and skipped; the session
+        // goes on (an unfinished entry it belonged to cannot be completed).
+        let line = match std::str::from_utf8(&raw) {
+            Ok(l) => l,
+            Err(e) => {
+                let col = e.valid_up_to() + 1;
+                let dropped = if buf.trim().is_empty() {
+                    ""
+                } else {
+                    "; the unfinished entry it belongs to is dropped"
+                };
+                let _ = writeln!(
+                    out,
+                    "<stdin>:{number}:{col}: error: this line is not valid UTF-8 (byte {col}); it is skipped{dropped}"
+                );
+                buf.clear();
+                balance = Balance::default();
+                failed = true;
+                continue;
+            }
+        };
+        buf.push_str(line);
         buf.push('\n');
-        if unfinished(&buf) {
+        balance.add_line(line);
+        if balance.surely_open() || unfinished(&buf) {
             continue;
         }
+        balance = Balance::default();
         let reply = repl.entry(&buf);
         buf.clear();
         let _ = std::io::stdout().flush();
@@ -334,4 +424,37 @@ pub fn piped_on(
         failed |= reply.failed;
     }
     if failed && strict { 1 } else { 0 }
+}
+
+#[cfg(test)]
+mod balance_tests {
+    use super::Balance;
+
+    fn open(lines: &[&str]) -> bool {
+        let mut b = Balance::default();
+        for l in lines {
+            b.add_line(l);
+        }
+        b.surely_open()
+    }
+
+    #[test]
+    fn openers_outnumbering_ends_mean_unfinished() {
+        assert!(open(&["for I in 1 .. 3 loop", "Put_Line (\"x\");"]));
+        assert!(open(&["declare", "   X : Integer;", "begin"]));
+        assert!(open(&["type R is record", "   X : Integer;"]));
+        assert!(!open(&["for I in 1 .. 3 loop", "null;", "end loop;"]));
+        assert!(!open(&["if A then B; end if;"]));
+        assert!(!open(&["declare X : Integer; begin X := 1; end;"]));
+    }
+
+    #[test]
+    fn keywords_in_parentheses_and_null_record_do_not_open() {
+        assert!(!open(&["X := (if A then 1 else 2);"]));
+        assert!(!open(&[
+            "Put_Line (case N is when 1 => \"a\", when others => \"b\");"
+        ]));
+        assert!(!open(&["type T is null record;"]));
+        assert!(!open(&["Put_Line (\"begin loop if\"); -- case record"]));
+    }
 }
