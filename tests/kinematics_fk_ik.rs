@@ -663,3 +663,21 @@ fn out_of_reach_names_goal_and_a_reachable_nearest_point() {
         );
     }
 }
+
+/// The handbook demo's F1 (tool up on the waist axis) on the RM-501: every
+/// branch is refused and the message names all four, forward and backward.
+#[test]
+fn rm501_names_each_refused_branch() {
+    let k = rm_501();
+    let mut goal = Pose::rot_z(0.0);
+    goal.translation = Vector3::new(0.0, 0.0, 830.6);
+    let msg = err(&k, &goal).to_string();
+    for b in [
+        "arm forward/elbow above",
+        "arm forward/elbow below",
+        "arm backward/elbow above",
+        "arm backward/elbow below",
+    ] {
+        assert!(msg.contains(b), "{b} missing: {msg}");
+    }
+}

@@ -199,7 +199,11 @@ impl Kinematics {
                 let j4 = sigma * psi - j2 - j3e;
                 out.joints[out.len] = [j1, j2, j3e, j4, j5];
                 // The wrist point lies at sigma * rw along this J1.
-                let arm = if sigma * rw >= 0.0 {
+                // Wrist point on the waist axis: the turned waist is the
+                // backward arm (else both would read "forward").
+                let arm = if sigma * rw > tolerance::AXIS
+                    || (rw.abs() <= tolerance::AXIS && sigma > 0.0)
+                {
                     Arm::Forward
                 } else {
                     Arm::Backward
