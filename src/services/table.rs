@@ -296,7 +296,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Motion,
         function: false,
         profile: "(Goal : in Frame; Time : in Duration := 0.0; Control : in Boolean := False; RealTime : in Boolean := False)",
-        doc: "Moves the TCP to Goal (robot base coordinates) in the current move mode.\nRaises FrameInvalid (not rigid, or an orientation a 5-axis arm cannot take),\nOutOfReach, TimeInvalid. Example: MoveFrameAbsolute (Trans (300.0, 0.0, 300.0));",
+        doc: "Moves the TCP to Goal (robot base coordinates) in the current move mode.\nRaises FrameInvalid (not rigid, or an orientation a 5-axis arm cannot take),\nOutOfReach, TimeInvalid. Example: MoveFrameAbsolute (Trans (300.0, 0.0, 250.0) * RotY (Rad (180.0)));",
         body: super::move_frame_absolute,
     },
     Service {
