@@ -108,6 +108,24 @@ fn piped_repl_reports_a_line_that_is_not_utf8_and_goes_on() {
 }
 
 #[test]
+fn unclosed_nested_declare_blocks_are_reported_not_retried_exponentially() {
+    // Each unclosed block used to be parsed again after the recovery of the
+    // block around it: 22 levels took over a minute, 40 would take days.
+    let src = format!(
+        "procedure P is\nbegin\n{}null;\n",
+        "declare X : Integer;\nbegin\n".repeat(40)
+    );
+    let f = temp_file("unclosed_declares.air", &src);
+    let (code, _, err) = adair(&["check", &f]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("end of input"),
+        "{}",
+        &err[..err.len().min(600)]
+    );
+}
+
+#[test]
 fn nesting_past_the_limit_is_one_error_with_its_place_and_below_it_runs() {
     let n = 100_000;
     let deep = format!(

@@ -877,7 +877,11 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
             label,
             decls: decls.unwrap_or_default(),
             body,
-        });
+        })
+        // An unclosed block statement is tried again after the recovery of
+        // the statement around it; remembering each attempt by its position
+        // keeps nested unclosed blocks from taking exponential time.
+        .memoized();
     let exit_stmt = kw!(Exit)
         .ignore_then(ident().or_not())
         .then(kw!(When).ignore_then(expr.clone()).or_not())
