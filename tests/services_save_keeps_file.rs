@@ -29,7 +29,7 @@ fn failed_save_leaves_the_previous_file_whole() {
     assert_eq!(first, "saved\n");
     let before = std::fs::read(&target).unwrap();
     // The new file is written next to the target first: make that fail.
-    std::fs::create_dir(target.with_extension("adair-tmp")).unwrap();
+    std::fs::create_dir(dir.join("cell.paths.adair-tmp")).unwrap();
     let second = run(
         &dir,
         "second.air",
@@ -81,35 +81,37 @@ fn a_path_file_that_is_not_utf8_is_a_data_error() {
     assert!(out.ends_with("nothing loaded\n"), "{out}");
 }
 
-/// A save killed half-way leaves its temporary file; the next save writes
-/// over it and renames it, so no `*-tmp` file is left behind.
+/// A save killed half-way leaves `NAME.adair-tmp`; the next save of that
+/// file writes over it and renames it, so nothing is left behind. Saves of
+/// two files that differ only in their extension do not share a temporary.
 #[test]
-fn a_stale_temporary_file_is_gone_after_the_next_save() {
-    let dir = std::env::temp_dir().join(format!("adair_stale_tmp_{}", std::process::id()));
+fn a_stale_temporary_from_a_killed_save_is_gone_after_the_next_save() {
+    let dir = std::env::temp_dir().join(format!("adair_save_stale_{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let target = dir.join("cell.paths");
-    // What a save killed between writing and renaming leaves: a partial file.
-    std::fs::write(
-        target.with_extension("adair-tmp"),
-        "adair-paths 1\npath 1\npos 1 1.0",
-    )
-    .unwrap();
+    let stale = dir.join("cell.paths.adair-tmp");
+    std::fs::write(&stale, "AdaIR paths 1\npath 1\n  half a li").unwrap();
+    // The other file's temporary would have been `cell.adair-tmp` too.
+    let other = dir.join("cell.txt");
     let out = run(
         &dir,
         "save.air",
         &format!(
-            "InitRobot;\nCreatePath (2);\nInsertPosition (2, 1, Trans (300.0, 0.0, 200.0));\n\
-             SavePathSystem (\"{0}\");\nDeletePath (2);\nLoadPathSystem (\"{0}\");\nPut_Line (\"saved and loaded\");\n",
+            "InitRobot;\nCreatePath (1);\nInsertPosition (1, 1, Trans (300.0, 0.0, 200.0));\n\
+             SavePathSystem (\"{}\");\nSavePathSystem (\"{}\");\n\
+             DeletePath (1);\nLoadPathSystem (\"{}\");\nPut_Line (\"loaded\");\n",
+            target.display(),
+            other.display(),
             target.display()
         ),
     );
-    let left: Vec<String> = std::fs::read_dir(&dir)
+    let mut left: Vec<String> = std::fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .filter(|n| n.ends_with("-tmp"))
         .collect();
+    left.sort();
     let _ = std::fs::remove_dir_all(&dir);
-    assert_eq!(out, "saved and loaded\n");
-    assert!(left.is_empty(), "left behind: {left:?}");
+    assert_eq!(out, "loaded\n");
+    assert_eq!(left, ["cell.paths", "cell.txt", "save.air"]);
 }

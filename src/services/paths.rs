@@ -232,7 +232,7 @@ pub fn save_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Va
                 span,
             ));
         }
-        let tmp = target.with_extension("adair-tmp");
+        let tmp = tmp_path(target);
         let res = std::fs::write(&tmp, text.as_bytes()).and_then(|_| std::fs::rename(&tmp, target));
         if let Err(e) = res {
             let _ = std::fs::remove_file(&tmp);
@@ -413,4 +413,14 @@ pub fn load_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Va
         }
         Ok(None)
     })
+}
+
+/// The file a save writes before renaming it over `target`: the target's
+/// whole name plus `.adair-tmp`, so two targets never share one, and a save
+/// killed half-way leaves a file that the next save of that target
+/// overwrites and renames away.
+pub(crate) fn tmp_path(target: &std::path::Path) -> std::path::PathBuf {
+    let mut name = target.as_os_str().to_owned();
+    name.push(".adair-tmp");
+    std::path::PathBuf::from(name)
 }
