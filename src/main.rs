@@ -17,6 +17,11 @@ struct Cli {
     /// Colours in diagnostics: auto (only on a terminal, and not with NO_COLOR), always, never.
     #[arg(long, global = true, default_value = "auto", value_parser = ["auto", "always", "never"])]
     color: String,
+    /// Memory a program may use (512M, 2G, ...): past it, building a value raises
+    /// Storage_Error where the program asked for it.
+    #[arg(long, global = true, value_name = "SIZE", default_value = "4G",
+          value_parser = adair::interp::memory::parse_size)]
+    max_memory: usize,
     #[command(subcommand)]
     command: Option<Command>,
 }
@@ -193,6 +198,7 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    adair::interp::memory::set_limit(cli.max_memory);
     let color = color(&cli.color);
     // Deep recursion in user programs needs a big stack for the tree walker.
     let child = std::thread::Builder::new()

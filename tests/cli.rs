@@ -168,3 +168,50 @@ fn nesting_past_the_limit_is_one_error_with_its_place_and_below_it_runs() {
         &err[..err.len().min(400)]
     );
 }
+
+/// A program that doubles a string until memory runs out gets Storage_Error
+/// at the concatenation, which it can handle; unhandled, the report points
+/// into the user's program. `--max-memory` sets the limit.
+#[test]
+fn running_out_of_memory_is_storage_error_at_the_place_that_asked() {
+    let grow = "function Grow (S : String; N : Natural) return Natural is\n\
+                begin\n   if N = 0 then return S'Length; end if;\n   return Grow (S & S, N - 1);\nend Grow;\n";
+    let handled = temp_file(
+        "grow_handled.air",
+        &format!(
+            "{grow}begin\n   Put_Line (Natural'Image (Grow (\"x\", 40)));\n\
+             exception\n   when Storage_Error => Put_Line (\"Storage_Error handled\");\nend;\n\
+             Put_Line (Natural'Image (Grow (\"x\", 10)));\n"
+        ),
+    );
+    let (code, out, err) = adair(&["run", "--max-memory", "64M", &handled]);
+    assert_eq!(
+        (code, out.as_str()),
+        (0, "Storage_Error handled\n 1024\n"),
+        "{err}"
+    );
+    let unhandled = temp_file(
+        "grow_unhandled.air",
+        &format!("{grow}Put_Line (Natural'Image (Grow (\"x\", 40)));\n"),
+    );
+    let (code, _, err) = adair(&["run", "--max-memory", "64M", &unhandled]);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("grow_unhandled.air:4:17: error: unhandled exception: raised STORAGE_ERROR : out of memory")
+            && err.contains("limit of 64 MiB (--max-memory)"),
+        "{err}"
+    );
+    // An array too large for the limit, declared in the program: the place
+    // is its declaration, not the library.
+    let big = temp_file(
+        "big_array.air",
+        "type Big is array (1 .. 40_000_000) of Integer;\nB : Big;\nPut_Line (\"not reached\");\n",
+    );
+    let (code, out, err) = adair(&["run", "--max-memory", "64M", &big]);
+    assert_eq!((code, out.as_str()), (1, ""), "{err}");
+    assert!(err.contains("big_array.air:2:"), "{err}");
+    assert!(err.contains("STORAGE_ERROR : out of memory"), "{err}");
+    let (code, _, err) = adair(&["run", "--max-memory", "lots", &big]);
+    assert_eq!(code, 2);
+    assert!(err.contains("`lots` is not a size"), "{err}");
+}

@@ -6,6 +6,7 @@
 //! index: nothing here looks a name up by string.
 
 pub mod builtins;
+pub mod memory;
 pub mod value;
 
 use crate::check::ir::*;
@@ -282,6 +283,25 @@ impl Run<'_> {
         self.raise(check::CONSTRAINT_ERROR, format!("{loc} {what}"), span)
     }
 
+    /// `Storage_Error` at `span` unless `values` more values fit in the
+    /// program's memory limit (`--max-memory`).
+    fn reserve(&self, values: i64, span: Span) -> R<()> {
+        let bytes = (values.max(0) as usize).saturating_mul(std::mem::size_of::<Value>());
+        if memory::room_for(bytes) {
+            return Ok(());
+        }
+        let mib = |b: usize| b.div_ceil(1 << 20);
+        Err(self.raise(
+            check::STORAGE_ERROR,
+            format!(
+                "out of memory: {} MiB more would pass the limit of {} MiB (--max-memory)",
+                mib(bytes),
+                mib(memory::limit())
+            ),
+            span,
+        ))
+    }
+
     pub fn exc_by_name(&self, full: &str) -> ExcId {
         self.c
             .excs
@@ -491,6 +511,7 @@ impl Run<'_> {
             vals.push(self.eval(&a.value)?);
         }
         let sub = &self.c.funcs[f as usize];
+        self.reserve(0, span)?;
         if self.m.depth >= MAX_DEPTH {
             return Err(self.raise(
                 check::STORAGE_ERROR,
@@ -740,6 +761,7 @@ impl Run<'_> {
                 if l < lo || h > hi {
                     return Err(self.check_failed("range check failed", e.span));
                 }
+                self.reserve(h - l + 1, e.span)?;
                 let data = a.data[(l - lo) as usize..=(h - lo) as usize].to_vec();
                 Value::Arr(Rc::new(Array {
                     bounds: vec![(l, h)],
@@ -922,11 +944,12 @@ impl Run<'_> {
             ExKind::Alloc(init, t) => {
                 let v = match init {
                     Some(x) => self.eval(x)?,
-                    None => self.default_value(*t)?,
+                    None => self.default_value(*t, e.span)?,
                 };
+                self.reserve(4, e.span)?;
                 Value::Ptr(Some(Rc::new(RefCell::new(v))))
             }
-            ExKind::Default(t) => self.default_value(*t)?,
+            ExKind::Default(t) => self.default_value(*t, e.span)?,
             ExKind::Error => {
                 return Err(self.raise(check::PROGRAM_ERROR, "erroneous expression", e.span));
             }
@@ -1055,7 +1078,7 @@ impl Run<'_> {
         Ok(Value::Arr(a))
     }
 
-    pub fn default_value(&mut self, t: TypeId) -> R<Value> {
+    pub fn default_value(&mut self, t: TypeId, span: Span) -> R<Value> {
         Ok(match self.c.types.kind(t).clone() {
             TypeKind::Float => Value::Real(0.0),
             TypeKind::Record(fields) => {
@@ -1063,7 +1086,7 @@ impl Run<'_> {
                 for f in &fields {
                     v.push(match &f.default {
                         Some(d) => self.eval(d)?,
-                        None => self.default_value(f.ty)?,
+                        None => self.default_value(f.ty, span)?,
                     });
                 }
                 Value::Rec(Rc::new(v))
@@ -1078,14 +1101,11 @@ impl Run<'_> {
                     return Err(self.raise(
                         check::STORAGE_ERROR,
                         format!("an array of {n} components is too large (at most {MAX_ELEMENTS})"),
-                        Span {
-                            start: 0,
-                            end: 0,
-                            context: 0,
-                        },
+                        span,
                     ));
                 }
-                let d = self.default_value(elem)?;
+                self.reserve(n, span)?;
+                let d = self.default_value(elem, span)?;
                 Value::Arr(Rc::new(Array {
                     bounds,
                     data: vec![d; n as usize],
@@ -1119,6 +1139,11 @@ impl Run<'_> {
                 .map(|r| r.0 as i64)
                 .unwrap_or(1)
         };
+        let len = |v: &Value, elem: bool| match (v, elem) {
+            (Value::Arr(a), false) => a.data.len() as i64,
+            _ => 1,
+        };
+        self.reserve(len(&x, xe) + len(&y, ye), span)?;
         let (mut data, lo) = match (&x, xe) {
             (v, true) => (vec![v.clone()], first_of_index()),
             (Value::Arr(a), false) => {
@@ -1187,6 +1212,7 @@ impl Run<'_> {
                 if hi - lo + 1 > MAX_ELEMENTS {
                     return Err(self.raise(check::STORAGE_ERROR, "aggregate too large", span));
                 }
+                self.reserve(hi - lo + 1, span)?;
                 let n = (hi - lo + 1).max(0) as usize;
                 if vals.len() > n || (vals.len() < n && others.is_none()) {
                     return Err(self.check_failed("length check failed", span));
@@ -1226,6 +1252,7 @@ impl Run<'_> {
                 if hi - lo + 1 > MAX_ELEMENTS {
                     return Err(self.raise(check::STORAGE_ERROR, "aggregate too large", span));
                 }
+                self.reserve(hi - lo + 1, span)?;
                 let n = (hi - lo + 1).max(0) as usize;
                 let mut vals: Vec<Option<Value>> = vec![None; n];
                 for (rs, v) in &pairs {
