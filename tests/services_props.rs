@@ -1,7 +1,8 @@
 //! No service call panics or escapes the simulated robot's limits: random
 #![allow(clippy::print_stderr)]
 //! sequences of service calls with random arguments either work or raise an
-//! Ada exception (AdaIR's own, or Constraint_Error from a parameter subtype).
+//! Ada exception (AdaIR's own, or Constraint_Error from a parameter subtype),
+//! and a call that raises leaves the joints exactly where they were.
 
 use adair::kinematics::RobotDescription;
 use adair::services::RobotState;
@@ -95,7 +96,9 @@ fn run(calls: &[(u8, Vec<f64>)], robot: &str) -> Result<(), TestCaseError> {
     let mut src = String::from("InitRobot;\n");
     for (k, v) in calls {
         src.push_str(&format!(
-            "begin\n   {}\nexception\n   when E : others => Put_Line (Ada.Exceptions.Exception_Name (E));\nend;\n",
+            "declare\n   Before : constant AxesVector := ValueAxes;\nbegin\n   {}\nexception\n   when E : others =>\n      \
+             if ValueAxes /= Before then Put_Line (\"MOVED by a refused call\"); end if;\n      \
+             Put_Line (Ada.Exceptions.Exception_Name (E));\nend;\n",
             call(*k, v)
         ));
     }

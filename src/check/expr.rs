@@ -108,8 +108,11 @@ impl Checker {
                 Diagnostic::ty(
                     ex.span,
                     format!(
-                        "the static value {v} is not in range of `{}` ({} .. {})",
-                        self.tname(t),
+                        "the static value {v} is not in range of {} ({} .. {})",
+                        match self.tname(t) {
+                            n if n == "Integer" => "`Integer`".to_string(),
+                            n => format!("`Integer`, the base type of `{n}`"),
+                        },
                         i32::MIN,
                         i32::MAX
                     ),
