@@ -4,11 +4,12 @@
 //! process holds. Before the interpreter builds something whose size the
 //! program chooses (an array, a concatenation, a slice, an allocator, a call
 //! frame) it asks [`room_for`]; past the limit the program gets
-//! `Storage_Error` at that place, which it can handle. The allocator itself
-//! refuses only well past the limit ([`set_limit`]), so memory the
-//! interpreter does not ask about can never take the whole machine.
+//! `Storage_Error` at that place, which it can handle. While a program runs
+//! ([`HardCap`]), the allocator itself refuses a quarter past the limit, so
+//! memory the interpreter does not ask about cannot take the whole machine;
+//! the checker is not capped (its memory grows with the source text).
 
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 #[global_allocator]
 static ALLOC: cap::Cap<std::alloc::System> = cap::Cap::new(std::alloc::System, usize::MAX);
@@ -17,13 +18,37 @@ static ALLOC: cap::Cap<std::alloc::System> = cap::Cap::new(std::alloc::System, u
 pub const DEFAULT_LIMIT: usize = 4 << 30;
 
 static LIMIT: AtomicUsize = AtomicUsize::new(DEFAULT_LIMIT);
+/// Whether runs are capped: set by [`set_limit`] (the command line), not in
+/// library use such as the tests.
+static CAPPED: AtomicBool = AtomicBool::new(false);
 
-/// Sets the limit for the program's memory, and a hard limit for the whole
-/// process a quarter above it (plus 256 MiB for adair itself).
+/// Sets the limit for the program's memory and caps runs a quarter above it
+/// (plus 256 MiB for adair itself).
 pub fn set_limit(bytes: usize) {
     LIMIT.store(bytes, Ordering::Relaxed);
-    let hard = bytes.saturating_add(bytes / 4).saturating_add(256 << 20);
-    let _ = ALLOC.set_limit(hard.max(ALLOC.allocated()));
+    CAPPED.store(true, Ordering::Relaxed);
+}
+
+/// The allocator's hard limit while a program runs; lifted when dropped.
+pub struct HardCap(bool);
+
+impl HardCap {
+    pub fn arm() -> HardCap {
+        if !CAPPED.load(Ordering::Relaxed) {
+            return HardCap(false);
+        }
+        let l = limit();
+        let hard = l.saturating_add(l / 4).saturating_add(256 << 20);
+        HardCap(ALLOC.set_limit(hard.max(ALLOC.allocated())).is_ok())
+    }
+}
+
+impl Drop for HardCap {
+    fn drop(&mut self) {
+        if self.0 {
+            let _ = ALLOC.set_limit(usize::MAX);
+        }
+    }
 }
 
 /// The limit in bytes.

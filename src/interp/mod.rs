@@ -141,6 +141,7 @@ impl Machine {
         main: Option<FuncId>,
     ) -> Result<(), Box<Occurrence>> {
         let need = self.prepare(chk);
+        let _cap = memory::HardCap::arm();
         let mut run = Run { m: self, c: chk };
         let r = (|| -> R<()> {
             run.exec_all(stmts)?;
@@ -204,6 +205,7 @@ impl Machine {
     /// Evaluates one checked expression at level 0 (a REPL entry).
     pub fn eval_expr(&mut self, chk: &Checker, e: &Ex) -> Result<Value, Box<Occurrence>> {
         let need = self.prepare(chk);
+        let _cap = memory::HardCap::arm();
         let mut run = Run { m: self, c: chk };
         let r = run.eval(e);
         run.m.stack.truncate(need);
