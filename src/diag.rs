@@ -135,11 +135,17 @@ impl Diagnostic {
 #[derive(Default, Clone, Debug)]
 pub struct Sources {
     files: Vec<(String, String)>,
+    /// The byte offset where each line of each file starts.
+    line_starts: Vec<Vec<usize>>,
 }
 
 impl Sources {
     pub fn add(&mut self, name: impl Into<String>, text: impl Into<String>) -> FileId {
-        self.files.push((name.into(), text.into()));
+        let text = text.into();
+        let mut starts = vec![0];
+        starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        self.line_starts.push(starts);
+        self.files.push((name.into(), text));
         (self.files.len() - 1) as FileId
     }
     pub fn name(&self, id: FileId) -> &str {
@@ -158,14 +164,15 @@ impl Sources {
     pub fn line_col(&self, id: FileId, offset: usize) -> (usize, usize) {
         let text = self.text(id);
         let offset = offset.min(text.len());
-        let before = &text[..floor_char_boundary(text, offset)];
-        let line = before.matches('\n').count() + 1;
-        let col = before
-            .rsplit('\n')
-            .next()
-            .map(|l| l.chars().count())
-            .unwrap_or(0)
-            + 1;
+        let offset = floor_char_boundary(text, offset);
+        // Found by binary search in the line index, so that reporting many
+        // diagnostics stays linear in their number.
+        let line = match self.line_starts.get(id as usize) {
+            Some(starts) => starts.partition_point(|&x| x <= offset),
+            None => text[..offset].matches('\n').count() + 1,
+        };
+        let start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
+        let col = text[start..offset].chars().count() + 1;
         (line, col)
     }
 }
@@ -277,4 +284,29 @@ pub fn one_line(d: &Diagnostic, sources: &Sources) -> String {
         col,
     );
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Sources;
+
+    /// Lines and columns from the line index agree with counting from the
+    /// start, on every offset of a text with multi-byte characters, an empty
+    /// line and no final newline.
+    #[test]
+    fn line_col_from_the_index_matches_counting() {
+        let text = "ab\n\nÄpfel := 1;\n  x\u{20ac}y";
+        let mut s = Sources::default();
+        let id = s.add("t.air", text);
+        for off in 0..=text.len() + 2 {
+            let o = off.min(text.len());
+            let o = (0..=o).rev().find(|&i| text.is_char_boundary(i)).unwrap();
+            let before = &text[..o];
+            let line = before.matches('\n').count() + 1;
+            let col = before.rsplit('\n').next().unwrap().chars().count() + 1;
+            assert_eq!(s.line_col(id, off), (line, col), "offset {off}");
+        }
+        assert_eq!(s.line_col(id, 4), (3, 1));
+        assert_eq!(s.line_col(id, text.len()), (4, 6));
+    }
 }

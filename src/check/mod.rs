@@ -110,6 +110,8 @@ pub struct Checker {
     /// or took from a named number, by the span of its `Real` node.
     exact_reals: HashMap<(usize, usize, u32), exact::Exact>,
     pub diags: Vec<Diagnostic>,
+    /// Hashes of the diagnostics recorded (see `err`).
+    diag_keys: std::collections::HashSet<u64>,
     texts: HashMap<u32, Rc<str>>,
     known_builtin: KnownBuiltin,
     import_profile: Option<ImportProfileOf>,
@@ -165,6 +167,7 @@ impl Checker {
             unit_path: Vec::new(),
             exact_reals: HashMap::new(),
             diags: Vec::new(),
+            diag_keys: Default::default(),
             texts: HashMap::new(),
             known_builtin,
             import_profile: None,
@@ -256,12 +259,14 @@ impl Checker {
             .to_string()
     }
 
+    /// Records a diagnostic once: the same message at the same place (a
+    /// subtree checked again for another overload) is kept only the first
+    /// time, found by hash so that many diagnostics stay linear.
     fn err(&mut self, d: Diagnostic) {
-        if !self
-            .diags
-            .iter()
-            .any(|x| x.span == d.span && x.message == d.message)
-        {
+        use std::hash::{BuildHasher, Hash, Hasher};
+        let mut h = self.diag_keys.hasher().build_hasher();
+        (d.span.start, d.span.end, d.span.context, &d.message).hash(&mut h);
+        if self.diag_keys.insert(h.finish()) {
             self.diags.push(d);
         }
     }
@@ -704,6 +709,7 @@ impl Checker {
 
     /// Finishes a check: the level-0 statements and the slot count.
     pub fn take_diags(&mut self) -> Vec<Diagnostic> {
+        self.diag_keys.clear();
         std::mem::take(&mut self.diags)
     }
 
