@@ -263,10 +263,12 @@ impl Checker {
     /// subtree checked again for another overload) is kept only the first
     /// time, found by hash so that many diagnostics stay linear.
     fn err(&mut self, d: Diagnostic) {
-        use std::hash::{BuildHasher, Hash, Hasher};
-        let mut h = self.diag_keys.hasher().build_hasher();
-        (d.span.start, d.span.end, d.span.context, &d.message).hash(&mut h);
-        if self.diag_keys.insert(h.finish()) {
+        use std::hash::BuildHasher;
+        let key = self
+            .diag_keys
+            .hasher()
+            .hash_one((d.span.start, d.span.end, d.span.context, &d.message));
+        if self.diag_keys.insert(key) {
             self.diags.push(d);
         }
     }
