@@ -264,10 +264,12 @@ impl Checker {
     /// time, found by hash so that many diagnostics stay linear.
     fn err(&mut self, d: Diagnostic) {
         use std::hash::BuildHasher;
-        let key = self
-            .diag_keys
-            .hasher()
-            .hash_one((d.span.start, d.span.end, d.span.context, &d.message));
+        let key = self.diag_keys.hasher().hash_one((
+            d.span.start,
+            d.span.end,
+            d.span.context,
+            &d.message,
+        ));
         if self.diag_keys.insert(key) {
             self.diags.push(d);
         }

@@ -1,10 +1,12 @@
 //! The screen teach pendant (ratatui + crossterm), behind the `TeachBox`
-//! service and the REPL's `:teach`. Keys jog each joint (or the TCP along
-//! the base axes), open and close the hand, change step and speed, and store
-//! the current pose into a path. Limits are shown and never crossed.
+//! service and the REPL's `:teach`. Keys jog each joint, or in Cartesian
+//! mode move the TCP along the base axes and turn the tool (pitch about the
+//! TCP, roll about the approach axis), with the orientation kept reachable
+//! as `ValidFrame` does; open and close the hand, change step and speed, and
+//! store the current pose into a path. Limits are shown and never crossed.
 
 use crate::interp::Clock;
-use crate::kinematics::{Joints, deg, joints_to_deg, rad};
+use crate::kinematics::{Joints, Pose, deg, joints_to_deg, rad};
 use crate::services::{Pendant, RobotState};
 use ratatui::Terminal;
 use ratatui::backend::CrosstermBackend;
@@ -49,8 +51,8 @@ const KEYS: [(char, char, &str, &str); 5] = [
     ('q', 'a', "body J1", "x"),
     ('w', 's', "shoulder J2", "y"),
     ('e', 'd', "elbow J3", "z"),
-    ('r', 'f', "wrist pitch J4", "wrist pitch J4"),
-    ('t', 'g', "wrist roll J5", "wrist roll J5"),
+    ('r', 'f', "wrist pitch J4", "pitch at TCP"),
+    ('t', 'g', "wrist roll J5", "roll at TCP"),
 ];
 
 impl TermPendant {
@@ -77,18 +79,12 @@ impl TermPendant {
         axis: usize,
         sign: f64,
     ) {
-        let q = st.robot.joints();
-        let mut pose = st.kin.fk_tcp(&q, &st.tool.trans);
-        pose.translation[axis] += sign * STEPS[self.step];
-        match st
-            .kin
-            .ik_choose(&pose, &st.tool.trans, &q, st.arm, st.elbow)
-        {
-            Ok(s) => self.go(st, clock, s.joints),
+        match cartesian_target(st, axis, sign * STEPS[self.step]) {
+            Ok(q) => self.go(st, clock, q),
             Err(e) => {
                 self.message = format!(
                     "{} {}: refused: {e}",
-                    ["x", "y", "z"][axis],
+                    KEYS[axis].3,
                     if sign > 0.0 { "+" } else { "-" }
                 )
             }
@@ -124,7 +120,7 @@ impl TermPendant {
             KeyCode::Char('m') => {
                 self.cartesian = !self.cartesian;
                 self.message = if self.cartesian {
-                    "Cartesian jogging (x, y, z along the base axes)".into()
+                    "Cartesian: x y z along the base axes, pitch and roll at the TCP".into()
                 } else {
                     "joint jogging".into()
                 };
@@ -162,7 +158,7 @@ impl TermPendant {
                     } else {
                         continue;
                     };
-                    if self.cartesian && j < 3 {
+                    if self.cartesian {
                         self.jog_cartesian(st, clock, j, sign);
                     } else {
                         self.jog_joint(st, clock, j, sign);
@@ -191,11 +187,14 @@ impl TermPendant {
         )));
         lines.push(Line::from(text.to_string()));
         lines.push(Line::from(format!(
-            "mode {}  step {} {}  speed {:.0} %  move mode {}",
+            "mode {}  step {} {}  speed {:.0} %",
             if self.cartesian { "Cartesian" } else { "joint" },
             STEPS[self.step],
             if self.cartesian { "mm/deg" } else { "deg" },
             st.velocity,
+        )));
+        lines.push(Line::from(format!(
+            "move mode {}",
             if st.straight {
                 "StraightLine"
             } else {
@@ -207,7 +206,7 @@ impl TermPendant {
             let (plus, minus, name, cart) = KEYS[j];
             let what = if self.cartesian { cart } else { name };
             lines.push(Line::from(format!(
-                "J{} {:>9.3} deg  [{:>7.1} .. {:>6.1}]  {plus}/{minus} {what}",
+                "J{} {:>8.2} [{:>6.1} ..{:>6.1}] {plus}/{minus} {what}",
                 j + 1,
                 d[j],
                 deg(spec.min),
@@ -215,7 +214,7 @@ impl TermPendant {
             )));
         }
         lines.push(Line::from(format!(
-            "hand: opening {:.1} mm, force {:.1} N   o/c open/close",
+            "hand {:.1} mm, {:.1} N  o/c open/close",
             g.opening, g.force
         )));
         lines.push(Line::from(""));
@@ -228,7 +227,7 @@ impl TermPendant {
         }
         lines.push(Line::from(""));
         lines.push(Line::from(format!(
-            "path {} ({} positions), store at {}   [ ] path  {{ }} position  p store",
+            "path {}: {} positions, store at {}",
             self.path,
             st.paths.get(&self.path).map(Vec::len).unwrap_or(0),
             if self.position == 0 {
@@ -237,9 +236,9 @@ impl TermPendant {
                 format!("position {}", self.position)
             }
         )));
-        lines.push(Line::from(
-            "m joint/Cartesian  + - step  < > speed  x or Esc leave",
-        ));
+        for legend in LEGEND {
+            lines.push(Line::from(legend));
+        }
         lines.push(Line::from(""));
         lines.push(Line::styled(
             self.message.clone(),
@@ -309,6 +308,54 @@ impl TermPendant {
     }
 }
 
+/// The key legend below the pose; each line fits the panel (56 columns) of
+/// an 80-column terminal.
+const LEGEND: [&str; 2] = [
+    "[ ] path  { } position  p store  m joint/Cartesian",
+    "+ - step  < > speed  x or Esc leave",
+];
+
+/// The joints for a Cartesian jog by `amount` (mm, or degrees for pitch and
+/// roll) along `axis`: 0..2 moves the TCP along the base x, y, z; 3 turns
+/// the tool about the horizontal axis through the TCP across the arm's
+/// plane (pitch); 4 turns it about its approach axis (roll). The new frame's
+/// orientation is then made reachable as `ValidFrame` does (a 5-axis arm
+/// cannot keep every orientation while the TCP moves sideways), and the
+/// nearest inverse solution in the current configuration is chosen.
+pub fn cartesian_target(st: &RobotState, axis: usize, amount: f64) -> Result<Joints, String> {
+    let q = st.robot.joints();
+    let tool = &st.tool.trans;
+    let mut pose = st.kin.fk_tcp(&q, tool);
+    match axis {
+        0..=2 => pose.translation[axis] += amount,
+        3 => {
+            let p = pose.translation;
+            let angle = if p[0].hypot(p[1]) > 1e-6 {
+                p[1].atan2(p[0])
+            } else {
+                q[0]
+            };
+            let across = nalgebra::Vector3::new(-angle.sin(), angle.cos(), 0.0);
+            let turn = nalgebra::Rotation3::from_axis_angle(
+                &nalgebra::Unit::new_normalize(across),
+                rad(amount),
+            );
+            pose = Pose::new(turn.into_inner() * pose.rotation, p);
+        }
+        _ => {
+            pose = Pose::new(
+                pose.rotation * Pose::rot_z(rad(amount)).rotation,
+                pose.translation,
+            )
+        }
+    }
+    let pose = st.kin.valid_frame(&pose, tool).map_err(|e| e.to_string())?;
+    st.kin
+        .ik_choose(&pose, tool, &q, st.arm, st.elbow)
+        .map(|s| s.joints)
+        .map_err(|e| e.to_string())
+}
+
 /// Base, shoulder, elbow, wrist and TCP in the arm plane: (r, unused, z).
 fn arm_points(st: &RobotState, q: &Joints) -> Vec<(f64, f64, f64)> {
     let l = st.kin.description().links();
@@ -361,5 +408,136 @@ impl Pendant for TermPendant {
         let _ = execute!(out, LeaveAlternateScreen);
         let _ = disable_raw_mode();
         result
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::session::Session;
+
+    fn session(robot: &str, setup: &str) -> Session {
+        let mut s = Session::new(Box::new(std::io::sink()));
+        s.set_robot(
+            crate::kinematics::RobotDescription::builtin(robot).expect("robot"),
+            None,
+            false,
+        );
+        let o = s.run_source("setup.air", setup);
+        assert_eq!(o.exit_code(), 0, "{o:?}");
+        s
+    }
+
+    const POSES: [&str; 2] = [
+        "InitRobot;\nMoveAxesAbsolute ((0.0, 0.5, 1.0, -0.5, 0.0));\n",
+        "InitRobot;\nMoveAxesAbsolute ((0.6, 0.3, 1.2, 0.2, 0.4));\n",
+    ];
+
+    /// Every Cartesian direction works from an ordinary pose on both arms:
+    /// x, y and z move the TCP by the step and nothing else (y used to be
+    /// refused as "orientation not reachable"); pitch and roll keep the TCP
+    /// where it is and turn the tool by the step.
+    #[test]
+    fn cartesian_jogs_move_along_every_axis_and_turn_at_the_tcp() {
+        for robot in ["rv-m1", "rm-501"] {
+            for setup in POSES {
+                let s = session(robot, setup);
+                let st = s.robot_state().expect("state");
+                let q = st.robot.joints();
+                let before = st.kin.fk_tcp(&q, &st.tool.trans);
+                for axis in 0..5 {
+                    for sign in [1.0, -1.0] {
+                        let t = cartesian_target(st, axis, sign * 5.0).unwrap_or_else(|e| {
+                            panic!("{robot} {setup} axis {axis} sign {sign}: {e}")
+                        });
+                        st.kin.description().check_limits(&t).expect("limits");
+                        let after = st.kin.fk_tcp(&t, &st.tool.trans);
+                        let d = after.translation - before.translation;
+                        let mut want = nalgebra::Vector3::zeros();
+                        if axis < 3 {
+                            want[axis] = sign * 5.0;
+                        }
+                        assert!(
+                            (d - want).norm() < 1e-6,
+                            "{robot} axis {axis} {sign}: moved {d:?}"
+                        );
+                        let turned = deg(before.rotation_angle_to(&after));
+                        if axis >= 3 {
+                            assert!((turned - 5.0).abs() < 1e-6, "{robot} axis {axis}: {turned}");
+                        } else {
+                            assert!(turned < 5.0, "{robot} axis {axis}: turned {turned}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// A sideways move needs the orientation adjusted: the new one is what
+    /// ValidFrame makes of the old orientation at the new place.
+    #[test]
+    fn a_sideways_jog_keeps_the_orientation_reachable_as_validframe_does() {
+        let s = session("rv-m1", POSES[0]);
+        let st = s.robot_state().expect("state");
+        let q = st.robot.joints();
+        let mut goal = st.kin.fk_tcp(&q, &st.tool.trans);
+        goal.translation[1] += 10.0;
+        let valid = st.kin.valid_frame(&goal, &st.tool.trans).expect("valid");
+        let t = cartesian_target(st, 1, 10.0).expect("y jog");
+        let after = st.kin.fk_tcp(&t, &st.tool.trans);
+        assert!(after.rotation_angle_to(&valid) < 1e-6);
+        assert!(
+            goal.rotation_angle_to(&valid) > 1e-4,
+            "y needs an adjustment"
+        );
+    }
+
+    /// At the end of its reach the jog is refused with the reason, and the
+    /// joints are not changed.
+    #[test]
+    fn a_jog_out_of_reach_is_refused() {
+        let s = session("rv-m1", "InitRobot;\n");
+        let st = s.robot_state().expect("state");
+        let e = cartesian_target(st, 2, 500.0).unwrap_err();
+        assert!(!e.is_empty());
+    }
+
+    /// On an 80 x 24 terminal every legend line and every joint line is
+    /// shown whole (the legend used to be cut at the panel's edge).
+    #[test]
+    fn the_legend_fits_an_80_column_terminal() {
+        let s = session("rv-m1", POSES[1]);
+        let st = s.robot_state().expect("state");
+        for cartesian in [false, true] {
+            let p = TermPendant {
+                cartesian,
+                ..TermPendant::new()
+            };
+            let mut term =
+                Terminal::new(ratatui::backend::TestBackend::new(80, 24)).expect("terminal");
+            term.draw(|f| p.draw(f, st, "Jog J1, then store"))
+                .expect("draw");
+            let buf = term.backend().buffer().clone();
+            let rows: Vec<String> = (0..buf.area.height)
+                .map(|y| {
+                    (0..buf.area.width)
+                        .map(|x| buf[(x, y)].symbol().to_string())
+                        .collect()
+                })
+                .collect();
+            let screen = rows.join("\n");
+            let mut wanted: Vec<String> = LEGEND.iter().map(|l| l.to_string()).collect();
+            for (plus, minus, name, cart) in KEYS {
+                wanted.push(format!(
+                    "{plus}/{minus} {}",
+                    if cartesian { cart } else { name }
+                ));
+            }
+            wanted.push("o/c open/close".into());
+            wanted.push("store at the end".into());
+            for w in wanted {
+                assert!(screen.contains(&w), "`{w}` not shown whole:\n{screen}");
+            }
+        }
     }
 }
