@@ -281,7 +281,7 @@ impl Repl {
                 Some(n) => match self.help_on(n) {
                     Some(t) => ok(t),
                     None => fail(format!(
-                        "no service or subprogram named `{n}`; `:help` lists them\n"
+                        "no service, subprogram, type or exception named `{n}`; `:help` lists them\n"
                     )),
                 },
             },
@@ -382,6 +382,9 @@ impl Repl {
         for (g, names) in HELPER_GROUPS {
             s.push_str(&format!("  {g:<15} {}\n", names.join(", ")));
         }
+        s.push_str(
+            "  types           Frame, AxesVector, ToolDescriptor, Motion, ArmConfig, ElbowConfig,\n                  HandConfig, RobotVelocity, Interpolation, ToolForce, ToolDistance, ...\n  exceptions      OutOfReach, FrameInvalid, TimeInvalid, ... (`:help OutOfReach`)\n",
+        );
         s.push_str("Commands:\n");
         for (c, d) in COMMANDS {
             s.push_str(&format!("  {c:<24} {d}\n"));
@@ -398,7 +401,7 @@ impl Repl {
             .filter(|f| c.funcs[*f as usize].name.eq_ignore_ascii_case(&key))
             .collect();
         if funcs.is_empty() {
-            return None;
+            return stdlib_type_doc(name).or_else(|| exception_doc(name));
         }
         let mut s = String::new();
         for f in &funcs {
@@ -554,4 +557,130 @@ fn stdlib_doc(name: &str) -> String {
         }
     }
     String::new()
+}
+
+/// `:help` on a type or subtype of the AdaIR package: its declaration as
+/// written in `stdlib/adair.air` (with the comment beside or above it).
+fn stdlib_type_doc(name: &str) -> Option<String> {
+    let (_, text) = crate::session::STDLIB
+        .iter()
+        .find(|(n, _)| n.ends_with("adair.air"))
+        .copied()?;
+    let lines: Vec<&str> = text.lines().collect();
+    let key = name.to_ascii_lowercase();
+    let i = lines.iter().position(|l| {
+        let low = l.trim().to_ascii_lowercase();
+        ["type ", "subtype "].iter().any(|k| {
+            low.strip_prefix(k)
+                .and_then(|rest| rest.strip_prefix(key.as_str()))
+                .is_some_and(|rest| rest.starts_with([' ', ';', '(']))
+        })
+    })?;
+    let mut start = i;
+    while start > 0 && lines[start - 1].trim().starts_with("--") {
+        start -= 1;
+    }
+    let mut end = i;
+    if lines[i].to_ascii_lowercase().contains(" record") && !lines[i].contains("null record") {
+        while end + 1 < lines.len() && !lines[end].to_ascii_lowercase().contains("end record") {
+            end += 1;
+        }
+    } else {
+        while end + 1 < lines.len() && !lines[end].contains(';') {
+            end += 1;
+        }
+    }
+    let mut s = String::from("declared in package AdaIR:\n");
+    for l in &lines[start..=end] {
+        s.push_str(l.strip_prefix("   ").unwrap_or(l));
+        s.push('\n');
+    }
+    Some(s)
+}
+
+/// `:help` on an AdaIR exception (handbook appendix B): when adair raises it.
+fn exception_doc(name: &str) -> Option<String> {
+    const EXCEPTIONS: &[(&str, &str)] = &[
+        (
+            "CommandNotImplemented",
+            "the controller has no such command",
+        ),
+        (
+            "CommandNotSupported",
+            "the service cannot run here: TeachBox without a terminal, or the unit refused the command (ER 1; the message shows the line sent)",
+        ),
+        (
+            "ControlCommandActive",
+            "a motion started with Control => True is still running",
+        ),
+        (
+            "DistanceInvalid",
+            "a gripper distance outside the tool's DistMin .. DistMax",
+        ),
+        (
+            "FatalCommunicationError",
+            "the serial link broke (end of file, I/O error, the port vanished); later services raise NoConnection until InitRobot opens it again",
+        ),
+        (
+            "FatalNetError",
+            "a network failure (no adair driver uses a network)",
+        ),
+        (
+            "ForceInvalid",
+            "a gripper force outside the tool's ForceMin .. ForceMax",
+        ),
+        (
+            "FrameInvalid",
+            "a frame that is not a rigid transform, or an orientation this 5-axis arm cannot take (ValidFrame turns it into one it can)",
+        ),
+        (
+            "MessageInvalid",
+            "a reply from the unit that does not parse",
+        ),
+        (
+            "MessageLost",
+            "no reply from the unit within the motion's time plus --serial-timeout",
+        ),
+        ("MessageOverflow", "a message too long for the controller"),
+        (
+            "NoConnection",
+            "the serial port does not open (the message names the port and the OS error)",
+        ),
+        ("NoRobotInstalled", "the port opened but no unit answers"),
+        (
+            "OutOfReach",
+            "the goal is outside the arm's reach or a joint's limits (the message gives the goal and the nearest reachable point, or the joint)",
+        ),
+        (
+            "PathAlreadyDefined",
+            "CreatePath or LoadPathSystem of a path number that exists",
+        ),
+        (
+            "PathElementNotDefined",
+            "a position number the path does not have",
+        ),
+        ("PathMemOverflow", "the controller's path memory is full"),
+        ("PathNotDefined", "a path number that was never created"),
+        ("RobotBusy", "the robot is busy with another command"),
+        (
+            "SystemNotInitialized",
+            "a service called before InitRobot (or after EndRobot)",
+        ),
+        (
+            "TimeInvalid",
+            "a motion time that is negative, not a number, or shorter than the joints' speed allows",
+        ),
+        (
+            "UserInfoInvalid",
+            "a TeachBox text over 60 characters or with control characters",
+        ),
+        (
+            "WrongRobotInstalled",
+            "the unit answers as another robot than --robot says",
+        ),
+    ];
+    EXCEPTIONS
+        .iter()
+        .find(|(n, _)| n.eq_ignore_ascii_case(name))
+        .map(|(n, d)| format!("exception AdaIR.{n} (handbook appendix B)\nraised when {d}\n"))
 }

@@ -226,7 +226,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Values,
         function: false,
         profile: "(ArmMode : out ArmConfig; ElbowMode : out ElbowConfig; HandMode : out HandConfig)",
-        doc: "The branch of the current pose.\nExample: ValueRobotConfig (A, E, H);",
+        doc: "The branch of the current pose.\nExample:\n  A : ArmConfig;  E : ElbowConfig;  H : HandConfig;\n  ValueRobotConfig (A, E, H);",
         body: super::value_robot_config,
     },
     Service {
@@ -236,7 +236,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Settings,
         function: false,
         profile: "(Tool : in ToolDescriptor)",
-        doc: "Tool transform (flange -> TCP) and sensor ranges; current values are ignored.\nRaises FrameInvalid, ForceInvalid, DistanceInvalid.\nExample: SetTool (T);",
+        doc: "Tool transform (flange -> TCP) and sensor ranges; current values are ignored.\nRaises FrameInvalid, ForceInvalid, DistanceInvalid.\nExample:\n  T : ToolDescriptor := ValueTool;\n  T.Trans := Trans (0.0, 0.0, 120.0);  SetTool (T);",
         body: super::set_tool,
     },
     Service {
@@ -246,7 +246,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Values,
         function: false,
         profile: "(Tool : out ToolDescriptor)",
-        doc: "The tool, with the current gripper opening and force.\nExample: T := ValueTool;",
+        doc: "The tool, with the current gripper opening and force.\nExample:\n  T : ToolDescriptor := ValueTool;",
         body: super::value_tool,
     },
     Service {
@@ -306,7 +306,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Motion,
         function: false,
         profile: "(Goal : in Frame; Time : in Duration := 0.0; Control : in Boolean := False; RealTime : in Boolean := False)",
-        doc: "As MoveFrameAbsolute, with the goal in the base frame set by SetBase.\nExample: MoveFrameRelative (Trans (0.0, 0.0, 50.0));",
+        doc: "As MoveFrameAbsolute, with the goal in the base frame set by SetBase.\nExample:\n  SetBase (Trans (300.0, 0.0, 0.0));\n  MoveFrameRelative (Trans (0.0, 0.0, 250.0) * RotY (Rad (180.0)));",
         body: super::move_frame_relative,
     },
     Service {
@@ -326,7 +326,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Motion,
         function: false,
         profile: "(VaryFrame : in out Frame)",
-        doc: "Keeps the position and turns the orientation to the nearest one this arm\ncan reach. Example: ValidFrame (F);",
+        doc: "Keeps the position and turns the orientation to the nearest one this arm\ncan reach. Example:\n  F : Frame := Trans (250.0, 150.0, 200.0) * RotY (Rad (180.0)) * RotX (Rad (15.0));\n  ValidFrame (F);  MoveFrameAbsolute (F);",
         body: super::valid_frame,
     },
     Service {
@@ -336,7 +336,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Values,
         function: false,
         profile: "(Axes : out AxesVector)",
-        doc: "The joints as the controller reads them back (radians, quantised).\nExample: A := ValueAxes;",
+        doc: "The joints as the controller reads them back (radians, quantised).\nExample:\n  A : AxesVector := ValueAxes;",
         body: super::value_axes,
     },
     Service {
@@ -356,7 +356,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Values,
         function: false,
         profile: "(ReturnFrame : out Frame)",
-        doc: "The TCP frame in robot base coordinates. Example: F := ValueFrameAbsolute;",
+        doc: "The TCP frame in robot base coordinates. Example:\n  F : Frame := ValueFrameAbsolute;",
         body: super::value_frame_absolute,
     },
     Service {
@@ -376,7 +376,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Values,
         function: false,
         profile: "(ReturnFrame : out Frame)",
-        doc: "The TCP frame in the base frame set by SetBase. Example: F := ValueFrameRelative;",
+        doc: "The TCP frame in the base frame set by SetBase. Example:\n  F : Frame := ValueFrameRelative;",
         body: super::value_frame_relative,
     },
     Service {
@@ -396,7 +396,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Values,
         function: false,
         profile: "(Status : out ErrorCode)",
-        doc: "The command code of the service where the last exception arose (0 if none).\nExample: Code := ValueErrorStatus;",
+        doc: "The command code of the service where the last exception arose (0 if none).\nExample:\n  Code : ErrorCode := ValueErrorStatus;",
         body: super::value_error_status,
     },
     Service {
@@ -426,7 +426,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Paths,
         function: false,
         profile: "(PathNumber : in PathNo)",
-        doc: "Deletes a path. Raises PathNotDefined. Example: DeletePath (1);",
+        doc: "Deletes a path. Raises PathNotDefined. Example:\n  CreatePath (1);  DeletePath (1);",
         body: super::paths::delete_path,
     },
     Service {
@@ -436,7 +436,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Paths,
         function: false,
         profile: "(PathNumber : in PathNo; PositionNumber : in PosNo; Position : in Frame)",
-        doc: "Inserts F before position N (beyond the end: appends). Raises PathNotDefined.\nExample: InsertPosition (1, 1, F);",
+        doc: "Inserts F before position N (beyond the end: appends). Raises PathNotDefined.\nExample:\n  CreatePath (1);\n  InsertPosition (1, 1, Trans (300.0, 0.0, 250.0) * RotY (Rad (180.0)));",
         body: super::paths::insert_position,
     },
     Service {
@@ -446,7 +446,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Paths,
         function: false,
         profile: "(PathNumber : in PathNo; PositionNumber : in PosNo)",
-        doc: "Removes position N. Raises PathElementNotDefined. Example: DeletePosition (1, 2);",
+        doc: "Removes position N. Raises PathElementNotDefined. Example:\n  CreatePath (1);  InsertPosition (1, 1, ValueFrameAbsolute);\n  DeletePosition (1, 1);",
         body: super::paths::delete_position,
     },
     Service {
@@ -456,7 +456,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Paths,
         function: false,
         profile: "(PathNumber : in PathNo; PositionNumber : in PosNo; Position : out Frame)",
-        doc: "Reads position N. Raises PathElementNotDefined. Example: ValuePosition (1, 2, F);",
+        doc: "Reads position N. Raises PathElementNotDefined. Example:\n  F : Frame;  CreatePath (1);  InsertPosition (1, 1, ValueFrameAbsolute);\n  ValuePosition (1, 1, F);",
         body: super::paths::value_position,
     },
     Service {
@@ -466,7 +466,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Motion,
         function: false,
         profile: "(PathNumber : in PathNo; Time : in Duration := 0.0; Control : in Boolean := False; RealTime : in Boolean := False)",
-        doc: "Moves through every position of a path; all are checked before the robot\nstarts. Raises PathNotDefined, PathElementNotDefined, OutOfReach. Example: MovePath (1);",
+        doc: "Moves through every position of a path; all are checked before the robot\nstarts. Raises PathNotDefined, PathElementNotDefined, OutOfReach. Example:\n  CreatePath (1);\n  InsertPosition (1, 1, Trans (300.0, 0.0, 250.0) * RotY (Rad (180.0)));\n  InsertPosition (1, 2, Trans (300.0, 100.0, 250.0) * RotY (Rad (180.0)));\n  MovePath (1);",
         body: super::paths::move_path,
     },
     Service {
@@ -486,7 +486,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Paths,
         function: false,
         profile: "(PathFileName : in String)",
-        doc: "Reads paths from a file: all or nothing. Raises Name_Error, Data_Error,\nPathAlreadyDefined. Example: LoadPathSystem (\"paths.txt\");",
+        doc: "Reads paths from a file: all or nothing. Raises Name_Error, Data_Error,\nPathAlreadyDefined. Example:\n  CreatePath (1);  SavePathSystem (\"paths.txt\");  DeletePath (1);\n  LoadPathSystem (\"paths.txt\");",
         body: super::paths::load_path_system,
     },
     Service {
@@ -496,7 +496,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Teach,
         function: false,
         profile: "(Text : in String := \" \"; Refresh : in Boolean := True; Clear : in Boolean := True)",
-        doc: "The screen teach pendant; returns when the user leaves it. Raises\nUserInfoInvalid (text over 60 characters), CommandNotSupported without a terminal.",
+        doc: "The screen teach pendant; returns when the user leaves it. Raises\nUserInfoInvalid (text over 60 characters), CommandNotSupported without a terminal.\nExample: TeachBox (\"Jog to the part, store it with p\");",
         body: super::teach_box,
     },
 ];
