@@ -53,13 +53,27 @@ fn directives(text: &str) -> (String, bool) {
 /// Runs a script as `adair run` would (no colour) and returns its golden text.
 /// A trace asked for by the script is interleaved with its output.
 pub fn run_case(path: &Path) -> String {
+    run_case_on(path, &Target::default())
+}
+
+/// Where `adair test` runs its scripts: the simulator (no port), or a real
+/// arm over `port`, each script rehearsed on the simulator first when
+/// `rehearse` asks.
+#[derive(Clone, Debug, Default)]
+pub struct Target {
+    pub port: Option<crate::driver::serial::PortSettings>,
+    pub rehearse: bool,
+}
+
+/// [`run_case`] on `target`.
+pub fn run_case_on(path: &Path, target: &Target) -> String {
     let name = path.to_string_lossy().replace('\\', "/");
     let text = match std::fs::read_to_string(path) {
         Ok(t) => t,
         Err(e) => return format!("-- stderr --\nerror: cannot read {name}: {e}\n-- exit: 2\n"),
     };
     let (robot, trace) = directives(&text);
-    let r = run_text(&name, &text, &robot, trace);
+    let r = run_text_on(&name, &text, &robot, trace, target);
     let mut out = r.output;
     if !r.diagnostics.is_empty() {
         out.push_str("-- stderr --\n");
@@ -81,15 +95,36 @@ pub struct RunText {
 
 /// Runs `text` as the script `name` on the simulated `robot`, with no input.
 pub fn run_text(name: &str, text: &str, robot: &str, trace: bool) -> RunText {
+    run_text_on(name, text, robot, trace, &Target::default())
+}
+
+/// [`run_text`] on `target`: over a serial port the same script drives the
+/// arm (after a rehearsal, when asked; a failed one moves nothing and is the
+/// run's result).
+pub fn run_text_on(name: &str, text: &str, robot: &str, trace: bool, target: &Target) -> RunText {
     let buf = SharedBuf::default();
     let mut s = Session::new(Box::new(buf.clone()));
     s.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+    let tracer = || trace.then(|| Box::new(buf.clone()) as Box<dyn Write>);
     match crate::kinematics::RobotDescription::builtin(robot) {
-        Ok(desc) => s.set_robot(
-            desc,
-            trace.then(|| Box::new(buf.clone()) as Box<dyn Write>),
-            false,
-        ),
+        Ok(desc) => match &target.port {
+            None => s.set_robot(desc, tracer(), false),
+            Some(settings) => {
+                if target.rehearse
+                    && let Err((diagnostics, code)) =
+                        crate::session::rehearse(&desc, settings, name, text, false)
+                {
+                    return RunText {
+                        output: String::new(),
+                        diagnostics,
+                        code,
+                    };
+                }
+                let driver =
+                    crate::driver::serial::Serial::new(desc.clone(), settings.clone(), None);
+                s.set_driver(desc, Box::new(driver), tracer(), false);
+            }
+        },
         Err(e) => {
             return RunText {
                 output: String::new(),
@@ -125,7 +160,12 @@ pub enum Verdict {
 }
 
 pub fn check_case(script: &Path, bless: bool) -> Verdict {
-    let actual = run_case(script);
+    check_case_on(script, bless, &Target::default())
+}
+
+/// [`check_case`] on `target`.
+pub fn check_case_on(script: &Path, bless: bool, target: &Target) -> Verdict {
+    let actual = run_case_on(script, target);
     let exp_path = expected_path(script);
     if bless {
         let tmp = exp_path.with_extension("out.tmp");

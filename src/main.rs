@@ -150,9 +150,15 @@ enum Command {
     Test {
         /// Scripts or directories (default: the current directory).
         paths: Vec<PathBuf>,
-        /// Write the actual output into the .out files.
+        /// Write the actual output into the .out files (with --port: what the arm did).
         #[arg(long)]
         bless: bool,
+        #[command(flatten)]
+        serial: SerialOpts,
+        /// With --port: rehearse each script on the simulator from the arm's
+        /// pose first; a script whose rehearsal fails does not move the arm.
+        #[arg(long, requires = "port")]
+        rehearse: bool,
     },
 }
 
@@ -282,11 +288,13 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 None => s.set_robot(desc, trace(), robot.realtime),
                 Some(settings) => {
                     if robot.rehearse {
-                        match rehearse(&desc, &settings, &file, &text, color) {
-                            Ok(()) => eprintln!(
-                                "adair: the rehearsal on the simulator ended without an unhandled exception; moving the arm now (a rehearsal cannot cover branches that depend on input)"
-                            ),
-                            Err(code) => return code,
+                        let name = file.to_string_lossy();
+                        match adair::session::rehearse(&desc, &settings, &name, &text, color) {
+                            Ok(()) => eprintln!("{}", adair::session::REHEARSED),
+                            Err((shown, code)) => {
+                                eprint!("{shown}");
+                                return code as u8;
+                            }
                         }
                     }
                     let driver =
@@ -412,7 +420,16 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             }
             worst
         }
-        Some(Command::Test { paths, bless }) => {
+        Some(Command::Test {
+            paths,
+            bless,
+            serial,
+            rehearse,
+        }) => {
+            let target = adair::golden::Target {
+                port: serial.settings(),
+                rehearse,
+            };
             let paths = if paths.is_empty() {
                 vec![PathBuf::from(".")]
             } else {
@@ -427,7 +444,7 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             };
             let (mut pass, mut fail) = (0, 0);
             for s in &scripts {
-                match adair::golden::check_case(s, bless) {
+                match adair::golden::check_case_on(s, bless, &target) {
                     adair::golden::Verdict::Pass => pass += 1,
                     adair::golden::Verdict::Blessed => {
                         println!("blessed {}", s.display());
@@ -483,37 +500,6 @@ fn parse_refuse(s: &str) -> Result<(u64, u8), String> {
 /// `--rehearse`: the arm's pose without motion, then the whole program on
 /// the simulator from there. `Err` holds the exit code when the rehearsal
 /// failed (nothing was sent that moves the arm).
-fn rehearse(
-    desc: &adair::kinematics::RobotDescription,
-    settings: &adair::driver::serial::PortSettings,
-    file: &std::path::Path,
-    text: &str,
-    color: bool,
-) -> Result<(), u8> {
-    let mut probe = adair::driver::serial::Serial::new(desc.clone(), settings.clone(), None);
-    let pose = match probe.read_pose() {
-        Ok(q) => q,
-        Err(e) => {
-            eprintln!("adair: rehearsal: cannot read the arm's pose: {e}");
-            return Err(1);
-        }
-    };
-    drop(probe);
-    let mut sim = adair::driver::sim::Simulator::new(desc.clone());
-    sim.set_joints(pose);
-    let mut s = Session::new(Box::new(std::io::sink()));
-    // The rehearsal must not eat the real run's input: it reads none.
-    s.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
-    s.set_driver(desc.clone(), Box::new(sim), None, false);
-    let outcome = s.run_source(&file.to_string_lossy(), text);
-    if let Outcome::Ok = outcome {
-        return Ok(());
-    }
-    report(&outcome, &s, color);
-    eprintln!("adair: the rehearsal on the simulator failed: the arm was not moved");
-    Err(outcome.exit_code() as u8)
-}
-
 /// Checks a `--record` path before the run: a known extension and an
 /// existing directory.
 fn record_target(p: &std::path::Path) -> Result<(), String> {

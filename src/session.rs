@@ -272,3 +272,44 @@ impl Session {
         d
     }
 }
+
+/// `--rehearse`: reads the arm's pose over `settings` (`WH` only, no
+/// motion), runs the whole program `text` on the simulator from there, and
+/// answers whether the real arm may run it. A failed rehearsal gives the
+/// run's diagnostics (rendered) and its exit status; nothing was sent to
+/// move the arm.
+pub fn rehearse(
+    desc: &crate::kinematics::RobotDescription,
+    settings: &crate::driver::serial::PortSettings,
+    name: &str,
+    text: &str,
+    color: bool,
+) -> Result<(), (String, i32)> {
+    let mut probe = crate::driver::serial::Serial::new(desc.clone(), settings.clone(), None);
+    let pose = probe.read_pose().map_err(|e| {
+        (
+            format!("adair: rehearsal: cannot read the arm's pose: {e}\n"),
+            1,
+        )
+    })?;
+    drop(probe);
+    let mut sim = crate::driver::sim::Simulator::new(desc.clone());
+    sim.set_joints(pose);
+    let mut s = Session::new(Box::new(std::io::sink()));
+    // The rehearsal must not eat the real run's input: it reads none.
+    s.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+    s.set_driver(desc.clone(), Box::new(sim), None, false);
+    let outcome = s.run_source(name, text);
+    let shown = match &outcome {
+        Outcome::Ok => return Ok(()),
+        Outcome::CheckFailed(d) => crate::diag::render(d, &s.sources, color),
+        Outcome::Raised(d) => crate::diag::render(std::slice::from_ref(d), &s.sources, color),
+    };
+    Err((
+        format!("{shown}adair: the rehearsal on the simulator failed: the arm was not moved\n"),
+        outcome.exit_code(),
+    ))
+}
+
+/// What `adair run --rehearse` says on stderr before it moves the arm.
+pub const REHEARSED: &str = "adair: the rehearsal on the simulator ended without an unhandled exception; moving the arm now (a rehearsal cannot cover branches that depend on input)";

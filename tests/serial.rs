@@ -340,6 +340,67 @@ fn a_failed_rehearsal_sends_no_motion() {
     );
 }
 
+/// `adair test --port` runs golden scripts on the arm: a script that passes
+/// moved it; with `--rehearse`, a script that fails later is reported and
+/// sends no motion command.
+fn adair_test_runs_golden_scripts_on_the_arm() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let dir = std::env::temp_dir().join(format!("adair-testport-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("moves.air"),
+        "InitRobot;\nMoveAxesAbsolute ((Rad (10.0), 0.0, 0.0, 0.0, 0.0));\n\
+         Put_Line (\"J1 about 10: \" & Boolean'Image (abs (Deg (ValueAxes (1)) - 10.0) < 0.2));\n",
+    )
+    .unwrap();
+    std::fs::write(dir.join("moves.out"), "J1 about 10: TRUE\n").unwrap();
+    let test = |args: &[&str], path: &std::path::Path| {
+        let out = Command::new(BIN)
+            .arg("test")
+            .args(args)
+            .args(["--port", &c.path, "--serial-timeout", "0.5"])
+            .arg(path)
+            .output()
+            .unwrap();
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+        )
+    };
+    let (code, out) = test(&[], &dir.join("moves.air"));
+    assert_eq!(code, Some(0), "{out}");
+    assert!(out.contains("1 passed, 0 failed"), "{out}");
+    assert!(
+        c.received().iter().any(|l| l.starts_with("MJ +10.0")),
+        "{:?}",
+        c.received()
+    );
+    let before = c.received().len();
+    std::fs::write(
+        dir.join("fails_later.air"),
+        "InitRobot;\nMoveAxesAbsolute ((Rad (20.0), 0.0, 0.0, 0.0, 0.0));\n\
+         MoveAxesAbsolute ((0.0, Rad (150.0), 0.0, 0.0, 0.0));\n",
+    )
+    .unwrap();
+    std::fs::write(dir.join("fails_later.out"), "").unwrap();
+    let (code, out) = test(&["--rehearse"], &dir.join("fails_later.air"));
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert_eq!(code, Some(1), "{out}");
+    assert!(
+        out.contains("FAIL") && out.contains("the arm was not moved"),
+        "{out}"
+    );
+    let sent = c.received();
+    assert!(
+        sent[before..]
+            .iter()
+            .all(|l| ["ER", "RS", "WH"].contains(&l.as_str()) || l.starts_with("TL")),
+        "{sent:?}"
+    );
+}
+
 /// The exact lines sent for a script, against `tests/serial/NAME.log`
 /// (`BLESS=1` rewrites it), so that a protocol change shows in review.
 fn golden_log(robot: &str, name: &str, script: &str) {
@@ -581,6 +642,10 @@ fn main() {
         (
             "a_failed_rehearsal_sends_no_motion",
             a_failed_rehearsal_sends_no_motion,
+        ),
+        (
+            "adair_test_runs_golden_scripts_on_the_arm",
+            adair_test_runs_golden_scripts_on_the_arm,
         ),
         ("golden_lines_rv_m1", golden_lines_rv_m1),
         ("golden_lines_rm_501", golden_lines_rm_501),
