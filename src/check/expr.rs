@@ -9,7 +9,7 @@ fn bx(e: Ex) -> Box<Ex> {
 }
 
 impl Checker {
-    fn mk(&self, kind: ExKind, ty: TypeId, span: Span) -> Ex {
+    pub(super) fn mk(&self, kind: ExKind, ty: TypeId, span: Span) -> Ex {
         Ex { kind, ty, span }
     }
 
@@ -21,7 +21,7 @@ impl Checker {
         }
     }
 
-    fn tname(&self, t: TypeId) -> String {
+    pub(super) fn tname(&self, t: TypeId) -> String {
         match self.types.kind(t) {
             TypeKind::UnivInt => "universal integer (a literal)".into(),
             TypeKind::UnivReal => "universal real (a literal)".into(),
@@ -515,6 +515,7 @@ impl Checker {
         es.iter()
             .filter_map(|e| match e {
                 Entity::Var { ty, .. } => Some(*ty),
+                Entity::Alias(x) => Some(x.ty),
                 Entity::Number(Static::Int(_)) => Some(UNIV_INT),
                 Entity::Number(Static::Real(_)) => Some(UNIV_REAL),
                 Entity::EnumLit(t, _) => Some(*t),
@@ -1205,6 +1206,11 @@ impl Checker {
                 }
                 None => self.mk(ExKind::Var(*var), *ty, sp),
             },
+            Entity::Alias(x) => {
+                let mut x = (**x).clone();
+                x.span = sp;
+                x
+            }
             Entity::Number(Static::Int(v)) => match i64::try_from(*v) {
                 Ok(v) => self.mk(ExKind::Int(v), UNIV_INT, sp),
                 Err(_) => self.err_ex(sp),

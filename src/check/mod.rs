@@ -41,6 +41,9 @@ pub enum Entity {
     EnumLit(TypeId, i64),
     Exc(ExcId),
     Package(usize),
+    /// The element name of `for E of A`: it stands for `A (I)`, a variable
+    /// when `A` is one.
+    Alias(Box<Ex>),
 }
 
 #[derive(Default, Debug, Clone)]

@@ -252,6 +252,11 @@ impl Checker {
                             body,
                         }
                     }
+                    ast::LoopScheme::ForOf {
+                        var,
+                        reverse,
+                        array,
+                    } => self.for_of(id, var, *reverse, array, body),
                 };
                 self.loops.pop();
                 k
@@ -437,5 +442,130 @@ impl Checker {
         let name = crate::syntax::parser::expr_text(prefix);
         let (f, a) = self.call(&fs, args, None, true, e.span, &name)?;
         Some(StmtKind::Call(f, a))
+    }
+}
+
+impl Checker {
+    /// `for E of [reverse] A loop ... end loop;`: one `for` loop per
+    /// dimension over `A'Range (N)` (row-major, as GNAT), with `E` standing
+    /// for `A (I1, ..., In)`. An array that is not a name (a function
+    /// result, an aggregate) is evaluated once into a hidden constant first.
+    fn for_of(
+        &mut self,
+        id: u32,
+        var: &ast::Ident,
+        reverse: bool,
+        array: &ast::Expr,
+        body: &[ast::Stmt],
+    ) -> StmtKind {
+        let arr = self.expr(array, None);
+        let Some(index) = self.types.array(arr.ty).map(|(i, _, _)| i.to_vec()) else {
+            if arr.ty != ERROR {
+                self.err(
+                    Diagnostic::ty(
+                        array.span,
+                        format!(
+                            "`for ... of` needs an array, and this is of type `{}`",
+                            self.tname(arr.ty)
+                        ),
+                    )
+                    .with_hint("to count, write `for I in A .. B loop`"),
+                );
+            }
+            let body = self.scoped_stmts(body);
+            return StmtKind::Loop { id, body };
+        };
+        let elem = self.types.array(arr.ty).map(|(_, e, _)| e).unwrap_or(ERROR);
+        self.push_scope();
+        let mut before = Vec::new();
+        let base = if is_name(&arr) {
+            arr
+        } else {
+            let tmp = self.new_slot();
+            self.declare(
+                " for-of array",
+                Entity::Var {
+                    var: tmp,
+                    ty: arr.ty,
+                    constant: true,
+                    value: None,
+                },
+            );
+            let (ty, span) = (arr.ty, arr.span);
+            before.push(Stmt {
+                kind: StmtKind::Assign(self.mk(ExKind::Var(tmp), ty, span), arr),
+                span,
+            });
+            self.mk(ExKind::Var(tmp), ty, span)
+        };
+        let vars: Vec<Var> = index.iter().map(|_| self.new_slot()).collect();
+        let subscripts = vars
+            .iter()
+            .zip(&index)
+            .map(|(v, t)| self.mk(ExKind::Var(*v), *t, var.span))
+            .collect();
+        // A slice `P (L .. H)`: its components are those of `P` from L to H.
+        let (base, slice) = match base.kind {
+            ExKind::Slice(p, l, h) => (*p, Some((*l, *h))),
+            _ => (base, None),
+        };
+        let element = self.mk(
+            ExKind::Index(Box::new(base.clone()), subscripts),
+            elem,
+            var.span,
+        );
+        self.declare(&var.name, Entity::Alias(Box::new(element)));
+        let mut stmts = self.stmts(body);
+        self.pop_scope();
+        // Innermost dimension first: the last index varies fastest.
+        for (d, v) in vars.iter().enumerate().rev() {
+            let dim = d as u8 + 1;
+            let it = index[d];
+            let (lo, hi) = match &slice {
+                Some((l, h)) => (l.clone(), h.clone()),
+                None => (
+                    self.mk(
+                        ExKind::Attr(AttrOp::ArrFirst(dim), vec![base.clone()]),
+                        it,
+                        array.span,
+                    ),
+                    self.mk(
+                        ExKind::Attr(AttrOp::ArrLast(dim), vec![base.clone()]),
+                        it,
+                        array.span,
+                    ),
+                ),
+            };
+            let loop_id = if d == 0 { id } else { self.new_loop() };
+            stmts = vec![Stmt {
+                kind: StmtKind::For {
+                    id: loop_id,
+                    var: *v,
+                    lo,
+                    hi,
+                    reverse,
+                    body: stmts,
+                },
+                span: array.span,
+            }];
+        }
+        if before.is_empty() {
+            return stmts.pop().map(|s| s.kind).unwrap_or(StmtKind::Null);
+        }
+        before.extend(stmts);
+        StmtKind::Block(Box::new(Body {
+            stmts: before,
+            handlers: Vec::new(),
+        }))
+    }
+}
+
+/// Whether an array expression names an object (so that writing to its
+/// components through the loop's element name changes it).
+fn is_name(e: &Ex) -> bool {
+    match &e.kind {
+        ExKind::Var(_) | ExKind::Deref(_) => true,
+        ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _, _) => is_name(p),
+        _ => false,
     }
 }

@@ -357,6 +357,12 @@ pub enum LoopScheme {
         reverse: bool,
         range: DiscreteRange,
     },
+    /// `for E of [reverse] A loop`: each component of the array `A`.
+    ForOf {
+        var: Ident,
+        reverse: bool,
+        array: Expr,
+    },
 }
 
 pub type Name = Expr;

@@ -841,6 +841,16 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         kw!(While).ignore_then(expr.clone()).map(LoopScheme::While),
         kw!(For)
             .ignore_then(ident())
+            .then_ignore(kw!(Of))
+            .then(kw!(Reverse).or_not())
+            .then(expr.clone())
+            .map(|((var, rev), array)| LoopScheme::ForOf {
+                var,
+                reverse: rev.is_some(),
+                array,
+            }),
+        kw!(For)
+            .ignore_then(ident())
             .then_ignore(kw!(In))
             .then(kw!(Reverse).or_not())
             .then(drange.clone())
@@ -1277,6 +1287,43 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 .then(any().and_is(semi().not()).repeated())
                 .then_ignore(semi())
                 .to(SubTail::Unsupported("a generic instantiation")),
+            // An expression function (Ada 2012): `is (Expression);`, a body
+            // that returns the parenthesized expression (or aggregate).
+            kw!(Is)
+                .ignore_then(just(Token::LParen).rewind())
+                .ignore_then(expr.clone())
+                .validate(|x: Expr, _, emitter| {
+                    if !matches!(
+                        x.kind,
+                        ExprKind::Paren(_)
+                            | ExprKind::Aggregate(_)
+                            | ExprKind::If { .. }
+                            | ExprKind::Case { .. }
+                    ) {
+                        emitter.emit(Rich::custom(
+                            x.span,
+                            "the body of an expression function is one parenthesized expression: `is (...)`",
+                        ));
+                    }
+                    x
+                })
+                .then_ignore(semi())
+                .map(|x: Expr| {
+                    let span = x.span;
+                    let ret = Stmt {
+                        kind: StmtKind::Return(Some(x)),
+                        span,
+                    };
+                    SubTail::Body(
+                        Vec::new(),
+                        Block {
+                            stmts: vec![ret],
+                            handlers: Vec::new(),
+                            span,
+                        },
+                        None,
+                    )
+                }),
             kw!(Is)
                 .ignore_then(decls.clone())
                 .then(block.clone())
