@@ -716,7 +716,13 @@ impl Checker {
         self.pop_scope();
         let ctx = self.ctx.pop().expect("ctx");
         self.level -= 1;
-        if ret.is_some() && !ctx.saw_return {
+        // A statement the parser could not read may have been the return.
+        let unreadable = b
+            .body
+            .stmts
+            .iter()
+            .any(|s| matches!(s.kind, ast::StmtKind::Error));
+        if ret.is_some() && !ctx.saw_return && !unreadable {
             self.err(
                 Diagnostic::ty(
                     b.spec.span,

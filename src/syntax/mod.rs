@@ -11,7 +11,20 @@ use crate::diag::{Diagnostic, FileId};
 /// and all lexical and syntax diagnostics.
 pub fn parse_source(src: &str, file: FileId) -> (Option<ast::CompilationUnit>, Vec<Diagnostic>) {
     let (tokens, mut diags) = lexer::lex(src, file);
-    let (unit, pd) = parser::parse(&tokens, file, src.len());
+    let (unit, mut pd) = parser::parse(&tokens, file, src.len());
+    // Name the line and column of the `if`/`case`/`loop` an `end` left open.
+    for d in &mut pd {
+        if d.message.contains(parser::OPENER_AT)
+            && let Some((at, _)) = d.notes.first()
+        {
+            let before = &src[..at.start.min(src.len())];
+            let line = before.matches('\n').count() + 1;
+            let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+            d.message = d
+                .message
+                .replace(parser::OPENER_AT, &format!("{line}:{col}"));
+        }
+    }
     diags.extend(pd);
     diags.sort_by_key(|d| d.span.start);
     (unit, diags)

@@ -51,6 +51,55 @@ fn soft_kw<'t, I: TokIn<'t>>(k: Kw) -> impl Parser<'t, I, (), Ex<'t>> + Clone {
         }))
 }
 
+/// The end of an `if`, `case` or `loop`: `end <word>;` (None), or the
+/// place of a wrong end: a bare `end;` (taken as this construct's end), or
+/// `end Name` (the end of the enclosing body, left for it). Either way the
+/// statement is reported unclosed ([`UNCLOSED`]) and parsing goes on as if
+/// `end <word>;` had been there.
+fn closing<'t, I: TokIn<'t>>(k: Kw) -> impl Parser<'t, I, Option<Span>, Ex<'t>> + Clone {
+    let label = match k {
+        Kw::Loop => "`end loop`",
+        Kw::If => "`end if`",
+        _ => "`end case`",
+    };
+    choice((
+        just(Token::Kw(Kw::End))
+            .then(just(Token::Kw(k)))
+            .then_ignore(soft_semi())
+            .to(None),
+        // A bare `end;` was meant for this construct: it is taken as its end.
+        just(Token::Kw(Kw::End))
+            .then(semi())
+            .map_with(|_, e| Some(e.span())),
+        just(Token::Kw(Kw::End))
+            .then_ignore(just(Token::Kw(k)).not())
+            .map_with(|_, e| Some(e.span()))
+            .rewind(),
+    ))
+    .labelled(label)
+}
+
+/// The marker of the error [`closing`] leads to: `\u{1}WORD OFFSET` (the
+/// construct's keyword and where its statement starts); `rich_to_diag`
+/// turns it into the diagnostic.
+const UNCLOSED: char = '\u{1}';
+
+/// The `validate` step after [`closing`]: reports an unclosed `WORD`.
+macro_rules! unclosed {
+    ($word:literal) => {
+        |(x, missing): (_, Option<Span>), e, emitter| {
+            if let Some(at) = missing {
+                let whole: Span = e.span();
+                emitter.emit(Rich::custom(
+                    at,
+                    format!("{UNCLOSED}{} {}", $word, whole.start),
+                ));
+            }
+            x
+        }
+    };
+}
+
 /// A `;` that may be missing: reports it, and parsing goes on as if it were
 /// there, when the next token starts a new statement or declaration.
 fn soft_semi<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
@@ -811,8 +860,8 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 .collect::<Vec<_>>(),
         )
         .then(kw!(Else).ignore_then(stmts.clone()).or_not())
-        .then_ignore(kw!(End).then(kw!(If)).labelled("`end if`"))
-        .then_ignore(semi())
+        .then(closing(Kw::If))
+        .validate(unclosed!("if"))
         .map(|(((c, t), mut rest), els)| {
             rest.insert(0, (c, t));
             StmtKind::If { arms: rest, els }
@@ -834,8 +883,8 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 .at_least(1)
                 .collect::<Vec<_>>(),
         )
-        .then_ignore(kw!(End).then(kw!(Case)).labelled("`end case`"))
-        .then_ignore(semi())
+        .then(closing(Kw::Case))
+        .validate(unclosed!("case"))
         .map(|(subject, arms)| StmtKind::Case { subject, arms });
     let scheme = choice((
         kw!(While).ignore_then(expr.clone()).map(LoopScheme::While),
@@ -867,9 +916,25 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .or_not()
         .then(scheme)
         .then(stmts.clone())
-        .then_ignore(kw!(End).then(kw!(Loop)).labelled("`end loop`"))
-        .then(ident().or_not())
-        .then_ignore(semi())
+        .then(
+            choice((
+                kw!(End)
+                    .then(kw!(Loop))
+                    .ignore_then(ident().or_not())
+                    .then_ignore(soft_semi())
+                    .map(|n| (n, None)),
+                kw!(End)
+                    .then(semi())
+                    .map_with(|_, e| (None, Some(e.span()))),
+                kw!(End)
+                    .then_ignore(kw!(Loop).not())
+                    .map_with(|_, e| (None, Some(e.span())))
+                    .rewind(),
+            ))
+            .labelled("`end loop`"),
+        )
+        .map(|(x, (end_label, missing))| ((x, end_label), missing))
+        .validate(unclosed!("loop"))
         .map(|(((label, scheme), body), end_label)| StmtKind::Loop {
             label,
             scheme,
@@ -1654,6 +1719,10 @@ fn explain_unclosed(diags: &mut [Diagnostic], tokens: &[(Token, Span)], src_len:
     d.notes.push((end_of_input, UNFINISHED_NOTE.to_string()));
 }
 
+/// Where an unclosed construct's line and column go in its message; filled
+/// in by `syntax::parse_source`, which has the text.
+pub const OPENER_AT: &str = "{opener}";
+
 /// The note at the end of the input of an unclosed construct.
 const UNFINISHED_NOTE: &str = "the text ends here";
 
@@ -1702,6 +1771,54 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
         format!("unexpected {found}")
     };
     match e.reason() {
+        // An `if`, `case` or `loop` closed by the `end` of what encloses it.
+        RichReason::Custom(msg) if msg.starts_with(UNCLOSED) => {
+            let mut words = msg[UNCLOSED.len_utf8()..].split(' ');
+            let word = words.next().unwrap_or("loop").to_string();
+            let start: usize = words.next().and_then(|w| w.parse().ok()).unwrap_or(0);
+            // The construct's own keyword (after a label, `for ... `, `while ...`).
+            let opener = tokens
+                .iter()
+                .filter(|(_, s)| s.start >= start && s.start < span.start)
+                .find(|(t, _)| match word.as_str() {
+                    "if" => *t == Token::Kw(Kw::If),
+                    "case" => *t == Token::Kw(Kw::Case),
+                    _ => matches!(t, Token::Kw(Kw::Loop | Kw::For | Kw::While)),
+                })
+                .map(|(_, s)| *s)
+                .unwrap_or(Span {
+                    start,
+                    end: start,
+                    context: span.context,
+                });
+            // A bare `end;` was taken as the construct's end; `end Name`
+            // belongs to the body around it.
+            let bare = tokens
+                .iter()
+                .skip_while(|(_, s)| s.start < span.start)
+                .nth(1)
+                .is_some_and(|(t, _)| *t == Token::Semi);
+            let (label, hint) = if bare {
+                (
+                    format!("this should be `end {word};`"),
+                    format!("write `end {word};`"),
+                )
+            } else {
+                (
+                    format!("this `end` closes what encloses the `{word}`"),
+                    format!("add `end {word};` before this line"),
+                )
+            };
+            let mut d = Diagnostic::syntax(
+                span,
+                format!("`end {word};` expected to close the `{word}` at {OPENER_AT}"),
+            )
+            .with_label(label)
+            .with_hint(hint);
+            d.notes
+                .push((opener, format!("this `{word}` is not closed")));
+            d
+        }
         // A custom error explains itself; it has no token of its own to show.
         RichReason::Custom(msg) => Diagnostic::syntax(span, msg.clone()),
         _ => {
