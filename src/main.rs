@@ -103,6 +103,10 @@ enum Command {
         /// (t, j1..j5, x, y, z, grip), also when the run ends with an exception.
         #[arg(long, value_name = "FILE")]
         record: Option<PathBuf>,
+        /// Draw the run into FILE.svg: joints against time, and the TCP path from
+        /// above and from the side with the arm's reach (also after an exception).
+        #[arg(long, value_name = "FILE.svg")]
+        plot: Option<PathBuf>,
     },
     /// Parse and check only; report every diagnostic; nothing runs.
     Check {
@@ -247,11 +251,18 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             file,
             robot,
             record,
+            plot,
         }) => {
             if let Some(p) = &record
                 && let Err(e) = record_target(p)
             {
                 eprintln!("adair: --record {}: {e}", p.display());
+                return 2;
+            }
+            if let Some(p) = &plot
+                && let Err(e) = plot_target(p)
+            {
+                eprintln!("adair: --plot {}: {e}", p.display());
                 return 2;
             }
             let desc = match robot.description() {
@@ -305,7 +316,7 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             if std::io::stdin().is_terminal() && std::io::stdout().is_terminal() {
                 s.install_pendant(Box::new(adair::repl::teach::TermPendant::new()));
             }
-            if record.is_some() {
+            if record.is_some() || plot.is_some() {
                 s.start_recording();
             }
             let outcome = s.run_source(&file.to_string_lossy(), &text);
@@ -317,6 +328,12 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 && let Err(e) = write_record(p, &s)
             {
                 eprintln!("adair: --record {}: {e}", p.display());
+                return 2;
+            }
+            if let Some(p) = &plot
+                && let Err(e) = write_plot(p, &s, &file)
+            {
+                eprintln!("adair: --plot {}: {e}", p.display());
                 return 2;
             }
             if let Some(m) = stopped {
@@ -518,6 +535,32 @@ fn record_target(p: &std::path::Path) -> Result<(), String> {
 }
 
 /// Writes the recorded support points when the run has ended.
+/// Checks a `--plot` path before the run: `.svg` in an existing directory.
+fn plot_target(p: &std::path::Path) -> Result<(), String> {
+    if p.extension().and_then(|e| e.to_str()) != Some("svg") {
+        return Err("the file must end in .svg".into());
+    }
+    match p.parent() {
+        Some(d) if !d.as_os_str().is_empty() && !d.is_dir() => {
+            Err(format!("the directory {} does not exist", d.display()))
+        }
+        _ => Ok(()),
+    }
+}
+
+fn write_plot(p: &std::path::Path, s: &Session, file: &std::path::Path) -> Result<(), String> {
+    let Some(st) = s.robot_state() else {
+        return Err("no robot".into());
+    };
+    let samples = st.record.as_deref().unwrap_or(&[]);
+    let title = file
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let text = adair::plot::svg(samples, st.kin.description(), &title);
+    std::fs::write(p, text).map_err(|e| e.to_string())
+}
+
 fn write_record(p: &std::path::Path, s: &Session) -> Result<(), String> {
     let samples = s
         .robot_state()

@@ -215,3 +215,110 @@ fn running_out_of_memory_is_storage_error_at_the_place_that_asked() {
     assert_eq!(code, 2);
     assert!(err.contains("`lots` is not a size"), "{err}");
 }
+
+/// `--plot` draws the run: the three panels, a line per joint, the reach,
+/// start and end, and the time axis of this run (the same support points
+/// `--record` writes); a bad path is refused before anything runs; a run
+/// without motion still gives a picture that says so.
+#[test]
+fn plot_draws_the_run_and_refuses_a_bad_path_first() {
+    let dir = std::env::temp_dir().join(format!("adair-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("dir");
+    let svg = dir.join("square.svg");
+    let csv = dir.join("square.csv");
+    let (code, _, err) = adair(&[
+        "run",
+        "--plot",
+        svg.to_str().unwrap(),
+        "--record",
+        csv.to_str().unwrap(),
+        "examples/square.air",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let text = std::fs::read_to_string(&svg).expect("svg written");
+    assert!(text.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\""));
+    assert!(text.trim_end().ends_with("</svg>"));
+    for part in [
+        "Joints against time",
+        "TCP path from above",
+        "TCP path from the side",
+        "square.air on the RV-M1",
+        "class=\"joint j1\"",
+        "class=\"joint j5\"",
+        "class=\"tcp top\"",
+        "class=\"tcp side\"",
+        "class=\"start\"",
+        "class=\"end\"",
+    ] {
+        assert!(text.contains(part), "missing {part}");
+    }
+    assert_eq!(text.matches("class=\"workspace\"").count(), 2);
+    // The tutorial shows this picture: it must be what adair draws now
+    // (BLESS=1 rewrites it).
+    let shown = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/images/square.svg");
+    if std::env::var_os("BLESS").is_some() {
+        std::fs::write(&shown, &text).expect("bless docs/images/square.svg");
+    }
+    assert!(
+        std::fs::read_to_string(&shown).is_ok_and(|s| s == text),
+        "docs/images/square.svg is not what `adair run --plot` draws now (BLESS=1 rewrites it)"
+    );
+    let rows: Vec<String> = std::fs::read_to_string(&csv)
+        .expect("csv")
+        .lines()
+        .skip(1)
+        .map(str::to_string)
+        .collect();
+    let last_t: f64 = rows
+        .last()
+        .unwrap()
+        .split(',')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(
+        text.contains(&format!("{} support points over {last_t:.3} s", rows.len())),
+        "the plot does not show this run's {} points and {last_t} s",
+        rows.len()
+    );
+
+    let (code, out, err) = adair(&["run", "--plot", "/no/such/dir/x.svg", "examples/square.air"]);
+    assert_eq!((code, out.as_str()), (2, ""), "nothing runs: {err}");
+    assert!(
+        err.contains("adair: --plot /no/such/dir/x.svg: the directory /no/such/dir does not exist"),
+        "{err}"
+    );
+    let (code, _, err) = adair(&["run", "--plot", "x.png", "examples/square.air"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("must end in .svg"), "{err}");
+
+    let still = temp_file("still.air", "Put_Line (\"no motion here\");\n");
+    let empty = dir.join("still.svg");
+    let (code, _, err) = adair(&["run", "--plot", empty.to_str().unwrap(), &still]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        std::fs::read_to_string(&empty)
+            .unwrap()
+            .contains("no motion")
+    );
+
+    // The REPL draws what was done since it started.
+    let repl_svg = dir.join("repl.svg");
+    let input = format!(
+        "InitRobot;\nMoveAxesAbsolute ((0.0, 0.5, 1.0, -0.5, 0.0));\n:plot {}\n:plot x.png\n",
+        repl_svg.display()
+    );
+    let (_, out, err) = adair_stdin(&["repl"], input.as_bytes());
+    assert!(
+        out.contains("wrote") && out.contains("support points"),
+        "{out}{err}"
+    );
+    assert!(
+        format!("{out}{err}").contains(":plot x.png: the file must end in .svg"),
+        "{out}{err}"
+    );
+    let drawn = std::fs::read_to_string(&repl_svg).expect("repl svg");
+    assert!(drawn.contains("class=\"joint j2\"") && drawn.contains("REPL session"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -52,6 +52,14 @@ const COMMANDS: &[(&str, &str)] = &[
     (":where", "the joints and the tool-centre-point frame"),
     (":trace on|off", "print every motion"),
     (":teach", "the teach pendant"),
+    (
+        ":record FILE.csv|.json",
+        "write every support point since the start (or :reset)",
+    ),
+    (
+        ":plot FILE.svg",
+        "draw the motions since the start (or :reset): joints, TCP path",
+    ),
     (":reset", "forget everything declared and start again"),
     (":quit", "leave (Ctrl-D too)"),
 ];
@@ -115,6 +123,8 @@ impl Repl {
                 self.session
                     .install_pendant(Box::new(teach::TermPendant::new()));
             }
+            // Kept for `:record` and `:plot`.
+            self.session.start_recording();
         }
     }
 
@@ -319,6 +329,14 @@ impl Repl {
                 },
             },
             "where" => ok(self.where_text()),
+            "record" | "plot" => match arg {
+                Some(path) => match self.save_run(head == "plot", std::path::Path::new(path)) {
+                    Ok(t) => ok(t),
+                    Err(e) => fail(format!(":{head} {path}: {e}\n")),
+                },
+                None if head == "plot" => fail(":plot FILE.svg\n".into()),
+                None => fail(":record FILE.csv or :record FILE.json\n".into()),
+            },
             "trace" => match arg {
                 Some("on") => {
                     self.trace = true;
@@ -354,6 +372,27 @@ impl Repl {
                 "unknown command `:{other}`; `:help` lists the commands\n"
             )),
         }
+    }
+
+    /// `:record` and `:plot`: what the robot did since the REPL started (or
+    /// since `:reset`), as CSV/JSON support points or as an SVG picture.
+    fn save_run(&self, plot: bool, path: &std::path::Path) -> Result<String, String> {
+        let st = self.session.robot_state().ok_or("no robot")?;
+        let samples = st.record.as_deref().unwrap_or(&[]);
+        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
+        let text = match (plot, ext) {
+            (true, "svg") => crate::plot::svg(samples, st.kin.description(), "REPL session"),
+            (true, _) => return Err("the file must end in .svg".into()),
+            (false, "csv") => crate::services::record::to_csv(samples),
+            (false, "json") => crate::services::record::to_json(samples),
+            (false, _) => return Err("the file must end in .csv or .json".into()),
+        };
+        std::fs::write(path, text).map_err(|e| e.to_string())?;
+        Ok(format!(
+            "wrote {} ({} support points)\n",
+            path.display(),
+            samples.len()
+        ))
     }
 
     fn set_trace(&mut self) {
