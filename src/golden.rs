@@ -133,12 +133,15 @@ pub fn run_text_on(name: &str, text: &str, robot: &str, trace: bool, target: &Ta
             };
         }
     }
+    let warned = SharedBuf::default();
+    s.warnings_to = Some((Box::new(warned.clone()), false));
     let outcome = s.run_source(name, text);
-    let diagnostics = match &outcome {
-        Outcome::Ok => String::new(),
-        Outcome::CheckFailed(d) => crate::diag::render(d, &s.sources, false),
-        Outcome::Raised(d) => crate::diag::render(std::slice::from_ref(d), &s.sources, false),
-    };
+    let diagnostics = warned.take()
+        + &match &outcome {
+            Outcome::Ok => String::new(),
+            Outcome::CheckFailed(d) => crate::diag::render(d, &s.sources, false),
+            Outcome::Raised(d) => crate::diag::render(std::slice::from_ref(d), &s.sources, false),
+        };
     RunText {
         output: buf.take(),
         diagnostics,

@@ -107,11 +107,17 @@ enum Command {
         /// above and from the side with the arm's reach (also after an exception).
         #[arg(long, value_name = "FILE.svg")]
         plot: Option<PathBuf>,
+        /// Treat warnings as errors: nothing runs, exit 2.
+        #[arg(long)]
+        strict: bool,
     },
-    /// Parse and check only; report every diagnostic; nothing runs.
+    /// Parse and check only; report every diagnostic (errors and warnings); nothing runs.
     Check {
         #[arg(required = true)]
         files: Vec<PathBuf>,
+        /// Treat warnings as errors (exit 2).
+        #[arg(long)]
+        strict: bool,
     },
     /// The interactive REPL (script mode, one entry at a time). Reads piped input without a terminal.
     Repl {
@@ -252,6 +258,7 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             robot,
             record,
             plot,
+            strict,
         }) => {
             if let Some(p) = &record
                 && let Err(e) = record_target(p)
@@ -284,6 +291,8 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 }
             };
             let mut s = Session::new(Box::new(std::io::LineWriter::new(std::io::stdout())));
+            s.strict = strict;
+            s.warnings_to = Some((Box::new(std::io::stderr()), color));
             // Ctrl-C stops the motion and ends the program (exit 130).
             let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
             let seen = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
@@ -420,7 +429,7 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 1
             }
         },
-        Some(Command::Check { files }) => {
+        Some(Command::Check { files, strict }) => {
             let mut worst = 0;
             for f in &files {
                 // A file that cannot be read is one problem among the others:
@@ -430,9 +439,13 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                     continue;
                 };
                 let mut s = Session::new(Box::new(std::io::sink()));
-                if let Err(d) = s.check_source(&f.to_string_lossy(), &text, false) {
-                    eprint!("{}", adair::diag::render(&d, &s.sources, color));
-                    worst = 2;
+                s.strict = strict;
+                match s.check_source(&f.to_string_lossy(), &text, false) {
+                    Err(d) => {
+                        eprint!("{}", adair::diag::render(&d, &s.sources, color));
+                        worst = 2;
+                    }
+                    Ok(_) => eprint!("{}", adair::diag::render(&s.warnings, &s.sources, color)),
                 }
             }
             worst

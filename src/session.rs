@@ -51,6 +51,14 @@ pub struct Session {
     pub sources: Sources,
     pub checker: Checker,
     pub machine: Machine,
+    /// Warnings of the last check that passed (tools.md: they never stop a
+    /// run); the caller shows them, see [`Session::take_warnings`].
+    pub warnings: Vec<Diagnostic>,
+    /// `--strict`: a warning fails the check like an error.
+    pub strict: bool,
+    /// Where `run_source` shows the warnings before the program runs, and
+    /// whether in colour (`adair run`: standard error).
+    pub warnings_to: Option<(Box<dyn Write>, bool)>,
 }
 
 /// How a run ended.
@@ -79,6 +87,9 @@ impl Session {
             sources: Sources::default(),
             checker: Checker::new(known),
             machine: Machine::new(out),
+            warnings: Vec::new(),
+            strict: false,
+            warnings_to: None,
         };
         s.machine.resolver = resolve;
         s.checker
@@ -199,11 +210,23 @@ impl Session {
         }
         let (stmts, main) = self.checker.check_unit(&unit);
         diags.extend(self.checker.take_diags());
-        if !diags.is_empty() {
-            diags.sort_by_key(|d| (d.span.context, d.span.start));
+        diags.sort_by_key(|d| (d.span.context, d.span.start));
+        // With errors, only the errors: a warning is often their echo (a
+        // variable "never read" because its use did not check).
+        if diags.iter().any(|d| !d.is_warning()) {
+            diags.retain(|d| !d.is_warning());
             return Err(diags);
         }
+        if self.strict && !diags.is_empty() {
+            return Err(diags);
+        }
+        self.warnings = diags;
         Ok((stmts, if is_script { None } else { main }))
+    }
+
+    /// The warnings of the last successful check, taken.
+    pub fn take_warnings(&mut self) -> Vec<Diagnostic> {
+        std::mem::take(&mut self.warnings)
     }
 
     /// Checks and runs a whole program.
@@ -212,6 +235,13 @@ impl Session {
             Ok(x) => x,
             Err(d) => return Outcome::CheckFailed(d),
         };
+        if !self.warnings.is_empty()
+            && let Some((w, color)) = &mut self.warnings_to
+        {
+            let text = crate::diag::render(&self.warnings, &self.sources, *color);
+            let _ = w.write_all(text.as_bytes());
+            let _ = w.flush();
+        }
         let r = self.machine.run(&self.checker, &stmts, main);
         self.machine.finish();
         match r {

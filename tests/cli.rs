@@ -322,3 +322,26 @@ fn plot_draws_the_run_and_refuses_a_bad_path_first() {
     assert!(drawn.contains("class=\"joint j2\"") && drawn.contains("REPL session"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Warnings never stop a run or fail a check, unless `--strict`.
+#[test]
+fn warnings_stop_nothing_unless_strict() {
+    let f = temp_file(
+        "warned.air",
+        "with Ada.Text_IO; use Ada.Text_IO;\nprocedure Warned is\n   Spare : Integer := 0;\nbegin\n   Put_Line (\"ran\");\nend Warned;\n",
+    );
+    let (code, out, err) = adair(&["run", &f]);
+    assert_eq!((code, out.as_str()), (0, "ran\n"), "{err}");
+    assert!(
+        err.contains("warned.air:3:4: warning: variable `Spare` is never read"),
+        "{err}"
+    );
+    let (code, _, err) = adair(&["check", &f]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("warning: variable `Spare`"), "{err}");
+    let (code, out, err) = adair(&["run", "--strict", &f]);
+    assert_eq!((code, out.as_str()), (2, ""), "nothing runs: {err}");
+    assert!(err.contains("warning: variable `Spare`"), "{err}");
+    let (code, _, _) = adair(&["check", "--strict", &f]);
+    assert_eq!(code, 2);
+}

@@ -187,6 +187,12 @@ impl Checker {
                 kind: StmtKind::Init(var, value),
                 span,
             });
+            if !constant
+                && self.level > 0
+                && let Some(frame) = self.unread.get_mut(self.level as usize - 1)
+            {
+                frame.insert(var, (n.name.clone(), n.span, false));
+            }
             self.declare_checked(
                 n,
                 Entity::Var {
@@ -683,6 +689,7 @@ impl Checker {
         let ret = self.funcs[f as usize].ret;
         let params = self.funcs[f as usize].params.clone();
         self.level += 1;
+        self.unread.push(HashMap::new());
         self.ctx.push(FuncCtx {
             func: Some(f),
             ret,
@@ -715,6 +722,7 @@ impl Checker {
         self.unit_path.pop();
         self.pop_scope();
         let ctx = self.ctx.pop().expect("ctx");
+        self.report_unread();
         self.level -= 1;
         // A statement the parser could not read may have been the return.
         let unreadable = b

@@ -170,6 +170,33 @@ impl Checker {
                 && self.types.get(from).static_range.is_some()
                 && self.types.get(from).static_range == info.static_range;
             if !inside && !same_range {
+                // A static value outside a static range: it will raise.
+                let outside = match (
+                    self.static_value(&ex),
+                    info.static_range,
+                    info.static_frange,
+                ) {
+                    (Some(Static::Int(v)), Some((l, h)), _) => {
+                        Some((v.to_string(), l.to_string(), h.to_string()))
+                    }
+                    (Some(Static::Real(v)), _, Some((l, h))) => Some((
+                        format!("{:?}", exact::to_f64(&v)),
+                        format!("{l:?}"),
+                        format!("{h:?}"),
+                    )),
+                    _ => None,
+                };
+                if let Some((v, l, h)) = outside {
+                    let tn = self.tname(t);
+                    self.err(
+                        Diagnostic::new(
+                            crate::diag::Phase::Warning,
+                            ex.span,
+                            format!("the value {v} is not in range of `{tn}` ({l} .. {h})"),
+                        )
+                        .with_label("Constraint_Error will be raised here at run time"),
+                    );
+                }
                 let span = ex.span;
                 return self.mk(ExKind::RangeCheck(bx(ex), t), t, span);
             }
@@ -729,6 +756,7 @@ impl Checker {
                     back_check: None,
                 }),
                 Some(a) => {
+                    self.warn_degrees(f, p.ty, &a.value);
                     let ex = self.expr(&a.value, Some(p.ty));
                     if p.mode == ast::Mode::In {
                         let ex = self.coerce(ex, p.ty);
@@ -1204,7 +1232,11 @@ impl Checker {
                     let v = v.clone();
                     self.real_lit(v, *ty, sp)
                 }
-                None => self.mk(ExKind::Var(*var), *ty, sp),
+                None => {
+                    let (v, ty) = (*var, *ty);
+                    self.mark_read(v);
+                    self.mk(ExKind::Var(v), ty, sp)
+                }
             },
             Entity::Alias(x) => {
                 let mut x = (**x).clone();
@@ -2821,4 +2853,48 @@ pub(super) fn funcs_of(es: &[Entity]) -> Vec<FuncId> {
 /// `P'Range` or `P'Range (N)`: a range, not a value.
 fn is_range_attr(x: &ast::Expr) -> bool {
     matches!(&x.kind, ExprKind::Attr(_, a, _) if a.key == "range")
+}
+
+impl Checker {
+    /// A literal over 2 pi where AdaIR expects radians (an angle of `RotX`,
+    /// `RotY`, `RotZ`, a component of an `AxesVector`) is almost always
+    /// meant in degrees: warn, and suggest `Rad (...)`.
+    fn warn_degrees(&mut self, f: FuncId, formal: TypeId, actual: &ast::Expr) {
+        fn literal(e: &ast::Expr) -> Option<f64> {
+            match &e.kind {
+                ExprKind::Real(v) => Some(*v),
+                ExprKind::Int(v) => Some(*v as f64),
+                ExprKind::Unary(_, x) => literal(x).map(|v| -v),
+                ExprKind::Paren(x) => literal(x),
+                _ => None,
+            }
+        }
+        let name = self.funcs[f as usize].name.to_ascii_lowercase();
+        let angles: Vec<&ast::Expr> = if ["rotx", "roty", "rotz"].contains(&name.as_str()) {
+            vec![actual]
+        } else if self.types.name(formal).eq_ignore_ascii_case("AxesVector") {
+            match &actual.kind {
+                ExprKind::Aggregate(items) => items.iter().map(|i| &i.value).collect(),
+                _ => Vec::new(),
+            }
+        } else {
+            Vec::new()
+        };
+        for e in angles {
+            if let Some(v) = literal(e)
+                && v.abs() > std::f64::consts::TAU
+            {
+                let text = self.snippet(e.span);
+                self.err(
+                    Diagnostic::new(
+                        crate::diag::Phase::Warning,
+                        e.span,
+                        format!("{text} radians is more than a full turn; did you mean degrees?"),
+                    )
+                    .with_label("AdaIR angles are in radians")
+                    .with_hint(format!("write `Rad ({text})` for {text} degrees")),
+                );
+            }
+        }
+    }
 }

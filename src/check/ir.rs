@@ -12,7 +12,7 @@ pub type ExcId = u32;
 
 /// A variable: the static nesting level of the frame that owns it and its
 /// slot in that frame. Level 0 holds library-level (and script) objects.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Var {
     pub level: u16,
     pub slot: u32,

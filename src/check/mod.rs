@@ -113,6 +113,10 @@ pub struct Checker {
     /// or took from a named number, by the span of its `Real` node.
     exact_reals: HashMap<(usize, usize, u32), exact::Exact>,
     pub diags: Vec<Diagnostic>,
+    /// Per subprogram being checked (one per level above 0): its local
+    /// variables, where each is declared, and whether it has been read
+    /// (for the warning "variable never read").
+    pub(super) unread: Vec<HashMap<Var, (String, Span, bool)>>,
     /// Hashes of the diagnostics recorded (see `err`).
     diag_keys: std::collections::HashSet<u64>,
     texts: HashMap<u32, Rc<str>>,
@@ -171,6 +175,7 @@ impl Checker {
             exact_reals: HashMap::new(),
             diags: Vec::new(),
             diag_keys: Default::default(),
+            unread: Vec::new(),
             texts: HashMap::new(),
             known_builtin,
             import_profile: None,
@@ -796,4 +801,51 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
         prev = cur;
     }
     prev[b.len()]
+}
+
+impl Checker {
+    /// Marks a variable as read (see `unread`).
+    pub(super) fn mark_read(&mut self, v: Var) {
+        if v.level > 0
+            && let Some(frame) = self.unread.get_mut(v.level as usize - 1)
+            && let Some(e) = frame.get_mut(&v)
+        {
+            e.2 = true;
+        }
+    }
+
+    /// Whether a variable has been read (true for untracked ones).
+    pub(super) fn was_read(&self, v: Var) -> bool {
+        v.level == 0
+            || self
+                .unread
+                .get(v.level as usize - 1)
+                .and_then(|f| f.get(&v))
+                .is_none_or(|e| e.2)
+    }
+
+    /// Ends a subprogram's tracking: a warning for each local variable that
+    /// was never read.
+    pub(super) fn report_unread(&mut self) {
+        let Some(frame) = self.unread.pop() else {
+            return;
+        };
+        let mut never: Vec<(String, Span)> = frame
+            .into_values()
+            .filter(|e| !e.2)
+            .map(|e| (e.0, e.1))
+            .collect();
+        never.sort_by_key(|e| e.1.start);
+        for (name, span) in never {
+            self.err(
+                Diagnostic::new(
+                    crate::diag::Phase::Warning,
+                    span,
+                    format!("variable `{name}` is never read"),
+                )
+                .with_label("declared here")
+                .with_hint("remove it, or use it; a value that is only assigned is lost"),
+            );
+        }
+    }
 }

@@ -101,7 +101,15 @@ impl Checker {
                 return;
             }
             S::Assign(target, value) => {
+                // Assigning a variable is not reading it.
+                let before = self.target_var(target).map(|v| (v, self.was_read(v)));
                 let t = self.expr(target, None);
+                if let Some((v, false)) = before
+                    && let Some(frame) = self.unread.get_mut((v.level as usize).wrapping_sub(1))
+                    && let Some(e) = frame.get_mut(&v)
+                {
+                    e.2 = false;
+                }
                 self.check_variable(&t, target.span, "the target of an assignment");
                 let ty = t.ty;
                 // An aggregate assigned to a slice takes the slice's bounds
@@ -567,5 +575,18 @@ fn is_name(e: &Ex) -> bool {
         ExKind::Var(_) | ExKind::Deref(_) => true,
         ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _, _) => is_name(p),
         _ => false,
+    }
+}
+
+impl Checker {
+    /// The variable a plain-name assignment target denotes.
+    fn target_var(&self, target: &ast::Expr) -> Option<Var> {
+        let ast::ExprKind::Name(n) = &target.kind else {
+            return None;
+        };
+        match self.lookup(&n.key).first() {
+            Some(Entity::Var { var, .. }) => Some(*var),
+            _ => None,
+        }
     }
 }

@@ -239,11 +239,17 @@ impl Repl {
         };
         match self.session.check_source(&name, text, true) {
             Ok((stmts, _)) => {
+                let warnings = self.session.take_warnings();
+                let warned = if warnings.is_empty() {
+                    String::new()
+                } else {
+                    self.render(&warnings)
+                };
                 let r = self
                     .session
                     .machine
                     .run(&self.session.checker, &stmts, None);
-                match r {
+                let mut reply = match r {
                     Ok(()) => match self.session.take_stopped() {
                         // Ctrl-C stopped the motion: say where, raise nothing.
                         Some(m) => Reply {
@@ -254,7 +260,9 @@ impl Repl {
                         None => Reply::default(),
                     },
                     Err(o) => self.raised(&o),
-                }
+                };
+                reply.text.insert_str(0, &warned);
+                reply
             }
             Err(d) => {
                 // Nothing of a failed entry is kept.
