@@ -149,6 +149,8 @@ fn repl_multiline_completion_and_values() {
     t.wait_for("adair>");
     // A multi-line entry continues until the parser sees it complete.
     t.keys(&["for I in 1 .. 3 loop", "Enter"]);
+    // ... at its own prompt.
+    t.wait_for("   ...>");
     t.keys(&["Put (Integer'Image (I));", "Enter"]);
     t.keys(&["end loop;", "Enter"]);
     t.wait_for(" 1 2 3");
@@ -158,6 +160,12 @@ fn repl_multiline_completion_and_values() {
     t.keys(&["ValueFrameAbsol", "Tab", "Enter"]);
     let s = t.wait_for("889.0000");
     assert!(s.contains("1.0000"), "{s}");
+    // Tab on an ambiguous name completes the common part; Tab again lists
+    // the candidates.
+    t.keys(&["MoveFrame", "Tab", "Tab"]);
+    let s = t.wait_for("MoveFrameRelative");
+    assert!(s.contains("MoveFrameAbsolute"), "{s}");
+    t.keys(&["C-c"]);
     t.keys(&[":quit", "Enter"]);
 }
 

@@ -150,15 +150,16 @@ impl Highlighter for AdaHelper {
     }
 }
 
+/// Every line is taken as typed: an unfinished entry goes on at the
+/// continuation prompt (`interactive_on`), not inside rustyline's buffer.
 impl Validator for AdaHelper {
-    fn validate(&self, ctx: &mut ValidationContext) -> rustyline::Result<ValidationResult> {
-        if unfinished(ctx.input()) {
-            Ok(ValidationResult::Incomplete)
-        } else {
-            Ok(ValidationResult::Valid(None))
-        }
+    fn validate(&self, _ctx: &mut ValidationContext) -> rustyline::Result<ValidationResult> {
+        Ok(ValidationResult::Valid(None))
     }
 }
+
+/// The prompt of a line that continues an unfinished entry.
+pub const CONTINUE: &str = "   ...> ";
 
 impl Helper for AdaHelper {}
 
@@ -255,16 +256,21 @@ pub fn interactive_on(color: bool, port: Option<crate::driver::serial::PortSetti
     }
     repl.use_terminal();
     repl.session.machine.input = Box::new(std::io::BufReader::new(std::io::stdin()));
-    let mut editor: Editor<AdaHelper, rustyline::history::DefaultHistory> = match Editor::new() {
-        Ok(e) => e,
-        Err(e) => {
-            let _ = writeln!(
-                std::io::stderr(),
-                "adair: cannot start the line editor: {e}"
-            );
-            return 2;
-        }
-    };
+    // Tab completes what is common to all candidates; a second Tab lists them.
+    let config = rustyline::Config::builder()
+        .completion_type(rustyline::CompletionType::List)
+        .build();
+    let mut editor: Editor<AdaHelper, rustyline::history::DefaultHistory> =
+        match Editor::with_config(config) {
+            Ok(e) => e,
+            Err(e) => {
+                let _ = writeln!(
+                    std::io::stderr(),
+                    "adair: cannot start the line editor: {e}"
+                );
+                return 2;
+            }
+        };
     // After the editor: rustyline installs its own SIGINT handler when it
     // opens the terminal; while an entry runs, Ctrl-C must reach ours.
     {
@@ -289,9 +295,25 @@ pub fn interactive_on(color: bool, port: Option<crate::driver::serial::PortSetti
         "adair {}: AdaIR on a simulated RV-M1. :help lists the services, :quit leaves.",
         env!("CARGO_PKG_VERSION")
     );
+    // The lines of an entry that is not finished yet (an open `loop`, `if`,
+    // `declare`, subprogram or package).
+    let mut pending = String::new();
     loop {
-        match editor.readline("adair> ") {
+        let prompt = if pending.is_empty() {
+            "adair> "
+        } else {
+            CONTINUE
+        };
+        match editor.readline(prompt) {
             Ok(line) => {
+                if !pending.is_empty() {
+                    pending.push('\n');
+                }
+                pending.push_str(&line);
+                if unfinished(&pending) {
+                    continue;
+                }
+                let line = std::mem::take(&mut pending);
                 let _ = editor.add_history_entry(line.as_str());
                 flag.store(false, Ordering::SeqCst);
                 let reply = repl.entry(&line);
@@ -309,7 +331,8 @@ pub fn interactive_on(color: bool, port: Option<crate::driver::serial::PortSetti
                     h.refresh(&repl);
                 }
             }
-            Err(ReadlineError::Interrupted) => continue,
+            // Ctrl-C drops an unfinished entry.
+            Err(ReadlineError::Interrupted) => pending.clear(),
             Err(ReadlineError::Eof) => break,
             Err(e) => {
                 let _ = writeln!(std::io::stderr(), "adair: {e}");
