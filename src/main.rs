@@ -570,7 +570,7 @@ fn write_plot(p: &std::path::Path, s: &Session, file: &std::path::Path) -> Resul
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
-    let text = adair::plot::svg(samples, st.kin.description(), &title);
+    let text = adair::plot::svg(samples, st.kin.description(), &title)?;
     std::fs::write(p, text).map_err(|e| e.to_string())
 }
 

@@ -1,205 +1,125 @@
 //! `--plot FILE.svg`: a picture of a run, from the samples `--record` keeps
 //! (tools.md): the joints against time, and the TCP path seen from above
-//! and from the side, with the arm's reach drawn.
-//!
-//! The SVG is written here, not with a plotting crate: plotters lays out
-//! text with a font file even for SVG, which a fresh machine may not have,
-//! while an SVG viewer renders `<text>` with its own fonts. What is drawn is
-//! polylines, circles and text; [`nice_ticks`] chooses the axis labels.
+//! and from the side, with the arm's reach drawn. Drawn with plotters'
+//! SVG backend; plotters measures text with a font, so one is built in
+//! (`assets/fonts`, DejaVu Sans, free licence beside it): a fresh machine
+//! needs no system fonts. The SVG names the family `sans-serif`, which the
+//! viewer renders with its own fonts.
 
 use crate::kinematics::{RobotDescription, deg};
 use crate::services::record::Sample;
-use std::fmt::Write as _;
+use plotters::prelude::*;
 
-const WIDTH: f64 = 1000.0;
-const HEIGHT: f64 = 760.0;
+const WIDTH: u32 = 1000;
+const HEIGHT: u32 = 780;
 /// One colour per joint, J1 to J5.
-const COLORS: [&str; 5] = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e"];
+const COLORS: [RGBColor; 5] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(148, 103, 189),
+    RGBColor(255, 127, 14),
+];
+const PATH: RGBColor = RGBColor(51, 51, 51);
+const REACH: RGBColor = RGBColor(150, 150, 150);
+const FLOOR: RGBColor = RGBColor(140, 86, 75);
 
-/// A panel: where it is on the page and which data range it shows.
-struct Panel {
-    x: f64,
-    y: f64,
-    w: f64,
-    h: f64,
-    xr: (f64, f64),
-    yr: (f64, f64),
+/// The font plotters measures text with, registered once.
+fn font() -> bool {
+    static DONE: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *DONE.get_or_init(|| {
+        plotters::style::register_font(
+            "sans-serif",
+            FontStyle::Normal,
+            include_bytes!("../assets/fonts/DejaVuSans-ExtraLight.ttf"),
+        )
+        .is_ok()
+    })
 }
 
-impl Panel {
-    fn px(&self, v: f64) -> f64 {
-        self.x + (v - self.xr.0) / (self.xr.1 - self.xr.0) * self.w
-    }
-    fn py(&self, v: f64) -> f64 {
-        self.y + self.h - (v - self.yr.0) / (self.yr.1 - self.yr.0) * self.h
-    }
-    /// Widens one range so that a unit is as long on both axes (a path
-    /// seen from above must not be squashed).
-    fn equal_aspect(mut self) -> Panel {
-        let sx = (self.xr.1 - self.xr.0) / self.w;
-        let sy = (self.yr.1 - self.yr.0) / self.h;
-        if sx > sy {
-            let mid = (self.yr.0 + self.yr.1) / 2.0;
-            let half = sx * self.h / 2.0;
-            self.yr = (mid - half, mid + half);
-        } else {
-            let mid = (self.xr.0 + self.xr.1) / 2.0;
-            let half = sy * self.w / 2.0;
-            self.xr = (mid - half, mid + half);
-        }
-        self
-    }
-}
-
-/// About `n` round axis values covering `lo .. hi` (steps of 1, 2 or 5
-/// times a power of ten).
-pub fn nice_ticks(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    if !(lo.is_finite() && hi.is_finite()) || hi <= lo || n == 0 {
-        return vec![lo];
-    }
-    let raw = (hi - lo) / n as f64;
-    let mag = 10f64.powf(raw.log10().floor());
-    let step = [1.0, 2.0, 5.0, 10.0]
-        .iter()
-        .map(|m| m * mag)
-        .find(|s| *s >= raw)
-        .unwrap_or(10.0 * mag);
-    let mut v = (lo / step).ceil() * step;
-    let mut out = Vec::new();
-    while v <= hi + step * 1e-9 {
-        out.push(if v.abs() < step * 1e-9 { 0.0 } else { v });
-        v += step;
-    }
-    out
-}
-
-fn fmt_tick(v: f64) -> String {
-    if v.fract().abs() < 1e-9 {
-        format!("{v:.0}")
+/// A range widened so that a millimetre is as long on both axes of a
+/// `w` x `h` pixel panel (a path seen from above must not be squashed).
+fn equal_aspect(xr: (f64, f64), yr: (f64, f64), w: f64, h: f64) -> ((f64, f64), (f64, f64)) {
+    let sx = (xr.1 - xr.0) / w;
+    let sy = (yr.1 - yr.0) / h;
+    if sx > sy {
+        let mid = (yr.0 + yr.1) / 2.0;
+        let half = sx * h / 2.0;
+        (xr, (mid - half, mid + half))
     } else {
-        format!("{v:.2}")
-            .trim_end_matches('0')
-            .trim_end_matches('.')
-            .to_string()
+        let mid = (xr.0 + xr.1) / 2.0;
+        let half = sy * w / 2.0;
+        ((mid - half, mid + half), yr)
     }
 }
 
-fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
+/// Points of a circle of radius `r` about `c`.
+fn circle(c: (f64, f64), r: f64) -> Vec<(f64, f64)> {
+    (0..=180)
+        .map(|i| {
+            let a = i as f64 * std::f64::consts::TAU / 180.0;
+            (c.0 + r * a.cos(), c.1 + r * a.sin())
+        })
+        .collect()
 }
 
-fn frame(out: &mut String, p: &Panel, title: &str, xlabel: &str, ylabel: &str) {
-    let _ = writeln!(
-        out,
-        r##"<g class="panel"><text x="{:.1}" y="{:.1}" font-size="15" font-weight="bold">{}</text>"##,
-        p.x,
-        p.y - 10.0,
-        escape(title)
-    );
-    let _ = writeln!(
-        out,
-        r##"<rect x="{:.1}" y="{:.1}" width="{:.1}" height="{:.1}" fill="none" stroke="#888"/>"##,
-        p.x, p.y, p.w, p.h
-    );
-    for t in nice_ticks(p.xr.0, p.xr.1, 8) {
-        let x = p.px(t);
-        let _ = writeln!(
-            out,
-            r##"<line x1="{x:.1}" y1="{:.1}" x2="{x:.1}" y2="{:.1}" stroke="#eee"/><text x="{x:.1}" y="{:.1}" font-size="11" text-anchor="middle">{}</text>"##,
-            p.y,
-            p.y + p.h,
-            p.y + p.h + 14.0,
-            fmt_tick(t)
-        );
-    }
-    for t in nice_ticks(p.yr.0, p.yr.1, 6) {
-        let y = p.py(t);
-        let _ = writeln!(
-            out,
-            r##"<line x1="{:.1}" y1="{y:.1}" x2="{:.1}" y2="{y:.1}" stroke="#eee"/><text x="{:.1}" y="{:.1}" font-size="11" text-anchor="end">{}</text>"##,
-            p.x,
-            p.x + p.w,
-            p.x - 4.0,
-            y + 4.0,
-            fmt_tick(t)
-        );
-    }
-    let _ = writeln!(
-        out,
-        r##"<text x="{:.1}" y="{:.1}" font-size="12" text-anchor="middle">{}</text>"##,
-        p.x + p.w / 2.0,
-        p.y + p.h + 30.0,
-        escape(xlabel)
-    );
-    let _ = writeln!(
-        out,
-        r##"<text x="{:.1}" y="{:.1}" font-size="12" text-anchor="middle" transform="rotate(-90 {:.1} {:.1})">{}</text></g>"##,
-        p.x - 38.0,
-        p.y + p.h / 2.0,
-        p.x - 38.0,
-        p.y + p.h / 2.0,
-        escape(ylabel)
-    );
-}
+type Area<'a> = DrawingArea<SVGBackend<'a>, plotters::coord::Shift>;
 
-fn polyline(out: &mut String, p: &Panel, pts: &[(f64, f64)], color: &str, class: &str) {
-    let mut d = String::new();
-    for (x, y) in pts {
-        let _ = write!(d, "{:.1},{:.1} ", p.px(*x), p.py(*y));
-    }
-    let _ = writeln!(
-        out,
-        r##"<polyline class="{class}" points="{}" fill="none" stroke="{color}" stroke-width="1.6"/>"##,
-        d.trim_end()
-    );
-}
-
-/// Start (green circle) and end (red square) of a path.
-fn ends(out: &mut String, p: &Panel, first: (f64, f64), last: (f64, f64)) {
-    let _ = writeln!(
-        out,
-        r##"<circle class="start" cx="{:.1}" cy="{:.1}" r="5" fill="#2ca02c"><title>start</title></circle>"##,
-        p.px(first.0),
-        p.py(first.1)
-    );
-    let _ = writeln!(
-        out,
-        r##"<rect class="end" x="{:.1}" y="{:.1}" width="9" height="9" fill="#d62728"><title>end</title></rect>"##,
-        p.px(last.0) - 4.5,
-        p.py(last.1) - 4.5
-    );
+fn err(e: impl std::fmt::Display) -> String {
+    format!("cannot draw the plot: {e}")
 }
 
 /// The SVG of a run on `robot`: three panels, or a note when nothing moved.
-pub fn svg(samples: &[Sample], robot: &RobotDescription, title: &str) -> String {
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        r##"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="sans-serif">"##
-    );
-    let _ = writeln!(out, r##"<rect width="100%" height="100%" fill="white"/>"##);
-    let _ = writeln!(
-        out,
-        r##"<text x="20" y="28" font-size="18">{} on the {}</text>"##,
-        escape(title),
-        escape(robot.name())
-    );
-    let links = robot.links();
-    // The farthest the TCP gets from the shoulder (arm stretched).
-    let reach = links.l2 + links.l3 + links.l4 + links.tool;
-    if samples.is_empty() {
-        let _ = writeln!(
-            out,
-            r##"<text class="no-motion" x="20" y="70" font-size="15">no motion: the program moved no joint</text></svg>"##
-        );
-        return out;
+pub fn svg(samples: &[Sample], robot: &RobotDescription, title: &str) -> Result<String, String> {
+    if !font() {
+        return Err("the built-in font does not load".into());
     }
-    let t_end = samples.last().map_or(0.0, |s| s.t).max(1e-3);
+    let mut out = String::new();
+    {
+        let root = SVGBackend::with_string(&mut out, (WIDTH, HEIGHT)).into_drawing_area();
+        root.fill(&WHITE).map_err(err)?;
+        let root = root
+            .titled(
+                &format!("{title} on the {}", robot.name()),
+                ("sans-serif", 20),
+            )
+            .map_err(err)?;
+        if samples.is_empty() {
+            root.draw(&Text::new(
+                "no motion: the program moved no joint",
+                (20, 30),
+                ("sans-serif", 16),
+            ))
+            .map_err(err)?;
+            root.present().map_err(err)?;
+        } else {
+            let (top, bottom) = root.split_vertically(360);
+            let (above, side) = bottom.split_horizontally(500);
+            joints_panel(&top, samples)?;
+            let links = robot.links();
+            // The farthest the TCP gets from the shoulder (arm stretched).
+            let reach = links.l2 + links.l3 + links.l4 + links.tool;
+            above_panel(&above, samples, reach)?;
+            side_panel(&side, samples, reach, links.l1)?;
+            root.present().map_err(err)?;
+        }
+    }
+    if let Some(n) = samples.last() {
+        out = out.replace(
+            "</svg>",
+            &format!(
+                "<!-- {} support points over {:.3} s; reach {:.0} mm -->\n</svg>",
+                samples.len(),
+                n.t,
+                robot.links().l2 + robot.links().l3 + robot.links().l4 + robot.links().tool
+            ),
+        );
+    }
+    Ok(out)
+}
 
-    // Joints against time, degrees, with each joint's limits as the range.
+fn joints_panel(area: &Area<'_>, samples: &[Sample]) -> Result<(), String> {
+    let t_end = samples.last().map_or(0.0, |s| s.t).max(1e-3);
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
     for s in samples {
         for q in s.joints.iter() {
@@ -208,110 +128,151 @@ pub fn svg(samples: &[Sample], robot: &RobotDescription, title: &str) -> String 
         }
     }
     let pad = ((hi - lo) * 0.08).max(5.0);
-    let joints = Panel {
-        x: 70.0,
-        y: 70.0,
-        w: 760.0,
-        h: 260.0,
-        xr: (0.0, t_end),
-        yr: (lo - pad, hi + pad),
-    };
-    frame(
-        &mut out,
-        &joints,
-        "Joints against time",
-        "virtual time (s)",
-        "joint angle (deg)",
-    );
+    let mut chart = ChartBuilder::on(area)
+        .caption("Joints against time", ("sans-serif", 16))
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(55)
+        .build_cartesian_2d(0.0..t_end, (lo - pad)..(hi + pad))
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc("virtual time (s)")
+        .y_desc("joint angle (deg)")
+        .draw()
+        .map_err(err)?;
     for (j, color) in COLORS.iter().enumerate() {
-        let pts: Vec<(f64, f64)> = samples.iter().map(|s| (s.t, deg(s.joints[j]))).collect();
-        polyline(&mut out, &joints, &pts, color, &format!("joint j{}", j + 1));
-        let y = 90.0 + 20.0 * j as f64;
-        let _ = writeln!(
-            out,
-            r##"<line x1="850" y1="{y:.1}" x2="875" y2="{y:.1}" stroke="{color}" stroke-width="3"/><text x="882" y="{:.1}" font-size="12">J{}</text>"##,
-            y + 4.0,
-            j + 1,
-        );
+        chart
+            .draw_series(LineSeries::new(
+                samples.iter().map(|s| (s.t, deg(s.joints[j]))),
+                color.stroke_width(2),
+            ))
+            .map_err(err)?
+            .label(format!("J{}", j + 1))
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3))
+            });
     }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()
+        .map_err(err)?;
+    Ok(())
+}
 
-    // The TCP from above: x, y, with the reach around the waist axis.
+/// Start (green circle) and end (red square) of a path.
+fn ends<DB: DrawingBackend>(
+    chart: &mut ChartContext<
+        '_,
+        DB,
+        Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+    >,
+    first: (f64, f64),
+    last: (f64, f64),
+) -> Result<(), String> {
+    chart
+        .draw_series(std::iter::once(Circle::new(first, 6, GREEN.filled())))
+        .map_err(|_| "cannot draw the start".to_string())?;
+    chart
+        .draw_series(std::iter::once(
+            EmptyElement::at(last) + Rectangle::new([(-5, -5), (5, 5)], RED.filled()),
+        ))
+        .map_err(|_| "cannot draw the end".to_string())?;
+    Ok(())
+}
+
+fn above_panel(area: &Area<'_>, samples: &[Sample], reach: f64) -> Result<(), String> {
+    let r = reach * 1.05;
     let xs = samples.iter().map(|s| s.tcp[0]);
     let ys = samples.iter().map(|s| s.tcp[1]);
-    let r = reach * 1.05;
-    let top = Panel {
-        x: 70.0,
-        y: 400.0,
-        w: 400.0,
-        h: 300.0,
-        xr: (xs.clone().fold(-r, f64::min), xs.fold(r, f64::max)),
-        yr: (ys.clone().fold(-r, f64::min), ys.fold(r, f64::max)),
-    }
-    .equal_aspect();
-    frame(&mut out, &top, "TCP path from above", "x (mm)", "y (mm)");
-    let _ = writeln!(
-        out,
-        r##"<circle class="workspace" cx="{:.1}" cy="{:.1}" r="{:.1}" fill="none" stroke="#999" stroke-dasharray="6 4"><title>reach {reach:.0} mm</title></circle>"##,
-        top.px(0.0),
-        top.py(0.0),
-        top.px(reach) - top.px(0.0)
+    let (xr, yr) = equal_aspect(
+        (xs.clone().fold(-r, f64::min), xs.fold(r, f64::max)),
+        (ys.clone().fold(-r, f64::min), ys.fold(r, f64::max)),
+        420.0,
+        330.0,
     );
+    let mut chart = ChartBuilder::on(area)
+        .caption("TCP path from above", ("sans-serif", 16))
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(55)
+        .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc("x (mm)")
+        .y_desc("y (mm)")
+        .draw()
+        .map_err(err)?;
+    chart
+        .draw_series(std::iter::once(PathElement::new(
+            circle((0.0, 0.0), reach),
+            REACH.stroke_width(1),
+        )))
+        .map_err(err)?
+        .label("reach");
     let path: Vec<(f64, f64)> = samples.iter().map(|s| (s.tcp[0], s.tcp[1])).collect();
-    polyline(&mut out, &top, &path, "#333", "tcp top");
-    ends(&mut out, &top, path[0], path[path.len() - 1]);
+    chart
+        .draw_series(LineSeries::new(path.clone(), PATH.stroke_width(2)))
+        .map_err(err)?;
+    ends(&mut chart, path[0], path[path.len() - 1])
+}
 
-    // The TCP from the side: distance from the waist axis, height; the
-    // reach is a circle about the shoulder.
+fn side_panel(
+    area: &Area<'_>,
+    samples: &[Sample],
+    reach: f64,
+    shoulder: f64,
+) -> Result<(), String> {
+    let r = reach * 1.05;
     let rz: Vec<(f64, f64)> = samples
         .iter()
         .map(|s| (s.tcp[0].hypot(s.tcp[1]), s.tcp[2]))
         .collect();
-    let side = Panel {
-        x: 560.0,
-        y: 400.0,
-        w: 400.0,
-        h: 300.0,
-        xr: (
+    let (xr, yr) = equal_aspect(
+        (
             rz.iter().map(|p| p.0).fold(-0.2 * reach, f64::min),
             rz.iter().map(|p| p.0).fold(r, f64::max),
         ),
-        yr: (
-            rz.iter().map(|p| p.1).fold(links.l1 - r, f64::min),
-            rz.iter().map(|p| p.1).fold(links.l1 + r, f64::max),
+        (
+            rz.iter().map(|p| p.1).fold(shoulder - r, f64::min),
+            rz.iter().map(|p| p.1).fold(shoulder + r, f64::max),
         ),
-    }
-    .equal_aspect();
-    frame(
-        &mut out,
-        &side,
-        "TCP path from the side",
-        "distance from the waist axis (mm)",
-        "z (mm)",
+        420.0,
+        330.0,
     );
-    let _ = writeln!(
-        out,
-        r##"<circle class="workspace" cx="{:.1}" cy="{:.1}" r="{:.1}" fill="none" stroke="#999" stroke-dasharray="6 4"><title>reach {reach:.0} mm about the shoulder</title></circle>"##,
-        side.px(0.0),
-        side.py(links.l1),
-        side.px(reach) - side.px(0.0)
-    );
-    let _ = writeln!(
-        out,
-        r##"<line class="floor" x1="{:.1}" y1="{y:.1}" x2="{:.1}" y2="{y:.1}" stroke="#8c564b" stroke-width="2"><title>the robot's base plane (z = 0)</title></line>"##,
-        side.x,
-        side.x + side.w,
-        y = side.py(0.0)
-    );
-    polyline(&mut out, &side, &rz, "#333", "tcp side");
-    ends(&mut out, &side, rz[0], rz[rz.len() - 1]);
-    let _ = writeln!(
-        out,
-        r##"<text x="70" y="745" font-size="12">green circle: start, red square: end, dashed: the arm's reach ({reach:.0} mm from the shoulder); {} support points over {:.3} s</text>"##,
-        samples.len(),
-        t_end
-    );
-    out.push_str("</svg>\n");
-    out
+    let mut chart = ChartBuilder::on(area)
+        .caption("TCP path from the side", ("sans-serif", 16))
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(55)
+        .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc("distance from the waist axis (mm)")
+        .y_desc("z (mm)")
+        .draw()
+        .map_err(err)?;
+    chart
+        .draw_series(std::iter::once(PathElement::new(
+            circle((0.0, shoulder), reach),
+            REACH.stroke_width(1),
+        )))
+        .map_err(err)?;
+    chart
+        .draw_series(std::iter::once(PathElement::new(
+            vec![(xr.0, 0.0), (xr.1, 0.0)],
+            FLOOR.stroke_width(2),
+        )))
+        .map_err(err)?;
+    chart
+        .draw_series(LineSeries::new(rz.clone(), PATH.stroke_width(2)))
+        .map_err(err)?;
+    ends(&mut chart, rz[0], rz[rz.len() - 1])
 }
 
 #[cfg(test)]
@@ -319,38 +280,23 @@ mod tests {
     use super::*;
 
     #[test]
-    fn ticks_are_round_and_cover_the_range() {
-        assert_eq!(
-            nice_ticks(0.0, 10.0, 5),
-            vec![0.0, 2.0, 4.0, 6.0, 8.0, 10.0]
-        );
-        assert_eq!(nice_ticks(-90.0, 90.0, 4), vec![-50.0, 0.0, 50.0]);
-        let t = nice_ticks(0.0, 2.37, 8);
-        assert_eq!(t.first(), Some(&0.0));
-        assert!(t.last().is_some_and(|l| *l <= 2.37 && *l >= 2.0), "{t:?}");
-        assert_eq!(nice_ticks(5.0, 5.0, 4), vec![5.0]);
-        assert_eq!(nice_ticks(f64::NAN, 1.0, 4).len(), 1);
-    }
-
-    #[test]
     fn equal_aspect_makes_a_millimetre_as_long_on_both_axes() {
-        let p = Panel {
-            x: 0.0,
-            y: 0.0,
-            w: 400.0,
-            h: 300.0,
-            xr: (-100.0, 100.0),
-            yr: (-100.0, 100.0),
-        }
-        .equal_aspect();
-        let sx = (p.px(100.0) - p.px(0.0)) / 100.0;
-        let sy = (p.py(0.0) - p.py(100.0)) / 100.0;
+        let (xr, yr) = equal_aspect((-100.0, 100.0), (-100.0, 100.0), 400.0, 300.0);
+        let sx = 400.0 / (xr.1 - xr.0);
+        let sy = 300.0 / (yr.1 - yr.0);
         assert!((sx - sy).abs() < 1e-9, "{sx} {sy}");
-        assert!(p.xr.0 <= -100.0 && p.xr.1 >= 100.0);
+        assert!(xr.0 <= -100.0 && xr.1 >= 100.0 && yr.0 <= -100.0 && yr.1 >= 100.0);
     }
 
     #[test]
-    fn text_is_escaped() {
-        assert_eq!(escape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
+    fn the_circle_has_its_radius() {
+        for (x, y) in circle((0.0, 200.0), 50.0) {
+            assert!(((x * x + (y - 200.0) * (y - 200.0)).sqrt() - 50.0).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn the_built_in_font_loads() {
+        assert!(font());
     }
 }

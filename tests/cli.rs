@@ -236,23 +236,31 @@ fn plot_draws_the_run_and_refuses_a_bad_path_first() {
     ]);
     assert_eq!(code, 0, "{err}");
     let text = std::fs::read_to_string(&svg).expect("svg written");
-    assert!(text.starts_with("<svg xmlns=\"http://www.w3.org/2000/svg\""));
+    assert!(text.starts_with("<svg ") && text.contains("xmlns=\"http://www.w3.org/2000/svg\""));
     assert!(text.trim_end().ends_with("</svg>"));
     for part in [
         "Joints against time",
         "TCP path from above",
         "TCP path from the side",
         "square.air on the RV-M1",
-        "class=\"joint j1\"",
-        "class=\"joint j5\"",
-        "class=\"tcp top\"",
-        "class=\"tcp side\"",
-        "class=\"start\"",
-        "class=\"end\"",
+        // One line per joint, in its colour, named in the legend.
+        "stroke=\"#1F77B4\"",
+        "stroke=\"#D62728\"",
+        "stroke=\"#2CA02C\"",
+        "stroke=\"#9467BD\"",
+        "stroke=\"#FF7F0E\"",
+        "\nJ1\n",
+        "\nJ5\n",
+        // Start and end of the TCP path.
+        "fill=\"#00FF00\"",
+        "fill=\"#FF0000\"",
+        // The base plane in the side view.
+        "stroke=\"#8C564B\"",
     ] {
         assert!(text.contains(part), "missing {part}");
     }
-    assert_eq!(text.matches("class=\"workspace\"").count(), 2);
+    // The reach, seen from above and from the side.
+    assert_eq!(text.matches("stroke=\"#969696\"").count(), 2);
     // The tutorial shows this picture: it must be what adair draws now
     // (BLESS=1 rewrites it).
     let shown = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/images/square.svg");
@@ -278,7 +286,10 @@ fn plot_draws_the_run_and_refuses_a_bad_path_first() {
         .parse()
         .unwrap();
     assert!(
-        text.contains(&format!("{} support points over {last_t:.3} s", rows.len())),
+        text.contains(&format!(
+            "{} support points over {last_t:.3} s;",
+            rows.len()
+        )),
         "the plot does not show this run's {} points and {last_t} s",
         rows.len()
     );
@@ -319,7 +330,7 @@ fn plot_draws_the_run_and_refuses_a_bad_path_first() {
         "{out}{err}"
     );
     let drawn = std::fs::read_to_string(&repl_svg).expect("repl svg");
-    assert!(drawn.contains("class=\"joint j2\"") && drawn.contains("REPL session"));
+    assert!(drawn.contains("\nJ2\n") && drawn.contains("REPL session"));
     let _ = std::fs::remove_dir_all(&dir);
 }
 

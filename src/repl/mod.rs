@@ -389,7 +389,7 @@ impl Repl {
         let samples = st.record.as_deref().unwrap_or(&[]);
         let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
         let text = match (plot, ext) {
-            (true, "svg") => crate::plot::svg(samples, st.kin.description(), "REPL session"),
+            (true, "svg") => crate::plot::svg(samples, st.kin.description(), "REPL session")?,
             (true, _) => return Err("the file must end in .svg".into()),
             (false, "csv") => crate::services::record::to_csv(samples),
             (false, "json") => crate::services::record::to_json(samples),
