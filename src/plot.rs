@@ -118,6 +118,36 @@ pub fn svg(samples: &[Sample], robot: &RobotDescription, title: &str) -> Result<
     Ok(out)
 }
 
+type Chart<'a, 'b> = ChartContext<
+    'a,
+    SVGBackend<'b>,
+    Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+>;
+
+/// A panel with its caption, axes and grid.
+fn panel<'a, 'b>(
+    area: &'a Area<'b>,
+    caption: &str,
+    xr: (f64, f64),
+    yr: (f64, f64),
+    (xdesc, ydesc): (&str, &str),
+) -> Result<Chart<'a, 'b>, String> {
+    let mut chart = ChartBuilder::on(area)
+        .caption(caption, ("sans-serif", 16))
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(55)
+        .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
+        .map_err(err)?;
+    chart
+        .configure_mesh()
+        .x_desc(xdesc)
+        .y_desc(ydesc)
+        .draw()
+        .map_err(err)?;
+    Ok(chart)
+}
+
 fn joints_panel(area: &Area<'_>, samples: &[Sample]) -> Result<(), String> {
     let t_end = samples.last().map_or(0.0, |s| s.t).max(1e-3);
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
@@ -128,19 +158,13 @@ fn joints_panel(area: &Area<'_>, samples: &[Sample]) -> Result<(), String> {
         }
     }
     let pad = ((hi - lo) * 0.08).max(5.0);
-    let mut chart = ChartBuilder::on(area)
-        .caption("Joints against time", ("sans-serif", 16))
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(55)
-        .build_cartesian_2d(0.0..t_end, (lo - pad)..(hi + pad))
-        .map_err(err)?;
-    chart
-        .configure_mesh()
-        .x_desc("virtual time (s)")
-        .y_desc("joint angle (deg)")
-        .draw()
-        .map_err(err)?;
+    let mut chart = panel(
+        area,
+        "Joints against time",
+        (0.0, t_end),
+        (lo - pad, hi + pad),
+        ("virtual time (s)", "joint angle (deg)"),
+    )?;
     for (j, color) in COLORS.iter().enumerate() {
         chart
             .draw_series(LineSeries::new(
@@ -164,15 +188,7 @@ fn joints_panel(area: &Area<'_>, samples: &[Sample]) -> Result<(), String> {
 }
 
 /// Start (green circle) and end (red square) of a path.
-fn ends<DB: DrawingBackend>(
-    chart: &mut ChartContext<
-        '_,
-        DB,
-        Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
-    >,
-    first: (f64, f64),
-    last: (f64, f64),
-) -> Result<(), String> {
+fn ends(chart: &mut Chart<'_, '_>, first: (f64, f64), last: (f64, f64)) -> Result<(), String> {
     chart
         .draw_series(std::iter::once(Circle::new(first, 6, GREEN.filled())))
         .map_err(|_| "cannot draw the start".to_string())?;
@@ -194,19 +210,7 @@ fn above_panel(area: &Area<'_>, samples: &[Sample], reach: f64) -> Result<(), St
         420.0,
         330.0,
     );
-    let mut chart = ChartBuilder::on(area)
-        .caption("TCP path from above", ("sans-serif", 16))
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(55)
-        .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
-        .map_err(err)?;
-    chart
-        .configure_mesh()
-        .x_desc("x (mm)")
-        .y_desc("y (mm)")
-        .draw()
-        .map_err(err)?;
+    let mut chart = panel(area, "TCP path from above", xr, yr, ("x (mm)", "y (mm)"))?;
     chart
         .draw_series(std::iter::once(PathElement::new(
             circle((0.0, 0.0), reach),
@@ -244,19 +248,13 @@ fn side_panel(
         420.0,
         330.0,
     );
-    let mut chart = ChartBuilder::on(area)
-        .caption("TCP path from the side", ("sans-serif", 16))
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(55)
-        .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
-        .map_err(err)?;
-    chart
-        .configure_mesh()
-        .x_desc("distance from the waist axis (mm)")
-        .y_desc("z (mm)")
-        .draw()
-        .map_err(err)?;
+    let mut chart = panel(
+        area,
+        "TCP path from the side",
+        xr,
+        yr,
+        ("distance from the waist axis (mm)", "z (mm)"),
+    )?;
     chart
         .draw_series(std::iter::once(PathElement::new(
             circle((0.0, shoulder), reach),
