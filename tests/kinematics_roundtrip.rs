@@ -37,8 +37,11 @@ fn check(k: &Kinematics, q: &Joints, tool: &Pose) -> bool {
         let dp = (back.translation - goal.translation).amax();
         let dr = (back.rotation - goal.rotation).amax();
         assert!(dp < 1e-9, "{q:?} -> {:?}: position error {dp}", s.joints);
+        // Rounding in the trigonometric chain reaches ~2e-12 for some
+        // random poses (seen in CI); 1e-10 is still far below anything a
+        // joint encoder resolves.
         assert!(
-            dr < 1e-12,
+            dr < 1e-10,
             "{q:?} -> {:?}: orientation error {dr}",
             s.joints
         );
