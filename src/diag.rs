@@ -167,14 +167,24 @@ impl Sources {
         let offset = floor_char_boundary(text, offset);
         // Found by binary search in the line index, so that reporting many
         // diagnostics stays linear in their number.
-        let line = match self.line_starts.get(id as usize) {
-            Some(starts) => starts.partition_point(|&x| x <= offset),
-            None => text[..offset].matches('\n').count() + 1,
-        };
-        let start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
-        let col = text[start..offset].chars().count() + 1;
-        (line, col)
+        match self.line_starts.get(id as usize) {
+            Some(starts) => {
+                let start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
+                let col = text[start..offset].chars().count() + 1;
+                (starts.partition_point(|&x| x <= offset), col)
+            }
+            None => line_col_in(text, offset),
+        }
     }
+}
+
+/// 1-based line and column (in characters) of a byte offset in `text`,
+/// counted from its start (for a text that is not in [`Sources`]).
+pub fn line_col_in(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..floor_char_boundary(text, offset.min(text.len()))];
+    let line = before.matches('\n').count() + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, col)
 }
 
 fn floor_char_boundary(s: &str, mut i: usize) -> usize {

@@ -261,13 +261,13 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             strict,
         }) => {
             if let Some(p) = &record
-                && let Err(e) = record_target(p)
+                && let Err(e) = output_target(p, &["csv", "json"], ".csv or .json")
             {
                 eprintln!("adair: --record {}: {e}", p.display());
                 return 2;
             }
             if let Some(p) = &plot
-                && let Err(e) = plot_target(p)
+                && let Err(e) = output_target(p, &["svg"], ".svg")
             {
                 eprintln!("adair: --plot {}: {e}", p.display());
                 return 2;
@@ -334,13 +334,13 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 report(&outcome, &s, color);
             }
             if let Some(p) = &record
-                && let Err(e) = write_record(p, &s)
+                && let Err(e) = write_run(p, &s, &file)
             {
                 eprintln!("adair: --record {}: {e}", p.display());
                 return 2;
             }
             if let Some(p) = &plot
-                && let Err(e) = write_plot(p, &s, &file)
+                && let Err(e) = write_run(p, &s, &file)
             {
                 eprintln!("adair: --plot {}: {e}", p.display());
                 return 2;
@@ -527,31 +527,15 @@ fn parse_refuse(s: &str) -> Result<(u64, u8), String> {
     }
 }
 
-/// `--rehearse`: the arm's pose without motion, then the whole program on
-/// the simulator from there. `Err` holds the exit code when the rehearsal
-/// failed (nothing was sent that moves the arm).
-/// Checks a `--record` path before the run: a known extension and an
-/// existing directory.
-fn record_target(p: &std::path::Path) -> Result<(), String> {
-    match p.extension().and_then(|e| e.to_str()) {
-        Some("csv") | Some("json") => {}
-        _ => return Err("the file must end in .csv or .json".into()),
-    }
-    let dir = match p.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => std::path::Path::new("."),
-    };
-    if !dir.is_dir() {
-        return Err(format!("directory {} does not exist", dir.display()));
-    }
-    Ok(())
-}
-
-/// Writes the recorded support points when the run has ended.
-/// Checks a `--plot` path before the run: `.svg` in an existing directory.
-fn plot_target(p: &std::path::Path) -> Result<(), String> {
-    if p.extension().and_then(|e| e.to_str()) != Some("svg") {
-        return Err("the file must end in .svg".into());
+/// Checks a `--record` or `--plot` path before the run: one of the
+/// extensions `exts` (`what` names them) in an existing directory.
+fn output_target(p: &std::path::Path, exts: &[&str], what: &str) -> Result<(), String> {
+    if !p
+        .extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| exts.contains(&e))
+    {
+        return Err(format!("the file must end in {what}"));
     }
     match p.parent() {
         Some(d) if !d.as_os_str().is_empty() && !d.is_dir() => {
@@ -561,28 +545,12 @@ fn plot_target(p: &std::path::Path) -> Result<(), String> {
     }
 }
 
-fn write_plot(p: &std::path::Path, s: &Session, file: &std::path::Path) -> Result<(), String> {
-    let Some(st) = s.robot_state() else {
-        return Err("no robot".into());
-    };
-    let samples = st.record.as_deref().unwrap_or(&[]);
+/// Writes what `--record` or `--plot` asked for when the run has ended.
+fn write_run(p: &std::path::Path, s: &Session, file: &std::path::Path) -> Result<(), String> {
+    let st = s.robot_state().ok_or("no robot")?;
     let title = file
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
-    let text = adair::plot::svg(samples, st.kin.description(), &title)?;
-    std::fs::write(p, text).map_err(|e| e.to_string())
-}
-
-fn write_record(p: &std::path::Path, s: &Session) -> Result<(), String> {
-    let samples = s
-        .robot_state()
-        .and_then(|st| st.record.as_deref())
-        .unwrap_or(&[]);
-    let text = if p.extension().and_then(|e| e.to_str()) == Some("json") {
-        adair::services::record::to_json(samples)
-    } else {
-        adair::services::record::to_csv(samples)
-    };
-    std::fs::write(p, text).map_err(|e| e.to_string())
+    adair::plot::write_run(p, st, &title).map(|_| ())
 }

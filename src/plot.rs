@@ -148,6 +148,24 @@ fn panel<'a, 'b>(
     Ok(chart)
 }
 
+/// Writes what a run recorded to `path`, by its extension: `.svg` the
+/// picture (titled `title`), `.json` or `.csv` the support points. Returns
+/// the number of support points.
+pub fn write_run(
+    path: &std::path::Path,
+    st: &crate::services::RobotState,
+    title: &str,
+) -> Result<usize, String> {
+    let samples = st.record.as_deref().unwrap_or(&[]);
+    let text = match path.extension().and_then(|e| e.to_str()) {
+        Some("svg") => svg(samples, st.kin.description(), title)?,
+        Some("json") => crate::services::record::to_json(samples),
+        _ => crate::services::record::to_csv(samples),
+    };
+    std::fs::write(path, text).map_err(|e| e.to_string())?;
+    Ok(samples.len())
+}
+
 fn joints_panel(area: &Area<'_>, samples: &[Sample]) -> Result<(), String> {
     let t_end = samples.last().map_or(0.0, |s| s.t).max(1e-3);
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);

@@ -806,11 +806,16 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
 impl Checker {
     /// Marks a variable as read (see `unread`).
     pub(super) fn mark_read(&mut self, v: Var) {
+        self.set_read(v, true);
+    }
+
+    /// Sets whether a tracked local variable counts as read.
+    pub(super) fn set_read(&mut self, v: Var, read: bool) {
         if v.level > 0
             && let Some(frame) = self.unread.get_mut(v.level as usize - 1)
             && let Some(e) = frame.get_mut(&v)
         {
-            e.2 = true;
+            e.2 = read;
         }
     }
 

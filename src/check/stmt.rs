@@ -104,11 +104,8 @@ impl Checker {
                 // Assigning a variable is not reading it.
                 let before = self.target_var(target).map(|v| (v, self.was_read(v)));
                 let t = self.expr(target, None);
-                if let Some((v, false)) = before
-                    && let Some(frame) = self.unread.get_mut((v.level as usize).wrapping_sub(1))
-                    && let Some(e) = frame.get_mut(&v)
-                {
-                    e.2 = false;
+                if let Some((v, false)) = before {
+                    self.set_read(v, false);
                 }
                 self.check_variable(&t, target.span, "the target of an assignment");
                 let ty = t.ty;

@@ -2,8 +2,8 @@
 //!
 //! A counting global allocator (the `cap` crate) knows how many bytes the
 //! process holds. Before the interpreter builds something whose size the
-//! program chooses (an array, a concatenation, a slice, an allocator, a call
-//! frame) it asks [`room_for`]; past the limit the program gets
+//! program chooses (an array, also a local one, a concatenation, a slice, an
+//! aggregate, an allocator) it asks [`room_for`]; past the limit the program gets
 //! `Storage_Error` at that place, which it can handle. While a program runs
 //! ([`HardCap`]), the allocator itself refuses a quarter past the limit, so
 //! memory the interpreter does not ask about cannot take the whole machine;

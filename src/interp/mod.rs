@@ -513,7 +513,6 @@ impl Run<'_> {
             vals.push(self.eval(&a.value)?);
         }
         let sub = &self.c.funcs[f as usize];
-        self.reserve(0, span)?;
         if self.m.depth >= MAX_DEPTH {
             return Err(self.raise(
                 check::STORAGE_ERROR,

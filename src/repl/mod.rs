@@ -386,21 +386,16 @@ impl Repl {
     /// since `:reset`), as CSV/JSON support points or as an SVG picture.
     fn save_run(&self, plot: bool, path: &std::path::Path) -> Result<String, String> {
         let st = self.session.robot_state().ok_or("no robot")?;
-        let samples = st.record.as_deref().unwrap_or(&[]);
-        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
-        let text = match (plot, ext) {
-            (true, "svg") => crate::plot::svg(samples, st.kin.description(), "REPL session")?,
+        match (
+            plot,
+            path.extension().and_then(|e| e.to_str()).unwrap_or(""),
+        ) {
+            (true, "svg") | (false, "csv" | "json") => {}
             (true, _) => return Err("the file must end in .svg".into()),
-            (false, "csv") => crate::services::record::to_csv(samples),
-            (false, "json") => crate::services::record::to_json(samples),
             (false, _) => return Err("the file must end in .csv or .json".into()),
-        };
-        std::fs::write(path, text).map_err(|e| e.to_string())?;
-        Ok(format!(
-            "wrote {} ({} support points)\n",
-            path.display(),
-            samples.len()
-        ))
+        }
+        let n = crate::plot::write_run(path, st, "REPL session")?;
+        Ok(format!("wrote {} ({n} support points)\n", path.display()))
     }
 
     fn set_trace(&mut self) {
@@ -581,39 +576,46 @@ impl Repl {
 /// The comment lines right above a declaration of `name` in the embedded
 /// AdaIR package.
 fn stdlib_doc(name: &str) -> String {
-    let (_, text) = crate::session::STDLIB
-        .iter()
-        .find(|(n, _)| n.ends_with("adair.air"))
-        .copied()
-        .unwrap_or(("", ""));
-    let lines: Vec<&str> = text.lines().collect();
+    let lines = adair_lines();
     let needle_p = format!("procedure {}", name.to_ascii_lowercase());
     let needle_f = format!("function {}", name.to_ascii_lowercase());
     for (i, l) in lines.iter().enumerate() {
         let low = l.trim().to_ascii_lowercase();
         let starts = |n: &str| low.starts_with(n) && low[n.len()..].starts_with([' ', '(', ';']);
         if starts(&needle_p) || starts(&needle_f) {
-            let mut doc = Vec::new();
-            let mut j = i;
-            while j > 0 && lines[j - 1].trim().starts_with("--") {
-                j -= 1;
-                doc.push(lines[j].trim().trim_start_matches("--").trim());
-            }
-            doc.reverse();
-            return doc.iter().map(|d| format!("{d}\n")).collect();
+            return lines[comment_start(&lines, i)..i]
+                .iter()
+                .map(|d| format!("{}\n", d.trim().trim_start_matches("--").trim()))
+                .collect();
         }
     }
     String::new()
 }
 
+/// The lines of `stdlib/adair.air`, where the services' helpers and types
+/// are declared with their comments.
+fn adair_lines() -> Vec<&'static str> {
+    crate::session::STDLIB
+        .iter()
+        .find(|(n, _)| n.ends_with("adair.air"))
+        .map_or("", |(_, t)| *t)
+        .lines()
+        .collect()
+}
+
+/// The first line of the comment block right above line `i`.
+fn comment_start(lines: &[&str], i: usize) -> usize {
+    let mut start = i;
+    while start > 0 && lines[start - 1].trim().starts_with("--") {
+        start -= 1;
+    }
+    start
+}
+
 /// `:help` on a type or subtype of the AdaIR package: its declaration as
 /// written in `stdlib/adair.air` (with the comment beside or above it).
 fn stdlib_type_doc(name: &str) -> Option<String> {
-    let (_, text) = crate::session::STDLIB
-        .iter()
-        .find(|(n, _)| n.ends_with("adair.air"))
-        .copied()?;
-    let lines: Vec<&str> = text.lines().collect();
+    let lines = adair_lines();
     let key = name.to_ascii_lowercase();
     let i = lines.iter().position(|l| {
         let low = l.trim().to_ascii_lowercase();
@@ -623,10 +625,7 @@ fn stdlib_type_doc(name: &str) -> Option<String> {
                 .is_some_and(|rest| rest.starts_with([' ', ';', '(']))
         })
     })?;
-    let mut start = i;
-    while start > 0 && lines[start - 1].trim().starts_with("--") {
-        start -= 1;
-    }
+    let start = comment_start(&lines, i);
     let mut end = i;
     if lines[i].to_ascii_lowercase().contains(" record") && !lines[i].contains("null record") {
         while end + 1 < lines.len() && !lines[end].to_ascii_lowercase().contains("end record") {

@@ -9,7 +9,7 @@ use rustyline::completion::{Completer, Pair};
 use rustyline::error::ReadlineError;
 use rustyline::highlight::{CmdKind, Highlighter};
 use rustyline::hint::Hinter;
-use rustyline::validate::{ValidationContext, ValidationResult, Validator};
+use rustyline::validate::Validator;
 use rustyline::{Context, Editor, Helper};
 use std::borrow::Cow;
 use std::collections::HashMap;
@@ -152,11 +152,7 @@ impl Highlighter for AdaHelper {
 
 /// Every line is taken as typed: an unfinished entry goes on at the
 /// continuation prompt (`interactive_on`), not inside rustyline's buffer.
-impl Validator for AdaHelper {
-    fn validate(&self, _ctx: &mut ValidationContext) -> rustyline::Result<ValidationResult> {
-        Ok(ValidationResult::Valid(None))
-    }
-}
+impl Validator for AdaHelper {}
 
 /// The prompt of a line that continues an unfinished entry.
 pub const CONTINUE: &str = "   ...> ";

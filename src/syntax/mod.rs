@@ -17,9 +17,7 @@ pub fn parse_source(src: &str, file: FileId) -> (Option<ast::CompilationUnit>, V
         if d.message.contains(parser::OPENER_AT)
             && let Some((at, _)) = d.notes.first()
         {
-            let before = &src[..at.start.min(src.len())];
-            let line = before.matches('\n').count() + 1;
-            let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+            let (line, col) = crate::diag::line_col_in(src, at.start);
             d.message = d
                 .message
                 .replace(parser::OPENER_AT, &format!("{line}:{col}"));

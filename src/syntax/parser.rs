@@ -51,12 +51,15 @@ fn soft_kw<'t, I: TokIn<'t>>(k: Kw) -> impl Parser<'t, I, (), Ex<'t>> + Clone {
         }))
 }
 
-/// The end of an `if`, `case` or `loop`: `end <word>;` (None), or the
-/// place of a wrong end: a bare `end;` (taken as this construct's end), or
-/// `end Name` (the end of the enclosing body, left for it). Either way the
-/// statement is reported unclosed ([`UNCLOSED`]) and parsing goes on as if
-/// `end <word>;` had been there.
-fn closing<'t, I: TokIn<'t>>(k: Kw) -> impl Parser<'t, I, Option<Span>, Ex<'t>> + Clone {
+/// The end of an `if`, `case` or `loop`: `end <word> <tail>;` (the tail's
+/// output and None), or the place of a wrong end: a bare `end;` (taken as
+/// this construct's end), or `end Name` (the end of the enclosing body, left
+/// for it). Either way the statement is reported unclosed ([`UNCLOSED`])
+/// and parsing goes on as if `end <word>;` had been there.
+fn closing<'t, I: TokIn<'t>, O: Clone + Default + 't>(
+    k: Kw,
+    tail: impl Parser<'t, I, O, Ex<'t>> + Clone,
+) -> impl Parser<'t, I, (O, Option<Span>), Ex<'t>> + Clone {
     let label = match k {
         Kw::Loop => "`end loop`",
         Kw::If => "`end if`",
@@ -64,16 +67,17 @@ fn closing<'t, I: TokIn<'t>>(k: Kw) -> impl Parser<'t, I, Option<Span>, Ex<'t>> 
     };
     choice((
         just(Token::Kw(Kw::End))
-            .then(just(Token::Kw(k)))
+            .ignore_then(just(Token::Kw(k)))
+            .ignore_then(tail)
             .then_ignore(soft_semi())
-            .to(None),
+            .map(|o| (o, None)),
         // A bare `end;` was meant for this construct: it is taken as its end.
         just(Token::Kw(Kw::End))
             .then(semi())
-            .map_with(|_, e| Some(e.span())),
+            .map_with(|_, e| (O::default(), Some(e.span()))),
         just(Token::Kw(Kw::End))
             .then_ignore(just(Token::Kw(k)).not())
-            .map_with(|_, e| Some(e.span()))
+            .map_with(|_, e| (O::default(), Some(e.span())))
             .rewind(),
     ))
     .labelled(label)
@@ -860,7 +864,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 .collect::<Vec<_>>(),
         )
         .then(kw!(Else).ignore_then(stmts.clone()).or_not())
-        .then(closing(Kw::If))
+        .then(closing(Kw::If, empty()).map(|((), missing)| missing))
         .validate(unclosed!("if"))
         .map(|(((c, t), mut rest), els)| {
             rest.insert(0, (c, t));
@@ -883,7 +887,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 .at_least(1)
                 .collect::<Vec<_>>(),
         )
-        .then(closing(Kw::Case))
+        .then(closing(Kw::Case, empty()).map(|((), missing)| missing))
         .validate(unclosed!("case"))
         .map(|(subject, arms)| StmtKind::Case { subject, arms });
     let scheme = choice((
@@ -916,23 +920,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .or_not()
         .then(scheme)
         .then(stmts.clone())
-        .then(
-            choice((
-                kw!(End)
-                    .then(kw!(Loop))
-                    .ignore_then(ident().or_not())
-                    .then_ignore(soft_semi())
-                    .map(|n| (n, None)),
-                kw!(End)
-                    .then(semi())
-                    .map_with(|_, e| (None, Some(e.span()))),
-                kw!(End)
-                    .then_ignore(kw!(Loop).not())
-                    .map_with(|_, e| (None, Some(e.span())))
-                    .rewind(),
-            ))
-            .labelled("`end loop`"),
-        )
+        .then(closing(Kw::Loop, ident().or_not()))
         .map(|(x, (end_label, missing))| ((x, end_label), missing))
         .validate(unclosed!("loop"))
         .map(|(((label, scheme), body), end_label)| StmtKind::Loop {
