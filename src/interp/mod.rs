@@ -61,6 +61,102 @@ impl Clock for VirtualClock {
 
 pub type Native = fn(&mut Run, &mut [Value], Span) -> R<Option<Value>>;
 
+/// What an imported subprogram is bound to: a native body of the
+/// interpreter's own library, or a robot service, which the run hands to the
+/// [`Services`] the session lent it.
+#[derive(Clone, Copy)]
+pub enum Binding {
+    Native(Native),
+    Service(u32),
+}
+
+/// The label of the `exit` by which a service ends the whole program when
+/// the user stops it (Ctrl-C): no loop carries it and no handler catches an
+/// exit, so it leaves every frame; [`Machine::run`] ends there normally and
+/// the caller asks the services where the robot stopped.
+pub const STOP_LABEL: u32 = u32::MAX;
+
+/// How a service call ends early.
+#[derive(Debug)]
+pub enum ServiceFault {
+    /// An exception, raised at the call.
+    Raise(ExcId, String),
+    /// The user stopped the program (Ctrl-C): every frame is left.
+    Stop,
+}
+
+/// The robot services, as the interpreter sees them: a typed value owned by
+/// the session and lent to a run. The interpreter knows no robot.
+pub trait Services {
+    /// Calls service `index` (the [`Binding::Service`] its import name bound).
+    fn call(
+        &mut self,
+        index: u32,
+        cx: &mut ServiceCx<'_>,
+        args: &mut [Value],
+    ) -> Result<Option<Value>, ServiceFault>;
+}
+
+/// The narrow part of a run that a service may use: the clock, the place
+/// of the call, the user's stop request. Not the stack, not the program.
+pub struct ServiceCx<'a> {
+    pub clock: &'a mut dyn Clock,
+    /// The call being served.
+    pub span: Span,
+    files: &'a [(String, Vec<usize>)],
+    interrupted: Option<&'a std::sync::atomic::AtomicBool>,
+}
+
+impl ServiceCx<'_> {
+    /// `file:line` of the call, as GNAT writes it.
+    pub fn here(&self) -> String {
+        location_in(self.files, self.span)
+    }
+
+    /// True (once) when the user has asked to stop (Ctrl-C).
+    pub fn interrupt_requested(&self) -> bool {
+        self.interrupted
+            .is_some_and(|f| f.swap(false, std::sync::atomic::Ordering::SeqCst))
+    }
+
+    /// Paces `seconds` to the wall clock in short slices, stopping early
+    /// when the user interrupts; returns the fraction done (1.0 = all).
+    pub fn pace(&mut self, seconds: f64) -> f64 {
+        pace(&mut *self.clock, self.interrupted, seconds)
+    }
+}
+
+fn location_in(files: &[(String, Vec<usize>)], s: Span) -> String {
+    match files.get(s.context as usize) {
+        Some((name, starts)) => {
+            let line = starts.partition_point(|&x| x <= s.start);
+            format!("{name}:{line}")
+        }
+        None => String::new(),
+    }
+}
+
+fn pace(
+    clock: &mut dyn Clock,
+    interrupted: Option<&std::sync::atomic::AtomicBool>,
+    seconds: f64,
+) -> f64 {
+    if seconds <= 0.0 {
+        return 1.0;
+    }
+    let slice: f64 = 0.05;
+    let mut done = 0.0;
+    while done < seconds {
+        if interrupted.is_some_and(|f| f.swap(false, std::sync::atomic::Ordering::SeqCst)) {
+            return done / seconds;
+        }
+        let step = slice.min(seconds - done);
+        clock.pace(step);
+        done += step;
+    }
+    1.0
+}
+
 pub struct Machine {
     stack: Vec<Value>,
     display: Vec<usize>,
@@ -68,7 +164,7 @@ pub struct Machine {
     /// Column of the output's current line (GNAT ends an unfinished line at exit).
     pub col: usize,
     pub clock: Box<dyn Clock>,
-    natives: Vec<Option<Native>>,
+    natives: Vec<Option<Binding>>,
     depth: usize,
     calls: Vec<Span>,
     /// Line starts of each source, for GNAT-style exception messages.
@@ -77,10 +173,8 @@ pub struct Machine {
     pub interrupted: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
     /// Occurrences being handled (innermost last), for `raise;`.
     current: Vec<Rc<Occurrence>>,
-    /// Finds the native body of an imported subprogram by its import name.
-    pub resolver: fn(&str) -> Option<Native>,
-    /// State of the robot services (owned by `services`, opaque here).
-    pub robot: Option<Box<dyn std::any::Any>>,
+    /// Binds an imported subprogram by its import name.
+    pub resolver: fn(&str) -> Option<Binding>,
 }
 
 const MAX_DEPTH: usize = 20_000;
@@ -102,8 +196,7 @@ impl Machine {
             input: Box::new(std::io::BufReader::new(std::io::stdin())),
             interrupted: None,
             current: Vec::new(),
-            resolver: builtins::lookup,
-            robot: None,
+            resolver: |n| builtins::lookup(n).map(Binding::Native),
         }
     }
 
@@ -123,26 +216,26 @@ impl Machine {
 
     /// `file:line` of a span, as GNAT writes it in exception messages.
     pub fn location(&self, s: Span) -> String {
-        match self.files.get(s.context as usize) {
-            Some((name, starts)) => {
-                let line = starts.partition_point(|&x| x <= s.start);
-                format!("{name}:{line}")
-            }
-            None => String::new(),
-        }
+        location_in(&self.files, s)
     }
 
     /// Runs level-0 statements (a script, a REPL entry or the library level),
-    /// then the main subprogram, if any.
-    pub fn run(
-        &mut self,
-        chk: &Checker,
+    /// then the main subprogram, if any. `svc` serves the robot services
+    /// for this run (None: a call of one raises `Program_Error`).
+    pub fn run<'s>(
+        &'s mut self,
+        chk: &'s Checker,
         stmts: &[Stmt],
         main: Option<FuncId>,
+        svc: Option<&'s mut dyn Services>,
     ) -> Result<(), Box<Occurrence>> {
         let need = self.prepare(chk);
         let _cap = memory::HardCap::arm();
-        let mut run = Run { m: self, c: chk };
+        let mut run = Run {
+            m: self,
+            c: chk,
+            svc,
+        };
         let r = (|| -> R<()> {
             run.exec_all(stmts)?;
             if let Some(f) = main {
@@ -170,22 +263,7 @@ impl Machine {
     /// Paces `seconds` to the wall clock in short slices, stopping early
     /// when the user interrupts; returns the fraction done (1.0 = all).
     pub fn pace(&mut self, seconds: f64) -> f64 {
-        if seconds <= 0.0 {
-            return 1.0;
-        }
-        let slice: f64 = 0.05;
-        let mut done = 0.0;
-        while done < seconds {
-            if let Some(flag) = &self.interrupted
-                && flag.swap(false, std::sync::atomic::Ordering::SeqCst)
-            {
-                return done / seconds;
-            }
-            let step = slice.min(seconds - done);
-            self.clock.pace(step);
-            done += step;
-        }
-        1.0
+        pace(&mut *self.clock, self.interrupted.as_deref(), seconds)
     }
 
     /// Makes ready for a run at level 0: natives bound, the level-0 slots
@@ -203,10 +281,19 @@ impl Machine {
     }
 
     /// Evaluates one checked expression at level 0 (a REPL entry).
-    pub fn eval_expr(&mut self, chk: &Checker, e: &Ex) -> Result<Value, Box<Occurrence>> {
+    pub fn eval_expr<'s>(
+        &'s mut self,
+        chk: &'s Checker,
+        e: &Ex,
+        svc: Option<&'s mut dyn Services>,
+    ) -> Result<Value, Box<Occurrence>> {
         let need = self.prepare(chk);
         let _cap = memory::HardCap::arm();
-        let mut run = Run { m: self, c: chk };
+        let mut run = Run {
+            m: self,
+            c: chk,
+            svc,
+        };
         let r = run.eval(e);
         run.m.stack.truncate(need);
         let _ = run.m.out.flush();
@@ -248,10 +335,12 @@ impl Machine {
     }
 }
 
-/// One run: the machine plus the checker's tables.
+/// One run: the machine plus the checker's tables, and the robot services
+/// the session lent it.
 pub struct Run<'a> {
     pub m: &'a mut Machine,
     pub c: &'a Checker,
+    svc: Option<&'a mut dyn Services>,
 }
 
 enum Step {
@@ -506,6 +595,28 @@ impl Run<'_> {
         }
     }
 
+    /// Hands a service call to the lent services with a narrow context.
+    fn call_service(&mut self, i: u32, args: &mut [Value], span: Span) -> R<Option<Value>> {
+        let Some(svc) = self.svc.as_deref_mut() else {
+            return Err(self.raise(
+                check::PROGRAM_ERROR,
+                "no robot: this session was started without one (choose one with --robot)",
+                span,
+            ));
+        };
+        let mut cx = ServiceCx {
+            clock: &mut *self.m.clock,
+            span,
+            files: &self.m.files,
+            interrupted: self.m.interrupted.as_deref(),
+        };
+        match svc.call(i, &mut cx, args) {
+            Ok(v) => Ok(v),
+            Err(ServiceFault::Raise(exc, msg)) => Err(self.raise(exc, msg, span)),
+            Err(ServiceFault::Stop) => Err(Flow::Exit(STOP_LABEL)),
+        }
+    }
+
     /// Calls a subprogram with copy-in/copy-out parameters.
     pub fn call(&mut self, f: FuncId, args: &[Arg], span: Span) -> R<Option<Value>> {
         let mut vals = Vec::with_capacity(args.len());
@@ -520,9 +631,12 @@ impl Run<'_> {
                 span,
             ));
         }
-        let result = if let Some(native) = self.m.natives.get(f as usize).copied().flatten() {
+        let result = if let Some(binding) = self.m.natives.get(f as usize).copied().flatten() {
             self.m.calls.push(span);
-            let r = native(self, &mut vals, span);
+            let r = match binding {
+                Binding::Native(native) => native(self, &mut vals, span),
+                Binding::Service(i) => self.call_service(i, &mut vals, span),
+            };
             self.m.calls.pop();
             r?
         } else {

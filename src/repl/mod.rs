@@ -9,7 +9,6 @@ use crate::check::types::{self, TypeId, TypeKind};
 use crate::diag::{self, Diagnostic};
 use crate::interp::Value;
 use crate::kinematics::{RobotDescription, joints_to_deg};
-use crate::services::RobotState;
 use crate::session::Session;
 use std::io::Write;
 
@@ -219,7 +218,7 @@ impl Repl {
                 };
             }
             if diags.is_empty() {
-                return match self.session.machine.eval_expr(&self.session.checker, &ex) {
+                return match self.session.eval_checked(&ex) {
                     Ok(v) => Reply {
                         text: format!("{}\n", self.show(&v, ex.ty)),
                         ..Reply::default()
@@ -245,10 +244,7 @@ impl Repl {
                 } else {
                     self.render(&warnings)
                 };
-                let r = self
-                    .session
-                    .machine
-                    .run(&self.session.checker, &stmts, None);
+                let r = self.session.run_checked(&stmts, None);
                 let mut reply = match r {
                     Ok(()) => match self.session.take_stopped() {
                         // Ctrl-C stopped the motion: say where, raise nothing.
@@ -309,16 +305,10 @@ impl Repl {
                     Err(e) => fail(format!("cannot read {f}: {e}\n")),
                     Ok(text) => match self.session.check_source(f, &text, false) {
                         Err(d) => fail(self.render(&d)),
-                        Ok((stmts, main)) => {
-                            match self
-                                .session
-                                .machine
-                                .run(&self.session.checker, &stmts, main)
-                            {
-                                Ok(()) => ok(format!("loaded {f}\n")),
-                                Err(o) => self.raised(&o),
-                            }
-                        }
+                        Ok((stmts, main)) => match self.session.run_checked(&stmts, main) {
+                            Ok(()) => ok(format!("loaded {f}\n")),
+                            Err(o) => self.raised(&o),
+                        },
                     },
                 },
             },
@@ -400,13 +390,7 @@ impl Repl {
 
     fn set_trace(&mut self) {
         let w = self.trace.then(|| (self.make_out)());
-        if let Some(st) = self
-            .session
-            .machine
-            .robot
-            .as_mut()
-            .and_then(|b| b.downcast_mut::<RobotState>())
-        {
+        if let Some(st) = self.session.robot_state_mut() {
             st.trace = w;
         }
     }
@@ -465,13 +449,7 @@ impl Repl {
     }
 
     fn where_text(&self) -> String {
-        let Some(st) = self
-            .session
-            .machine
-            .robot
-            .as_ref()
-            .and_then(|b| b.downcast_ref::<RobotState>())
-        else {
+        let Some(st) = self.session.robot_state() else {
             return "no robot\n".into();
         };
         let q = st.robot.read_joints();
