@@ -179,6 +179,36 @@ impl Session {
         }
     }
 
+    /// Runs `f` as a rehearsal: on a simulated copy of the robot (same
+    /// pose and settings), on a deep copy of the program's data, on virtual
+    /// time, with output discarded and no input; afterwards the robot, the
+    /// data, the clock and the output are the ones from before, untouched.
+    pub fn rehearsing<T>(&mut self, f: impl FnOnce(&mut Session) -> T) -> T {
+        let copy = self.machine.copy_globals();
+        let globals = self.machine.swap_globals(copy);
+        let out = std::mem::replace(&mut self.machine.out, Box::new(std::io::sink()));
+        let input = std::mem::replace(
+            &mut self.machine.input,
+            Box::new(std::io::BufReader::new(std::io::empty())),
+        );
+        let t = self.machine.clock.now();
+        let clock = std::mem::replace(
+            &mut self.machine.clock,
+            Box::new(crate::interp::VirtualClock { t }),
+        );
+        let col = self.machine.col;
+        let stand_in = self.robot.as_ref().map(|r| r.rehearsal());
+        let robot = std::mem::replace(&mut self.robot, stand_in);
+        let result = f(self);
+        self.robot = robot;
+        self.machine.col = col;
+        self.machine.clock = clock;
+        self.machine.input = input;
+        self.machine.out = out;
+        self.machine.swap_globals(globals);
+        result
+    }
+
     /// Runs checked statements (and the main subprogram) with the robot lent.
     pub fn run_checked(
         &mut self,

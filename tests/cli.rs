@@ -356,3 +356,20 @@ fn warnings_stop_nothing_unless_strict() {
     let (code, _, _) = adair(&["check", "--strict", &f]);
     assert_eq!(code, 2);
 }
+
+#[test]
+fn the_repl_takes_robot_and_refuses_rehearse_without_a_port() {
+    let (code, out, err) = adair_stdin(&["repl", "--strict", "--robot", "rm-501"], b":where\n");
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.starts_with("robot RM-501"), "{out}");
+    let (code, out, err) = adair_stdin(&["repl", "--robot", "bogus"], b"");
+    assert_eq!(code, 2);
+    assert!(out.is_empty(), "{out}");
+    assert!(
+        err.contains("--robot") && err.contains("rv-m1, rm-501"),
+        "{err}"
+    );
+    let (code, _, err) = adair_stdin(&["repl", "--rehearse"], b"");
+    assert_eq!(code, 2);
+    assert!(err.contains("--port"), "{err}");
+}

@@ -129,3 +129,41 @@ fn a_service_exception_is_raised_at_the_call_and_the_state_stays_with_the_sessio
         adair::services::table::code_of("MoveAxesAbsolute")
     );
 }
+
+/// A rehearsal (`--rehearse`) runs on a simulated copy: afterwards the
+/// robot's pose, the clock, the output and the program's data are as before.
+#[test]
+fn a_rehearsal_leaves_robot_clock_output_and_data_as_they_were() {
+    let buf = SharedBuf::default();
+    let mut s = Session::new(Box::new(buf.clone()));
+    s.set_robot(RobotDescription::builtin("rv-m1").unwrap(), None, false);
+    assert!(matches!(
+        s.run_source("a.air", "N : Integer := 1;\nInitRobot;\n"),
+        Outcome::Ok
+    ));
+    let before = s.robot_state().unwrap().robot.joints();
+    let t = s.machine.clock.now();
+    let (stmts, _) = s
+        .check_source(
+            "b.air",
+            "N := 2;\nPut_Line (\"moved\");\nMoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0));\n",
+            true,
+        )
+        .unwrap();
+    let r = s.rehearsing(|s| {
+        let r = s.run_checked(&stmts, None);
+        (r.is_ok(), s.robot_state().unwrap().robot.joints()[0])
+    });
+    assert!(r.0);
+    assert!(
+        (r.1 - 10f64.to_radians()).abs() < 1e-9,
+        "the stand-in moved"
+    );
+    assert_eq!(s.robot_state().unwrap().robot.joints(), before);
+    assert_eq!(s.machine.clock.now(), t);
+    assert_eq!(buf.take(), "");
+    match s.run_source("c.air", "Put_Line (Integer'Image (N));\n") {
+        Outcome::Ok => assert_eq!(buf.take(), " 1\n"),
+        o => panic!("{o:?}"),
+    }
+}

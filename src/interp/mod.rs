@@ -321,6 +321,20 @@ impl Machine {
         }
     }
 
+    /// Puts `globals` in place of the level-0 data and returns what was
+    /// there (a rehearsal runs on a copy, then the original comes back).
+    pub fn swap_globals(&mut self, globals: Vec<Value>) -> Vec<Value> {
+        std::mem::replace(&mut self.stack, globals)
+    }
+
+    /// A deep copy of the level-0 data: arrays, records and the objects
+    /// reached through access values are new, with their aliasing kept, so
+    /// that nothing a run does to the copy reaches the original.
+    pub fn copy_globals(&self) -> Vec<Value> {
+        let mut seen = std::collections::HashMap::new();
+        self.stack.iter().map(|v| deep_copy(v, &mut seen)).collect()
+    }
+
     /// The value of a level-0 variable (for the REPL).
     pub fn global(&self, v: Var) -> Option<&Value> {
         self.stack.get(v.slot as usize)
@@ -332,6 +346,32 @@ impl Machine {
             Some(i) => self.col = s.len() - i - 1,
             None => self.col += s.len(),
         }
+    }
+}
+
+/// A copy of `v` that shares no mutable object with it; `seen` maps each
+/// designated object already copied to its copy (aliasing and cycles kept).
+fn deep_copy(
+    v: &Value,
+    seen: &mut std::collections::HashMap<*const RefCell<Value>, Rc<RefCell<Value>>>,
+) -> Value {
+    match v {
+        Value::Arr(a) => Value::Arr(Rc::new(Array {
+            bounds: a.bounds.clone(),
+            data: a.data.iter().map(|x| deep_copy(x, seen)).collect(),
+        })),
+        Value::Rec(r) => Value::Rec(Rc::new(r.iter().map(|x| deep_copy(x, seen)).collect())),
+        Value::Ptr(Some(p)) => {
+            if let Some(c) = seen.get(&Rc::as_ptr(p)) {
+                return Value::Ptr(Some(c.clone()));
+            }
+            let c = Rc::new(RefCell::new(Value::Undef));
+            seen.insert(Rc::as_ptr(p), c.clone());
+            let inner = deep_copy(&p.borrow(), seen);
+            *c.borrow_mut() = inner;
+            Value::Ptr(Some(c))
+        }
+        other => other.clone(),
     }
 }
 

@@ -130,6 +130,32 @@ impl RobotState {
     }
 }
 
+impl RobotState {
+    /// A simulated stand-in for this robot, for a rehearsal: the same
+    /// description, settings, tool, base, paths and pose (joints and
+    /// gripper), on the simulator, without trace, record or pendant.
+    pub fn rehearsal(&self) -> RobotState {
+        let desc = self.kin.description().clone();
+        let mut sim = Simulator::new(desc.clone());
+        sim.set_joints(self.robot.joints());
+        let _ = sim.move_gripper(self.robot.gripper().opening, None);
+        let mut st = RobotState::with_driver(desc, self.excs.clone(), Box::new(sim));
+        st.initialized = self.initialized;
+        st.velocity = self.velocity;
+        st.straight = self.straight;
+        st.interpolation = self.interpolation;
+        st.arm = self.arm;
+        st.elbow = self.elbow;
+        st.hand = self.hand;
+        st.tool = self.tool;
+        st.base = self.base;
+        st.paths = self.paths.clone();
+        st.error_status = self.error_status;
+        st.force_setting = self.force_setting;
+        st
+    }
+}
+
 fn standard_tool(kin: &Kinematics) -> Tool {
     let g = *kin.description().gripper();
     Tool {
