@@ -469,6 +469,24 @@ mod balance_tests {
         assert!(!open(&["declare X : Integer; begin X := 1; end;"]));
     }
 
+    /// The parser's own verdict (not the balance count): a `declare` block
+    /// or a body that the text ends inside is unfinished, though the parser
+    /// takes it as ended to report it once.
+    #[test]
+    fn a_block_or_body_the_text_ends_inside_is_unfinished() {
+        assert!(super::unfinished(
+            "declare\n   X : Integer;\nbegin\n   X := 1;\n"
+        ));
+        assert!(super::unfinished(
+            "procedure Q is\nbegin\n   declare\n   begin\n      null;\n"
+        ));
+        assert!(super::unfinished("procedure Q is\nbegin\n   null;\n"));
+        assert!(!super::unfinished(
+            "declare X : Integer; begin X := 1; end;"
+        ));
+        assert!(!super::unfinished("procedure Q is begin null; end Q;"));
+    }
+
     #[test]
     fn keywords_in_parentheses_and_null_record_do_not_open() {
         assert!(!open(&["X := (if A then 1 else 2);"]));
