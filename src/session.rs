@@ -108,7 +108,7 @@ impl Session {
                     // The embedded library is tested; a failure here is a bug in adair.
                     panic!("stdlib does not check: {d:?}")
                 });
-            let _ = s.machine.run(&s.checker, &stmts, None, None);
+            let _ = s.machine.run(s.checker.program(), &stmts, None, None);
         }
         for pkg in ["AdaIR", "Ada.Text_IO"] {
             for e in ["Name_Error", "Use_Error", "Data_Error", "End_Error"] {
@@ -219,7 +219,7 @@ impl Session {
             .robot
             .as_mut()
             .map(|r| r as &mut dyn crate::interp::Services);
-        self.machine.run(&self.checker, stmts, main, svc)
+        self.machine.run(self.checker.program(), stmts, main, svc)
     }
 
     /// Evaluates a checked expression (a REPL entry) with the robot lent.
@@ -231,7 +231,7 @@ impl Session {
             .robot
             .as_mut()
             .map(|r| r as &mut dyn crate::interp::Services);
-        self.machine.eval_expr(&self.checker, e, svc)
+        self.machine.eval_expr(self.checker.program(), e, svc)
     }
 
     pub fn check_source(

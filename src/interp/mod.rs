@@ -2,16 +2,17 @@
 //!
 //! [`Machine`] holds the state that outlives one run (globals, output, clock,
 //! the native bindings), so that the REPL can run entry after entry. A run
-//! borrows the checker's tables, in which every name is already a slot or an
-//! index: nothing here looks a name up by string.
+//! reads the checked program through a [`ProgramRef`] (never the checker),
+//! in which every name is already a slot or an index: nothing here looks a
+//! name up by string.
 
 pub mod builtins;
 pub mod memory;
 pub mod value;
 
+use crate::check;
 use crate::check::ir::*;
 use crate::check::types::{TypeId, TypeKind};
-use crate::check::{self, Checker};
 use crate::diag::Span;
 use crate::syntax::ast::Mode;
 use std::cell::RefCell;
@@ -224,7 +225,7 @@ impl Machine {
     /// for this run (None: a call of one raises `Program_Error`).
     pub fn run<'s>(
         &'s mut self,
-        chk: &'s Checker,
+        chk: ProgramRef<'s>,
         stmts: &[Stmt],
         main: Option<FuncId>,
         svc: Option<&'s mut dyn Services>,
@@ -268,7 +269,7 @@ impl Machine {
 
     /// Makes ready for a run at level 0: natives bound, the level-0 slots
     /// there (kept between runs), no frames. Returns the level-0 slot count.
-    fn prepare(&mut self, chk: &Checker) -> usize {
+    fn prepare(&mut self, chk: ProgramRef<'_>) -> usize {
         self.bind_natives(chk);
         let need = chk.globals as usize;
         if self.stack.len() < need {
@@ -283,7 +284,7 @@ impl Machine {
     /// Evaluates one checked expression at level 0 (a REPL entry).
     pub fn eval_expr<'s>(
         &'s mut self,
-        chk: &'s Checker,
+        chk: ProgramRef<'s>,
         e: &Ex,
         svc: Option<&'s mut dyn Services>,
     ) -> Result<Value, Box<Occurrence>> {
@@ -313,7 +314,7 @@ impl Machine {
         let _ = self.out.flush();
     }
 
-    fn bind_natives(&mut self, chk: &Checker) {
+    fn bind_natives(&mut self, chk: ProgramRef<'_>) {
         while self.natives.len() < chk.funcs.len() {
             let i = self.natives.len();
             self.natives
@@ -375,11 +376,11 @@ fn deep_copy(
     }
 }
 
-/// One run: the machine plus the checker's tables, and the robot services
+/// One run: the machine plus the program's tables, and the robot services
 /// the session lent it.
 pub struct Run<'a> {
     pub m: &'a mut Machine,
-    pub c: &'a Checker,
+    pub c: ProgramRef<'a>,
     svc: Option<&'a mut dyn Services>,
 }
 
