@@ -479,6 +479,7 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             let target = adair::golden::Target {
                 port: serial.settings(),
                 rehearse,
+                engine: None,
             };
             let paths = if paths.is_empty() {
                 vec![PathBuf::from(".")]

@@ -9,6 +9,7 @@
 pub mod builtins;
 pub mod memory;
 pub mod value;
+pub mod vm;
 
 use crate::check;
 use crate::check::ir::*;
@@ -176,6 +177,9 @@ pub struct Machine {
     current: Vec<Rc<Occurrence>>,
     /// Binds an imported subprogram by its import name.
     pub resolver: fn(&str) -> Option<Binding>,
+    /// The engine that runs programs (the compiled one unless the
+    /// reference walker is asked for).
+    pub engine: vm::Engine,
 }
 
 const MAX_DEPTH: usize = 20_000;
@@ -198,6 +202,7 @@ impl Machine {
             interrupted: None,
             current: Vec::new(),
             resolver: |n| builtins::lookup(n).map(Binding::Native),
+            engine: vm::Engine::from_env(),
         }
     }
 
@@ -226,7 +231,7 @@ impl Machine {
     pub fn run<'s>(
         &'s mut self,
         chk: ProgramRef<'s>,
-        stmts: &[Stmt],
+        stmts: &'s [Stmt],
         main: Option<FuncId>,
         svc: Option<&'s mut dyn Services>,
     ) -> Result<(), Box<Occurrence>> {
@@ -237,7 +242,11 @@ impl Machine {
             c: chk,
             svc,
         };
+        let compiled = run.m.engine == vm::Engine::Compiled;
         let r = (|| -> R<()> {
+            if compiled {
+                return run.run_compiled(stmts, main);
+            }
             run.exec_all(stmts)?;
             if let Some(f) = main {
                 run.call(
