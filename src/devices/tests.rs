@@ -1,0 +1,775 @@
+//! The device file and the device world. The two example files are the
+//! ones of tasks.md, byte for byte (`examples/devices/`).
+
+use super::*;
+
+const PARALLEL: &str = include_str!("../../examples/devices/parallel.toml");
+const CELL: &str = include_str!("../../examples/devices/cell.toml");
+
+fn parse(text: &str) -> Devices {
+    Devices::from_toml(text, "test.toml").unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn world(text: &str) -> World {
+    World::new(parse(text))
+}
+
+/// The cell of tasks.md with the belt's motor switched on at time 0.
+fn running_cell() -> World {
+    let mut w = world(CELL);
+    w.write(0o350, 1).unwrap();
+    w
+}
+
+fn position(w: &World, name: &str) -> Place {
+    w.objects()
+        .into_iter()
+        .find(|o| o.name == name)
+        .unwrap_or_else(|| panic!("no object {name}"))
+        .place
+}
+
+fn on_belt(w: &World, name: &str) -> (f64, bool) {
+    match position(w, name) {
+        Place::OnBelt {
+            position, at_end, ..
+        } => (position, at_end),
+        other => panic!("{name} is not on a belt: {other:?}"),
+    }
+}
+
+const PARALLEL_ONLY: &str = r#"
+[[device]]
+name = "parallel"
+kind = "parallel"
+interrupt = 0o340
+input = 0o342
+output = 0o344
+control = 0o346
+"#;
+
+// ------------------------------------------------------------------ file
+
+#[test]
+fn the_spec_parallel_example_parses() {
+    let d = parse(PARALLEL);
+    assert_eq!(d.source(), "test.toml");
+    assert_eq!(d.devices().len(), 1);
+    assert_eq!(d.devices()[0].name, "parallel");
+    assert_eq!(
+        d.devices()[0].kind,
+        DeviceKind::Parallel {
+            interrupt: 0o340,
+            input: 0o342,
+            output: 0o344,
+            control: 0o346
+        }
+    );
+    assert_eq!(
+        d.events(),
+        &[Event {
+            at: 0.5,
+            device: 0,
+            input: Some(0x00FF),
+            object: None,
+            interrupt: true,
+            line: 9,
+        }]
+    );
+    // The example is the default set, plus its event.
+    let default = Devices::default_set();
+    assert_eq!(d.devices()[0].kind, default.devices()[0].kind);
+    assert_eq!(d.devices()[0].name, default.devices()[0].name);
+}
+
+#[test]
+fn the_spec_cell_example_parses() {
+    let d = parse(CELL);
+    let names: Vec<&str> = d.devices().iter().map(|d| d.name.as_str()).collect();
+    assert_eq!(names, ["belt", "exit"]);
+    assert_eq!(
+        d.devices()[0].kind,
+        DeviceKind::Conveyor {
+            motor: 0o350,
+            length: 500.0,
+            speed: 100.0,
+            end: [250.0, 250.0, 30.0]
+        }
+    );
+    assert_eq!(
+        d.devices()[1].kind,
+        DeviceKind::LightBarrier {
+            on: Some(0),
+            input: 0o352,
+            interrupt: Some(0o354)
+        }
+    );
+    assert_eq!(d.devices()[1].line, 9);
+    let e = &d.events()[0];
+    assert_eq!((e.at, e.device, e.line), (1.0, 0, 16));
+    assert_eq!(
+        e.object,
+        Some(ObjectSpec {
+            name: "box1".into(),
+            width: 30.0
+        })
+    );
+    assert_eq!(d.lookup(0o354), Some((1, Role::Interrupt)));
+    assert_eq!(d.lookup(0o352), Some((1, Role::Input)));
+    assert_eq!(d.lookup(0o350), Some((0, Role::Motor)));
+    assert_eq!(d.lookup(0o340), None, "the file replaces the default set");
+}
+
+#[test]
+fn addresses_may_be_octal_hex_binary_or_decimal() {
+    let d = parse(
+        r#"
+[[device]]
+name = "p"
+kind = "parallel"
+interrupt = 0o340
+input = 0xE2
+output = 228
+control = 0b11100110
+"#,
+    );
+    assert_eq!(
+        d.addresses().collect::<Vec<_>>(),
+        [
+            (0o340, 0, Role::Interrupt),
+            (0o342, 0, Role::Input),
+            (0o344, 0, Role::Output),
+            (0o346, 0, Role::Control),
+        ]
+    );
+}
+
+#[test]
+fn the_default_set_is_the_appendix_c_port() {
+    let d = Devices::default_set();
+    assert_eq!(d.source(), "the default device set");
+    assert!(d.events().is_empty());
+    assert_eq!(d.lookup(0o340), Some((0, Role::Interrupt)));
+    assert_eq!(d.lookup(0o342), Some((0, Role::Input)));
+    assert_eq!(d.lookup(0o344), Some((0, Role::Output)));
+    assert_eq!(d.lookup(0o346), Some((0, Role::Control)));
+    assert_eq!(d.addresses().count(), 4);
+    let w = World::new(d);
+    assert!(w.is_interrupt(0o340));
+    assert!(!w.is_interrupt(0o342));
+    assert_eq!(w.read(0o340), None, "an interrupt is not a register");
+    for a in [0o342, 0o344, 0o346] {
+        assert_eq!(w.read(a), Some(0));
+    }
+    assert_eq!(w.next_wakeup(0.0), None);
+}
+
+/// Each bad file is one error at the line and column of the problem.
+#[test]
+fn a_bad_file_is_one_error_at_its_line() {
+    let conveyor = "[[device]]\nname = \"belt\"\nkind = \"conveyor\"\nmotor = 0o350\n";
+    let belt = format!("{conveyor}length = 500.0\nspeed = 100.0\nend = [1, 2, 3]\n");
+    let cases: Vec<(String, &str, &str)> = vec![
+        (
+            "[[device]]\nname = \"x\"\nkind = \"stepper\"\n".into(),
+            "3:8",
+            "unknown kind `stepper` for device `x`; the kinds are parallel, light-barrier, conveyor",
+        ),
+        (
+            format!("{conveyor}length = 500.0\nend = [1, 2, 3]\n"),
+            "1:1",
+            "device `belt` has no `speed`",
+        ),
+        (
+            format!(
+                "{PARALLEL_ONLY}\n[[device]]\nname = \"q\"\nkind = \"light-barrier\"\ninput = 0o344\n"
+            ),
+            "13:9",
+            "address 8#344# (0o344) is used twice: it is already the output of `parallel` (line 7)",
+        ),
+        (
+            format!(
+                "{PARALLEL_ONLY}\n[[event]]\nat = 1.0\ndevice = \"paralel\"\ninterrupt = true\n"
+            ),
+            "12:10",
+            "the event names an unknown device `paralel`; the devices are parallel",
+        ),
+        (
+            "[[device]]\nname = \"exit\"\nkind = \"light-barrier\"\non = \"belt\"\ninput = 1\n"
+                .into(),
+            "4:6",
+            "light barrier `exit` is `on` a belt that is not there: no device is named `belt`; `on` names a conveyor",
+        ),
+        (
+            format!(
+                "{PARALLEL_ONLY}[[device]]\nname = \"exit\"\nkind = \"light-barrier\"\non = \"parallel\"\ninput = 1\n"
+            ),
+            "12:6",
+            "`parallel` is a parallel",
+        ),
+        (
+            format!(
+                "{belt}[[event]]\nat = -1.0\ndevice = \"belt\"\nobject = {{ name = \"b\", width = 3 }}\n"
+            ),
+            "9:6",
+            "`at` = -1: must be a time in seconds >= 0",
+        ),
+        (
+            format!(
+                "{belt}[[event]]\nat = nan\ndevice = \"belt\"\nobject = {{ name = \"b\", width = 3 }}\n"
+            ),
+            "9:6",
+            "`at` = NaN: must be a time in seconds >= 0",
+        ),
+        (
+            format!("{conveyor}length = -500.0\nspeed = 100.0\nend = [1, 2, 3]\n"),
+            "5:10",
+            "`length` = -500: must be a length in mm > 0",
+        ),
+        (
+            format!("{conveyor}length = 500.0\nspeed = 0\nend = [1, 2, 3]\n"),
+            "6:9",
+            "`speed` = 0: must be a speed in mm/s > 0",
+        ),
+        (
+            format!("{conveyor}length = 500.0\nspeed = inf\nend = [1, 2, 3]\n"),
+            "6:9",
+            "`speed` = inf: must be a speed in mm/s > 0",
+        ),
+        (
+            format!("{conveyor}length = 500.0\nspeed = 1\nend = [1, 2]\n"),
+            "7:7",
+            "`end` must be a position [x, y, z] of three finite numbers (mm)",
+        ),
+        (
+            format!(
+                "{belt}[[event]]\nat = 1\ndevice = \"belt\"\nobject = {{ name = \"b\", width = nan }}\n"
+            ),
+            "11:32",
+            "`width` = NaN: must be a width in mm > 0",
+        ),
+        (
+            format!("{belt}[[event]]\nat = 1\ndevice = \"belt\"\nobject = {{ name = \"b\" }}\n"),
+            "11:10",
+            "the `object` has no `width`",
+        ),
+        (
+            format!(
+                "{belt}[[event]]\nat = 1\ndevice = \"belt\"\nobject = {{ name = \"b\", width = 1 }}\n[[event]]\nat = 2\ndevice = \"belt\"\nobject = {{ name = \"b\", width = 1 }}\n"
+            ),
+            "15:19",
+            "an object named `b` is already put on a belt at line 11",
+        ),
+        (
+            format!("{belt}[[event]]\nat = 1\ndevice = \"belt\"\ninput = 1\n"),
+            "11:9",
+            "an event on conveyor `belt` cannot have `input`: a conveyor has no input register",
+        ),
+        (
+            format!("{PARALLEL_ONLY}[[event]]\nat = 1\ndevice = \"parallel\"\ninput = 0x10000\n"),
+            "12:9",
+            "`input` = 65536: must be from 0 to 65535 (0xFFFF)",
+        ),
+        (
+            format!("{PARALLEL_ONLY}[[event]]\nat = 1\ndevice = \"parallel\"\n"),
+            "9:1",
+            "this `[[event]]` does nothing: give it `input`, `interrupt = true` or `object`",
+        ),
+        (
+            format!(
+                "{PARALLEL_ONLY}[[event]]\nat = 1\ndevice = \"parallel\"\nobject = {{ name = \"b\", width = 1 }}\n"
+            ),
+            "12:10",
+            "an event on parallel `parallel` cannot have `object`: objects are put on conveyors",
+        ),
+        (
+            format!("{PARALLEL_ONLY}speed = 3\n"),
+            "9:9",
+            "a parallel device has no `speed`; its fields are name, kind, interrupt, input, output, control",
+        ),
+        (
+            format!("{PARALLEL_ONLY}[[device]]\nname = \"parallel\"\n"),
+            "10:8",
+            "a device named `parallel` is already defined at line 2",
+        ),
+        (
+            "[[device]]\nname = \"p\"\nkind = \"parallel\"\ninterrupt = \"8#340#\"\n".into(),
+            "4:13",
+            "`interrupt` must be an integer address; for Ada's `8#340#` write `0o340` (got the string \"8#340#\")",
+        ),
+        (
+            "[[device]]\nname = \"p\"\nkind = \"parallel\"\ninterrupt = -8\n".into(),
+            "4:13",
+            "`interrupt` = -8: an address is from 0 to 4294967295 (0o37777777777)",
+        ),
+        (
+            "[[device]]\nname = \"p\"\nkind = \"parallel\"\ninterupt = 8\n".into(),
+            "4:1",
+            "unknown field `interupt`",
+        ),
+        (
+            "[[device]]\nname = \"p\"\nkind = \"parallel\"\ninterrupt = = 8\n".into(),
+            "4:13",
+            "extra `=`",
+        ),
+    ];
+    for (text, at, message) in cases {
+        let e = match Devices::from_toml(&text, "bad.toml") {
+            Ok(_) => panic!("accepted:\n{text}"),
+            Err(e) => e,
+        };
+        let shown = e.to_string();
+        let head = format!("bad.toml:{at}: error: ");
+        assert!(
+            shown.starts_with(&head) && shown.contains(message),
+            "for\n{text}\nexpected `{head}...{message}...`\n     got `{shown}`"
+        );
+        assert!(!shown.contains('\n'), "one line: {shown}");
+    }
+}
+
+#[test]
+fn an_unreadable_file_names_the_file() {
+    let e = Devices::load(std::path::Path::new("/no/such/devices.toml")).unwrap_err();
+    assert_eq!(e.at, None);
+    assert!(
+        e.to_string()
+            .starts_with("/no/such/devices.toml: error: cannot read the device file"),
+        "{e}"
+    );
+}
+
+// ------------------------------------------------------- events, interrupts
+
+#[test]
+fn events_happen_in_time_order_at_their_exact_times() {
+    let mut w = world(&format!(
+        r#"{PARALLEL_ONLY}
+[[event]]
+at = 2.0
+device = "parallel"
+interrupt = true
+
+[[event]]
+at = 0.5
+device = "parallel"
+input = 0x0001
+
+[[event]]
+at = 0.5
+device = "parallel"
+input = 0x0002
+interrupt = true
+"#
+    ));
+    w.write(0o346, 1).unwrap();
+    assert_eq!(w.next_wakeup(0.0), Some(0.5));
+    assert!(w.advance_to(0.4).is_empty());
+    assert_eq!(w.read(0o342), Some(0), "nothing before its time");
+    let irq = w.advance_to(0.5);
+    assert_eq!(
+        irq,
+        [Interrupt {
+            time: 0.5,
+            address: 0o340,
+            device: 0
+        }]
+    );
+    assert_eq!(
+        w.read(0o342),
+        Some(2),
+        "same time: file order, the later wins"
+    );
+    assert_eq!(w.next_wakeup(0.5), Some(2.0));
+    let irq = w.advance_to(10.0);
+    assert_eq!(irq.len(), 1);
+    assert_eq!(irq[0].time, 2.0, "its own time, not the time advanced to");
+    assert_eq!(w.now(), 10.0);
+    assert_eq!(w.next_wakeup(10.0), None);
+    assert_eq!(w.delivered(0o340), 2);
+}
+
+#[test]
+fn events_at_zero_wait_for_the_first_advance() {
+    let mut w = world(&format!(
+        "{PARALLEL_ONLY}[[event]]\nat = 0\ndevice = \"parallel\"\ninput = 7\n"
+    ));
+    assert_eq!(w.read(0o342), Some(0));
+    assert_eq!(w.next_wakeup(0.0), Some(0.0));
+    w.advance_to(0.0);
+    assert_eq!(w.read(0o342), Some(7));
+    assert_eq!(w.next_wakeup(0.0), None);
+}
+
+#[test]
+fn the_clock_never_goes_back() {
+    let mut w = world(PARALLEL);
+    w.advance_to(1.0);
+    assert!(w.advance_to(0.2).is_empty());
+    assert!(w.advance_to(f64::NAN).is_empty());
+    assert_eq!(w.now(), 1.0);
+}
+
+#[test]
+fn interrupts_while_disabled_are_dropped_and_counted() {
+    let mut w = world(PARALLEL);
+    assert_eq!(w.read(0o346), Some(0), "interrupts start disabled");
+    assert!(
+        w.advance_to(1.0).is_empty(),
+        "the event's interrupt is dropped"
+    );
+    assert_eq!(w.read(0o342), Some(0x00FF), "but its input is set");
+    assert_eq!((w.dropped(0o340), w.delivered(0o340)), (1, 0));
+
+    w.write(0o346, 1).unwrap();
+    let i = w.raise_interrupt(0o340).unwrap();
+    assert_eq!(
+        i,
+        Some(Interrupt {
+            time: 1.0,
+            address: 0o340,
+            device: 0
+        })
+    );
+    assert_eq!((w.dropped(0o340), w.delivered(0o340)), (1, 1));
+
+    // Only bit 0 enables.
+    w.write(0o346, 0xFFFE).unwrap();
+    assert_eq!(w.raise_interrupt(0o340).unwrap(), None);
+    assert_eq!(w.raise_interrupt(0o340).unwrap(), None);
+    assert_eq!((w.dropped(0o340), w.delivered(0o340)), (3, 1));
+    assert_eq!(w.dropped(0o342), 0);
+}
+
+#[test]
+fn registers_refuse_what_they_cannot_take() {
+    let mut w = world(PARALLEL_ONLY);
+    w.write(0o344, 0xBEEF).unwrap();
+    assert_eq!(w.read(0o344), Some(0xBEEF), "an output reads back");
+    assert!(matches!(
+        w.write(0o342, 5),
+        Err(DeviceError::ReadOnly { address: 0o342, .. })
+    ));
+    assert_eq!(w.read(0o342), Some(0), "a refused write changes nothing");
+    assert!(matches!(
+        w.write(0o340, 1),
+        Err(DeviceError::NotARegister { .. })
+    ));
+    assert_eq!(w.write(0o360, 1), Err(DeviceError::NoDevice(0o360)));
+    assert_eq!(w.read(0o360), None);
+    assert!(matches!(
+        w.raise_interrupt(0o342),
+        Err(DeviceError::NotAnInterrupt { .. })
+    ));
+    assert!(matches!(
+        w.set_input(0o344, 1),
+        Err(DeviceError::NotAnInput { .. })
+    ));
+    assert_eq!(w.set_input(0o342, 0x1234), Ok(None));
+    assert_eq!(w.read(0o342), Some(0x1234));
+    assert_eq!(
+        w.write(0o342, 5).unwrap_err().to_string(),
+        "8#342# is the input register of `parallel`: it is set from outside, not written"
+    );
+}
+
+#[test]
+fn a_standalone_light_barrier_interrupts_on_the_rising_edge_only() {
+    let mut w = world(
+        r#"
+[[device]]
+name = "gate"
+kind = "light-barrier"
+input = 0o360
+interrupt = 0o362
+
+[[event]]
+at = 1
+device = "gate"
+input = 1
+
+[[event]]
+at = 2
+device = "gate"
+input = 1
+
+[[event]]
+at = 3
+device = "gate"
+input = 0
+"#,
+    );
+    let irq = w.advance_to(5.0);
+    assert_eq!(
+        irq,
+        [Interrupt {
+            time: 1.0,
+            address: 0o362,
+            device: 0
+        }]
+    );
+    assert_eq!(w.read(0o360), Some(0));
+    assert!(w.set_input(0o360, 1).unwrap().is_some(), "rising edge");
+    assert!(w.set_input(0o360, 1).unwrap().is_none(), "already broken");
+    assert!(w.set_input(0o360, 0).unwrap().is_none(), "falling edge");
+    assert_eq!(
+        w.set_input(0o360, 2),
+        Err(DeviceError::OutOfRange {
+            address: 0o360,
+            value: 2,
+            max: 1
+        })
+    );
+    assert_eq!(w.delivered(0o362), 2);
+    assert_eq!(w.dropped(0o362), 0, "a light barrier is always enabled");
+}
+
+// --------------------------------------------------------------------- belt
+
+#[test]
+fn an_object_reaches_the_end_when_its_centre_does() {
+    let mut w = running_cell();
+    assert_eq!(w.next_wakeup(0.0), Some(1.0), "the event puts box1 on");
+    assert!(w.advance_to(1.0).is_empty());
+    assert_eq!(on_belt(&w, "box1"), (0.0, false));
+    assert_eq!(w.next_wakeup(1.0), Some(6.0), "500 mm at 100 mm/s");
+    assert!(w.advance_to(5.99).is_empty());
+    assert_eq!(w.read(0o352), Some(0));
+    let irq = w.advance_to(6.0);
+    assert_eq!(
+        irq,
+        [Interrupt {
+            time: 6.0,
+            address: 0o354,
+            device: 1
+        }]
+    );
+    assert_eq!(w.read(0o352), Some(1), "the beam is broken");
+    assert_eq!(on_belt(&w, "box1"), (500.0, true));
+    assert!(w.advance_to(100.0).is_empty(), "it stays at the end");
+    assert_eq!(on_belt(&w, "box1"), (500.0, true));
+    assert_eq!(w.next_wakeup(100.0), None);
+}
+
+#[test]
+fn the_arrival_is_exact_however_the_clock_is_stepped() {
+    let mut w = running_cell();
+    let mut irq = Vec::new();
+    let mut t = 0.0;
+    while t < 7.0 {
+        t += 0.1; // not exact in binary
+        irq.extend(w.advance_to(t));
+    }
+    assert_eq!(irq.len(), 1);
+    assert_eq!(irq[0].time, 6.0);
+    assert_eq!(on_belt(&w, "box1"), (500.0, true));
+}
+
+#[test]
+fn a_stopped_belt_keeps_its_object_and_resumes() {
+    let mut w = world(CELL);
+    w.advance_to(1.0);
+    assert_eq!(w.next_wakeup(1.0), None, "the motor is off: nothing moves");
+    w.advance_to(2.0);
+    assert_eq!(on_belt(&w, "box1"), (0.0, false));
+    w.write(0o350, 1).unwrap();
+    assert_eq!(w.next_wakeup(2.0), Some(7.0));
+    w.advance_to(4.0);
+    assert_eq!(on_belt(&w, "box1"), (200.0, false));
+    w.write(0o350, 0).unwrap();
+    assert_eq!(w.next_wakeup(4.0), None);
+    w.advance_to(9.0);
+    assert_eq!(on_belt(&w, "box1"), (200.0, false), "half-way, stopped");
+    // Other bits than bit 0 do not run it.
+    w.write(0o350, 0xFFFE).unwrap();
+    assert_eq!(w.next_wakeup(9.0), None);
+    w.write(0o350, 1).unwrap();
+    assert_eq!(w.read(0o350), Some(1));
+    assert_eq!(w.next_wakeup(9.0), Some(12.0), "the remaining 300 mm");
+    assert!(w.advance_to(11.999).is_empty());
+    let irq = w.advance_to(12.0);
+    assert_eq!(irq.len(), 1);
+    assert_eq!(irq[0].time, 12.0);
+}
+
+const TWO_BOXES: &str = r#"
+[[event]]
+at = 1.0
+device = "belt"
+object = { name = "box2", width = 20.0 }
+
+[[event]]
+at = 1.0
+device = "belt"
+object = { name = "box3", width = 10.0 }
+"#;
+
+#[test]
+fn the_beam_interrupts_once_and_the_next_object_queues_behind() {
+    // box1 (30 mm) at 1.0, box2 (20 mm) and box3 (10 mm) at 1.0 too: each
+    // waits behind the one before it, centre to centre at the half widths.
+    let mut w = world(&format!("{CELL}{TWO_BOXES}"));
+    w.write(0o350, 1).unwrap();
+    w.advance_to(1.0);
+    assert_eq!(on_belt(&w, "box2").0, -25.0);
+    assert_eq!(on_belt(&w, "box3").0, -40.0);
+    let irq = w.advance_to(60.0);
+    assert_eq!(irq.len(), 1, "one rising edge: {irq:?}");
+    assert_eq!(irq[0].time, 6.0);
+    assert_eq!(on_belt(&w, "box1"), (500.0, true));
+    assert_eq!(on_belt(&w, "box2"), (475.0, false));
+    assert_eq!(on_belt(&w, "box3"), (460.0, false));
+    assert_eq!(w.next_wakeup(60.0), None, "the end is taken");
+
+    // Picking box1 clears the beam; box2 moves up its 25 mm.
+    w.pick("box1").unwrap();
+    assert_eq!(w.read(0o352), Some(0));
+    assert_eq!(w.next_wakeup(60.0), Some(60.25));
+    let irq = w.advance_to(61.0);
+    assert_eq!(irq.len(), 1);
+    assert_eq!(irq[0].time, 60.25);
+    assert_eq!(on_belt(&w, "box2"), (500.0, true));
+    assert_eq!(on_belt(&w, "box3"), (485.0, false));
+    assert_eq!(w.read(0o352), Some(1));
+    assert_eq!(w.delivered(0o354), 2);
+}
+
+#[test]
+fn an_arrival_comes_before_an_event_of_the_same_instant() {
+    let mut w = world(&format!(
+        "{CELL}{}[[event]]\nat = 6.0\ndevice = \"parallel\"\ninterrupt = true\n",
+        PARALLEL_ONLY
+    ));
+    w.write(0o350, 1).unwrap();
+    w.write(0o346, 1).unwrap();
+    let irq = w.advance_to(6.0);
+    let order: Vec<(f64, Address)> = irq.iter().map(|i| (i.time, i.address)).collect();
+    assert_eq!(order, [(6.0, 0o354), (6.0, 0o340)]);
+}
+
+// ------------------------------------------------------------------ gripper
+
+#[test]
+fn picking_from_the_end_clears_the_beam_at_that_moment() {
+    let mut w = running_cell();
+    w.advance_to(8.0);
+    assert_eq!(w.read(0o352), Some(1));
+    let found = w
+        .object_at([250.0, 250.0, 30.0], GRIP_TOLERANCE_MM)
+        .expect("at the end");
+    assert_eq!(found.name, "box1");
+    assert_eq!(found.centre, Some([250.0, 250.0, 30.0]));
+    let was = w.pick("box1").unwrap();
+    assert!(matches!(was.place, Place::OnBelt { at_end: true, .. }));
+    assert_eq!(was.width, 30.0);
+    assert_eq!(
+        w.read(0o352),
+        Some(0),
+        "cleared when the jaws close, not later"
+    );
+    assert_eq!(position(&w, "box1"), Place::Held);
+    assert_eq!(w.object_at([250.0, 250.0, 30.0], 5.0), None);
+    assert_eq!(w.pick("box1"), Err(DeviceError::AlreadyHeld("box1".into())));
+    assert!(
+        w.advance_to(20.0).is_empty(),
+        "a falling edge does not interrupt"
+    );
+
+    w.put_down("box1", [100.0, -50.0, 10.0]).unwrap();
+    assert_eq!(position(&w, "box1"), Place::At([100.0, -50.0, 10.0]));
+    assert_eq!(w.read(0o352), Some(0), "put down off the belt");
+    assert_eq!(
+        w.object_at([103.0, -46.0, 10.0], 5.0).map(|o| o.name),
+        Some("box1".into())
+    );
+    assert_eq!(
+        w.put_down("box1", [0.0; 3]),
+        Err(DeviceError::NotHeld("box1".into()))
+    );
+    assert_eq!(
+        w.pick("box9"),
+        Err(DeviceError::UnknownObject("box9".into()))
+    );
+    w.pick("box1").unwrap();
+}
+
+#[test]
+fn the_gripper_reaches_5_mm_and_only_objects_at_rest() {
+    let mut w = running_cell();
+    w.advance_to(3.0);
+    assert_eq!(
+        w.object_at([250.0, 250.0, 30.0], 1000.0),
+        None,
+        "on the way: not where the gripper can reach it"
+    );
+    w.advance_to(6.0);
+    assert!(
+        w.object_at([255.0, 250.0, 30.0], GRIP_TOLERANCE_MM)
+            .is_some()
+    );
+    assert!(
+        w.object_at([255.01, 250.0, 30.0], GRIP_TOLERANCE_MM)
+            .is_none()
+    );
+    assert!(
+        w.object_at([250.0, 250.0, 35.5], GRIP_TOLERANCE_MM)
+            .is_none()
+    );
+}
+
+// ------------------------------------------------------------------ display
+
+#[test]
+fn describe_shows_registers_objects_and_counts() {
+    let mut w = world(&format!("{CELL}{PARALLEL_ONLY}"));
+    w.write(0o350, 1).unwrap();
+    w.raise_interrupt(0o340).unwrap();
+    w.advance_to(3.0);
+    let s = w.to_string();
+    assert_eq!(
+        s,
+        "devices of test.toml at t = 3.000 s
+belt (conveyor, 500 mm at 100 mm/s, end at (250.0, 250.0, 30.0) mm)
+  8#350#   motor      16#0001# (running)
+  box1 (30 mm) at 200.0 mm
+exit (light barrier at the end of belt)
+  8#354#   interrupt  always enabled, rising edge; 0 delivered, 0 dropped
+  8#352#   input      0 (beam clear)
+parallel (parallel)
+  8#340#   interrupt  disabled; 0 delivered, 1 dropped
+  8#342#   input      16#0000#
+  8#344#   output     16#0000#
+  8#346#   control    16#0000# (interrupts disabled)
+"
+    );
+    assert_eq!(
+        w.trace_line(),
+        "[t=    3.000 s] devices: belt motor=16#0001# box1@200.0; exit beam=0; \
+         parallel in=16#0000# out=16#0000# ctl=16#0000# dropped=1"
+    );
+    w.advance_to(6.0);
+    w.pick("box1").unwrap();
+    assert!(w.to_string().contains("box1 (30 mm) in the gripper\n"));
+    assert!(w.trace_line().ends_with("; box1 held"));
+}
+
+#[test]
+fn the_log_tells_what_happened_in_order() {
+    let mut w = running_cell();
+    w.set_logging(true);
+    w.advance_to(6.0);
+    w.pick("box1").unwrap();
+    let lines: Vec<String> = w.take_log().iter().map(|h| h.to_string()).collect();
+    assert_eq!(
+        lines,
+        [
+            "[t=    1.000 s] devices: belt: box1 put on the start",
+            "[t=    6.000 s] devices: belt: box1 reaches the end",
+            "[t=    6.000 s] devices: exit: beam broken",
+            "[t=    6.000 s] devices: exit: interrupt 8#354# delivered",
+            "[t=    6.000 s] devices: exit: beam clear",
+            "[t=    6.000 s] devices: gripper: box1 picked",
+        ]
+    );
+    assert!(w.take_log().is_empty(), "taken");
+}
