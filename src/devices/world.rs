@@ -397,7 +397,7 @@ impl World {
     /// nothing.
     pub fn advance_to(&mut self, t: f64) -> Vec<Interrupt> {
         let mut out = Vec::new();
-        if !(t >= self.now) {
+        if t.is_nan() || t < self.now {
             return out;
         }
         loop {
