@@ -592,6 +592,66 @@ fn a_stopped_belt_keeps_its_object_and_resumes() {
     assert_eq!(irq[0].time, 12.0);
 }
 
+#[test]
+fn an_arrival_is_exactly_at_the_end_even_when_the_division_rounds() {
+    // 333 mm at 100 mm/s from t = 1.1: 100 * ((1.1 + 3.33) - 1.1) is
+    // 332.99999999999994 in binary; the object must still stop at 333.
+    let mut w = world(
+        r#"
+[[device]]
+name = "belt"
+kind = "conveyor"
+motor = 1
+length = 333
+speed = 100
+end = [0, 0, 0]
+
+[[event]]
+at = 1.1
+device = "belt"
+object = { name = "b", width = 10 }
+"#,
+    );
+    w.write(1, 1).unwrap();
+    w.advance_to(1.1);
+    let t = w.next_wakeup(1.1).unwrap();
+    w.advance_to(t);
+    assert_eq!(on_belt(&w, "b"), (333.0, true));
+    w.advance_to(t + 1.0);
+    assert_eq!(on_belt(&w, "b"), (333.0, true));
+}
+
+#[test]
+fn something_overdue_wakes_at_once() {
+    let w = world(PARALLEL);
+    assert_eq!(w.next_wakeup(0.0), Some(0.5));
+    assert_eq!(w.next_wakeup(0.7), Some(0.7), "due before 0.7: wake at 0.7");
+}
+
+#[test]
+fn a_light_barrier_on_a_belt_follows_the_objects() {
+    let mut w = world(CELL);
+    assert_eq!(
+        w.set_input(0o352, 1),
+        Err(DeviceError::FollowsBelt {
+            address: 0o352,
+            barrier: "exit".into(),
+            belt: "belt".into()
+        })
+    );
+    assert_eq!(w.read(0o352), Some(0));
+    let e = Devices::from_toml(
+        &format!("{CELL}\n[[event]]\nat = 2\ndevice = \"exit\"\ninput = 1\n"),
+        "cell.toml",
+    )
+    .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "cell.toml:24:9: error: an event on light-barrier `exit` cannot have `input`: \
+         its beam follows the objects on `belt`"
+    );
+}
+
 const TWO_BOXES: &str = r#"
 [[event]]
 at = 1.0

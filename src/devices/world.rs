@@ -541,7 +541,6 @@ impl World {
         let State::Barrier { beam } = &mut self.state[barrier] else {
             return;
         };
-        let rising = broken && !*beam;
         if *beam == broken {
             return;
         }
@@ -554,7 +553,7 @@ impl World {
                 broken,
             },
         );
-        if rising
+        if broken
             && let DeviceKind::LightBarrier {
                 interrupt: Some(a), ..
             } = self.devs.devices()[barrier].kind
