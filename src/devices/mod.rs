@@ -17,6 +17,34 @@
 //!
 //! Nothing here reads a clock, prints or knows the robot: times are seconds
 //! given by the caller, positions are plain millimetres.
+//!
+//! Where tasks.md is silent, this module decides:
+//! - A device file replaces the default set (the spec's cell file has no
+//!   parallel port). An empty file is allowed: no devices.
+//! - Every register starts at 0, so the parallel port's interrupts are
+//!   disabled until the program sets bit 0 of its control register. Only
+//!   bit 0 of control (enable) and of motor (run) mean anything; every bit
+//!   is kept and read back.
+//! - Writing an input register (or an interrupt address) is refused with a
+//!   [`DeviceError`] and changes nothing; the engine chooses what the
+//!   program sees.
+//! - Events at one instant apply in file order; within an event: input,
+//!   then object, then interrupt. An object reaching a belt's end comes
+//!   before the scripted events of the same instant.
+//! - Objects on a belt never overlap: each one stops behind the one ahead,
+//!   centre to centre at the sum of their half widths, and one put on a
+//!   belt whose start is taken waits behind the last one (at a negative
+//!   position). Only the front object can reach the end and break the beam;
+//!   picking it lets the next one move up and interrupt again.
+//! - The gripper reaches objects at rest: at a belt's end or where they
+//!   were put down (a belt has no coordinates but its end). An object put
+//!   down is off every belt, even at a belt's end. Object names are unique
+//!   in the file.
+//! - A light barrier without `on` is set by `input = 0|1` events and
+//!   `:set`; one with `on` follows its belt and refuses both. Its interrupt
+//!   is optional (a barrier may only be polled).
+//! - Addresses are `u32`; written in the file as TOML integers (`0o340`,
+//!   `0xE0`, `224`); Ada's `"8#340#"` as a string is refused with a hint.
 
 mod file;
 mod world;
