@@ -198,7 +198,24 @@ impl Devices {
         let cx = Cx { text, path };
         let raw: RawFile = toml::from_str(text).map_err(|e| {
             let span = e.span().unwrap_or(0..0);
-            cx.err(span, first_line(e.message()))
+            let message = first_line(e.message());
+            // `[device]` for `[[device]]` is the likely slip; serde would
+            // only say that it expected a sequence.
+            let line = text[span.start.min(text.len())..]
+                .lines()
+                .next()
+                .unwrap_or("");
+            let key = ["device", "event"].into_iter().find(|k| line.contains(k));
+            match key {
+                Some(k) if message.contains("expected a sequence") => cx.err(
+                    span,
+                    format!(
+                        "each {k} is a table `[[{k}]]` (double brackets), not `{}`",
+                        line.trim()
+                    ),
+                ),
+                _ => cx.err(span, message),
+            }
         })?;
         let devices = parse_devices(&cx, &raw.device)?;
         let events = parse_events(&cx, &raw.event, &devices)?;

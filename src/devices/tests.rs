@@ -312,6 +312,21 @@ fn a_bad_file_is_one_error_at_its_line() {
             "4:13",
             "extra `=`",
         ),
+        (
+            "# devices\n[device]\nname = \"p\"\n".into(),
+            "2:1",
+            "each device is a table `[[device]]` (double brackets), not `[device]`",
+        ),
+        (
+            format!("{PARALLEL_ONLY}[event]\nat = 1\n"),
+            "9:1",
+            "each event is a table `[[event]]` (double brackets), not `[event]`",
+        ),
+        (
+            "[[devices]]\nname = \"p\"\n".into(),
+            "1:3",
+            "unknown field `devices`, expected `device` or `event`",
+        ),
     ];
     for (text, at, message) in cases {
         let e = match Devices::from_toml(&text, "bad.toml") {
