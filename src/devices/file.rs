@@ -201,9 +201,9 @@ impl Devices {
             let message = first_line(e.message());
             // `[device]` for `[[device]]` is the likely slip; serde would
             // only say that it expected a sequence.
-            let line = text[span.start.min(text.len())..]
-                .lines()
-                .next()
+            let line = text
+                .get(span.start..)
+                .and_then(|t| t.lines().next())
                 .unwrap_or("");
             let key = ["device", "event"].into_iter().find(|k| line.contains(k));
             match key {
