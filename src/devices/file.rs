@@ -270,6 +270,10 @@ impl Devices {
     pub fn lookup(&self, address: Address) -> Option<(usize, Role)> {
         self.addresses.get(&address).copied()
     }
+    /// Whether an interrupt sits at `address` (`for E use at` binds to it).
+    pub fn is_interrupt(&self, address: Address) -> bool {
+        matches!(self.lookup(address), Some((_, Role::Interrupt)))
+    }
     /// Every address in use, in ascending order.
     pub fn addresses(&self) -> impl Iterator<Item = (Address, usize, Role)> + '_ {
         self.addresses.iter().map(|(&a, &(d, r))| (a, d, r))

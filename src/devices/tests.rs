@@ -154,6 +154,7 @@ fn the_default_set_is_the_appendix_c_port() {
     assert_eq!(d.lookup(0o344), Some((0, Role::Output)));
     assert_eq!(d.lookup(0o346), Some((0, Role::Control)));
     assert_eq!(d.addresses().count(), 4);
+    assert!(d.is_interrupt(0o340) && !d.is_interrupt(0o346));
     let w = World::new(d);
     assert!(w.is_interrupt(0o340));
     assert!(!w.is_interrupt(0o342));
@@ -1002,5 +1003,31 @@ proptest::proptest! {
             check_invariants(&w);
         }
         assert_eq!(w.delivered(0o340) + w.delivered(0o354), delivered);
+    }
+}
+
+proptest::proptest! {
+    /// A mangled device file is an error with a place, never a panic.
+    #[test]
+    fn mangled_files_never_panic(
+        cuts in proptest::collection::vec((0usize..2000, 0usize..6, "[\\[\\]=\"a-z0-9_. \n{},-]{0,4}"), 1..6)
+    ) {
+        let mut text = format!("{CELL}{PARALLEL_ONLY}{TWO_BOXES}");
+        for (at, len, insert) in cuts {
+            let mut at = at % (text.len() + 1);
+            while !text.is_char_boundary(at) {
+                at -= 1;
+            }
+            let mut end = (at + len).min(text.len());
+            while !text.is_char_boundary(end) {
+                end -= 1;
+            }
+            text.replace_range(at..end, &insert);
+        }
+        if let Err(e) = Devices::from_toml(&text, "m.toml") {
+            let (line, col) = e.at.expect("a place");
+            assert!(line >= 1 && line <= text.lines().count() + 1 && col >= 1, "{e}");
+            assert!(!e.to_string().contains('\n'), "{e}");
+        }
     }
 }

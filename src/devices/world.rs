@@ -654,7 +654,7 @@ impl World {
 
     /// Whether an interrupt sits at `address` (for `for E use at`).
     pub fn is_interrupt(&self, address: Address) -> bool {
-        matches!(self.devs.lookup(address), Some((_, Role::Interrupt)))
+        self.devs.is_interrupt(address)
     }
 
     /// The register at `address` now; `None` when no register is there (no
