@@ -47,15 +47,15 @@
 //!   `0xE0`, `224`); Ada's `"8#340#"` as a string is refused with a hint.
 
 mod file;
+mod report;
 mod world;
 
 #[cfg(test)]
 mod tests;
 
 pub use file::{Device, DeviceFileError, DeviceKind, Devices, Event, KINDS, ObjectSpec, Role};
-pub use world::{
-    DeviceError, GRIP_TOLERANCE_MM, Happening, Interrupt, ObjectInfo, Place, TimedHappening, World,
-};
+pub use report::{DeviceError, Happening, TimedHappening};
+pub use world::{GRIP_TOLERANCE_MM, Interrupt, ObjectInfo, Place, World};
 
 /// A device address (`for X use at 8#342#;`), as written in the device file
 /// (`0o342`).
