@@ -42,7 +42,11 @@
 //!   in the file.
 //! - A light barrier without `on` is set by `input = 0|1` events and
 //!   `:set`; one with `on` follows its belt and refuses both. Its interrupt
-//!   is optional (a barrier may only be polled).
+//!   is optional (a barrier may only be polled). An event's `interrupt =
+//!   true` raises any device's interrupt, whatever its beam.
+//! - Interrupts carry no data; the counts of delivered and dropped ones are
+//!   kept per address. The trace log is off until `set_logging(true)`, so a
+//!   long run without `--trace` keeps nothing.
 //! - Addresses are `u32`; written in the file as TOML integers (`0o340`,
 //!   `0xE0`, `224`); Ada's `"8#340#"` as a string is refused with a hint.
 
