@@ -46,10 +46,14 @@ enum Op<'p> {
     Real(Var, f64),
     Move(Var, Var),
     IntBin(IntOp, Var, Var, Var, Span),
+    /// `IntBin` with an integer literal on the right.
+    IntBinK(IntOp, Var, Var, i64, Span),
     IntNeg(Var, Var, Span),
     FloatBin(FloatOp, Var, Var, Var, Span),
     ToReal(Var, Var),
     Cmp(CmpOp, Var, Var, Var),
+    /// `Cmp` of an integer with an integer literal.
+    CmpK(CmpOp, Var, Var, i64),
     Eq(bool, Var, Var, Var),
     Logic(LogicOp, Var, Var, Var),
     Not(Var, Var),
@@ -215,6 +219,11 @@ impl<'p> Compiler<'p, '_> {
             ExKind::Real(v) => self.ops.push(Op::Real(dst, *v)),
             ExKind::Var(v) => self.ops.push(Op::Move(dst, *v)),
             ExKind::IntBin(op, a, b) => {
+                if let ExKind::Int(k) = b.kind {
+                    let x = self.expr(a);
+                    self.ops.push(Op::IntBinK(*op, dst, x, k, span));
+                    return;
+                }
                 let x = self.left(a, b);
                 let y = self.expr(b);
                 self.ops.push(Op::IntBin(*op, dst, x, y, span));
@@ -231,6 +240,13 @@ impl<'p> Compiler<'p, '_> {
             ExKind::IntToFloat(a) => {
                 let x = self.expr(a);
                 self.ops.push(Op::ToReal(dst, x));
+            }
+            ExKind::Cmp(op, a, b) if matches!(b.kind, ExKind::Int(_)) => {
+                let ExKind::Int(k) = b.kind else {
+                    unreachable!()
+                };
+                let x = self.expr(a);
+                self.ops.push(Op::CmpK(*op, dst, x, k));
             }
             ExKind::Cmp(op, a, b) => {
                 let x = self.left(a, b);
@@ -829,6 +845,41 @@ impl<'a> Run<'a> {
                             .int_op(*o, x, y, *span)
                             .map(|v| self.put(*d, Value::Int(v))),
                     }
+                }
+                Op::IntBinK(o, d, a, y, span) => {
+                    let (x, y) = (self.int_at(*a), *y);
+                    let quick = match o {
+                        IntOp::Add => Some(x + y),
+                        IntOp::Sub => Some(x - y),
+                        _ => None,
+                    };
+                    match quick {
+                        Some(v) if (i32::MIN as i64..=i32::MAX as i64).contains(&v) => {
+                            self.put(*d, Value::Int(v));
+                            Ok(())
+                        }
+                        _ => self
+                            .int_op(*o, x, y, *span)
+                            .map(|v| self.put(*d, Value::Int(v))),
+                    }
+                }
+                Op::CmpK(o, d, a, k) => {
+                    use std::cmp::Ordering::*;
+                    // As `Value::compare` orders them (an Int against an Int).
+                    let ord = match &self.m.stack[self.sl(*a)] {
+                        Value::Int(x) => x.cmp(k),
+                        other => other.compare(&Value::Int(*k)),
+                    };
+                    let r = match o {
+                        CmpOp::Lt => ord == Less,
+                        CmpOp::Le => ord != Greater,
+                        CmpOp::Gt => ord == Greater,
+                        CmpOp::Ge => ord != Less,
+                        CmpOp::Eq => ord == Equal,
+                        CmpOp::Ne => ord != Equal,
+                    };
+                    self.put(*d, Value::Int(r as i64));
+                    Ok(())
                 }
                 Op::IntNeg(d, a, span) => {
                     let x = self.int_at(*a);
