@@ -954,14 +954,20 @@ impl Checker {
             ExprKind::Null => self.mk(ExKind::Null, NULL_T, sp),
             ExprKind::Error => self.err_ex(sp),
             ExprKind::Paren(x) => self.expr(x, want),
-            ExprKind::Name(_) => {
+            ExprKind::Name(id) => {
                 let es = self.denote(e, true);
-                self.entity_value(&es, want, sp, &crate::syntax::parser::expr_text(e))
+                self.entity_value(&es, want, sp, &crate::syntax::parser::expr_text(e), id)
             }
             ExprKind::Select(p, id) => {
                 if self.expanded_prefix(p) {
                     let es = self.denote(e, true);
-                    return self.entity_value(&es, want, sp, &crate::syntax::parser::expr_text(e));
+                    return self.entity_value(
+                        &es,
+                        want,
+                        sp,
+                        &crate::syntax::parser::expr_text(e),
+                        id,
+                    );
                 }
                 let pe = self.expr(p, None);
                 self.component(pe, id, sp)
@@ -1221,7 +1227,16 @@ impl Checker {
         }
     }
 
-    fn entity_value(&mut self, es: &[Entity], want: Option<TypeId>, sp: Span, text: &str) -> Ex {
+    /// The value a name denotes; `id` is the identifier it ends with (the
+    /// resolved overload is recorded there).
+    fn entity_value(
+        &mut self,
+        es: &[Entity],
+        want: Option<TypeId>,
+        sp: Span,
+        text: &str,
+        id: &ast::Ident,
+    ) -> Ex {
         let Some(first) = es.first() else {
             return self.err_ex(sp);
         };
@@ -1257,18 +1272,21 @@ impl Checker {
                     if let Entity::EnumLit(t, pos) = e
                         && want.is_none_or(|w| self.types.compatible(*t, w))
                     {
+                        self.index_ref(id.span, &id.key, e);
                         return self.mk(ExKind::Int(*pos), *t, sp);
                     }
                 }
                 let fs: Vec<FuncId> = funcs_of(es);
                 if fs.is_empty() {
-                    if let Some(Entity::EnumLit(t, pos)) = es.first() {
+                    if let Some(e @ Entity::EnumLit(t, pos)) = es.first() {
+                        self.index_ref(id.span, &id.key, e);
                         return self.mk(ExKind::Int(*pos), *t, sp);
                     }
                     return self.err_ex(sp);
                 }
                 match self.call(&fs, &[], want, false, sp, text) {
                     Some((f, args)) => {
+                        self.index_ref(id.span, &id.key, &Entity::Func(f));
                         let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
                         self.mk(ExKind::Call(f, args), r, sp)
                     }
@@ -1315,6 +1333,7 @@ impl Checker {
             Some(fields) => match fields.iter().position(|f| f.key == id.key) {
                 Some(i) => {
                     let t = fields[i].ty;
+                    self.index_field_ref(id.span, pe.ty, i as u32);
                     self.mk(ExKind::Field(bx(pe), i as u32), t, sp)
                 }
                 None => {
@@ -1388,6 +1407,9 @@ impl Checker {
                                 .is_some_and(|a| a.0.len() == args.len())
                     })
                 {
+                    if let Some(id) = super::stmt::last_ident(p) {
+                        self.index_ref(id.span, &id.key, &Entity::Func(f));
+                    }
                     let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
                     let defaults: Vec<Arg> = self.funcs[f as usize]
                         .params
@@ -1414,6 +1436,9 @@ impl Checker {
                 }
                 match self.call(&fs, args, want, false, sp, &name) {
                     Some((f, a)) => {
+                        if let Some(id) = super::stmt::last_ident(p) {
+                            self.index_ref(id.span, &id.key, &Entity::Func(f));
+                        }
                         let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
                         self.mk(ExKind::Call(f, a), r, sp)
                     }
