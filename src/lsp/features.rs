@@ -91,7 +91,7 @@ pub fn service_doc(svc: &Service) -> String {
 /// The exception names (of the services' exception table) a doc text
 /// mentions, as spelled there.
 fn exceptions_in(doc: &str) -> Vec<String> {
-    let names: Vec<String> = crate::services::exc::Exc::ALL
+    let names: Vec<String> = crate::services::Exc::ALL
         .iter()
         .map(|e| {
             let full = e.full_name();
