@@ -236,9 +236,11 @@ pub fn visible_defs(a: &Analysis, offset: usize) -> Vec<u32> {
         if d.span.context != a.file || d.kind == DefKind::Field || d.span.start > offset {
             continue;
         }
+        // A subprogram or package is declared in the region around its own.
+        let own = matches!(d.kind, DefKind::Subprogram | DefKind::Package);
         let owner = regions
             .iter()
-            .filter(|r| inside(r, d.span.start, d.span.end) && r.start != d.span.start)
+            .filter(|r| inside(r, d.span.start, d.span.end) && !(own && r.start == d.decl.start))
             .min_by_key(|r| r.end - r.start);
         if owner.is_none_or(|r| inside(r, offset, offset)) {
             v.push(i as u32);

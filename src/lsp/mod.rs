@@ -29,6 +29,9 @@ pub struct Config {
     /// Where the stdlib sources are written for "go to definition" into the
     /// AdaIR package (`None`: [`Base::default_stdlib_dir`]).
     pub stdlib_dir: Option<std::path::PathBuf>,
+    /// Answer the request `adair/crash` by panicking (the tests' way to
+    /// show that a failing request does not end the server).
+    pub crash_request: bool,
 }
 
 /// The capabilities this server announces.
@@ -69,6 +72,7 @@ struct Server<'c> {
     base: Base,
     docs: HashMap<Uri, Doc>,
     shutdown: bool,
+    crash_request: bool,
 }
 
 /// Runs the server until `exit` (after the handshake). Errors are protocol
@@ -91,6 +95,7 @@ pub fn run(conn: &Connection, config: Config) -> Result<(), String> {
         base,
         docs: HashMap::new(),
         shutdown: false,
+        crash_request: config.crash_request,
     };
     server.main_loop()
 }
@@ -384,6 +389,7 @@ impl Server<'_> {
                 };
                 json(complete::signature_help(&a, off).map(signature_help))
             }
+            "adair/crash" if self.crash_request => panic!("adair/crash was asked for"),
             _ => Err((
                 ErrorCode::MethodNotFound,
                 format!("adair lsp does not handle {}", r.method),
@@ -487,7 +493,13 @@ pub fn path_to_uri(path: &Path) -> Option<Uri> {
 /// `adair lsp`: serves on standard input and output until the client exits.
 pub fn serve_stdio() -> Result<(), String> {
     let (conn, io) = Connection::stdio();
-    run(&conn, Config { stdlib_dir: None })?;
+    run(
+        &conn,
+        Config {
+            stdlib_dir: None,
+            crash_request: false,
+        },
+    )?;
     drop(conn);
     io.join().map_err(|e| e.to_string())
 }
