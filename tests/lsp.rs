@@ -614,3 +614,67 @@ fn a_panicking_request_gets_an_error_and_the_server_goes_on() {
     assert!(text.contains("Count : Integer"));
     c.finish();
 }
+
+/// Every text of the fuzz corpus, the examples and the golden scripts, and
+/// prefixes of each (text being typed), through the analysis and every
+/// feature at many offsets: nothing panics, and the checker never does.
+#[test]
+fn analysis_and_features_never_panic_on_the_corpus_and_its_prefixes() {
+    use adair::lsp::{analysis, complete, features};
+    fn collect(dir: &std::path::Path, out: &mut Vec<(PathBuf, String)>) {
+        let Ok(entries) = std::fs::read_dir(dir) else { return };
+        let mut paths: Vec<PathBuf> = entries.flatten().map(|e| e.path()).collect();
+        paths.sort();
+        for p in paths {
+            if p.is_dir() {
+                collect(&p, out);
+            } else if p.extension().is_some_and(|e| e == "air")
+                && let Ok(t) = std::fs::read_to_string(&p)
+            {
+                out.push((p, t));
+            }
+        }
+    }
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut texts = Vec::new();
+    for dir in ["tests/fuzz/corpus", "examples", "tests/golden"] {
+        collect(&root.join(dir), &mut texts);
+    }
+    assert!(texts.len() > 100, "the corpus is there");
+    let base = analysis::Base::new(None);
+    let mut checked = 0;
+    for (path, text) in &texts {
+        let n = text.len();
+        let mut cuts: Vec<usize> = (1..8).map(|k| n * k / 8).collect();
+        cuts.push(n);
+        for cut in cuts {
+            let mut cut = cut;
+            while !text.is_char_boundary(cut) {
+                cut -= 1;
+            }
+            let t = &text[..cut];
+            let a = analysis::Analysis::new(&base, "t.air", t);
+            assert!(a.crashed.is_none(), "{}: the checker panicked on the first {cut} bytes: {:?}", path.display(), a.crashed);
+            let mut off = 0;
+            while off <= t.len() {
+                let _ = features::hover(&a, off);
+                let _ = features::definition(&a, off);
+                let _ = features::references(&a, off, true);
+                let _ = features::rename(&a, off, "Renamed");
+                let _ = complete::completion(&a, off);
+                let _ = complete::signature_help(&a, off);
+                let p = a.lines.position(&a.text, off);
+                if t.is_char_boundary(off) {
+                    assert_eq!(a.lines.offset(&a.text, p), off, "{}: offset {off}", path.display());
+                }
+                off += 61;
+            }
+            let syms = features::symbols(&a);
+            for s in &syms {
+                let _ = features::to_document_symbol(&a.text, &a.lines, s);
+            }
+            checked += 1;
+        }
+    }
+    assert!(checked > 800);
+}
