@@ -678,3 +678,60 @@ fn analysis_and_features_never_panic_on_the_corpus_and_its_prefixes() {
     }
     assert!(checked > 800);
 }
+
+/// The binary over real standard input and output: the handshake, a
+/// document with an error, its diagnostic, shutdown and exit with status 0.
+#[test]
+fn the_binary_serves_on_stdio() {
+    use std::io::{BufRead, BufReader, Read, Write};
+    let cache = temp_dir();
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_adair"))
+        .arg("lsp")
+        .env("XDG_CACHE_HOME", &cache)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut input = child.stdin.take().unwrap();
+    let mut output = BufReader::new(child.stdout.take().unwrap());
+    let mut send = |v: Value| {
+        let body = v.to_string();
+        write!(input, "Content-Length: {}\r\n\r\n{body}", body.len()).unwrap();
+        input.flush().unwrap();
+    };
+    let mut recv = || -> Value {
+        let mut len = 0;
+        loop {
+            let mut line = String::new();
+            output.read_line(&mut line).unwrap();
+            let line = line.trim_end();
+            if line.is_empty() {
+                break;
+            }
+            if let Some(n) = line.strip_prefix("Content-Length: ") {
+                len = n.parse().unwrap();
+            }
+        }
+        let mut body = vec![0; len];
+        output.read_exact(&mut body).unwrap();
+        serde_json::from_slice(&body).unwrap()
+    };
+    send(json!({"jsonrpc": "2.0", "id": 1, "method": "initialize", "params": {"capabilities": {}}}));
+    let r = recv();
+    assert_eq!(r["id"], 1);
+    assert_eq!(r["result"]["serverInfo"]["name"], "adair");
+    send(json!({"jsonrpc": "2.0", "method": "initialized", "params": {}}));
+    let text = "Put_Line (Undeclared_Thing);\n";
+    send(json!({"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": {"textDocument": {"uri": "file:///tmp/x.air", "languageId": "adair", "version": 1, "text": text}}}));
+    let d = recv();
+    assert_eq!(d["method"], "textDocument/publishDiagnostics");
+    assert_eq!(d["params"]["diagnostics"][0]["message"], "`Undeclared_Thing` is not declared");
+    assert_eq!(d["params"]["diagnostics"][0]["range"]["start"], json!({"line": 0, "character": 10}));
+    send(json!({"jsonrpc": "2.0", "id": 2, "method": "shutdown"}));
+    assert_eq!(recv()["id"], 2);
+    send(json!({"jsonrpc": "2.0", "method": "exit"}));
+    drop(input);
+    assert!(child.wait().unwrap().success());
+    assert!(cache.join("adair").exists(), "the stdlib went to the cache directory");
+    let _ = std::fs::remove_dir_all(&cache);
+}
