@@ -61,11 +61,16 @@ fn change(conn: &Connection, version: i32, text: &str) {
 /// Waits for the diagnostics of `version`; returns how many there are.
 fn wait(conn: &Connection, version: i32) -> usize {
     loop {
-        match conn.receiver.recv_timeout(Duration::from_secs(120)).unwrap() {
-            Message::Notification(n) if n.method == "textDocument/publishDiagnostics" => {
-                if n.params["version"] == json!(version) {
-                    return n.params["diagnostics"].as_array().map_or(0, Vec::len);
-                }
+        match conn
+            .receiver
+            .recv_timeout(Duration::from_secs(120))
+            .unwrap()
+        {
+            Message::Notification(n)
+                if n.method == "textDocument/publishDiagnostics"
+                    && n.params["version"] == json!(version) =>
+            {
+                return n.params["diagnostics"].as_array().map_or(0, Vec::len);
             }
             _ => {}
         }
@@ -87,7 +92,11 @@ fn main() {
             },
         )
     });
-    let init = Request::new(RequestId::from(1), "initialize".into(), json!({ "capabilities": {} }));
+    let init = Request::new(
+        RequestId::from(1),
+        "initialize".into(),
+        json!({ "capabilities": {} }),
+    );
     client.sender.send(init.into()).unwrap();
     let _ = client.receiver.recv().unwrap();
     client

@@ -87,10 +87,16 @@ fn the_vscode_manifest_starts_the_server_and_references_the_grammar() {
     let path = dir.join(gr["path"].as_str().unwrap());
     assert_eq!(
         path.canonicalize().unwrap(),
-        root().join("grammar/adair.tmLanguage.json").canonicalize().unwrap(),
+        root()
+            .join("grammar/adair.tmLanguage.json")
+            .canonicalize()
+            .unwrap(),
         "the extension uses the grammar kept in grammar/, not a copy"
     );
     let main = std::fs::read_to_string(dir.join(pkg["main"].as_str().unwrap())).unwrap();
-    assert!(main.contains("args: [\"lsp\"]"), "the client starts `adair lsp`");
+    assert!(
+        main.contains("args: [\"lsp\"]"),
+        "the client starts `adair lsp`"
+    );
     assert!(pkg["dependencies"]["vscode-languageclient"].is_string());
 }

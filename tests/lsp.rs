@@ -7,8 +7,8 @@ use adair::lsp::{self, Config};
 use lsp_server::{Connection, Message, Notification, Request, RequestId, Response};
 use lsp_types::notification::Notification as _;
 use lsp_types::request::Request as _;
-use lsp_types::{notification as N, request as R};
 use lsp_types::{Position, Range, Uri};
+use lsp_types::{notification as N, request as R};
 use serde_json::{Value, json};
 use std::path::PathBuf;
 use std::str::FromStr;
@@ -107,7 +107,10 @@ impl Client {
     }
 
     fn change(&self, name: &str, version: i32, text: &str) {
-        self.notify(N::DidChangeTextDocument::METHOD, change_params(name, version, text));
+        self.notify(
+            N::DidChangeTextDocument::METHOD,
+            change_params(name, version, text),
+        );
     }
 
     /// Sends a request and waits for its response (keeping notifications).
@@ -148,7 +151,8 @@ impl Client {
                 self.pending.remove(0)
             };
             if n.method == N::PublishDiagnostics::METHOD {
-                let p: lsp_types::PublishDiagnosticsParams = serde_json::from_value(n.params).unwrap();
+                let p: lsp_types::PublishDiagnosticsParams =
+                    serde_json::from_value(n.params).unwrap();
                 if p.uri == want {
                     return (p.diagnostics, p.version);
                 }
@@ -282,7 +286,11 @@ fn diagnostics_on_open_and_change_are_the_checker_s_and_cleared_when_fixed() {
     let (d, _) = c.diagnostics("demo.air");
     assert_eq!(d.len(), 1, "{d:?}");
     assert_eq!(d[0].severity, Some(lsp_types::DiagnosticSeverity::WARNING));
-    assert!(d[0].message.starts_with("variable `Unused` is never read"), "{}", d[0].message);
+    assert!(
+        d[0].message.starts_with("variable `Unused` is never read"),
+        "{}",
+        d[0].message
+    );
     assert_eq!(d[0].range, range(&warn, "Unused", 0));
     c.finish();
 }
@@ -296,7 +304,10 @@ fn diagnostics_carry_notes_as_related_locations() {
     assert_eq!(d.len(), 1, "{d:?}");
     assert_eq!(d[0].message, "this `case` choice is covered twice");
     assert_eq!(d[0].range.start, pos(text, "1 =>", 1, 0));
-    let rel = d[0].related_information.as_ref().expect("related locations");
+    let rel = d[0]
+        .related_information
+        .as_ref()
+        .expect("related locations");
     assert_eq!(rel.len(), 1);
     assert_eq!(rel[0].message, "covered here already");
     assert_eq!(rel[0].location.uri, uri("notes.air"));
@@ -316,19 +327,33 @@ fn an_edit_burst_is_checked_once_on_the_latest_text() {
         let text = if v == 51 {
             DEMO.to_string()
         } else {
-            DEMO.replace("Count := Twice (Count);", &format!("Count := Twice (X{v});"))
+            DEMO.replace(
+                "Count := Twice (Count);",
+                &format!("Count := Twice (X{v});"),
+            )
         };
-        before.push(Notification::new(N::DidChangeTextDocument::METHOD.into(), change_params("burst.air", v, &text)).into());
+        before.push(
+            Notification::new(
+                N::DidChangeTextDocument::METHOD.into(),
+                change_params("burst.air", v, &text),
+            )
+            .into(),
+        );
     }
     let mut c = Client::start_with(before);
     let (d, v) = c.diagnostics("burst.air");
     assert_eq!(v, Some(51));
     assert!(d.is_empty(), "{d:?}");
     // Nothing else was published before the next answer.
-    let r = c.call(R::DocumentSymbolRequest::METHOD, json!({ "textDocument": { "uri": uri("burst.air") } }));
+    let r = c.call(
+        R::DocumentSymbolRequest::METHOD,
+        json!({ "textDocument": { "uri": uri("burst.air") } }),
+    );
     assert!(r.response_result.is_ok());
     assert!(
-        !c.pending.iter().any(|n| n.method == N::PublishDiagnostics::METHOD),
+        !c.pending
+            .iter()
+            .any(|n| n.method == N::PublishDiagnostics::METHOD),
         "{:?}",
         c.pending
     );
@@ -344,7 +369,10 @@ fn hover_on_a_service_shows_signature_code_meaning_and_exceptions_from_the_table
         text.contains("procedure MoveAxesAbsolute (Axes : AxesVector"),
         "{text}"
     );
-    assert!(text.contains(&format!("command code {}", svc.code)), "{text}");
+    assert!(
+        text.contains(&format!("command code {}", svc.code)),
+        "{text}"
+    );
     assert!(text.contains(svc.doc.lines().next().unwrap()), "{text}");
     assert!(text.contains("Raises: OutOfReach, TimeInvalid"), "{text}");
     assert_eq!(r, Some(range(DEMO, "MoveAxesAbsolute", 0)));
@@ -365,10 +393,16 @@ fn hover_on_a_variable_shows_its_type_and_on_a_type_its_definition() {
     let (text, _) = hover_text(&mut c, pos(DEMO, "P.X := P.Y", 0, 2));
     assert!(text.contains("X : Float"), "{text}");
     let (text, _) = hover_text(&mut c, pos(DEMO, "Point :=", 0, 1));
-    assert!(text.contains("type Point is record\n      X : Float;\n      Y : Float;\n   end record;"), "{text}");
+    assert!(
+        text.contains("type Point is record\n      X : Float;\n      Y : Float;\n   end record;"),
+        "{text}"
+    );
     // A user subprogram: its profile and the comment above it.
     let (text, _) = hover_text(&mut c, pos(DEMO, "Twice (Count)", 0, 0));
-    assert!(text.contains("function Twice (N : Integer) return Integer"), "{text}");
+    assert!(
+        text.contains("function Twice (N : Integer) return Integer"),
+        "{text}"
+    );
     assert!(text.contains("Doubles N."), "{text}");
     c.finish();
 }
@@ -391,22 +425,51 @@ fn completion_offers_keywords_services_names_in_scope_and_snippets() {
     // Inside Move3: its parameters are in scope; Twice's `N` is not.
     let items = completion_at(&mut c, "demo.air", pos(DEMO, "      P.X := B;", 0, 6));
     let l = labels(&items);
-    for want in ["loop", "MoveAxesAbsolute", "Count", "Twice", "A", "C", "Put_Line", "InitRobot"] {
+    for want in [
+        "loop",
+        "MoveAxesAbsolute",
+        "Count",
+        "Twice",
+        "A",
+        "C",
+        "Put_Line",
+        "InitRobot",
+    ] {
         assert!(l.iter().any(|x| x == want), "{want} missing from {l:?}");
     }
-    assert!(!l.iter().any(|x| x == "N"), "Twice's parameter is not visible here");
-    let svc = items.iter().find(|i| i.label == "MoveAxesAbsolute").unwrap();
+    assert!(
+        !l.iter().any(|x| x == "N"),
+        "Twice's parameter is not visible here"
+    );
+    let svc = items
+        .iter()
+        .find(|i| i.label == "MoveAxesAbsolute")
+        .unwrap();
     assert_eq!(svc.kind, Some(lsp_types::CompletionItemKind::FUNCTION));
-    assert!(svc.detail.as_deref().unwrap().starts_with("procedure MoveAxesAbsolute (Axes"));
+    assert!(
+        svc.detail
+            .as_deref()
+            .unwrap()
+            .starts_with("procedure MoveAxesAbsolute (Axes")
+    );
     let count = items.iter().find(|i| i.label == "Count").unwrap();
     assert_eq!(count.detail.as_deref(), Some("Integer"));
     for (label, body) in [
         ("for ... loop", "for ${1:I} in"),
-        ("procedure ... is begin ... end", "procedure ${1:Name} is\nbegin"),
+        (
+            "procedure ... is begin ... end",
+            "procedure ${1:Name} is\nbegin",
+        ),
         ("exception when ... =>", "exception\n   when ${1:E}"),
     ] {
-        let s = items.iter().find(|i| i.label == label).unwrap_or_else(|| panic!("{label}"));
-        assert_eq!(s.insert_text_format, Some(lsp_types::InsertTextFormat::SNIPPET));
+        let s = items
+            .iter()
+            .find(|i| i.label == label)
+            .unwrap_or_else(|| panic!("{label}"));
+        assert_eq!(
+            s.insert_text_format,
+            Some(lsp_types::InsertTextFormat::SNIPPET)
+        );
         assert!(s.insert_text.as_deref().unwrap().starts_with(body), "{s:?}");
     }
     c.finish();
@@ -424,7 +487,10 @@ fn completion_of_record_fields_attributes_and_package_members() {
     assert_eq!(items[0].detail.as_deref(), Some("Float"));
     let items = completion_at(&mut c, "t.air", pos(&text, "Integer'\n", 0, 8));
     let l = labels(&items);
-    assert!(l.contains(&"First".to_string()) && l.contains(&"Image".to_string()), "{l:?}");
+    assert!(
+        l.contains(&"First".to_string()) && l.contains(&"Image".to_string()),
+        "{l:?}"
+    );
     assert!(!l.contains(&"loop".to_string()));
     let items = completion_at(&mut c, "t.air", pos(&text, "Ada.Text_IO.\n", 0, 12));
     let l = labels(&items);
@@ -469,12 +535,18 @@ fn go_to_definition_into_the_adair_package() {
     let line = file.lines().nth(l.range.start.line as usize).unwrap();
     let name = &line[l.range.start.character as usize..l.range.end.character as usize];
     assert_eq!(name, "MoveAxesAbsolute");
-    assert!(line.trim_start().starts_with("procedure MoveAxesAbsolute"), "{line}");
+    assert!(
+        line.trim_start().starts_with("procedure MoveAxesAbsolute"),
+        "{line}"
+    );
     // A type of the package too.
     let text = "with AdaIR; use AdaIR;\nprocedure T is\n   F : Frame;\nbegin\n   null;\nend T;\n";
     c.open("t.air", text);
     let _ = c.diagnostics("t.air");
-    let v = c.result(R::GotoDefinition::METHOD, at("t.air", pos(text, "Frame", 0, 1)));
+    let v = c.result(
+        R::GotoDefinition::METHOD,
+        at("t.air", pos(text, "Frame", 0, 1)),
+    );
     let l: lsp_types::Location = serde_json::from_value(v).unwrap();
     let line = file.lines().nth(l.range.start.line as usize).unwrap();
     assert!(line.to_lowercase().contains("type frame"), "{line}");
@@ -506,7 +578,10 @@ fn find_references_of_a_variable_and_a_subprogram() {
 #[test]
 fn document_symbols_give_the_outline() {
     let mut c = demo();
-    let v = c.result(R::DocumentSymbolRequest::METHOD, json!({ "textDocument": { "uri": uri("demo.air") } }));
+    let v = c.result(
+        R::DocumentSymbolRequest::METHOD,
+        json!({ "textDocument": { "uri": uri("demo.air") } }),
+    );
     let syms: Vec<lsp_types::DocumentSymbol> = serde_json::from_value(v).unwrap();
     assert_eq!(syms.len(), 1);
     assert_eq!(syms[0].name, "Demo");
@@ -521,10 +596,22 @@ fn document_symbols_give_the_outline() {
     use lsp_types::SymbolKind as K;
     assert_eq!(
         kids,
-        [("Point", K::STRUCT), ("Count", K::VARIABLE), ("P", K::VARIABLE), ("Twice", K::FUNCTION), ("Move3", K::METHOD)]
+        [
+            ("Point", K::STRUCT),
+            ("Count", K::VARIABLE),
+            ("P", K::VARIABLE),
+            ("Twice", K::FUNCTION),
+            ("Move3", K::METHOD)
+        ]
     );
     let point = &syms[0].children.as_ref().unwrap()[0];
-    let fields: Vec<&str> = point.children.as_ref().unwrap().iter().map(|s| s.name.as_str()).collect();
+    let fields: Vec<&str> = point
+        .children
+        .as_ref()
+        .unwrap()
+        .iter()
+        .map(|s| s.name.as_str())
+        .collect();
     assert_eq!(fields, ["X", "Y"]);
     assert_eq!(point.range.start, pos(DEMO, "type Point", 0, 0));
     c.finish();
@@ -536,13 +623,17 @@ fn signature_help_marks_the_active_parameter() {
     let text = DEMO.replace("   Move3 (1, 2.0, 3);\n", "   Move3 (1, 2.0, \n");
     c.open("s.air", &text);
     let _ = c.diagnostics("s.air");
-    let v = c.result(R::SignatureHelpRequest::METHOD, at("s.air", pos(&text, "Move3 (1, 2.0, ", 0, 15)));
+    let v = c.result(
+        R::SignatureHelpRequest::METHOD,
+        at("s.air", pos(&text, "Move3 (1, 2.0, ", 0, 15)),
+    );
     let h: lsp_types::SignatureHelp = serde_json::from_value(v).expect("signature help");
     assert_eq!(h.signatures.len(), 1);
     let s = &h.signatures[0];
     assert_eq!(s.label, "Move3 (A : Integer; B : Float; C : Integer)");
     assert_eq!(h.active_parameter, Some(2));
-    let lsp_types::ParameterLabel::LabelOffsets([a, b]) = s.parameters.as_ref().unwrap()[2].label else {
+    let lsp_types::ParameterLabel::LabelOffsets([a, b]) = s.parameters.as_ref().unwrap()[2].label
+    else {
         panic!()
     };
     assert_eq!(&s.label[a as usize..b as usize], "C : Integer");
@@ -550,14 +641,22 @@ fn signature_help_marks_the_active_parameter() {
     let text2 = DEMO.replace("   Move3 (1, 2.0, 3);\n", "   MoveTool (Force => \n");
     c.change("s.air", 2, &text2);
     let _ = c.diagnostics("s.air");
-    let v = c.result(R::SignatureHelpRequest::METHOD, at("s.air", pos(&text2, "Force => ", 0, 9)));
+    let v = c.result(
+        R::SignatureHelpRequest::METHOD,
+        at("s.air", pos(&text2, "Force => ", 0, 9)),
+    );
     let h: lsp_types::SignatureHelp = serde_json::from_value(v).unwrap();
     let s = &h.signatures[h.active_signature.unwrap() as usize];
     let p = h.active_parameter.unwrap() as usize;
-    let lsp_types::ParameterLabel::LabelOffsets([a, b]) = s.parameters.as_ref().unwrap()[p].label else {
+    let lsp_types::ParameterLabel::LabelOffsets([a, b]) = s.parameters.as_ref().unwrap()[p].label
+    else {
         panic!()
     };
-    assert!(s.label[a as usize..b as usize].starts_with("Force : "), "{}", s.label);
+    assert!(
+        s.label[a as usize..b as usize].starts_with("Force : "),
+        "{}",
+        s.label
+    );
     assert!(s.documentation.is_some());
     c.finish();
 }
@@ -572,7 +671,10 @@ fn rename_a_local_name_and_refuse_others() {
     let e: lsp_types::WorkspaceEdit = serde_json::from_value(v).unwrap();
     let edits = &e.changes.unwrap()[&uri("demo.air")];
     let got: Vec<Range> = edits.iter().map(|t| t.range).collect();
-    assert_eq!(got, (0..6).map(|i| range(DEMO, "Count", i)).collect::<Vec<_>>());
+    assert_eq!(
+        got,
+        (0..6).map(|i| range(DEMO, "Count", i)).collect::<Vec<_>>()
+    );
     assert!(edits.iter().all(|t| t.new_text == "Total"));
     // A service of the AdaIR package is not this file's to rename.
     let r = c.call(
@@ -584,7 +686,12 @@ fn rename_a_local_name_and_refuse_others() {
         R::Rename::METHOD,
         json!({ "textDocument": { "uri": uri("demo.air") }, "position": pos(DEMO, "Count", 4, 2), "newName": "loop" }),
     );
-    assert!(r.response_result.unwrap_err().message.contains("not an Ada identifier"));
+    assert!(
+        r.response_result
+            .unwrap_err()
+            .message
+            .contains("not an Ada identifier")
+    );
     c.finish();
 }
 
@@ -595,9 +702,14 @@ fn half_typed_text_keeps_what_parses() {
     c.open("h.air", &text);
     let (d, _) = c.diagnostics("h.air");
     assert!(!d.is_empty());
-    let v = c.result(R::HoverRequest::METHOD, at("h.air", pos(&text, "Twice (Count)", 0, 8)));
+    let v = c.result(
+        R::HoverRequest::METHOD,
+        at("h.air", pos(&text, "Twice (Count)", 0, 8)),
+    );
     let h: lsp_types::Hover = serde_json::from_value(v).expect("a hover on a name that checked");
-    let lsp_types::HoverContents::Markup(m) = h.contents else { panic!() };
+    let lsp_types::HoverContents::Markup(m) = h.contents else {
+        panic!()
+    };
     assert!(m.value.contains("Count : Integer"), "{}", m.value);
     c.finish();
 }
@@ -622,7 +734,9 @@ fn a_panicking_request_gets_an_error_and_the_server_goes_on() {
 fn analysis_and_features_never_panic_on_the_corpus_and_its_prefixes() {
     use adair::lsp::{analysis, complete, features};
     fn collect(dir: &std::path::Path, out: &mut Vec<(PathBuf, String)>) {
-        let Ok(entries) = std::fs::read_dir(dir) else { return };
+        let Ok(entries) = std::fs::read_dir(dir) else {
+            return;
+        };
         let mut paths: Vec<PathBuf> = entries.flatten().map(|e| e.path()).collect();
         paths.sort();
         for p in paths {
@@ -654,7 +768,12 @@ fn analysis_and_features_never_panic_on_the_corpus_and_its_prefixes() {
             }
             let t = &text[..cut];
             let a = analysis::Analysis::new(&base, "t.air", t);
-            assert!(a.crashed.is_none(), "{}: the checker panicked on the first {cut} bytes: {:?}", path.display(), a.crashed);
+            assert!(
+                a.crashed.is_none(),
+                "{}: the checker panicked on the first {cut} bytes: {:?}",
+                path.display(),
+                a.crashed
+            );
             let mut off = 0;
             while off <= t.len() {
                 let _ = features::hover(&a, off);
@@ -665,7 +784,12 @@ fn analysis_and_features_never_panic_on_the_corpus_and_its_prefixes() {
                 let _ = complete::signature_help(&a, off);
                 let p = a.lines.position(&a.text, off);
                 if t.is_char_boundary(off) {
-                    assert_eq!(a.lines.offset(&a.text, p), off, "{}: offset {off}", path.display());
+                    assert_eq!(
+                        a.lines.offset(&a.text, p),
+                        off,
+                        "{}: offset {off}",
+                        path.display()
+                    );
                 }
                 off += 61;
             }
@@ -716,22 +840,35 @@ fn the_binary_serves_on_stdio() {
         output.read_exact(&mut body).unwrap();
         serde_json::from_slice(&body).unwrap()
     };
-    send(json!({"jsonrpc": "2.0", "id": 1, "method": "initialize", "params": {"capabilities": {}}}));
+    send(
+        json!({"jsonrpc": "2.0", "id": 1, "method": "initialize", "params": {"capabilities": {}}}),
+    );
     let r = recv();
     assert_eq!(r["id"], 1);
     assert_eq!(r["result"]["serverInfo"]["name"], "adair");
     send(json!({"jsonrpc": "2.0", "method": "initialized", "params": {}}));
     let text = "Put_Line (Undeclared_Thing);\n";
-    send(json!({"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": {"textDocument": {"uri": "file:///tmp/x.air", "languageId": "adair", "version": 1, "text": text}}}));
+    send(
+        json!({"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": {"textDocument": {"uri": "file:///tmp/x.air", "languageId": "adair", "version": 1, "text": text}}}),
+    );
     let d = recv();
     assert_eq!(d["method"], "textDocument/publishDiagnostics");
-    assert_eq!(d["params"]["diagnostics"][0]["message"], "`Undeclared_Thing` is not declared");
-    assert_eq!(d["params"]["diagnostics"][0]["range"]["start"], json!({"line": 0, "character": 10}));
+    assert_eq!(
+        d["params"]["diagnostics"][0]["message"],
+        "`Undeclared_Thing` is not declared"
+    );
+    assert_eq!(
+        d["params"]["diagnostics"][0]["range"]["start"],
+        json!({"line": 0, "character": 10})
+    );
     send(json!({"jsonrpc": "2.0", "id": 2, "method": "shutdown"}));
     assert_eq!(recv()["id"], 2);
     send(json!({"jsonrpc": "2.0", "method": "exit"}));
     drop(input);
     assert!(child.wait().unwrap().success());
-    assert!(cache.join("adair").exists(), "the stdlib went to the cache directory");
+    assert!(
+        cache.join("adair").exists(),
+        "the stdlib went to the cache directory"
+    );
     let _ = std::fs::remove_dir_all(&cache);
 }

@@ -188,7 +188,13 @@ impl Checker {
     }
 
     /// Records a record component's declaration.
-    pub(super) fn index_field(&mut self, rec: TypeId, i: u32, id: &crate::syntax::ast::Ident, ty: TypeId) {
+    pub(super) fn index_field(
+        &mut self,
+        rec: TypeId,
+        i: u32,
+        id: &crate::syntax::ast::Ident,
+        ty: TypeId,
+    ) {
         let n = self.index.defs.len() as u32;
         self.index.defs.push(Def {
             name: id.name.clone(),

@@ -131,7 +131,10 @@ impl Analysis {
 
     /// The text of a span of any source (the document or the stdlib).
     pub fn span_text(&self, s: Span) -> &str {
-        self.sources.text(s.context).get(s.start..s.end).unwrap_or("")
+        self.sources
+            .text(s.context)
+            .get(s.start..s.end)
+            .unwrap_or("")
     }
 }
 

@@ -116,7 +116,9 @@ fn context(text: &str, offset: usize) -> Context {
     let head = before.trim_end_matches(is_id);
     if let Some(rest) = head.strip_suffix('\'') {
         // `'a'` is a character literal; `X'` and `)'` begin an attribute.
-        if rest.ends_with(|c: char| is_id(c) || c == ')') && !rest.ends_with(|c: char| c == '\'') {
+        let word_start = rest.trim_end_matches(is_id);
+        let after_name = rest.len() > word_start.len() && !word_start.ends_with('\'');
+        if rest.ends_with(')') || after_name {
             return Context::Attribute;
         }
     }
@@ -296,7 +298,12 @@ fn name_items(a: &Analysis, offset: usize) -> Vec<Item> {
     for svc in crate::services::table::SERVICES {
         let mut it = Item::new(svc.name, CK::FUNCTION);
         let decl = svc.declaration();
-        it.detail = Some(decl.split(" with Import").next().unwrap_or(&decl).to_string());
+        it.detail = Some(
+            decl.split(" with Import")
+                .next()
+                .unwrap_or(&decl)
+                .to_string(),
+        );
         it.doc = Some(service_doc(svc));
         push(&mut out, it);
     }
@@ -357,10 +364,7 @@ fn select_items(a: &Analysis, offset: usize, prefix: &str) -> Vec<Item> {
             .iter()
             .filter(|k| !k.starts_with(['\'', '"']))
             .map(|k| {
-                let kind = c
-                    .entities_of(k)
-                    .first()
-                    .map_or(CK::VALUE, entity_kind);
+                let kind = c.entities_of(k).first().map_or(CK::VALUE, entity_kind);
                 let mut it = Item::new(c.spelled(k), kind);
                 if let Some(svc) = crate::services::table::SERVICES
                     .iter()
@@ -383,7 +387,11 @@ fn select_items(a: &Analysis, offset: usize, prefix: &str) -> Vec<Item> {
     };
     for p in parts {
         let t = c.types.designated(ty).unwrap_or(ty);
-        let Some(f) = c.types.fields(t).and_then(|fs| fs.iter().find(|f| f.key == p.to_lowercase())) else {
+        let Some(f) = c
+            .types
+            .fields(t)
+            .and_then(|fs| fs.iter().find(|f| f.key == p.to_lowercase()))
+        else {
             return Vec::new();
         };
         ty = f.ty;
@@ -403,11 +411,20 @@ fn select_items(a: &Analysis, offset: usize, prefix: &str) -> Vec<Item> {
         .unwrap_or_default()
 }
 
+/// One candidate: its label, each parameter's range in the label (UTF-16
+/// code units) and its documentation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Signature {
+    pub label: String,
+    pub params: Vec<(usize, usize)>,
+    pub doc: Option<String>,
+}
+
 /// Signature help: the candidate signatures (label and each parameter's
 /// range in it), which is active, and the active parameter.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Signatures {
-    pub list: Vec<(String, Vec<(usize, usize)>, Option<String>)>,
+    pub list: Vec<Signature>,
     pub active: usize,
     pub param: usize,
 }
@@ -528,7 +545,10 @@ pub fn signature_help(a: &Analysis, offset: usize) -> Option<Signatures> {
         let label = label.trim_end().to_string();
         let doc = service_of(a, *f).map(service_doc);
         let fits = match &named {
-            Some(n) => sub.params.iter().position(|p| p.name.eq_ignore_ascii_case(n)),
+            Some(n) => sub
+                .params
+                .iter()
+                .position(|p| p.name.eq_ignore_ascii_case(n)),
             None => (commas < sub.params.len()).then_some(commas),
         };
         if active.is_none()
@@ -537,7 +557,11 @@ pub fn signature_help(a: &Analysis, offset: usize) -> Option<Signatures> {
             active = Some(k);
             param = p;
         }
-        list.push((label, ranges, doc));
+        list.push(Signature {
+            label,
+            params: ranges,
+            doc,
+        });
     }
     Some(Signatures {
         list,

@@ -148,7 +148,10 @@ pub fn hover(a: &Analysis, offset: usize) -> Option<(String, Span)> {
     {
         let decl = svc.declaration();
         let decl = decl.split(" with Import").next().unwrap_or(&decl);
-        return Some((format!("{}\n\n{}", code_block(decl), service_doc(svc)), span));
+        return Some((
+            format!("{}\n\n{}", code_block(decl), service_doc(svc)),
+            span,
+        ));
     }
     let es = a.checker.entities_of(&word.to_lowercase());
     let e = es.first()?;
@@ -210,7 +213,10 @@ pub fn describe_def(a: &Analysis, d: &Def) -> String {
         s.push_str(&doc);
     }
     if d.span.context != a.file {
-        s.push_str(&format!("\n\n*declared in {}*", a.sources.name(d.span.context)));
+        s.push_str(&format!(
+            "\n\n*declared in {}*",
+            a.sources.name(d.span.context)
+        ));
     }
     s
 }
@@ -415,7 +421,12 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
     }
 }
 
-fn subprogram_symbol(a: &Analysis, spec: &ast::SubprogramSpec, span: Span, children: Vec<Symbol>) -> Symbol {
+fn subprogram_symbol(
+    a: &Analysis,
+    spec: &ast::SubprogramSpec,
+    span: Span,
+    children: Vec<Symbol>,
+) -> Symbol {
     let kind = if spec.ret.is_some() {
         lsp_types::SymbolKind::FUNCTION
     } else {
@@ -436,7 +447,13 @@ fn subprogram_symbol(a: &Analysis, spec: &ast::SubprogramSpec, span: Span, child
     }
 }
 
-fn package_symbol(a: &Analysis, name: &ast::Expr, span: Span, children: Vec<Symbol>, what: &str) -> Symbol {
+fn package_symbol(
+    a: &Analysis,
+    name: &ast::Expr,
+    span: Span,
+    children: Vec<Symbol>,
+    what: &str,
+) -> Symbol {
     Symbol {
         name: a.span_text(name.span).to_string(),
         detail: Some(what.into()),
@@ -457,7 +474,11 @@ pub fn to_document_symbol(text: &str, lines: &LineIndex, s: &Symbol) -> lsp_type
         sel = range;
     }
     lsp_types::DocumentSymbol {
-        name: if s.name.is_empty() { "?".into() } else { s.name.clone() },
+        name: if s.name.is_empty() {
+            "?".into()
+        } else {
+            s.name.clone()
+        },
         detail: s.detail.clone(),
         kind: s.kind,
         tags: None,

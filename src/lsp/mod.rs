@@ -17,8 +17,8 @@ use analysis::{Analysis, Base};
 use lsp_server::{Connection, ErrorCode, Message, Notification, Request, Response};
 use lsp_types::notification::Notification as _;
 use lsp_types::request::Request as _;
-use lsp_types::{notification as N, request as R};
 use lsp_types::{Location, Range, Uri};
+use lsp_types::{notification as N, request as R};
 use std::collections::HashMap;
 use std::path::Path;
 use std::rc::Rc;
@@ -39,9 +39,7 @@ pub fn capabilities() -> lsp_types::ServerCapabilities {
     use lsp_types::*;
     ServerCapabilities {
         position_encoding: Some(PositionEncodingKind::UTF16),
-        text_document_sync: Some(TextDocumentSyncCapability::Kind(
-            TextDocumentSyncKind::FULL,
-        )),
+        text_document_sync: Some(TextDocumentSyncCapability::Kind(TextDocumentSyncKind::FULL)),
         hover_provider: Some(HoverProviderCapability::Simple(true)),
         completion_provider: Some(CompletionOptions {
             trigger_characters: Some(vec![".".into(), "'".into()]),
@@ -80,9 +78,7 @@ struct Server<'c> {
 pub fn run(conn: &Connection, config: Config) -> Result<(), String> {
     let caps = serde_json::to_value(capabilities()).map_err(|e| e.to_string())?;
     let (id, _params) = conn.initialize_start().map_err(|e| e.to_string())?;
-    let stdlib_dir = config
-        .stdlib_dir
-        .unwrap_or_else(Base::default_stdlib_dir);
+    let stdlib_dir = config.stdlib_dir.unwrap_or_else(Base::default_stdlib_dir);
     let base = Base::new(Some(&stdlib_dir));
     let init = serde_json::json!({
         "capabilities": caps,
@@ -140,7 +136,8 @@ impl Server<'_> {
     fn notification(&mut self, n: Notification) -> Option<Uri> {
         match n.method.as_str() {
             N::DidOpenTextDocument::METHOD => {
-                let p: lsp_types::DidOpenTextDocumentParams = serde_json::from_value(n.params).ok()?;
+                let p: lsp_types::DidOpenTextDocumentParams =
+                    serde_json::from_value(n.params).ok()?;
                 let d = p.text_document;
                 self.docs.insert(
                     d.uri.clone(),
@@ -193,14 +190,19 @@ impl Server<'_> {
     fn publish(&mut self, uri: &Uri) {
         let Some(a) = self.analysis(uri) else { return };
         let version = self.docs.get(uri).map(|d| d.version);
-        let mut diags: Vec<lsp_types::Diagnostic> =
-            a.diags.iter().map(|d| self.to_lsp_diag(&a, uri, d)).collect();
+        let mut diags: Vec<lsp_types::Diagnostic> = a
+            .diags
+            .iter()
+            .map(|d| self.to_lsp_diag(&a, uri, d))
+            .collect();
         if let Some(msg) = &a.crashed {
             diags.push(lsp_types::Diagnostic {
                 range: Range::default(),
                 severity: Some(lsp_types::DiagnosticSeverity::ERROR),
                 source: Some("adair".into()),
-                message: format!("internal error: the checker panicked ({msg}); please report this text as a bug"),
+                message: format!(
+                    "internal error: the checker panicked ({msg}); please report this text as a bug"
+                ),
                 ..Default::default()
             });
         }
@@ -210,7 +212,12 @@ impl Server<'_> {
         ));
     }
 
-    fn to_lsp_diag(&self, a: &Analysis, uri: &Uri, d: &crate::diag::Diagnostic) -> lsp_types::Diagnostic {
+    fn to_lsp_diag(
+        &self,
+        a: &Analysis,
+        uri: &Uri,
+        d: &crate::diag::Diagnostic,
+    ) -> lsp_types::Diagnostic {
         let severity = if d.is_warning() {
             lsp_types::DiagnosticSeverity::WARNING
         } else {
@@ -300,7 +307,9 @@ impl Server<'_> {
     }
 
     fn dispatch(&mut self, r: Request) -> Result<serde_json::Value, (ErrorCode, String)> {
-        fn params<P: serde::de::DeserializeOwned>(v: serde_json::Value) -> Result<P, (ErrorCode, String)> {
+        fn params<P: serde::de::DeserializeOwned>(
+            v: serde_json::Value,
+        ) -> Result<P, (ErrorCode, String)> {
             serde_json::from_value(v).map_err(|e| (ErrorCode::InvalidParams, e.to_string()))
         }
         fn json(v: impl serde::Serialize) -> Result<serde_json::Value, (ErrorCode, String)> {
@@ -316,13 +325,15 @@ impl Server<'_> {
                 let Some((a, off)) = self.at(&p.text_document_position_params) else {
                     return json(None::<()>);
                 };
-                json(features::hover(&a, off).map(|(text, span)| lsp_types::Hover {
-                    contents: lsp_types::HoverContents::Markup(lsp_types::MarkupContent {
-                        kind: lsp_types::MarkupKind::Markdown,
-                        value: text,
+                json(
+                    features::hover(&a, off).map(|(text, span)| lsp_types::Hover {
+                        contents: lsp_types::HoverContents::Markup(lsp_types::MarkupContent {
+                            kind: lsp_types::MarkupKind::Markdown,
+                            value: text,
+                        }),
+                        range: (span.context == a.file).then(|| a.lines.range(&a.text, span)),
                     }),
-                    range: (span.context == a.file).then(|| a.lines.range(&a.text, span)),
-                }))
+                )
             }
             R::GotoDefinition::METHOD => {
                 let p: lsp_types::GotoDefinitionParams = params(r.params)?;
@@ -356,7 +367,9 @@ impl Server<'_> {
                     .map_err(|m| (ErrorCode::InvalidParams, m))?;
                 let edits: Vec<lsp_types::TextEdit> = spans
                     .into_iter()
-                    .map(|s| lsp_types::TextEdit::new(a.lines.range(&a.text, s), p.new_name.clone()))
+                    .map(|s| {
+                        lsp_types::TextEdit::new(a.lines.range(&a.text, s), p.new_name.clone())
+                    })
                     .collect();
                 json(lsp_types::WorkspaceEdit::new(HashMap::from([(uri, edits)])))
             }
@@ -411,16 +424,16 @@ fn signature_help(s: complete::Signatures) -> lsp_types::SignatureHelp {
         signatures: s
             .list
             .into_iter()
-            .map(|(label, ranges, doc)| SignatureInformation {
-                label,
-                documentation: doc.map(|d| {
+            .map(|sig| SignatureInformation {
+                label: sig.label,
+                documentation: sig.doc.map(|d| {
                     Documentation::MarkupContent(MarkupContent {
                         kind: MarkupKind::Markdown,
                         value: d,
                     })
                 }),
                 parameters: Some(
-                    ranges
+                    sig.params
                         .into_iter()
                         .map(|(a, b)| ParameterInformation {
                             label: ParameterLabel::LabelOffsets([a as u32, b as u32]),
