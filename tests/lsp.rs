@@ -872,3 +872,40 @@ fn the_binary_serves_on_stdio() {
     );
     let _ = std::fs::remove_dir_all(&cache);
 }
+
+/// An overloaded name goes to the declaration overload resolution chose.
+#[test]
+fn go_to_definition_picks_the_overload_the_checker_chose() {
+    let text = "\
+procedure Over is
+   procedure Show (X : Integer) is begin null; end Show;
+   procedure Show (X : Float) is begin null; end Show;
+   function Half (X : Integer) return Integer is begin return X / 2; end Half;
+   function Half (X : Float) return Float is begin return X / 2.0; end Half;
+   I : Integer;
+   F : Float;
+begin
+   Show (2.0);
+   Show (1);
+   I := Half (4);
+   F := Half (4.0);
+   Show (I + Integer (F));
+end Over;
+";
+    let mut c = Client::start();
+    c.open("o.air", text);
+    let (d, _) = c.diagnostics("o.air");
+    assert!(d.is_empty(), "{d:?}");
+    let mut def = |needle: &str, n: usize| -> Range {
+        let v = c.result(R::GotoDefinition::METHOD, at("o.air", pos(text, needle, n, 0)));
+        serde_json::from_value::<lsp_types::Location>(v).unwrap().range
+    };
+    // `Show` #0/#2 are the declarations of the Integer/Float versions
+    // (#1/#3 their `end Show`).
+    assert_eq!(def("Show (2.0)", 0), range(text, "Show", 2));
+    assert_eq!(def("Show (1)", 0), range(text, "Show", 0));
+    assert_eq!(def("Half (4)", 0), range(text, "Half", 0));
+    assert_eq!(def("Half (4.0)", 0), range(text, "Half", 2));
+    assert_eq!(def("Show (I", 0), range(text, "Show", 0));
+    c.finish();
+}
