@@ -46,6 +46,11 @@ impl Client {
     /// Queues the handshake and `before` (messages the server will find
     /// waiting when its loop starts), then starts the server.
     fn start_with(before: Vec<Message>) -> Client {
+        Client::start_full(before, true)
+    }
+
+    /// As `start_with`; `snippets`: whether the client says it takes snippets.
+    fn start_full(before: Vec<Message>, snippets: bool) -> Client {
         let (server_side, conn) = Connection::memory();
         let stdlib_dir = temp_dir();
         let mut c = Client {
@@ -58,7 +63,11 @@ impl Client {
         let init = Request::new(
             RequestId::from(0),
             R::Initialize::METHOD.into(),
-            json!({ "capabilities": {}, "processId": null, "rootUri": null }),
+            json!({
+                "capabilities": { "textDocument": { "completion": { "completionItem": { "snippetSupport": snippets } } } },
+                "processId": null,
+                "rootUri": null
+            }),
         );
         c.conn.sender.send(init.into()).unwrap();
         c.conn
@@ -897,8 +906,13 @@ end Over;
     let (d, _) = c.diagnostics("o.air");
     assert!(d.is_empty(), "{d:?}");
     let mut def = |needle: &str, n: usize| -> Range {
-        let v = c.result(R::GotoDefinition::METHOD, at("o.air", pos(text, needle, n, 0)));
-        serde_json::from_value::<lsp_types::Location>(v).unwrap().range
+        let v = c.result(
+            R::GotoDefinition::METHOD,
+            at("o.air", pos(text, needle, n, 0)),
+        );
+        serde_json::from_value::<lsp_types::Location>(v)
+            .unwrap()
+            .range
     };
     // `Show` #0/#2 are the declarations of the Integer/Float versions
     // (#1/#3 their `end Show`).
@@ -908,4 +922,45 @@ end Over;
     assert_eq!(def("Half (4.0)", 0), range(text, "Half", 2));
     assert_eq!(def("Show (I", 0), range(text, "Show", 0));
     c.finish();
+}
+
+/// A client without snippet support gets no snippets; incremental changes
+/// (sent although the server asks for full text) are applied.
+#[test]
+fn no_snippets_for_a_client_without_them_and_ranged_changes_apply() {
+    let mut c = Client::start_full(Vec::new(), false);
+    c.open("demo.air", DEMO);
+    let _ = c.diagnostics("demo.air");
+    let items = completion_at(&mut c, "demo.air", pos(DEMO, "      P.X := B;", 0, 6));
+    assert!(items.iter().any(|i| i.label == "Count"));
+    assert!(
+        items
+            .iter()
+            .all(|i| i.insert_text_format != Some(lsp_types::InsertTextFormat::SNIPPET))
+    );
+    // Replace `Twice (Count)` by `Twice (Countt)`: an error at that place.
+    let r = range(DEMO, "Count);", 0);
+    c.notify(
+        N::DidChangeTextDocument::METHOD,
+        json!({
+            "textDocument": { "uri": uri("demo.air"), "version": 2 },
+            "contentChanges": [ { "range": { "start": r.start, "end": Position::new(r.start.line, r.start.character + 5) }, "text": "Countt" } ]
+        }),
+    );
+    let (d, v) = c.diagnostics("demo.air");
+    assert_eq!(v, Some(2));
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0].range.start, r.start);
+    assert!(d[0].message.starts_with("`Countt` is not declared"));
+    c.finish();
+}
+
+/// `exit` without `shutdown` ends the server with an error (the binary
+/// then exits with status 1, as LSP asks).
+#[test]
+fn exit_without_shutdown_is_an_error() {
+    let mut c = Client::start();
+    c.notify(N::Exit::METHOD, Value::Null);
+    let r = c.server.take().unwrap().join().unwrap();
+    assert_eq!(r, Err("exit before shutdown".to_string()));
 }
