@@ -71,13 +71,19 @@ struct Server<'c> {
     docs: HashMap<Uri, Doc>,
     shutdown: bool,
     crash_request: bool,
+    /// The client inserts snippets (`$1` placeholders); else none are offered.
+    snippets: bool,
 }
 
 /// Runs the server until `exit` (after the handshake). Errors are protocol
 /// errors (the client went away).
 pub fn run(conn: &Connection, config: Config) -> Result<(), String> {
     let caps = serde_json::to_value(capabilities()).map_err(|e| e.to_string())?;
-    let (id, _params) = conn.initialize_start().map_err(|e| e.to_string())?;
+    let (id, params) = conn.initialize_start().map_err(|e| e.to_string())?;
+    let snippets = params
+        .pointer("/capabilities/textDocument/completion/completionItem/snippetSupport")
+        .and_then(serde_json::Value::as_bool)
+        .unwrap_or(false);
     let stdlib_dir = config.stdlib_dir.unwrap_or_else(Base::default_stdlib_dir);
     let base = Base::new(Some(&stdlib_dir));
     let init = serde_json::json!({
@@ -92,6 +98,7 @@ pub fn run(conn: &Connection, config: Config) -> Result<(), String> {
         docs: HashMap::new(),
         shutdown: false,
         crash_request: config.crash_request,
+        snippets,
     };
     server.main_loop()
 }
@@ -110,7 +117,12 @@ impl Server<'_> {
                     Message::Request(r) => self.request(r),
                     Message::Notification(n) => {
                         if n.method == N::Exit::METHOD {
-                            return Ok(());
+                            // LSP: exit without shutdown is an error (status 1).
+                            return if self.shutdown {
+                                Ok(())
+                            } else {
+                                Err("exit before shutdown".into())
+                            };
                         }
                         if let Some(uri) = self.notification(n)
                             && !changed.contains(&uri)
@@ -153,9 +165,19 @@ impl Server<'_> {
                 let p: lsp_types::DidChangeTextDocumentParams =
                     serde_json::from_value(n.params).ok()?;
                 let doc = self.docs.get_mut(&p.text_document.uri)?;
-                // Full sync: the last change holds the whole text.
-                let text = p.content_changes.into_iter().last()?.text;
-                doc.text = text;
+                // Full sync: a change holds the whole text; a client that
+                // sends ranges anyway gets them applied in order.
+                for ch in p.content_changes {
+                    match ch.range {
+                        None => doc.text = ch.text,
+                        Some(r) => {
+                            let lines = analysis::LineIndex::new(&doc.text);
+                            let a = lines.offset(&doc.text, r.start);
+                            let b = lines.offset(&doc.text, r.end).max(a);
+                            doc.text.replace_range(a..b, &ch.text);
+                        }
+                    }
+                }
                 doc.version = p.text_document.version;
                 doc.analysis = None;
                 Some(p.text_document.uri)
@@ -391,6 +413,7 @@ impl Server<'_> {
                 };
                 let items: Vec<lsp_types::CompletionItem> = complete::completion(&a, off)
                     .iter()
+                    .filter(|i| self.snippets || i.snippet.is_none())
                     .map(complete::Item::to_lsp)
                     .collect();
                 json(lsp_types::CompletionResponse::Array(items))
