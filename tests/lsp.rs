@@ -403,7 +403,7 @@ fn hover_on_a_variable_shows_its_type_and_on_a_type_its_definition() {
     assert!(text.contains("X : Float"), "{text}");
     let (text, _) = hover_text(&mut c, pos(DEMO, "Point :=", 0, 1));
     assert!(
-        text.contains("type Point is record\n      X : Float;\n      Y : Float;\n   end record;"),
+        text.contains("type Point is record\n   X : Float;\n   Y : Float;\nend record;"),
         "{text}"
     );
     // A user subprogram: its profile and the comment above it.
@@ -963,4 +963,51 @@ fn exit_without_shutdown_is_an_error() {
     c.notify(N::Exit::METHOD, Value::Null);
     let r = c.server.take().unwrap().join().unwrap();
     assert_eq!(r, Err("exit before shutdown".to_string()));
+}
+
+/// Hover on an AdaIR exception says when adair raises it; on a type of the
+/// package, its declaration and the comment beside it.
+#[test]
+fn hover_on_an_exception_and_a_package_type() {
+    let text = "with AdaIR; use AdaIR;\nprocedure E is\n   A : AxesVector := (others => 0.0);\nbegin\n   MoveAxesAbsolute (A);\nexception\n   when OutOfReach =>\n      null;\nend E;\n";
+    let mut c = Client::start();
+    c.open("e.air", text);
+    let (d, _) = c.diagnostics("e.air");
+    assert!(d.is_empty(), "{d:?}");
+    let v = c.result(
+        R::HoverRequest::METHOD,
+        at("e.air", pos(text, "OutOfReach", 0, 2)),
+    );
+    let h: lsp_types::Hover = serde_json::from_value(v).unwrap();
+    let lsp_types::HoverContents::Markup(m) = h.contents else {
+        panic!()
+    };
+    assert!(m.value.contains("OutOfReach : exception"), "{}", m.value);
+    assert!(
+        m.value
+            .contains("raised when the goal is outside the arm's reach"),
+        "{}",
+        m.value
+    );
+    let v = c.result(
+        R::HoverRequest::METHOD,
+        at("e.air", pos(text, "AxesVector", 0, 2)),
+    );
+    let h: lsp_types::Hover = serde_json::from_value(v).unwrap();
+    let lsp_types::HoverContents::Markup(m) = h.contents else {
+        panic!()
+    };
+    assert!(
+        m.value
+            .contains("type AxesVector is array (1 .. MaxJoint) of Float;"),
+        "{}",
+        m.value
+    );
+    assert!(m.value.contains("radians"), "{}", m.value);
+    assert!(
+        m.value.contains("declared in stdlib/adair.air"),
+        "{}",
+        m.value
+    );
+    c.finish();
 }

@@ -111,11 +111,32 @@ fn code_block(s: &str) -> String {
     format!("```ada\n{}\n```", s.trim_end())
 }
 
-/// The first lines of a declaration's text.
+/// A comment after the declaration on its last line (`--  radians`).
+fn comment_beside(text: &str, end: usize) -> Option<&str> {
+    let rest = text.get(end.min(text.len())..)?;
+    let line = rest.split('\n').next().unwrap_or("");
+    line.trim().strip_prefix("--").map(str::trim)
+}
+
+/// The first lines of a declaration's text, its continuation lines
+/// unindented by the indentation of its first.
 fn decl_text(a: &Analysis, s: Span) -> String {
     const MAX: usize = 15;
+    let src = a.sources.text(s.context);
+    let start = s.start.min(src.len());
+    let indent = src[..start]
+        .rsplit('\n')
+        .next()
+        .map_or(0, |l| l.len() - l.trim_start().len());
     let t = a.span_text(s);
-    let lines: Vec<&str> = t.lines().collect();
+    let lines: Vec<&str> = t
+        .lines()
+        .enumerate()
+        .map(|(i, l)| {
+            let ws = l.len() - l.trim_start().len();
+            if i == 0 { l } else { &l[ws.min(indent)..] }
+        })
+        .collect();
     let mut out = lines[..lines.len().min(MAX)].join("\n");
     if lines.len() > MAX {
         out.push_str("\n...");
@@ -171,7 +192,18 @@ pub fn hover(a: &Analysis, offset: usize) -> Option<(String, Span)> {
 /// What hover says about a declaration.
 pub fn describe_def(a: &Analysis, d: &Def) -> String {
     let src = a.sources.text(d.span.context);
-    let doc = comment_above(src, d.decl.start);
+    let mut doc = comment_above(src, d.decl.start);
+    if let Some(c) = comment_beside(src, d.decl.end) {
+        if !doc.is_empty() {
+            doc.push('\n');
+        }
+        doc.push_str(c);
+    }
+    if d.kind == DefKind::Exception
+        && let Some(e) = crate::repl::exception_doc(&d.name)
+    {
+        doc = e;
+    }
     let ty = d.ty.map(|t| tname(a, t)).unwrap_or_default();
     let mut s = match d.kind {
         DefKind::Subprogram => {
