@@ -528,6 +528,8 @@ fn go_to_definition_of_subprograms_variables_and_types() {
     assert_eq!(l.range, range(DEMO, "Point", 0));
     let l = definition(&mut c, pos(DEMO, "P.X := P.Y", 0, 9));
     assert_eq!(l.range, range(DEMO, "Y", 0), "a record component");
+    let l = definition(&mut c, pos(DEMO, "Y => 2.0", 0, 0));
+    assert_eq!(l.range, range(DEMO, "Y", 0), "a component named in an aggregate");
     let l = definition(&mut c, pos(DEMO, "return N", 0, 7));
     assert_eq!(l.range.start, pos(DEMO, "N : Integer", 0, 0), "a parameter");
     assert_eq!(l.range.end, pos(DEMO, "N : Integer", 0, 1));

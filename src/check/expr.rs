@@ -2334,7 +2334,10 @@ impl Checker {
                             kind: ExprKind::Name(n),
                             ..
                         }) => match fields.iter().position(|f| f.key == n.key) {
-                            Some(i) => vec![i],
+                            Some(i) => {
+                                self.index_field_ref(n.span, t, i as u32);
+                                vec![i]
+                            }
                             None => {
                                 self.err(Diagnostic::name(
                                     n.span,
