@@ -529,10 +529,53 @@ fn go_to_definition_of_subprograms_variables_and_types() {
     let l = definition(&mut c, pos(DEMO, "P.X := P.Y", 0, 9));
     assert_eq!(l.range, range(DEMO, "Y", 0), "a record component");
     let l = definition(&mut c, pos(DEMO, "Y => 2.0", 0, 0));
-    assert_eq!(l.range, range(DEMO, "Y", 0), "a component named in an aggregate");
+    assert_eq!(
+        l.range,
+        range(DEMO, "Y", 0),
+        "a component named in an aggregate"
+    );
     let l = definition(&mut c, pos(DEMO, "return N", 0, 7));
     assert_eq!(l.range.start, pos(DEMO, "N : Integer", 0, 0), "a parameter");
     assert_eq!(l.range.end, pos(DEMO, "N : Integer", 0, 1));
+    c.finish();
+}
+
+/// Named associations refer to the parameter: of a user subprogram (its
+/// references include them) and of a service (hover gives its type).
+#[test]
+fn named_associations_refer_to_their_parameters() {
+    let text = DEMO.replace(
+        "   Move3 (1, 2.0, 3);\n",
+        "   Move3 (C => 3, A => 1, B => 2.0);\n   MoveTool (Distance => 20.0, Force => 5.0);\n",
+    );
+    let mut c = Client::start();
+    c.open("n.air", &text);
+    let (d, _) = c.diagnostics("n.air");
+    assert!(d.is_empty(), "{d:?}");
+    let v = c.result(
+        R::References::METHOD,
+        json!({ "textDocument": { "uri": uri("n.air") }, "position": pos(&text, "C : Integer", 0, 0), "context": { "includeDeclaration": true } }),
+    );
+    let locs: Vec<lsp_types::Location> = serde_json::from_value(v).unwrap();
+    let got: Vec<Range> = locs.iter().map(|l| l.range).collect();
+    // The declaration, the use in the body, the named association.
+    let one = |needle: &str, plus: u32| {
+        let p = pos(&text, needle, 0, plus);
+        Range::new(p, Position::new(p.line, p.character + 1))
+    };
+    assert_eq!(
+        got,
+        vec![one("C : Integer", 0), one("+ C;", 2), one("C => 3", 0)]
+    );
+    let v = c.result(
+        R::HoverRequest::METHOD,
+        at("n.air", pos(&text, "Distance =>", 0, 2)),
+    );
+    let h: lsp_types::Hover = serde_json::from_value(v).expect("a hover on a named association");
+    let lsp_types::HoverContents::Markup(m) = h.contents else {
+        panic!()
+    };
+    assert!(m.value.contains("Distance : ToolDistance"), "{}", m.value);
     c.finish();
 }
 

@@ -678,6 +678,19 @@ impl Checker {
             span: spec.span,
         });
         self.imports.push(None);
+        let written = spec.params.iter().flat_map(|p| &p.names);
+        for (i, (pid, ty)) in written
+            .zip(
+                self.funcs[id as usize]
+                    .params
+                    .iter()
+                    .map(|p| p.ty)
+                    .collect::<Vec<_>>(),
+            )
+            .enumerate()
+        {
+            self.index_param(id, i as u32, pid, ty);
+        }
         match &spec.name {
             ast::Designator::Ident(i) => self.declare_checked(i, Entity::Func(id)),
             ast::Designator::Op(_, _) => self.declare(&key, Entity::Func(id)),
@@ -714,7 +727,7 @@ impl Checker {
         self.name_scope(&b.spec.name.key());
         self.unit_path.push(b.spec.name.display());
         let mut written = b.spec.params.iter().flat_map(|p| p.names.iter());
-        for p in &params {
+        for (i, p) in params.iter().enumerate() {
             let var = self.new_slot();
             let e = Entity::Var {
                 var,
@@ -723,7 +736,7 @@ impl Checker {
                 value: None,
             };
             if let Some(id) = written.next() {
-                self.index_def(&id.name, id.span, &e, Some(index::DefKind::Parameter));
+                self.index_body_param(f, i as u32, id, &e);
             }
             self.declare(&p.name, e);
         }

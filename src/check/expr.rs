@@ -746,6 +746,11 @@ impl Checker {
                 return None;
             }
         };
+        for a in args {
+            if let Some(n) = &a.name {
+                self.index_named_arg(f, n);
+            }
+        }
         let params = self.funcs[f as usize].params.clone();
         let mut out = Vec::new();
         for (slot, p) in slots.into_iter().zip(&params) {

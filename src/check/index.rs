@@ -70,6 +70,8 @@ enum Key {
     Package(usize),
     Lit(TypeId, i64),
     Field(TypeId, u32),
+    /// Parameter `i` of a subprogram, for named associations in calls.
+    Param(FuncId, u32),
 }
 
 #[derive(Clone, Debug, Default)]
@@ -205,6 +207,63 @@ impl Checker {
             func: None,
         });
         self.index.by_key.insert(Key::Field(rec, i), n);
+    }
+
+    /// Records parameter `i` of subprogram `f` as written in its spec.
+    pub(super) fn index_param(
+        &mut self,
+        f: FuncId,
+        i: u32,
+        id: &crate::syntax::ast::Ident,
+        ty: TypeId,
+    ) {
+        let n = self.index.defs.len() as u32;
+        self.index.defs.push(Def {
+            name: id.name.clone(),
+            kind: DefKind::Parameter,
+            span: id.span,
+            decl: id.span,
+            ty: Some(ty),
+            func: None,
+        });
+        self.index.by_key.insert(Key::Param(f, i), n);
+    }
+
+    /// Records parameter `i` of `f` as the body declares it (entity `e`):
+    /// the spec's declaration when the body is its own spec, else a
+    /// declaration of its own that named associations then refer to.
+    pub(super) fn index_body_param(
+        &mut self,
+        f: FuncId,
+        i: u32,
+        id: &crate::syntax::ast::Ident,
+        e: &Entity,
+    ) {
+        let spec = self.index.by_key.get(&Key::Param(f, i)).copied();
+        match (spec, key_of(e)) {
+            (Some(d), Some(k)) if self.index.defs[d as usize].span == id.span => {
+                self.index.by_key.insert(k, d);
+            }
+            _ => {
+                let n = self.index.defs.len() as u32;
+                self.index_def(&id.name, id.span, e, Some(DefKind::Parameter));
+                self.index.by_key.insert(Key::Param(f, i), n);
+            }
+        }
+    }
+
+    /// Records a named association `Name => ...` of a call of `f`.
+    pub(super) fn index_named_arg(&mut self, f: FuncId, id: &crate::syntax::ast::Ident) {
+        let Some(i) = self.funcs.get(f as usize).and_then(|s| {
+            s.params
+                .iter()
+                .position(|p| p.name.eq_ignore_ascii_case(&id.name))
+        }) else {
+            return;
+        };
+        if let Some(&def) = self.index.by_key.get(&Key::Param(f, i as u32)) {
+            self.index.refs.push(Ref { span: id.span, def });
+        }
     }
 
     /// Records that the name at `span` (spelled `key` in lower case) means `e`.
