@@ -450,6 +450,28 @@ fn completion_offers_keywords_services_names_in_scope_and_snippets() {
         !l.iter().any(|x| x == "N"),
         "Twice's parameter is not visible here"
     );
+    // Nor the parameter of a declaration without a body here.
+    let text = DEMO.replace("   Count : Integer", "   procedure Later (Q : Integer);\n   procedure Later (Q : Integer) is begin null; end Later;\n   Count : Integer");
+    c.change("demo.air", 2, &text);
+    let (d, _) = c.diagnostics("demo.air");
+    assert!(d.is_empty(), "{d:?}");
+    let l = labels(&completion_at(
+        &mut c,
+        "demo.air",
+        pos(&text, "   InitRobot;", 0, 3),
+    ));
+    assert!(
+        l.iter().any(|x| x == "Later") && l.iter().any(|x| x == "Count"),
+        "{l:?}"
+    );
+    assert!(!l.iter().any(|x| x == "Q" || x == "A" || x == "N"), "{l:?}");
+    let l = labels(&completion_at(
+        &mut c,
+        "demo.air",
+        pos(&text, "null; end Later", 0, 0),
+    ));
+    assert!(l.iter().any(|x| x == "Q"), "{l:?}");
+    let items = completion_at(&mut c, "demo.air", pos(&text, "      P.X := B;", 0, 6));
     let svc = items
         .iter()
         .find(|i| i.label == "MoveAxesAbsolute")

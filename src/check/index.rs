@@ -222,7 +222,7 @@ impl Checker {
             name: id.name.clone(),
             kind: DefKind::Parameter,
             span: id.span,
-            decl: id.span,
+            decl: self.cur_decl.unwrap_or(id.span),
             ty: Some(ty),
             func: None,
         });

@@ -244,6 +244,10 @@ pub fn visible_defs(a: &Analysis, offset: usize) -> Vec<u32> {
             .iter()
             .filter(|r| inside(r, d.span.start, d.span.end) && !(own && r.start == d.decl.start))
             .min_by_key(|r| r.end - r.start);
+        // A parameter is visible in its body only (not after a spec).
+        if d.kind == DefKind::Parameter && owner.is_none_or(|r| r.start != d.decl.start) {
+            continue;
+        }
         if owner.is_none_or(|r| inside(r, offset, offset)) {
             v.push(i as u32);
         }
