@@ -768,6 +768,21 @@ fn rename_a_local_name_and_refuse_others() {
             .message
             .contains("not an Ada identifier")
     );
+    // Not while the file has errors (a use that does not check is unknown).
+    let bad = DEMO.replace("P.X := P.Y;", "P.X := P.Y + Count;");
+    c.change("demo.air", 2, &bad);
+    let (d, _) = c.diagnostics("demo.air");
+    assert_eq!(d.len(), 1, "{d:?}");
+    let r = c.call(
+        R::Rename::METHOD,
+        json!({ "textDocument": { "uri": uri("demo.air") }, "position": pos(&bad, "Count", 0, 0), "newName": "Total" }),
+    );
+    assert!(
+        r.response_result
+            .unwrap_err()
+            .message
+            .contains("the file has errors")
+    );
     c.finish();
 }
 

@@ -287,6 +287,13 @@ pub fn rename(a: &Analysis, offset: usize, new_name: &str) -> Result<Vec<Span>, 
     if !is_identifier(new_name) {
         return Err(format!("`{new_name}` is not an Ada identifier"));
     }
+    // A use that does not check is not in the side tables: renaming now
+    // could leave it behind.
+    if a.diags.iter().any(|d| !d.is_warning()) || a.crashed.is_some() {
+        return Err(
+            "the file has errors: fix them first, so that every use of the name is known".into(),
+        );
+    }
     let mut v = a.checker.index.uses_of(i);
     v.push(d.span);
     v.retain(|s| s.context == a.file);
