@@ -105,12 +105,25 @@ pub fn run(conn: &Connection, config: Config) -> Result<(), String> {
 
 impl Server<'_> {
     fn main_loop(&mut self) -> Result<(), String> {
-        while let Ok(first) = self.conn.receiver.recv() {
-            // Everything that has arrived: changes only record the text.
-            let mut batch = vec![first];
-            while let Ok(m) = self.conn.receiver.try_recv() {
-                batch.push(m);
+        // The stdio transport hands over one message at a time (a rendezvous
+        // channel): a thread takes each at once into an unbounded queue, so
+        // that messages that come while a document is checked wait there,
+        // and the loop below can take them all.
+        // It forwards what is there together, as one batch.
+        let (tx, queue) = std::sync::mpsc::channel::<Vec<Message>>();
+        let rx = self.conn.receiver.clone();
+        std::thread::spawn(move || {
+            while let Ok(first) = rx.recv() {
+                let mut batch = vec![first];
+                batch.extend(rx.try_iter());
+                if tx.send(batch).is_err() {
+                    break;
+                }
             }
+        });
+        while let Ok(mut batch) = queue.recv() {
+            // Everything that has arrived: changes only record the text.
+            batch.extend(queue.try_iter().flatten());
             let mut changed: Vec<Uri> = Vec::new();
             for m in batch {
                 match m {
