@@ -271,7 +271,7 @@ fn diagnostics_on_open_and_change_are_the_checker_s_and_cleared_when_fixed() {
     assert_eq!(d[0].range, range(&bad, "Countt", 0));
     assert_eq!(
         d[0].message,
-        "`Countt` is not declared\nhelp: did you mean `Count`?"
+        "`Countt` is not declared\nHelp: did you mean `Count`?"
     );
     assert_eq!(d[0].severity, Some(lsp_types::DiagnosticSeverity::ERROR));
     // The label is a related location at the same place.

@@ -260,7 +260,7 @@ impl Server<'_> {
         };
         let mut message = d.message.clone();
         if let Some(h) = &d.hint {
-            message.push_str("\nhelp: ");
+            message.push_str("\nHelp: ");
             message.push_str(h);
         }
         let mut related = Vec::new();
