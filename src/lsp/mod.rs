@@ -137,7 +137,14 @@ impl Server<'_> {
                                 Err("exit before shutdown".into())
                             };
                         }
-                        if let Some(uri) = self.notification(n)
+                        // A notification that panics is dropped, like a bad one.
+                        let changed_uri =
+                            std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                                self.notification(n)
+                            }))
+                            .ok()
+                            .flatten();
+                        if let Some(uri) = changed_uri
                             && !changed.contains(&uri)
                         {
                             changed.push(uri);
@@ -147,7 +154,8 @@ impl Server<'_> {
                 }
             }
             for uri in changed {
-                self.publish(&uri);
+                let _ =
+                    std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.publish(&uri)));
             }
         }
         Ok(())
