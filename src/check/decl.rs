@@ -678,17 +678,13 @@ impl Checker {
             span: spec.span,
         });
         self.imports.push(None);
+        let tys: Vec<TypeId> = self.funcs[id as usize]
+            .params
+            .iter()
+            .map(|p| p.ty)
+            .collect();
         let written = spec.params.iter().flat_map(|p| &p.names);
-        for (i, (pid, ty)) in written
-            .zip(
-                self.funcs[id as usize]
-                    .params
-                    .iter()
-                    .map(|p| p.ty)
-                    .collect::<Vec<_>>(),
-            )
-            .enumerate()
-        {
+        for (i, (pid, ty)) in written.zip(tys).enumerate() {
             self.index_param(id, i as u32, pid, ty);
         }
         match &spec.name {
@@ -787,11 +783,7 @@ impl Checker {
         };
         let idx = if self.level == 0 && self.unit_path.is_empty() {
             let idx = self.package(&full);
-            let id = match &p.name.kind {
-                ast::ExprKind::Select(_, id) | ast::ExprKind::Name(id) => Some(id.clone()),
-                _ => None,
-            };
-            if let Some(id) = id {
+            if let ast::ExprKind::Select(_, id) | ast::ExprKind::Name(id) = &p.name.kind {
                 self.index_def(&id.name, id.span, &Entity::Package(idx), None);
             }
             idx
