@@ -847,10 +847,16 @@ fn analysis_and_features_never_panic_on_the_corpus_and_its_prefixes() {
     }
     assert!(texts.len() > 100, "the corpus is there");
     let base = analysis::Base::new(None);
+    // `ADAIR_LSP_CUTS=N`: cut each text into N prefixes (8 by default).
+    let parts: usize = std::env::var("ADAIR_LSP_CUTS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(8)
+        .max(1);
     let mut checked = 0;
     for (path, text) in &texts {
         let n = text.len();
-        let mut cuts: Vec<usize> = (1..8).map(|k| n * k / 8).collect();
+        let mut cuts: Vec<usize> = (1..parts).map(|k| n * k / parts).collect();
         cuts.push(n);
         for cut in cuts {
             let mut cut = cut;
