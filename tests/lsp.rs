@@ -406,6 +406,12 @@ fn hover_on_a_variable_shows_its_type_and_on_a_type_its_definition() {
         text.contains("type Point is record\n   X : Float;\n   Y : Float;\nend record;"),
         "{text}"
     );
+    // An expression that is not a name: its type.
+    let (text, r) = hover_text(&mut c, pos(DEMO, "N * 2", 0, 2));
+    assert!(text.contains("N * 2 : Integer"), "{text}");
+    assert_eq!(r, Some(range(DEMO, "N * 2", 0)));
+    let (text, _) = hover_text(&mut c, pos(DEMO, "(Count);", 0, 0));
+    assert!(text.contains("Twice (Count) : Integer"), "{text}");
     // A user subprogram: its profile and the comment above it.
     let (text, _) = hover_text(&mut c, pos(DEMO, "Twice (Count)", 0, 0));
     assert!(

@@ -915,6 +915,14 @@ impl Checker {
     }
 
     fn expr_inner(&mut self, e: &ast::Expr, want: Option<TypeId>) -> Ex {
+        let r = self.expr_kind(e, want);
+        if r.ty != ERROR {
+            self.index.types.push((e.span, r.ty));
+        }
+        r
+    }
+
+    fn expr_kind(&mut self, e: &ast::Expr, want: Option<TypeId>) -> Ex {
         let sp = e.span;
         match &e.kind {
             ExprKind::Int(v) => match i64::try_from(*v) {

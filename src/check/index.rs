@@ -78,6 +78,9 @@ enum Key {
 pub struct Index {
     pub defs: Vec<Def>,
     pub refs: Vec<Ref>,
+    /// The type of each expression the checker checked (not errors), by
+    /// its span: hover on an operator, a literal or a call shows it.
+    pub types: Vec<(Span, TypeId)>,
     by_key: HashMap<Key, u32>,
     /// Named numbers and `for E of` element names have no identity but
     /// their name: the latest declaration of the name.
@@ -100,6 +103,15 @@ impl Index {
                     .position(|d| hit(&d.span))
                     .map(|i| i as u32)
             })
+    }
+
+    /// The type of the smallest checked expression around `offset`.
+    pub fn type_at(&self, file: u32, offset: usize) -> Option<(Span, TypeId)> {
+        self.types
+            .iter()
+            .filter(|(s, _)| s.context == file && s.start <= offset && offset < s.end)
+            .min_by_key(|(s, _)| s.end - s.start)
+            .copied()
     }
 
     /// Every place that names declaration `def` (uses, without duplicates,

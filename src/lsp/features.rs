@@ -158,6 +158,16 @@ pub fn hover(a: &Analysis, offset: usize) -> Option<(String, Span)> {
             .unwrap_or(d.span);
         return Some((describe_def(a, d), at));
     }
+    // An expression that is not a name: its type.
+    if let Some((span, t)) = a.checker.index.type_at(a.file, offset) {
+        let text = a.span_text(span);
+        let shown = if text.len() <= 60 && !text.contains('\n') {
+            format!("{text} : {}", tname(a, t))
+        } else {
+            format!("expression : {}", tname(a, t))
+        };
+        return Some((code_block(&shown), span));
+    }
     // Not resolved (the text around it does not check): a service or a
     // name visible at the top level, by its spelling.
     let (s, e) = word_at(&a.text, offset)?;
