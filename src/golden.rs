@@ -63,6 +63,9 @@ pub fn run_case(path: &Path) -> String {
 pub struct Target {
     pub port: Option<crate::driver::serial::PortSettings>,
     pub rehearse: bool,
+    /// The engine to run in (None: the session's default, `ADAIR_ENGINE`
+    /// or the compiled one); the tests run every script in both.
+    pub engine: Option<crate::interp::vm::Engine>,
 }
 
 /// [`run_case`] on `target`.
@@ -105,6 +108,9 @@ pub fn run_text_on(name: &str, text: &str, robot: &str, trace: bool, target: &Ta
     let buf = SharedBuf::default();
     let mut s = Session::new(Box::new(buf.clone()));
     s.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+    if let Some(e) = target.engine {
+        s.machine.engine = e;
+    }
     let tracer = || trace.then(|| Box::new(buf.clone()) as Box<dyn Write>);
     match crate::kinematics::RobotDescription::builtin(robot) {
         Ok(desc) => match &target.port {

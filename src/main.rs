@@ -124,8 +124,15 @@ enum Command {
         /// With piped input: exit 1 if an entry failed.
         #[arg(long)]
         strict: bool,
+        /// The robot: rv-m1 (default) or rm-501 (`:robot` switches later).
+        #[arg(long, default_value = "rv-m1")]
+        robot: String,
         #[command(flatten)]
         serial: SerialOpts,
+        /// With --port: run each entry on the simulator from the arm's pose
+        /// first, and move the arm only if that rehearsal raises nothing.
+        #[arg(long, requires = "port")]
+        rehearse: bool,
     },
     /// A virtual RV-M1 (or RM-501) controller on a pseudo-terminal; prints the device path to give to --port.
     SimController {
@@ -240,10 +247,23 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             );
             2
         }
-        Some(Command::Repl { strict, serial }) => {
-            let port = serial.settings();
+        Some(Command::Repl {
+            strict,
+            robot,
+            serial,
+            rehearse,
+        }) => {
+            if let Err(e) = adair::kinematics::RobotDescription::builtin(&robot) {
+                eprintln!("adair: --robot: {}", e.problems.join("; "));
+                return 2;
+            }
+            let drive = adair::repl::Drive {
+                robot: Some(robot),
+                port: serial.settings(),
+                rehearse,
+            };
             if std::io::stdin().is_terminal() {
-                adair::repl::term::interactive_on(color, port) as u8
+                adair::repl::term::interactive_on(color, drive) as u8
             } else {
                 let stdin = std::io::stdin();
                 adair::repl::term::piped_on(
@@ -251,7 +271,7 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                     Box::new(|| Box::new(std::io::stdout()) as Box<dyn std::io::Write>),
                     &mut std::io::stdout(),
                     strict,
-                    port,
+                    drive,
                 ) as u8
             }
         }
@@ -468,6 +488,7 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             let target = adair::golden::Target {
                 port: serial.settings(),
                 rehearse,
+                engine: None,
             };
             let paths = if paths.is_empty() {
                 vec![PathBuf::from(".")]

@@ -24,8 +24,10 @@ pub const SCRIPT_USES: &[&str] = &[
 ];
 
 /// Every import name the runtime binds: the predefined library, then the services.
-pub fn resolve(name: &str) -> Option<crate::interp::Native> {
-    builtins::lookup(name).or_else(|| crate::services::lookup(name))
+pub fn resolve(name: &str) -> Option<crate::interp::Binding> {
+    builtins::lookup(name)
+        .map(crate::interp::Binding::Native)
+        .or_else(|| crate::services::lookup(name))
 }
 
 /// The text of a stdlib file as the session checks it: the AdaIR package's
@@ -59,6 +61,10 @@ pub struct Session {
     /// Where `run_source` shows the warnings before the program runs, and
     /// whether in colour (`adair run`: standard error).
     pub warnings_to: Option<(Box<dyn Write>, bool)>,
+    /// The robot the services drive, owned here and lent to each run
+    /// (None until one is chosen: a service call then raises
+    /// `Program_Error`, never drives a default robot).
+    pub robot: Option<crate::services::RobotState>,
 }
 
 /// How a run ended.
@@ -90,6 +96,7 @@ impl Session {
             warnings: Vec::new(),
             strict: false,
             warnings_to: None,
+            robot: None,
         };
         s.machine.resolver = resolve;
         s.checker
@@ -101,7 +108,7 @@ impl Session {
                     // The embedded library is tested; a failure here is a bug in adair.
                     panic!("stdlib does not check: {d:?}")
                 });
-            let _ = s.machine.run(&s.checker, &stmts, None);
+            let _ = s.machine.run(s.checker.program(), &stmts, None, None);
         }
         for pkg in ["AdaIR", "Ada.Text_IO"] {
             for e in ["Name_Error", "Use_Error", "Data_Error", "End_Error"] {
@@ -140,53 +147,93 @@ impl Session {
         let mut st = crate::services::RobotState::with_driver(desc, excs, driver);
         st.trace = trace;
         st.realtime = realtime;
-        self.machine.robot = Some(Box::new(st));
+        self.robot = Some(st);
     }
 
     /// The services' robot state, once a robot is chosen.
     pub fn robot_state(&self) -> Option<&crate::services::RobotState> {
-        self.machine
-            .robot
-            .as_ref()
-            .and_then(|b| b.downcast_ref::<crate::services::RobotState>())
+        self.robot.as_ref()
     }
 
-    /// Where the program was when the user stopped it (Ctrl-C during or
-    /// before a motion), once: the run has ended there.
+    /// The robot state, to change it between runs (REPL, TeachBox).
+    pub fn robot_state_mut(&mut self) -> Option<&mut crate::services::RobotState> {
+        self.robot.as_mut()
+    }
+
+    /// Where the user stopped the last run (Ctrl-C), once.
     pub fn take_stopped(&mut self) -> Option<String> {
-        self.machine
-            .robot
-            .as_mut()
-            .and_then(|b| b.downcast_mut::<crate::services::RobotState>())
-            .and_then(|st| st.stopped.take())
+        self.robot.as_mut().and_then(|st| st.stopped.take())
     }
 
-    /// Starts collecting the support points of every motion (`--record`).
+    /// Records every motion's support points from now on (`--record`, `--plot`).
     pub fn start_recording(&mut self) {
-        if let Some(st) = self
-            .machine
-            .robot
-            .as_mut()
-            .and_then(|b| b.downcast_mut::<crate::services::RobotState>())
-        {
+        if let Some(st) = &mut self.robot {
             st.record = Some(Vec::new());
         }
     }
 
-    /// Lets `TeachBox` open the screen teach pendant (only on a terminal).
+    /// Installs the screen teach pendant behind `TeachBox`.
     pub fn install_pendant(&mut self, pendant: Box<dyn crate::services::Pendant>) {
-        if let Some(st) = self
-            .machine
-            .robot
-            .as_mut()
-            .and_then(|b| b.downcast_mut::<crate::services::RobotState>())
-        {
+        if let Some(st) = &mut self.robot {
             st.pendant = Some(pendant);
         }
     }
 
-    /// Lexes, parses and checks one source. `script` forces script mode (the
-    /// REPL); otherwise a file with top-level statements is a script.
+    /// Runs `f` as a rehearsal: on a simulated copy of the robot (same
+    /// pose and settings), on a deep copy of the program's data, on virtual
+    /// time, with output discarded and no input; afterwards the robot, the
+    /// data, the clock and the output are the ones from before, untouched.
+    pub fn rehearsing<T>(&mut self, f: impl FnOnce(&mut Session) -> T) -> T {
+        let copy = self.machine.copy_globals();
+        let globals = self.machine.swap_globals(copy);
+        let out = std::mem::replace(&mut self.machine.out, Box::new(std::io::sink()));
+        let input = std::mem::replace(
+            &mut self.machine.input,
+            Box::new(std::io::BufReader::new(std::io::empty())),
+        );
+        let t = self.machine.clock.now();
+        let clock = std::mem::replace(
+            &mut self.machine.clock,
+            Box::new(crate::interp::VirtualClock { t }),
+        );
+        let col = self.machine.col;
+        let stand_in = self.robot.as_ref().map(|r| r.rehearsal());
+        let robot = std::mem::replace(&mut self.robot, stand_in);
+        let result = f(self);
+        self.robot = robot;
+        self.machine.col = col;
+        self.machine.clock = clock;
+        self.machine.input = input;
+        self.machine.out = out;
+        self.machine.swap_globals(globals);
+        result
+    }
+
+    /// Runs checked statements (and the main subprogram) with the robot lent.
+    pub fn run_checked(
+        &mut self,
+        stmts: &[Stmt],
+        main: Option<FuncId>,
+    ) -> Result<(), Box<Occurrence>> {
+        let svc = self
+            .robot
+            .as_mut()
+            .map(|r| r as &mut dyn crate::interp::Services);
+        self.machine.run(self.checker.program(), stmts, main, svc)
+    }
+
+    /// Evaluates a checked expression (a REPL entry) with the robot lent.
+    pub fn eval_checked(
+        &mut self,
+        e: &crate::check::ir::Ex,
+    ) -> Result<crate::interp::Value, Box<Occurrence>> {
+        let svc = self
+            .robot
+            .as_mut()
+            .map(|r| r as &mut dyn crate::interp::Services);
+        self.machine.eval_expr(self.checker.program(), e, svc)
+    }
+
     pub fn check_source(
         &mut self,
         name: &str,
@@ -242,7 +289,7 @@ impl Session {
             let _ = w.write_all(text.as_bytes());
             let _ = w.flush();
         }
-        let r = self.machine.run(&self.checker, &stmts, main);
+        let r = self.run_checked(&stmts, main);
         self.machine.finish();
         match r {
             Ok(()) => Outcome::Ok,

@@ -238,7 +238,7 @@ fn exercise(src: String) -> bool {
                     stop.store(true, Ordering::SeqCst);
                 })
             };
-            let _ = s.machine.run(&s.checker, &stmts, main);
+            let _ = s.run_checked(&stmts, main);
             s.machine.finish();
             *done.lock().expect("lock") = true;
             let _ = watchdog.join();

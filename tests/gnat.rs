@@ -1,4 +1,5 @@
-//! The GNAT comparison: every `tests/ada/X.adb` runs in adair and must print
+//! The GNAT comparison: every `tests/ada/X.adb` runs in adair (in the compiled
+//! engine and again in the reference tree walker) and must print
 //! what GNAT printed and end with GNAT's exit status.
 //!
 //! GNAT's output is recorded beside the program in `tests/ada/X.gnat` (first
@@ -72,9 +73,10 @@ fn gnat_output(src: &Path, work: &Path) -> Result<Recorded, String> {
     })
 }
 
-fn adair_output(src: &Path) -> Recorded {
+fn adair_output(src: &Path, engine: adair::interp::vm::Engine) -> Recorded {
     let buf = adair::golden::SharedBuf::default();
     let mut s = adair::session::Session::new(Box::new(buf.clone()));
+    s.machine.engine = engine;
     let text = std::fs::read_to_string(src).unwrap_or_default();
     let outcome = s.run_source(&src.to_string_lossy(), &text);
     Recorded {
@@ -133,7 +135,17 @@ fn trial(path: &Path, work: &Path, mode: Mode) -> Result<(), Failed> {
             recorded
         }
     };
-    compare("GNAT (-) against adair (+)", &recorded, &adair_output(path))
+    use adair::interp::vm::Engine;
+    compare(
+        "GNAT (-) against adair (+)",
+        &recorded,
+        &adair_output(path, Engine::Compiled),
+    )?;
+    compare(
+        "GNAT (-) against adair's reference tree walker (+)",
+        &recorded,
+        &adair_output(path, Engine::Walker),
+    )
 }
 
 fn main() {

@@ -1,5 +1,7 @@
 //! The golden corpus: every `.air` under `tests/golden/` and `examples/` is
-//! one named test, run in-process through the same runner as `adair test`.
+//! one named test, run in-process through the same runner as `adair test`,
+//! in the compiled engine and again in the reference tree walker: both must
+//! print the `.out` file (differential testing of the engines).
 //! `BLESS=1 cargo test --test golden` rewrites the `.out` files.
 #![allow(clippy::print_stdout, clippy::print_stderr)]
 
@@ -22,7 +24,8 @@ fn main() {
         .map(|path| {
             let name = path.with_extension("").to_string_lossy().replace('/', "::");
             Trial::test(name, move || match on_big_stack(path.clone(), bless) {
-                Verdict::Pass | Verdict::Blessed => Ok(()),
+                Verdict::Pass => walker_agrees(&path),
+                Verdict::Blessed => Ok(()),
                 Verdict::Missing => Err(Failed::from(format!(
                     "{} has no .out file (run with BLESS=1)",
                     path.display()
@@ -35,6 +38,34 @@ fn main() {
         })
         .collect();
     libtest_mimic::run(&Arguments::from_args(), trials).exit();
+}
+
+/// The reference engine prints the `.out` file too.
+fn walker_agrees(path: &std::path::Path) -> Result<(), Failed> {
+    let p = path.to_path_buf();
+    let actual = std::thread::Builder::new()
+        .stack_size(512 << 20)
+        .spawn(move || {
+            golden::run_case_on(
+                &p,
+                &golden::Target {
+                    engine: Some(adair::interp::vm::Engine::Walker),
+                    ..golden::Target::default()
+                },
+            )
+        })
+        .expect("spawn a test thread")
+        .join()
+        .unwrap_or_else(|_| "the run panicked".into());
+    let expected = std::fs::read_to_string(golden::expected_path(path)).unwrap_or_default();
+    if expected == actual {
+        Ok(())
+    } else {
+        Err(Failed::from(format!(
+            "the tree walker (reference engine) differs from the .out (- expected, + walker):\n{}",
+            golden::diff(&expected, &actual)
+        )))
+    }
 }
 
 /// Runs a case on a thread with the stack `adair` itself gives a program

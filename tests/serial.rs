@@ -589,8 +589,74 @@ fn the_repl_jogs_a_real_arm() {
     );
 }
 
+/// `adair repl --port --rehearse`: each entry runs on the simulator from
+/// the arm's pose first; an entry whose rehearsal raises moves nothing on
+/// the arm (no motion line is sent, though its first motion was fine) and
+/// changes none of the session's data (a variable, an object reached
+/// through an access value); an entry that rehearses well moves the arm.
+fn the_repl_rehearses_each_entry_before_the_arm_moves() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let mut child = Command::new(BIN)
+        .args([
+            "repl",
+            "--serial-timeout",
+            "0.5",
+            "--port",
+            &c.path,
+            "--rehearse",
+        ])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(
+            b"type Cell is access Integer;\n\
+N : Integer := 0;\n\
+C : Cell := new Integer'(0);\n\
+InitRobot;\n\
+N := N + 1; C.all := 7; MoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0)); MoveAxesAbsolute ((Rad (170.0), 0.0, 0.0, 0.0, 0.0));\n\
+N\n\
+C.all\n\
+MoveAxesRelative ((Rad (-5.0), 0.0, 0.0, 0.0, 0.0));\n",
+        )
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains("rehearsal on the simulator failed: the arm was not moved"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("OUTOFREACH"), "{stdout}");
+    // The refused entry changed nothing: N and C.all are still 0.
+    let values: Vec<&str> = stdout
+        .lines()
+        .filter(|l| l.trim().parse::<i64>().is_ok())
+        .collect();
+    assert_eq!(values, ["0", "0"], "{stdout}");
+    let sent = c.received();
+    assert!(
+        !sent.iter().any(|l| l.starts_with("MJ +10.0")),
+        "the refused entry moved the arm: {sent:?}"
+    );
+    assert!(
+        sent.iter().any(|l| l == "MJ -5.0,+0.0,+0.0,+0.0,+0.0"),
+        "the good entry did not move the arm: {sent:?}"
+    );
+}
+
 fn main() {
     let tests: &[(&str, fn())] = &[
+        (
+            "the_repl_rehearses_each_entry_before_the_arm_moves",
+            the_repl_rehearses_each_entry_before_the_arm_moves,
+        ),
         (
             "same_joints_on_the_simulator_and_over_the_line_rv_m1",
             same_joints_on_the_simulator_and_over_the_line_rv_m1,

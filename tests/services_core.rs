@@ -30,10 +30,7 @@ fn a_teach_box_jog_is_limited_clocked_and_traced_like_a_motion() {
         Some(Box::new(buf.clone())),
         false,
     );
-    let mut st = s.machine.robot.take().unwrap();
-    let st = st
-        .downcast_mut::<adair::services::RobotState>()
-        .expect("robot state");
+    let st = s.robot_state_mut().expect("robot state");
     let mut clock = VirtualClock::default();
     adair::services::jog(st, &mut clock, joints_from_deg([30.0, 0.0, 0.0, 0.0, 0.0])).unwrap();
     assert!(clock.now() > 0.0, "the jog took no time");
@@ -62,4 +59,122 @@ fn the_adair_package_declares_every_service_of_the_table() {
     assert!(spec.contains(
         "procedure MoveAxesAbsolute (Axes : in AxesVector; Time : in Duration := 0.0; Control : in Boolean := False; RealTime : in Boolean := False) with Import, External_Name => \"MoveAxesAbsolute\";"
     ));
+}
+
+/// The services see a narrow context, never the whole run: no `Run`,
+/// `Flow` or `Machine` of the interpreter in `src/services/`, and the robot
+/// state is a typed value (no `Any`, no downcast) in the session too.
+#[test]
+fn services_take_a_narrow_context_and_a_typed_state() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut files: Vec<_> = std::fs::read_dir(root.join("src/services"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    files.push(root.join("src/session.rs"));
+    files.extend(
+        std::fs::read_dir(root.join("src/interp"))
+            .unwrap()
+            .map(|e| e.unwrap().path()),
+    );
+    let words = |text: &str| -> Vec<String> {
+        text.split(|c: char| !c.is_alphanumeric() && c != '_')
+            .map(str::to_string)
+            .collect()
+    };
+    for f in &files {
+        let text = std::fs::read_to_string(f).unwrap();
+        let w = words(&text);
+        for banned in ["std::any", "dyn Any", "downcast"] {
+            assert!(!text.contains(banned), "{} uses {banned}", f.display());
+        }
+        if f.starts_with(root.join("src/interp")) {
+            assert!(
+                !w.iter().any(|x| x == "Checker"),
+                "{} reads the checker, not the program",
+                f.display()
+            );
+        }
+        if f.starts_with(root.join("src/services")) {
+            for banned in ["Run", "Flow", "Machine", "Native"] {
+                assert!(
+                    !w.iter().any(|x| x == banned),
+                    "{} uses {banned}",
+                    f.display()
+                );
+            }
+        }
+    }
+}
+
+/// A service raises through the narrow context: the exception is the
+/// program's, at the call, and the state is the session's own.
+#[test]
+fn a_service_exception_is_raised_at_the_call_and_the_state_stays_with_the_session() {
+    let mut s = Session::new(Box::new(std::io::sink()));
+    s.set_robot(RobotDescription::builtin("rv-m1").unwrap(), None, false);
+    match s.run_source(
+        "t.air",
+        "InitRobot;\nSetVelocity (0.5);\nMoveAxesAbsolute ((Rad (200.0), 0.0, 0.0, 0.0, 0.0));\n",
+    ) {
+        Outcome::Raised(d) => {
+            assert!(
+                d.message.contains("OUTOFREACH") || d.message.contains("OutOfReach"),
+                "{}",
+                d.message
+            );
+            assert_eq!(
+                s.sources.line_col(d.span.context, d.span.start).0,
+                3,
+                "{}",
+                d.message
+            );
+        }
+        o => panic!("{o:?}"),
+    }
+    let st = s.robot_state().expect("the session keeps its robot");
+    assert!(st.initialized);
+    assert!((st.velocity - 0.5).abs() < 1e-12);
+    assert_eq!(
+        st.error_status,
+        adair::services::table::code_of("MoveAxesAbsolute")
+    );
+}
+
+/// A rehearsal (`--rehearse`) runs on a simulated copy: afterwards the
+/// robot's pose, the clock, the output and the program's data are as before.
+#[test]
+fn a_rehearsal_leaves_robot_clock_output_and_data_as_they_were() {
+    let buf = SharedBuf::default();
+    let mut s = Session::new(Box::new(buf.clone()));
+    s.set_robot(RobotDescription::builtin("rv-m1").unwrap(), None, false);
+    assert!(matches!(
+        s.run_source("a.air", "N : Integer := 1;\nInitRobot;\n"),
+        Outcome::Ok
+    ));
+    let before = s.robot_state().unwrap().robot.joints();
+    let t = s.machine.clock.now();
+    let (stmts, _) = s
+        .check_source(
+            "b.air",
+            "N := 2;\nPut_Line (\"moved\");\nMoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0));\n",
+            true,
+        )
+        .unwrap();
+    let r = s.rehearsing(|s| {
+        let r = s.run_checked(&stmts, None);
+        (r.is_ok(), s.robot_state().unwrap().robot.joints()[0])
+    });
+    assert!(r.0);
+    assert!(
+        (r.1 - 10f64.to_radians()).abs() < 1e-9,
+        "the stand-in moved"
+    );
+    assert_eq!(s.robot_state().unwrap().robot.joints(), before);
+    assert_eq!(s.machine.clock.now(), t);
+    assert_eq!(buf.take(), "");
+    match s.run_source("c.air", "Put_Line (Integer'Image (N));\n") {
+        Outcome::Ok => assert_eq!(buf.take(), " 1\n"),
+        o => panic!("{o:?}"),
+    }
 }

@@ -5,7 +5,6 @@
 //! and a call that raises leaves the joints exactly where they were.
 
 use adair::kinematics::RobotDescription;
-use adair::services::RobotState;
 use adair::session::Session;
 use proptest::prelude::*;
 
@@ -130,12 +129,7 @@ fn run(calls: &[(u8, Vec<f64>)], robot: &str) -> Result<(), TestCaseError> {
             src
         );
     }
-    let state = s
-        .machine
-        .robot
-        .as_ref()
-        .and_then(|b| b.downcast_ref::<RobotState>())
-        .expect("robot state");
+    let state = s.robot_state().expect("robot state");
     let q = state.robot.joints();
     prop_assert!(
         state.kin.description().check_limits(&q).is_ok(),

@@ -274,6 +274,19 @@ pub struct Exception {
     pub name: String,
 }
 
+/// The checked program as the interpreter sees it: the checker's tables,
+/// read-only (subprograms, their import names, types, exceptions, the
+/// number of level-0 slots). The interpreter gets this view and never the
+/// `Checker` itself.
+#[derive(Clone, Copy)]
+pub struct ProgramRef<'a> {
+    pub funcs: &'a [Subprogram],
+    pub imports: &'a [Option<String>],
+    pub types: &'a crate::check::types::Types,
+    pub excs: &'a [Exception],
+    pub globals: u32,
+}
+
 /// A whole checked program (or one REPL entry against kept state).
 #[derive(Clone, Debug, Default)]
 pub struct Program {

@@ -850,6 +850,17 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
 }
 
 impl Checker {
+    /// The program checked so far, as the interpreter reads it.
+    pub fn program(&self) -> ir::ProgramRef<'_> {
+        ir::ProgramRef {
+            funcs: &self.funcs,
+            imports: &self.imports,
+            types: &self.types,
+            excs: &self.excs,
+            globals: self.globals,
+        }
+    }
+
     /// Marks a variable as read (see `unread`).
     pub(super) fn mark_read(&mut self, v: Var) {
         self.set_read(v, true);

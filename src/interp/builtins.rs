@@ -16,6 +16,25 @@ pub fn known(name: &str) -> bool {
 }
 
 const TABLE: &[(&str, Native)] = &[
+    // SERIAL_IO (the AdaIR package): terminals map to standard output.
+    ("PutS_String", |r, a, _| {
+        r.m.write_str(&a[1].text());
+        Ok(None)
+    }),
+    ("PutS_Integer", |r, a, _| {
+        r.m.write_str(&value::image_int(a[1].int()));
+        Ok(None)
+    }),
+    ("New_LineS", |r, _, _| {
+        r.m.write_str("\n");
+        Ok(None)
+    }),
+    ("Get_LineS", |r, _, span| read_line(r, span).map(|_| None)),
+    ("Get_LineS_Text", get_lines_text),
+    ("put_fixed", |r, a, _| {
+        r.m.write_str(&value::put_float(a[0].real(), 7, 3, 0));
+        Ok(None)
+    }),
     ("put_string", put_string),
     ("put_char", put_char),
     ("put_line", put_line),
@@ -268,4 +287,14 @@ fn exception_information(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Valu
         })
         .unwrap_or_default();
     Ok(Some(Value::str(&s)))
+}
+
+/// `Get_LineS (Term, Text, Last)`: `Get_Line` on standard input.
+fn get_lines_text(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let mut args = [a[1].clone(), a[2].clone()];
+    get_line(r, &mut args, span)?;
+    let [text, last] = args;
+    a[1] = text;
+    a[2] = last;
+    Ok(None)
 }

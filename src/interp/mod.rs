@@ -2,16 +2,18 @@
 //!
 //! [`Machine`] holds the state that outlives one run (globals, output, clock,
 //! the native bindings), so that the REPL can run entry after entry. A run
-//! borrows the checker's tables, in which every name is already a slot or an
-//! index: nothing here looks a name up by string.
+//! reads the checked program through a [`ProgramRef`] (never the checker),
+//! in which every name is already a slot or an index: nothing here looks a
+//! name up by string.
 
 pub mod builtins;
 pub mod memory;
 pub mod value;
+pub mod vm;
 
+use crate::check;
 use crate::check::ir::*;
 use crate::check::types::{TypeId, TypeKind};
-use crate::check::{self, Checker};
 use crate::diag::Span;
 use crate::syntax::ast::Mode;
 use std::cell::RefCell;
@@ -61,6 +63,102 @@ impl Clock for VirtualClock {
 
 pub type Native = fn(&mut Run, &mut [Value], Span) -> R<Option<Value>>;
 
+/// What an imported subprogram is bound to: a native body of the
+/// interpreter's own library, or a robot service, which the run hands to the
+/// [`Services`] the session lent it.
+#[derive(Clone, Copy)]
+pub enum Binding {
+    Native(Native),
+    Service(u32),
+}
+
+/// The label of the `exit` by which a service ends the whole program when
+/// the user stops it (Ctrl-C): no loop carries it and no handler catches an
+/// exit, so it leaves every frame; [`Machine::run`] ends there normally and
+/// the caller asks the services where the robot stopped.
+pub const STOP_LABEL: u32 = u32::MAX;
+
+/// How a service call ends early.
+#[derive(Debug)]
+pub enum ServiceFault {
+    /// An exception, raised at the call.
+    Raise(ExcId, String),
+    /// The user stopped the program (Ctrl-C): every frame is left.
+    Stop,
+}
+
+/// The robot services, as the interpreter sees them: a typed value owned by
+/// the session and lent to a run. The interpreter knows no robot.
+pub trait Services {
+    /// Calls service `index` (the [`Binding::Service`] its import name bound).
+    fn call(
+        &mut self,
+        index: u32,
+        cx: &mut ServiceCx<'_>,
+        args: &mut [Value],
+    ) -> Result<Option<Value>, ServiceFault>;
+}
+
+/// The narrow part of a run that a service may use: the clock, the place
+/// of the call, the user's stop request. Not the stack, not the program.
+pub struct ServiceCx<'a> {
+    pub clock: &'a mut dyn Clock,
+    /// The call being served.
+    pub span: Span,
+    files: &'a [(String, Vec<usize>)],
+    interrupted: Option<&'a std::sync::atomic::AtomicBool>,
+}
+
+impl ServiceCx<'_> {
+    /// `file:line` of the call, as GNAT writes it.
+    pub fn here(&self) -> String {
+        location_in(self.files, self.span)
+    }
+
+    /// True (once) when the user has asked to stop (Ctrl-C).
+    pub fn interrupt_requested(&self) -> bool {
+        self.interrupted
+            .is_some_and(|f| f.swap(false, std::sync::atomic::Ordering::SeqCst))
+    }
+
+    /// Paces `seconds` to the wall clock in short slices, stopping early
+    /// when the user interrupts; returns the fraction done (1.0 = all).
+    pub fn pace(&mut self, seconds: f64) -> f64 {
+        pace(&mut *self.clock, self.interrupted, seconds)
+    }
+}
+
+fn location_in(files: &[(String, Vec<usize>)], s: Span) -> String {
+    match files.get(s.context as usize) {
+        Some((name, starts)) => {
+            let line = starts.partition_point(|&x| x <= s.start);
+            format!("{name}:{line}")
+        }
+        None => String::new(),
+    }
+}
+
+fn pace(
+    clock: &mut dyn Clock,
+    interrupted: Option<&std::sync::atomic::AtomicBool>,
+    seconds: f64,
+) -> f64 {
+    if seconds <= 0.0 {
+        return 1.0;
+    }
+    let slice: f64 = 0.05;
+    let mut done = 0.0;
+    while done < seconds {
+        if interrupted.is_some_and(|f| f.swap(false, std::sync::atomic::Ordering::SeqCst)) {
+            return done / seconds;
+        }
+        let step = slice.min(seconds - done);
+        clock.pace(step);
+        done += step;
+    }
+    1.0
+}
+
 pub struct Machine {
     stack: Vec<Value>,
     display: Vec<usize>,
@@ -68,7 +166,7 @@ pub struct Machine {
     /// Column of the output's current line (GNAT ends an unfinished line at exit).
     pub col: usize,
     pub clock: Box<dyn Clock>,
-    natives: Vec<Option<Native>>,
+    natives: Vec<Option<Binding>>,
     depth: usize,
     calls: Vec<Span>,
     /// Line starts of each source, for GNAT-style exception messages.
@@ -77,10 +175,11 @@ pub struct Machine {
     pub interrupted: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
     /// Occurrences being handled (innermost last), for `raise;`.
     current: Vec<Rc<Occurrence>>,
-    /// Finds the native body of an imported subprogram by its import name.
-    pub resolver: fn(&str) -> Option<Native>,
-    /// State of the robot services (owned by `services`, opaque here).
-    pub robot: Option<Box<dyn std::any::Any>>,
+    /// Binds an imported subprogram by its import name.
+    pub resolver: fn(&str) -> Option<Binding>,
+    /// The engine that runs programs (the compiled one unless the
+    /// reference walker is asked for).
+    pub engine: vm::Engine,
 }
 
 const MAX_DEPTH: usize = 20_000;
@@ -102,8 +201,8 @@ impl Machine {
             input: Box::new(std::io::BufReader::new(std::io::stdin())),
             interrupted: None,
             current: Vec::new(),
-            resolver: builtins::lookup,
-            robot: None,
+            resolver: |n| builtins::lookup(n).map(Binding::Native),
+            engine: vm::Engine::from_env(),
         }
     }
 
@@ -123,27 +222,31 @@ impl Machine {
 
     /// `file:line` of a span, as GNAT writes it in exception messages.
     pub fn location(&self, s: Span) -> String {
-        match self.files.get(s.context as usize) {
-            Some((name, starts)) => {
-                let line = starts.partition_point(|&x| x <= s.start);
-                format!("{name}:{line}")
-            }
-            None => String::new(),
-        }
+        location_in(&self.files, s)
     }
 
     /// Runs level-0 statements (a script, a REPL entry or the library level),
-    /// then the main subprogram, if any.
-    pub fn run(
-        &mut self,
-        chk: &Checker,
-        stmts: &[Stmt],
+    /// then the main subprogram, if any. `svc` serves the robot services
+    /// for this run (None: a call of one raises `Program_Error`).
+    pub fn run<'s>(
+        &'s mut self,
+        chk: ProgramRef<'s>,
+        stmts: &'s [Stmt],
         main: Option<FuncId>,
+        svc: Option<&'s mut dyn Services>,
     ) -> Result<(), Box<Occurrence>> {
         let need = self.prepare(chk);
         let _cap = memory::HardCap::arm();
-        let mut run = Run { m: self, c: chk };
+        let mut run = Run {
+            m: self,
+            c: chk,
+            svc,
+        };
+        let compiled = run.m.engine == vm::Engine::Compiled;
         let r = (|| -> R<()> {
+            if compiled {
+                return run.run_compiled(stmts, main);
+            }
             run.exec_all(stmts)?;
             if let Some(f) = main {
                 run.call(
@@ -170,27 +273,12 @@ impl Machine {
     /// Paces `seconds` to the wall clock in short slices, stopping early
     /// when the user interrupts; returns the fraction done (1.0 = all).
     pub fn pace(&mut self, seconds: f64) -> f64 {
-        if seconds <= 0.0 {
-            return 1.0;
-        }
-        let slice: f64 = 0.05;
-        let mut done = 0.0;
-        while done < seconds {
-            if let Some(flag) = &self.interrupted
-                && flag.swap(false, std::sync::atomic::Ordering::SeqCst)
-            {
-                return done / seconds;
-            }
-            let step = slice.min(seconds - done);
-            self.clock.pace(step);
-            done += step;
-        }
-        1.0
+        pace(&mut *self.clock, self.interrupted.as_deref(), seconds)
     }
 
     /// Makes ready for a run at level 0: natives bound, the level-0 slots
     /// there (kept between runs), no frames. Returns the level-0 slot count.
-    fn prepare(&mut self, chk: &Checker) -> usize {
+    fn prepare(&mut self, chk: ProgramRef<'_>) -> usize {
         self.bind_natives(chk);
         let need = chk.globals as usize;
         if self.stack.len() < need {
@@ -203,10 +291,19 @@ impl Machine {
     }
 
     /// Evaluates one checked expression at level 0 (a REPL entry).
-    pub fn eval_expr(&mut self, chk: &Checker, e: &Ex) -> Result<Value, Box<Occurrence>> {
+    pub fn eval_expr<'s>(
+        &'s mut self,
+        chk: ProgramRef<'s>,
+        e: &Ex,
+        svc: Option<&'s mut dyn Services>,
+    ) -> Result<Value, Box<Occurrence>> {
         let need = self.prepare(chk);
         let _cap = memory::HardCap::arm();
-        let mut run = Run { m: self, c: chk };
+        let mut run = Run {
+            m: self,
+            c: chk,
+            svc,
+        };
         let r = run.eval(e);
         run.m.stack.truncate(need);
         let _ = run.m.out.flush();
@@ -226,12 +323,26 @@ impl Machine {
         let _ = self.out.flush();
     }
 
-    fn bind_natives(&mut self, chk: &Checker) {
+    fn bind_natives(&mut self, chk: ProgramRef<'_>) {
         while self.natives.len() < chk.funcs.len() {
             let i = self.natives.len();
             self.natives
                 .push(chk.imports[i].as_deref().and_then(self.resolver));
         }
+    }
+
+    /// Puts `globals` in place of the level-0 data and returns what was
+    /// there (a rehearsal runs on a copy, then the original comes back).
+    pub fn swap_globals(&mut self, globals: Vec<Value>) -> Vec<Value> {
+        std::mem::replace(&mut self.stack, globals)
+    }
+
+    /// A deep copy of the level-0 data: arrays, records and the objects
+    /// reached through access values are new, with their aliasing kept, so
+    /// that nothing a run does to the copy reaches the original.
+    pub fn copy_globals(&self) -> Vec<Value> {
+        let mut seen = std::collections::HashMap::new();
+        self.stack.iter().map(|v| deep_copy(v, &mut seen)).collect()
     }
 
     /// The value of a level-0 variable (for the REPL).
@@ -248,10 +359,38 @@ impl Machine {
     }
 }
 
-/// One run: the machine plus the checker's tables.
+/// A copy of `v` that shares no mutable object with it; `seen` maps each
+/// designated object already copied to its copy (aliasing and cycles kept).
+fn deep_copy(
+    v: &Value,
+    seen: &mut std::collections::HashMap<*const RefCell<Value>, Rc<RefCell<Value>>>,
+) -> Value {
+    match v {
+        Value::Arr(a) => Value::Arr(Rc::new(Array {
+            bounds: a.bounds.clone(),
+            data: a.data.iter().map(|x| deep_copy(x, seen)).collect(),
+        })),
+        Value::Rec(r) => Value::Rec(Rc::new(r.iter().map(|x| deep_copy(x, seen)).collect())),
+        Value::Ptr(Some(p)) => {
+            if let Some(c) = seen.get(&Rc::as_ptr(p)) {
+                return Value::Ptr(Some(c.clone()));
+            }
+            let c = Rc::new(RefCell::new(Value::Undef));
+            seen.insert(Rc::as_ptr(p), c.clone());
+            let inner = deep_copy(&p.borrow(), seen);
+            *c.borrow_mut() = inner;
+            Value::Ptr(Some(c))
+        }
+        other => other.clone(),
+    }
+}
+
+/// One run: the machine plus the program's tables, and the robot services
+/// the session lent it.
 pub struct Run<'a> {
     pub m: &'a mut Machine,
-    pub c: &'a Checker,
+    pub c: ProgramRef<'a>,
+    svc: Option<&'a mut dyn Services>,
 }
 
 enum Step {
@@ -506,6 +645,28 @@ impl Run<'_> {
         }
     }
 
+    /// Hands a service call to the lent services with a narrow context.
+    fn call_service(&mut self, i: u32, args: &mut [Value], span: Span) -> R<Option<Value>> {
+        let Some(svc) = self.svc.as_deref_mut() else {
+            return Err(self.raise(
+                check::PROGRAM_ERROR,
+                "no robot: this session was started without one (choose one with --robot)",
+                span,
+            ));
+        };
+        let mut cx = ServiceCx {
+            clock: &mut *self.m.clock,
+            span,
+            files: &self.m.files,
+            interrupted: self.m.interrupted.as_deref(),
+        };
+        match svc.call(i, &mut cx, args) {
+            Ok(v) => Ok(v),
+            Err(ServiceFault::Raise(exc, msg)) => Err(self.raise(exc, msg, span)),
+            Err(ServiceFault::Stop) => Err(Flow::Exit(STOP_LABEL)),
+        }
+    }
+
     /// Calls a subprogram with copy-in/copy-out parameters.
     pub fn call(&mut self, f: FuncId, args: &[Arg], span: Span) -> R<Option<Value>> {
         let mut vals = Vec::with_capacity(args.len());
@@ -520,9 +681,12 @@ impl Run<'_> {
                 span,
             ));
         }
-        let result = if let Some(native) = self.m.natives.get(f as usize).copied().flatten() {
+        let result = if let Some(binding) = self.m.natives.get(f as usize).copied().flatten() {
             self.m.calls.push(span);
-            let r = native(self, &mut vals, span);
+            let r = match binding {
+                Binding::Native(native) => native(self, &mut vals, span),
+                Binding::Service(i) => self.call_service(i, &mut vals, span),
+            };
             self.m.calls.pop();
             r?
         } else {

@@ -9,7 +9,6 @@ use crate::check::types::{self, TypeId, TypeKind};
 use crate::diag::{self, Diagnostic};
 use crate::interp::Value;
 use crate::kinematics::{RobotDescription, joints_to_deg};
-use crate::services::RobotState;
 use crate::session::Session;
 use std::io::Write;
 
@@ -27,6 +26,19 @@ pub struct Reply {
     pub quit: bool,
 }
 
+/// How the REPL drives its robot (the options of `adair repl`).
+#[derive(Clone, Default)]
+pub struct Drive {
+    /// The robot (`--robot`); None keeps rv-m1.
+    pub robot: Option<String>,
+    /// A real arm on this port instead of the simulator (`--port`).
+    pub port: Option<crate::driver::serial::PortSettings>,
+    /// With a port: each entry runs first on the simulator from the arm's
+    /// pose, and moves the arm only when that rehearsal raises nothing
+    /// (`--rehearse`).
+    pub rehearse: bool,
+}
+
 pub struct Repl {
     pub session: Session,
     make_out: WriterFactory,
@@ -37,6 +49,8 @@ pub struct Repl {
     terminal: bool,
     /// A real arm to drive instead of the simulator (`--port`).
     port: Option<crate::driver::serial::PortSettings>,
+    /// Rehearse each entry on the simulator before the arm moves.
+    rehearse: bool,
 }
 
 const COMMANDS: &[(&str, &str)] = &[
@@ -85,6 +99,7 @@ impl Repl {
             entries: 0,
             terminal: false,
             port: None,
+            rehearse: false,
         };
         r.install_robot();
         r.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
@@ -99,10 +114,37 @@ impl Repl {
         }
     }
 
-    /// Drives a real arm on `port` instead of the simulator (`--port`).
-    pub fn use_port(&mut self, port: crate::driver::serial::PortSettings) {
-        self.port = Some(port);
+    /// Chooses the robot and how it is driven (`--robot`, `--port`,
+    /// `--rehearse`). An unknown robot is an error naming the known ones.
+    pub fn drive(&mut self, d: Drive) -> Result<(), String> {
+        if let Some(r) = d.robot {
+            let r = r.to_ascii_lowercase();
+            RobotDescription::builtin(&r).map_err(|e| e.problems.join("; "))?;
+            self.robot = r;
+        }
+        self.rehearse = d.rehearse && d.port.is_some();
+        self.port = d.port;
         self.install_robot();
+        Ok(())
+    }
+
+    /// With `--rehearse`: runs `f` first as a rehearsal on the simulator
+    /// from the arm's pose; an exception there is the entry's reply, and
+    /// the arm is not moved.
+    fn rehearsed<T>(
+        &mut self,
+        f: impl Fn(&mut Session) -> Result<T, Box<crate::interp::Occurrence>>,
+    ) -> Result<Result<T, Box<crate::interp::Occurrence>>, Reply> {
+        if self.rehearse
+            && let Err(o) = self.session.rehearsing(|s| f(s))
+        {
+            let mut reply = self.raised(&o);
+            reply.text.push_str(
+                "rehearsal on the simulator failed: the arm was not moved (a rehearsal cannot cover branches that depend on input)\n",
+            );
+            return Err(reply);
+        }
+        Ok(f(&mut self.session))
     }
 
     fn install_robot(&mut self) {
@@ -219,7 +261,11 @@ impl Repl {
                 };
             }
             if diags.is_empty() {
-                return match self.session.machine.eval_expr(&self.session.checker, &ex) {
+                let r = match self.rehearsed(|s| s.eval_checked(&ex)) {
+                    Ok(r) => r,
+                    Err(reply) => return reply,
+                };
+                return match r {
                     Ok(v) => Reply {
                         text: format!("{}\n", self.show(&v, ex.ty)),
                         ..Reply::default()
@@ -245,10 +291,15 @@ impl Repl {
                 } else {
                     self.render(&warnings)
                 };
-                let r = self
-                    .session
-                    .machine
-                    .run(&self.session.checker, &stmts, None);
+                let r = match self.rehearsed(|s| s.run_checked(&stmts, None)) {
+                    Ok(r) => r,
+                    Err(mut reply) => {
+                        // Nothing of a refused entry is kept.
+                        self.session.checker = snapshot;
+                        reply.text.insert_str(0, &warned);
+                        return reply;
+                    }
+                };
                 let mut reply = match r {
                     Ok(()) => match self.session.take_stopped() {
                         // Ctrl-C stopped the motion: say where, raise nothing.
@@ -309,16 +360,10 @@ impl Repl {
                     Err(e) => fail(format!("cannot read {f}: {e}\n")),
                     Ok(text) => match self.session.check_source(f, &text, false) {
                         Err(d) => fail(self.render(&d)),
-                        Ok((stmts, main)) => {
-                            match self
-                                .session
-                                .machine
-                                .run(&self.session.checker, &stmts, main)
-                            {
-                                Ok(()) => ok(format!("loaded {f}\n")),
-                                Err(o) => self.raised(&o),
-                            }
-                        }
+                        Ok((stmts, main)) => match self.session.run_checked(&stmts, main) {
+                            Ok(()) => ok(format!("loaded {f}\n")),
+                            Err(o) => self.raised(&o),
+                        },
                     },
                 },
             },
@@ -400,13 +445,7 @@ impl Repl {
 
     fn set_trace(&mut self) {
         let w = self.trace.then(|| (self.make_out)());
-        if let Some(st) = self
-            .session
-            .machine
-            .robot
-            .as_mut()
-            .and_then(|b| b.downcast_mut::<RobotState>())
-        {
+        if let Some(st) = self.session.robot_state_mut() {
             st.trace = w;
         }
     }
@@ -465,13 +504,7 @@ impl Repl {
     }
 
     fn where_text(&self) -> String {
-        let Some(st) = self
-            .session
-            .machine
-            .robot
-            .as_ref()
-            .and_then(|b| b.downcast_ref::<RobotState>())
-        else {
+        let Some(st) = self.session.robot_state() else {
             return "no robot\n".into();
         };
         let q = st.robot.read_joints();

@@ -236,19 +236,20 @@ fn history_path() -> Option<std::path::PathBuf> {
 
 /// The interactive REPL on a terminal. Returns the exit status.
 pub fn interactive(color: bool) -> i32 {
-    interactive_on(color, None)
+    interactive_on(color, super::Drive::default())
 }
 
-/// [`interactive`], driving a real arm on `port` when one is given.
-pub fn interactive_on(color: bool, port: Option<crate::driver::serial::PortSettings>) -> i32 {
+/// [`interactive`], with the robot chosen and driven as `drive` says.
+pub fn interactive_on(color: bool, drive: super::Drive) -> i32 {
     let mut repl = Repl::new(
         Box::new(|| Box::new(std::io::stdout()) as Box<dyn Write>),
         color,
     );
     let flag = Arc::new(AtomicBool::new(false));
     repl.session.machine.interrupted = Some(flag.clone());
-    if let Some(p) = port {
-        repl.use_port(p);
+    if let Err(e) = repl.drive(drive) {
+        let _ = writeln!(std::io::stderr(), "adair: --robot: {e}");
+        return 2;
     }
     repl.use_terminal();
     repl.session.machine.input = Box::new(std::io::BufReader::new(std::io::stdin()));
@@ -361,20 +362,21 @@ pub fn piped_with(
     out: &mut dyn Write,
     strict: bool,
 ) -> i32 {
-    piped_on(input, make_out, out, strict, None)
+    piped_on(input, make_out, out, strict, super::Drive::default())
 }
 
-/// [`piped_with`], driving a real arm on `port` when one is given.
+/// [`piped_with`], with the robot chosen and driven as `drive` says.
 pub fn piped_on(
     input: impl BufRead,
     make_out: super::WriterFactory,
     out: &mut dyn Write,
     strict: bool,
-    port: Option<crate::driver::serial::PortSettings>,
+    drive: super::Drive,
 ) -> i32 {
     let mut repl = Repl::new(make_out, false);
-    if let Some(p) = port {
-        repl.use_port(p);
+    if let Err(e) = repl.drive(drive) {
+        let _ = writeln!(out, "adair: --robot: {e}");
+        return 2;
     }
     let mut input = input;
     let mut failed = false;
@@ -465,6 +467,24 @@ mod balance_tests {
         assert!(!open(&["for I in 1 .. 3 loop", "null;", "end loop;"]));
         assert!(!open(&["if A then B; end if;"]));
         assert!(!open(&["declare X : Integer; begin X := 1; end;"]));
+    }
+
+    /// The parser's own verdict (not the balance count): a `declare` block
+    /// or a body that the text ends inside is unfinished, though the parser
+    /// takes it as ended to report it once.
+    #[test]
+    fn a_block_or_body_the_text_ends_inside_is_unfinished() {
+        assert!(super::unfinished(
+            "declare\n   X : Integer;\nbegin\n   X := 1;\n"
+        ));
+        assert!(super::unfinished(
+            "procedure Q is\nbegin\n   declare\n   begin\n      null;\n"
+        ));
+        assert!(super::unfinished("procedure Q is\nbegin\n   null;\n"));
+        assert!(!super::unfinished(
+            "declare X : Integer; begin X := 1; end;"
+        ));
+        assert!(!super::unfinished("procedure Q is begin null; end Q;"));
     }
 
     #[test]

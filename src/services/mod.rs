@@ -10,7 +10,8 @@ pub mod table;
 mod exc;
 
 use crate::driver::{Robot, sim::Simulator};
-use crate::interp::{Clock, Flow, Native, R, Run, Value, value::Array};
+pub use crate::interp::STOP_LABEL;
+use crate::interp::{Clock, ServiceCx as Cx, ServiceFault, Services, Value, value::Array};
 use crate::kinematics::{
     Arm, Elbow, Joints, KinError, Kinematics, MotionProfile, Pose, RobotDescription,
 };
@@ -51,11 +52,24 @@ pub struct RobotState {
     pub stopped: Option<String>,
 }
 
-/// The label of the `exit` by which a service ends the whole program when
-/// the user stops it (Ctrl-C): no loop carries it and no handler catches an
-/// exit, so it leaves every frame; `Machine::run` ends there normally and the
-/// caller reads [`RobotState::stopped`].
-pub const STOP_LABEL: u32 = u32::MAX;
+/// How a service ends early: an exception, or the user's stop.
+type R<T> = Result<T, ServiceFault>;
+
+/// A service body: the call's narrow context, the robot state lent to it,
+/// the arguments (`out` parameters written back in place).
+pub type ServiceFn = fn(&mut Cx, &mut RobotState, &mut [Value]) -> R<Option<Value>>;
+
+impl Services for RobotState {
+    fn call(&mut self, index: u32, cx: &mut Cx, args: &mut [Value]) -> R<Option<Value>> {
+        match SERVICES.get(index as usize).map(|s| s.body) {
+            Some(table::Body::Robot(f)) => f(cx, self, args),
+            _ => Err(ServiceFault::Raise(
+                crate::check::PROGRAM_ERROR,
+                format!("no robot service number {index}"),
+            )),
+        }
+    }
+}
 
 /// The screen teach pendant behind the `TeachBox` service. The terminal
 /// code lives in `repl::teach`; the services only call this trait.
@@ -116,6 +130,32 @@ impl RobotState {
     }
 }
 
+impl RobotState {
+    /// A simulated stand-in for this robot, for a rehearsal: the same
+    /// description, settings, tool, base, paths and pose (joints and
+    /// gripper), on the simulator, without trace, record or pendant.
+    pub fn rehearsal(&self) -> RobotState {
+        let desc = self.kin.description().clone();
+        let mut sim = Simulator::new(desc.clone());
+        sim.set_joints(self.robot.joints());
+        let _ = sim.move_gripper(self.robot.gripper().opening, None);
+        let mut st = RobotState::with_driver(desc, self.excs.clone(), Box::new(sim));
+        st.initialized = self.initialized;
+        st.velocity = self.velocity;
+        st.straight = self.straight;
+        st.interpolation = self.interpolation;
+        st.arm = self.arm;
+        st.elbow = self.elbow;
+        st.hand = self.hand;
+        st.tool = self.tool;
+        st.base = self.base;
+        st.paths = self.paths.clone();
+        st.error_status = self.error_status;
+        st.force_setting = self.force_setting;
+        st
+    }
+}
+
 fn standard_tool(kin: &Kinematics) -> Tool {
     let g = *kin.description().gripper();
     Tool {
@@ -129,9 +169,9 @@ fn standard_tool(kin: &Kinematics) -> Tool {
 
 pub use table::{Group, SERVICES, Service};
 
-/// The native body bound to an import name.
-pub fn lookup(name: &str) -> Option<Native> {
-    table::by_import(name).map(|s| s.body)
+/// The service bound to an import name, as the interpreter binds it.
+pub fn lookup(name: &str) -> Option<crate::interp::Binding> {
+    table::index_of(name).map(crate::interp::Binding::Service)
 }
 
 /// The profile an import name expects, for the checker.
@@ -146,80 +186,33 @@ fn code_of(name: &str) -> i64 {
 // ---- plumbing ----
 
 /// Raises an AdaIR exception from a service, recording its command code.
-pub(crate) fn fail(
-    r: &mut Run,
-    st: &mut RobotState,
-    service: &str,
-    exc: Exc,
-    msg: String,
-    span: crate::diag::Span,
-) -> Flow {
+pub(crate) fn fail(st: &mut RobotState, service: &str, exc: Exc, msg: String) -> ServiceFault {
     st.error_status = code_of(service);
-    r.raise(st.excs.id(exc), msg, span)
+    ServiceFault::Raise(st.excs.id(exc), msg)
 }
 
-fn kin_fail(
-    r: &mut Run,
-    st: &mut RobotState,
-    service: &str,
-    e: &KinError,
-    span: crate::diag::Span,
-) -> Flow {
-    fail(r, st, service, e.exception().into(), e.to_string(), span)
+fn kin_fail(st: &mut RobotState, service: &str, e: &KinError) -> ServiceFault {
+    fail(st, service, e.exception().into(), e.to_string())
 }
 
-/// Runs a service body with the robot state taken out of the machine. A
-/// session without a robot (one that never chose one) raises
-/// `Program_Error`: there is no default robot to drive silently.
-fn with_state(
-    r: &mut Run,
-    span: crate::diag::Span,
-    f: impl FnOnce(&mut Run, &mut RobotState) -> R<Option<Value>>,
-) -> R<Option<Value>> {
-    let Some(mut boxed) = r.m.robot.take() else {
-        return Err(no_robot(r, span));
-    };
-    let result = match boxed.downcast_mut::<RobotState>() {
-        Some(st) => f(r, st),
-        None => Err(no_robot(r, span)),
-    };
-    r.m.robot = Some(boxed);
-    result
-}
-
-fn no_robot(r: &mut Run, span: crate::diag::Span) -> Flow {
-    r.raise(
-        crate::check::PROGRAM_ERROR,
-        "no robot: this session was started without one (choose one with --robot)",
-        span,
-    )
-}
-
-fn require_init(r: &mut Run, st: &mut RobotState, service: &str, span: crate::diag::Span) -> R<()> {
+fn require_init(cx: &mut Cx, st: &mut RobotState, service: &str) -> R<()> {
     if !st.initialized {
         return Err(fail(
-            r,
             st,
             service,
             Exc::SystemNotInitialized,
             format!("{service} before InitRobot: call InitRobot first"),
-            span,
         ));
     }
-    wait_for_control(r, st, service, span)
+    wait_for_control(cx, st, service)
 }
 
 /// A `Control => True` motion still running: wait for its end (virtual
 /// time on the simulator; the arm's reply on a real one).
-fn wait_for_control(
-    r: &mut Run,
-    st: &mut RobotState,
-    service: &str,
-    span: crate::diag::Span,
-) -> R<()> {
-    let now = r.m.clock.now();
+fn wait_for_control(cx: &mut Cx, st: &mut RobotState, service: &str) -> R<()> {
+    let now = cx.clock.now();
     if st.busy_until > now {
-        r.m.clock.sleep(st.busy_until - now);
+        cx.clock.sleep(st.busy_until - now);
     }
     if st.robot.motion_pending() {
         match st.robot.wait_motion() {
@@ -227,42 +220,28 @@ fn wait_for_control(
             Err(crate::driver::DriverError::Interrupted) => {
                 let _ = st.robot.stop_motion();
                 return Err(stop(
-                    r,
+                    cx,
                     st,
                     service,
-                    span,
                     "waiting for a Control => True motion",
                 ));
             }
-            Err(e) => return Err(driver_fail(r, st, service, e, span)),
+            Err(e) => return Err(driver_fail(st, service, e)),
         }
     }
     Ok(())
 }
 
-/// True (once) when the user has asked to stop (Ctrl-C).
-fn interrupt_requested(r: &Run) -> bool {
-    r.m.interrupted
-        .as_ref()
-        .is_some_and(|f| f.swap(false, std::sync::atomic::Ordering::SeqCst))
-}
-
 /// Ends the program because the user stopped it: records where the program
 /// was and where the robot stayed, and leaves every frame (`STOP_LABEL`).
-fn stop(
-    r: &mut Run,
-    st: &mut RobotState,
-    service: &str,
-    span: crate::diag::Span,
-    what: &str,
-) -> Flow {
+fn stop(cx: &mut Cx, st: &mut RobotState, service: &str, what: &str) -> ServiceFault {
     let q = st.robot.joints();
     st.stopped = Some(format!(
         "interrupted (Ctrl-C) at {} in {service} ({what}); the robot stopped at {} deg",
-        r.m.location(span),
+        cx.here(),
         deg5(&q)
     ));
-    Flow::Exit(STOP_LABEL)
+    ServiceFault::Stop
 }
 
 pub fn frame_value(p: &Pose) -> Value {
@@ -333,23 +312,15 @@ fn opts(a: &[Value], first: usize) -> MotionOpts {
 
 /// `require_init` for a motion service, and its `Time`: a NaN, an infinite
 /// or a negative duration is `TimeInvalid` before anything moves.
-fn require_motion(
-    r: &mut Run,
-    st: &mut RobotState,
-    service: &str,
-    o: &MotionOpts,
-    span: crate::diag::Span,
-) -> R<()> {
-    require_init(r, st, service, span)?;
+fn require_motion(cx: &mut Cx, st: &mut RobotState, service: &str, o: &MotionOpts) -> R<()> {
+    require_init(cx, st, service)?;
     let t = o.time_arg;
     if !t.is_finite() || t < 0.0 {
         return Err(fail(
-            r,
             st,
             service,
             Exc::TimeInvalid,
             format!("Time => {t} s: a duration must be a finite number of seconds, 0.0 or more"),
-            span,
         ));
     }
     Ok(())
@@ -357,34 +328,33 @@ fn require_motion(
 
 /// Executes a planned joint motion: driver, clock, trace.
 fn perform(
-    r: &mut Run,
+    cx: &mut Cx,
     st: &mut RobotState,
     service: &str,
     points: &[Joints],
     duration: f64,
     o: &MotionOpts,
-    span: crate::diag::Span,
 ) -> R<()> {
     let before = st.robot.joints();
     let real = st.robot.real_time();
-    if interrupt_requested(r) {
-        return Err(stop(r, st, service, span, "before the motion started"));
+    if cx.interrupt_requested() {
+        return Err(stop(cx, st, service, "before the motion started"));
     }
     // Paced to the wall clock: the user can stop the motion (Ctrl-C); the
     // robot then stays where it had got to. A real arm takes its own time.
     if (o.realtime || st.realtime) && !o.control && !real {
-        let done = r.m.pace(duration);
+        let done = cx.pace(duration);
         if done < 1.0 {
             let reached = interpolate(&before, points, done);
             let _ = st.robot.move_joints(&[reached], duration * done);
-            r.m.clock.sleep(duration * done);
+            cx.clock.sleep(duration * done);
             let what = format!("after {:.3} of {duration:.3} s", duration * done);
-            return Err(stop(r, st, service, span, &what));
+            return Err(stop(cx, st, service, &what));
         }
     }
-    let start = r.m.clock.now();
+    let start = cx.clock.now();
     if let Err(e) = st.robot.start_motion(points, duration) {
-        return Err(driver_fail(r, st, service, e, span));
+        return Err(driver_fail(st, service, e));
     }
     if real {
         // A real arm takes its own (wall-clock) time: wait for its end,
@@ -396,17 +366,17 @@ fn perform(
                     let _ = st.robot.stop_motion();
                     let what = format!(
                         "{:.3} s into the motion; the unit finishes the line it has",
-                        r.m.clock.now() - start
+                        cx.clock.now() - start
                     );
-                    return Err(stop(r, st, service, span, &what));
+                    return Err(stop(cx, st, service, &what));
                 }
-                Err(e) => return Err(driver_fail(r, st, service, e, span)),
+                Err(e) => return Err(driver_fail(st, service, e)),
             }
         }
     } else if o.control {
         st.busy_until = start + duration;
     } else {
-        r.m.clock.sleep(duration);
+        cx.clock.sleep(duration);
     }
     record::motion(st, start, &before, points, duration);
     if st.trace.is_some() {
@@ -416,7 +386,7 @@ fn perform(
             let _ = writeln!(
                 t,
                 "[t={start:9.3} s] {service} at {}: {} -> {} deg, TCP {from} -> {to} mm, {duration:.3} s",
-                r.m.location(span),
+                cx.here(),
                 deg5(&before),
                 deg5(&after)
             );
@@ -483,12 +453,10 @@ impl Clock for WallClock {
 
 /// A driver's failure as the handbook's exception (robots.md's fault table).
 pub(crate) fn driver_fail(
-    r: &mut Run,
     st: &mut RobotState,
     service: &str,
     e: crate::driver::DriverError,
-    span: crate::diag::Span,
-) -> Flow {
+) -> ServiceFault {
     use crate::driver::DriverError as D;
     let exc = match &e {
         D::NoConnection(_) => Exc::NoConnection,
@@ -501,7 +469,7 @@ pub(crate) fn driver_fail(
         D::UnitOutOfRange(_) | D::Limit(_) => Exc::OutOfReach,
         D::Interrupted => Exc::ProgramError,
     };
-    fail(r, st, service, exc, e.to_string(), span)
+    fail(st, service, exc, e.to_string())
 }
 
 /// The joints a fraction of the way along a motion through `points`.
@@ -523,20 +491,13 @@ fn interpolate(from: &Joints, points: &[Joints], fraction: f64) -> Joints {
 }
 
 /// Plans a point-to-point joint motion to `target`.
-fn plan(
-    r: &mut Run,
-    st: &mut RobotState,
-    service: &str,
-    target: &Joints,
-    o: &MotionOpts,
-    span: crate::diag::Span,
-) -> R<f64> {
+fn plan(st: &mut RobotState, service: &str, target: &Joints, o: &MotionOpts) -> R<f64> {
     let from = st.robot.joints();
     // With `Time`, the motion may use the robot's full speed.
     let velocity = if o.time.is_some() { 100.0 } else { st.velocity };
     match MotionProfile::plan(&from, target, velocity, st.kin.description(), o.time) {
         Ok(p) => Ok(p.duration()),
-        Err(e) => Err(kin_fail(r, st, service, &e, span)),
+        Err(e) => Err(kin_fail(st, service, &e)),
     }
 }
 
@@ -572,17 +533,16 @@ fn frame_motion(st: &RobotState, from: &Joints, goal: &Pose) -> Result<Vec<Joint
 }
 
 fn move_frame(
-    r: &mut Run,
+    cx: &mut Cx,
     st: &mut RobotState,
     service: &str,
     goal: Pose,
     o: MotionOpts,
-    span: crate::diag::Span,
 ) -> R<Option<Value>> {
     let from = st.robot.joints();
     let points = match frame_motion(st, &from, &goal) {
         Ok(p) => p,
-        Err(e) => return Err(kin_fail(r, st, service, &e, span)),
+        Err(e) => return Err(kin_fail(st, service, &e)),
     };
     let duration = if st.straight {
         let d = path_duration(
@@ -594,12 +554,10 @@ fn move_frame(
         match o.time {
             Some(t) if t + 1e-9 < d => {
                 return Err(fail(
-                    r,
                     st,
                     service,
                     Exc::TimeInvalid,
                     format!("Time => {t:.3} s is shorter than the fastest straight line, {d:.3} s"),
-                    span,
                 ));
             }
             Some(t) => t,
@@ -607,225 +565,197 @@ fn move_frame(
         }
     } else {
         let target = points[points.len() - 1];
-        plan(r, st, service, &target, &o, span)?
+        plan(st, service, &target, &o)?
     };
-    perform(r, st, service, &points, duration, &o, span)?;
+    perform(cx, st, service, &points, duration, &o)?;
     Ok(None)
 }
 
 // ---- services ----
 
-fn init_robot(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, span, |r, st| {
-        let o = MotionOpts {
-            time: None,
-            time_arg: 0.0,
-            control: false,
-            realtime: false,
-        };
-        if let Err(e) = st.robot.init() {
-            return Err(driver_fail(r, st, "InitRobot", e, span));
-        }
-        st.initialized = true;
-        st.velocity = 50.0;
-        st.straight = false;
-        st.interpolation = 1.0;
-        st.arm = Arm::None;
-        st.elbow = Elbow::None;
-        st.hand = 2;
-        st.tool = standard_tool(&st.kin);
-        st.base = Pose::identity();
-        st.busy_until = r.m.clock.now();
-        if let Err(e) = st.robot.set_speed(st.velocity) {
-            st.initialized = false;
-            return Err(driver_fail(r, st, "InitRobot", e, span));
-        }
-        let zero = [0.0; 5];
-        let d = plan(r, st, "InitRobot", &zero, &o, span)?;
-        perform(r, st, "InitRobot", &[zero], d, &o, span)?;
-        let g = *st.kin.description().gripper();
-        if let Err(e) = st.robot.move_gripper(g.opening_max, None) {
-            return Err(driver_fail(r, st, "InitRobot", e, span));
-        }
-        st.force_setting = g.init_force;
-        Ok(None)
-    })
-}
-
-fn end_robot(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, span, |r, st| {
-        if !st.initialized {
-            return Err(fail(
-                r,
-                st,
-                "EndRobot",
-                Exc::SystemNotInitialized,
-                "EndRobot before InitRobot".into(),
-                span,
-            ));
-        }
-        let now = r.m.clock.now();
-        if st.busy_until > now + 1e-12 {
-            return Err(fail(
-                r,
-                st,
-                "EndRobot",
-                Exc::ControlCommandActive,
-                format!(
-                    "a Control => True motion runs until t = {:.3} s (now {now:.3} s)",
-                    st.busy_until
-                ),
-                span,
-            ));
-        }
-        // The nest (rest) position of the robot description (robots.md).
-        let o = MotionOpts {
-            time: None,
-            time_arg: 0.0,
-            control: false,
-            realtime: false,
-        };
-        let nest = st.kin.description().nest();
-        let d = plan(r, st, "EndRobot", &nest, &o, span)?;
-        perform(r, st, "EndRobot", &[nest], d, &o, span)?;
+fn init_robot(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R<Option<Value>> {
+    let o = MotionOpts {
+        time: None,
+        time_arg: 0.0,
+        control: false,
+        realtime: false,
+    };
+    if let Err(e) = st.robot.init() {
+        return Err(driver_fail(st, "InitRobot", e));
+    }
+    st.initialized = true;
+    st.velocity = 50.0;
+    st.straight = false;
+    st.interpolation = 1.0;
+    st.arm = Arm::None;
+    st.elbow = Elbow::None;
+    st.hand = 2;
+    st.tool = standard_tool(&st.kin);
+    st.base = Pose::identity();
+    st.busy_until = cx.clock.now();
+    if let Err(e) = st.robot.set_speed(st.velocity) {
         st.initialized = false;
-        st.tool = standard_tool(&st.kin);
-        st.base = Pose::identity();
-        Ok(None)
-    })
+        return Err(driver_fail(st, "InitRobot", e));
+    }
+    let zero = [0.0; 5];
+    let d = plan(st, "InitRobot", &zero, &o)?;
+    perform(cx, st, "InitRobot", &[zero], d, &o)?;
+    let g = *st.kin.description().gripper();
+    if let Err(e) = st.robot.move_gripper(g.opening_max, None) {
+        return Err(driver_fail(st, "InitRobot", e));
+    }
+    st.force_setting = g.init_force;
+    Ok(None)
 }
 
-fn calibrate(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, span, |r, st| {
-        require_init(r, st, "CalibrateRobot", span)?;
-        if let Err(e) = st.robot.calibrate() {
-            return Err(driver_fail(r, st, "CalibrateRobot", e, span));
-        }
-        Ok(None)
-    })
+fn end_robot(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R<Option<Value>> {
+    if !st.initialized {
+        return Err(fail(
+            st,
+            "EndRobot",
+            Exc::SystemNotInitialized,
+            "EndRobot before InitRobot".into(),
+        ));
+    }
+    let now = cx.clock.now();
+    if st.busy_until > now + 1e-12 {
+        return Err(fail(
+            st,
+            "EndRobot",
+            Exc::ControlCommandActive,
+            format!(
+                "a Control => True motion runs until t = {:.3} s (now {now:.3} s)",
+                st.busy_until
+            ),
+        ));
+    }
+    // The nest (rest) position of the robot description (robots.md).
+    let o = MotionOpts {
+        time: None,
+        time_arg: 0.0,
+        control: false,
+        realtime: false,
+    };
+    let nest = st.kin.description().nest();
+    let d = plan(st, "EndRobot", &nest, &o)?;
+    perform(cx, st, "EndRobot", &[nest], d, &o)?;
+    st.initialized = false;
+    st.tool = standard_tool(&st.kin);
+    st.base = Pose::identity();
+    Ok(None)
 }
 
-fn set_velocity(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn calibrate(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R<Option<Value>> {
+    require_init(cx, st, "CalibrateRobot")?;
+    if let Err(e) = st.robot.calibrate() {
+        return Err(driver_fail(st, "CalibrateRobot", e));
+    }
+    Ok(None)
+}
+
+fn set_velocity(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let v = a[0].real();
-    with_state(r, span, |r, st| {
-        require_init(r, st, "SetVelocity", span)?;
-        if v <= 0.0 {
-            return Err(fail(
-                r,
-                st,
-                "SetVelocity",
-                Exc::ConstraintError,
-                format!(
-                    "velocity {v:.1} % would never arrive: give a velocity above 0.0 %, up to 100.0 %"
-                ),
-                span,
-            ));
-        }
-        if let Err(e) = st.robot.set_speed(v) {
-            return Err(driver_fail(r, st, "SetVelocity", e, span));
-        }
-        st.velocity = v;
-        Ok(None)
-    })
+    require_init(cx, st, "SetVelocity")?;
+    if v <= 0.0 {
+        return Err(fail(
+            st,
+            "SetVelocity",
+            Exc::ConstraintError,
+            format!(
+                "velocity {v:.1} % would never arrive: give a velocity above 0.0 %, up to 100.0 %"
+            ),
+        ));
+    }
+    if let Err(e) = st.robot.set_speed(v) {
+        return Err(driver_fail(st, "SetVelocity", e));
+    }
+    st.velocity = v;
+    Ok(None)
 }
 
-fn set_move_mode(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn set_move_mode(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let k = a[0].int();
-    with_state(r, span, |r, st| {
-        require_init(r, st, "SetMoveMode", span)?;
-        st.straight = k == 1;
-        Ok(None)
-    })
+    require_init(cx, st, "SetMoveMode")?;
+    st.straight = k == 1;
+    Ok(None)
 }
 
-fn set_interpolation(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn set_interpolation(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let w = a[0].real();
-    with_state(r, span, |r, st| {
-        require_init(r, st, "SetInterpolation", span)?;
-        st.interpolation = w;
-        Ok(None)
-    })
+    require_init(cx, st, "SetInterpolation")?;
+    st.interpolation = w;
+    Ok(None)
 }
 
-fn set_robot_config(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn set_robot_config(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let (arm, elbow, hand) = (a[0].int(), a[1].int(), a[2].int());
-    with_state(r, span, |r, st| {
-        require_init(r, st, "SetRobotConfig", span)?;
-        st.arm = match arm {
-            0 => Arm::Forward,
-            1 => Arm::Backward,
-            _ => Arm::None,
-        };
-        st.elbow = match elbow {
-            0 => Elbow::Above,
-            1 => Elbow::Below,
-            _ => Elbow::None,
-        };
-        st.hand = hand;
-        Ok(None)
-    })
+    require_init(cx, st, "SetRobotConfig")?;
+    st.arm = match arm {
+        0 => Arm::Forward,
+        1 => Arm::Backward,
+        _ => Arm::None,
+    };
+    st.elbow = match elbow {
+        0 => Elbow::Above,
+        1 => Elbow::Below,
+        _ => Elbow::None,
+    };
+    st.hand = hand;
+    Ok(None)
 }
 
-fn value_robot_config(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, span, |r, st| {
-        require_init(r, st, "ValueRobotConfig", span)?;
-        let (arm, elbow) = st.kin.config_of(&st.robot.read_joints());
-        a[0] = Value::Int(match arm {
-            Arm::Forward => 0,
-            Arm::Backward => 1,
-            Arm::None => 2,
-        });
-        a[1] = Value::Int(match elbow {
-            Elbow::Above => 0,
-            Elbow::Below => 1,
-            Elbow::None => 2,
-        });
-        // A 5-axis wrist never flips.
-        a[2] = Value::Int(1);
-        Ok(None)
-    })
+fn value_robot_config(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
+    require_init(cx, st, "ValueRobotConfig")?;
+    let (arm, elbow) = st.kin.config_of(&st.robot.read_joints());
+    a[0] = Value::Int(match arm {
+        Arm::Forward => 0,
+        Arm::Backward => 1,
+        Arm::None => 2,
+    });
+    a[1] = Value::Int(match elbow {
+        Elbow::Above => 0,
+        Elbow::Below => 1,
+        Elbow::None => 2,
+    });
+    // A 5-axis wrist never flips.
+    a[2] = Value::Int(1);
+    Ok(None)
 }
 
-fn set_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn set_tool(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let Value::Rec(rec) = &a[0] else {
         return Ok(None);
     };
     let trans = Pose::from_rows(frame_rows(&rec[0]));
     let (fmin, fmax, dmin, dmax) = (rec[1].real(), rec[2].real(), rec[4].real(), rec[5].real());
-    with_state(r, span, |r, st| {
-        require_init(r, st, "SetTool", span)?;
-        if let Err(e) = trans.check_rigid("tool transform") {
-            return Err(kin_fail(r, st, "SetTool", &e, span));
-        }
-        if fmin > fmax {
-            return Err(fail(
-                r,
-                st,
-                "SetTool",
-                Exc::ForceInvalid,
-                format!("ForceMin {fmin:.1} N is above ForceMax {fmax:.1} N"),
-                span,
-            ));
-        }
-        if dmin > dmax {
-            return Err(fail(
-                r,
-                st,
-                "SetTool",
-                Exc::DistanceInvalid,
-                format!("DistMin {dmin:.1} mm is above DistMax {dmax:.1} mm"),
-                span,
-            ));
-        }
-        st.tool = Tool {
-            trans,
-            force_min: fmin,
-            force_max: fmax,
-            dist_min: dmin,
-            dist_max: dmax,
-        };
-        Ok(None)
-    })
+    require_init(cx, st, "SetTool")?;
+    if let Err(e) = trans.check_rigid("tool transform") {
+        return Err(kin_fail(st, "SetTool", &e));
+    }
+    if fmin > fmax {
+        return Err(fail(
+            st,
+            "SetTool",
+            Exc::ForceInvalid,
+            format!("ForceMin {fmin:.1} N is above ForceMax {fmax:.1} N"),
+        ));
+    }
+    if dmin > dmax {
+        return Err(fail(
+            st,
+            "SetTool",
+            Exc::DistanceInvalid,
+            format!("DistMin {dmin:.1} mm is above DistMax {dmax:.1} mm"),
+        ));
+    }
+    st.tool = Tool {
+        trans,
+        force_min: fmin,
+        force_max: fmax,
+        dist_min: dmin,
+        dist_max: dmax,
+    };
+    Ok(None)
 }
 
 /// The gripper as every reader reports it (`ValueTool`, the trace, the
@@ -860,186 +790,161 @@ fn tool_value(st: &RobotState) -> Value {
     ]))
 }
 
-fn value_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, span, |r, st| {
-        require_init(r, st, "ValueTool", span)?;
-        a[0] = tool_value(st);
-        Ok(None)
-    })
+fn value_tool(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
+    require_init(cx, st, "ValueTool")?;
+    a[0] = tool_value(st);
+    Ok(None)
 }
 
-fn value_tool_f(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, span, |r, st| {
-        require_init(r, st, "ValueTool", span)?;
-        Ok(Some(tool_value(st)))
-    })
+fn value_tool_f(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R<Option<Value>> {
+    require_init(cx, st, "ValueTool")?;
+    Ok(Some(tool_value(st)))
 }
 
 /// Gripper motion, with the handbook's fallbacks for missing sensors: without
 /// a distance sensor (DistMin = DistMax = 0) any distance above 0.0 opens
 /// fully and 0.0 closes; without a force sensor (ForceMin = ForceMax = 0)
 /// only the distance counts. The distance wins over the force.
-fn move_tool(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn move_tool(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let (dist, force) = (a[0].real(), a[1].real());
-    with_state(r, span, |r, st| {
-        require_init(r, st, "MoveTool", span)?;
-        let t = st.tool;
-        let has_dist = !(t.dist_min == 0.0 && t.dist_max == 0.0);
-        let has_force = !(t.force_min == 0.0 && t.force_max == 0.0);
-        if has_dist && (dist < t.dist_min || dist > t.dist_max) {
-            return Err(fail(
-                r,
-                st,
-                "MoveTool",
-                Exc::DistanceInvalid,
-                format!(
-                    "distance {dist:.1} mm outside {:.1} .. {:.1} mm",
-                    t.dist_min, t.dist_max
-                ),
-                span,
-            ));
-        }
-        if has_force && (force < t.force_min || force > t.force_max) {
-            return Err(fail(
-                r,
-                st,
-                "MoveTool",
-                Exc::ForceInvalid,
-                format!(
-                    "force {force:.1} N outside {:.1} .. {:.1} N",
-                    t.force_min, t.force_max
-                ),
-                span,
-            ));
-        }
-        let g = *st.kin.description().gripper();
-        let target = if has_dist {
-            dist
-        } else if dist > 0.0 {
-            g.opening_max
-        } else {
-            g.opening_min
-        };
-        let limit = if has_force { Some(force) } else { None };
-        if has_force {
-            st.force_setting = force;
-        }
-        let before = st.robot.gripper();
-        match st.robot.move_gripper(target, limit) {
-            Ok(g2) => {
-                // The jaws move at 100 mm/s at full velocity.
-                let d =
-                    (before.opening - g2.opening).abs() / (100.0 * st.velocity / 100.0).max(1e-6);
-                if !st.robot.real_time() {
-                    r.m.clock.sleep(d);
-                }
-                record::point(st, r.m.clock.now());
-                let g2 = grip_reading(st);
-                if let Some(tr) = &mut st.trace {
-                    let _ = writeln!(
-                        tr,
-                        "[t={:9.3} s] MoveTool at {}: opening {:.1} -> {:.1} mm, force {:.1} N",
-                        r.m.clock.now() - d,
-                        r.m.location(span),
-                        before.opening,
-                        g2.opening,
-                        g2.force
-                    );
-                }
-                Ok(None)
+    require_init(cx, st, "MoveTool")?;
+    let t = st.tool;
+    let has_dist = !(t.dist_min == 0.0 && t.dist_max == 0.0);
+    let has_force = !(t.force_min == 0.0 && t.force_max == 0.0);
+    if has_dist && (dist < t.dist_min || dist > t.dist_max) {
+        return Err(fail(
+            st,
+            "MoveTool",
+            Exc::DistanceInvalid,
+            format!(
+                "distance {dist:.1} mm outside {:.1} .. {:.1} mm",
+                t.dist_min, t.dist_max
+            ),
+        ));
+    }
+    if has_force && (force < t.force_min || force > t.force_max) {
+        return Err(fail(
+            st,
+            "MoveTool",
+            Exc::ForceInvalid,
+            format!(
+                "force {force:.1} N outside {:.1} .. {:.1} N",
+                t.force_min, t.force_max
+            ),
+        ));
+    }
+    let g = *st.kin.description().gripper();
+    let target = if has_dist {
+        dist
+    } else if dist > 0.0 {
+        g.opening_max
+    } else {
+        g.opening_min
+    };
+    let limit = if has_force { Some(force) } else { None };
+    if has_force {
+        st.force_setting = force;
+    }
+    let before = st.robot.gripper();
+    match st.robot.move_gripper(target, limit) {
+        Ok(g2) => {
+            // The jaws move at 100 mm/s at full velocity.
+            let d = (before.opening - g2.opening).abs() / (100.0 * st.velocity / 100.0).max(1e-6);
+            if !st.robot.real_time() {
+                cx.clock.sleep(d);
             }
-            Err(e) => Err(driver_fail(r, st, "MoveTool", e, span)),
+            record::point(st, cx.clock.now());
+            let g2 = grip_reading(st);
+            if let Some(tr) = &mut st.trace {
+                let _ = writeln!(
+                    tr,
+                    "[t={:9.3} s] MoveTool at {}: opening {:.1} -> {:.1} mm, force {:.1} N",
+                    cx.clock.now() - d,
+                    cx.here(),
+                    before.opening,
+                    g2.opening,
+                    g2.force
+                );
+            }
+            Ok(None)
         }
-    })
+        Err(e) => Err(driver_fail(st, "MoveTool", e)),
+    }
 }
 
-fn move_axes_absolute(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn move_axes_absolute(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let axes = axes_of(&a[0]);
     let o = opts(a, 1);
-    with_state(r, span, |r, st| {
-        require_motion(r, st, "MoveAxesAbsolute", &o, span)?;
-        let target = match st.kin.joint_target(&axes) {
-            Ok(t) => t,
-            Err(e) => return Err(kin_fail(r, st, "MoveAxesAbsolute", &e, span)),
-        };
-        let d = plan(r, st, "MoveAxesAbsolute", &target, &o, span)?;
-        perform(r, st, "MoveAxesAbsolute", &[target], d, &o, span)?;
-        Ok(None)
-    })
+    require_motion(cx, st, "MoveAxesAbsolute", &o)?;
+    let target = match st.kin.joint_target(&axes) {
+        Ok(t) => t,
+        Err(e) => return Err(kin_fail(st, "MoveAxesAbsolute", &e)),
+    };
+    let d = plan(st, "MoveAxesAbsolute", &target, &o)?;
+    perform(cx, st, "MoveAxesAbsolute", &[target], d, &o)?;
+    Ok(None)
 }
 
-fn move_axes_relative(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn move_axes_relative(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let delta = axes_of(&a[0]);
     let o = opts(a, 1);
-    with_state(r, span, |r, st| {
-        require_motion(r, st, "MoveAxesRelative", &o, span)?;
-        let current = st.robot.joints();
-        let target = match st.kin.relative_joint_target(&current, &delta) {
-            Ok(t) => t,
-            Err(e) => return Err(kin_fail(r, st, "MoveAxesRelative", &e, span)),
-        };
-        let d = plan(r, st, "MoveAxesRelative", &target, &o, span)?;
-        perform(r, st, "MoveAxesRelative", &[target], d, &o, span)?;
-        Ok(None)
-    })
+    require_motion(cx, st, "MoveAxesRelative", &o)?;
+    let current = st.robot.joints();
+    let target = match st.kin.relative_joint_target(&current, &delta) {
+        Ok(t) => t,
+        Err(e) => return Err(kin_fail(st, "MoveAxesRelative", &e)),
+    };
+    let d = plan(st, "MoveAxesRelative", &target, &o)?;
+    perform(cx, st, "MoveAxesRelative", &[target], d, &o)?;
+    Ok(None)
 }
 
-fn move_frame_absolute(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn move_frame_absolute(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let goal = Pose::from_rows(frame_rows(&a[0]));
     let o = opts(a, 1);
-    with_state(r, span, |r, st| {
-        require_motion(r, st, "MoveFrameAbsolute", &o, span)?;
-        move_frame(r, st, "MoveFrameAbsolute", goal, o, span)
-    })
+    require_motion(cx, st, "MoveFrameAbsolute", &o)?;
+    move_frame(cx, st, "MoveFrameAbsolute", goal, o)
 }
 
-fn move_frame_relative(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn move_frame_relative(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let goal = Pose::from_rows(frame_rows(&a[0]));
     let o = opts(a, 1);
-    with_state(r, span, |r, st| {
-        require_motion(r, st, "MoveFrameRelative", &o, span)?;
-        let g = st.base * goal;
-        move_frame(r, st, "MoveFrameRelative", g, o, span)
-    })
+    require_motion(cx, st, "MoveFrameRelative", &o)?;
+    let g = st.base * goal;
+    move_frame(cx, st, "MoveFrameRelative", g, o)
 }
 
-fn set_base(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn set_base(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let base = Pose::from_rows(frame_rows(&a[0]));
-    with_state(r, span, |r, st| {
-        require_init(r, st, "SetBase", span)?;
-        if let Err(e) = base.check_rigid("base frame") {
-            return Err(kin_fail(r, st, "SetBase", &e, span));
-        }
-        st.base = base;
-        Ok(None)
-    })
+    require_init(cx, st, "SetBase")?;
+    if let Err(e) = base.check_rigid("base frame") {
+        return Err(kin_fail(st, "SetBase", &e));
+    }
+    st.base = base;
+    Ok(None)
 }
 
-fn valid_frame(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn valid_frame(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let f = Pose::from_rows(frame_rows(&a[0]));
-    with_state(r, span, |r, st| {
-        require_init(r, st, "ValidFrame", span)?;
-        match st.kin.valid_frame(&f, &st.tool.trans) {
-            Ok(v) => {
-                a[0] = frame_value(&v);
-                Ok(None)
-            }
-            Err(e) => Err(kin_fail(r, st, "ValidFrame", &e, span)),
+    require_init(cx, st, "ValidFrame")?;
+    match st.kin.valid_frame(&f, &st.tool.trans) {
+        Ok(v) => {
+            a[0] = frame_value(&v);
+            Ok(None)
         }
-    })
+        Err(e) => Err(kin_fail(st, "ValidFrame", &e)),
+    }
 }
 
-fn value_axes(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    let v = value_axes_f(r, a, span)?;
+fn value_axes(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
+    let v = value_axes_f(cx, st, a)?;
     a[0] = v.unwrap_or_default();
     Ok(None)
 }
 
-fn value_axes_f(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    with_state(r, span, |r, st| {
-        require_init(r, st, "ValueAxes", span)?;
-        Ok(Some(axes_value(&st.robot.read_joints())))
-    })
+fn value_axes_f(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R<Option<Value>> {
+    require_init(cx, st, "ValueAxes")?;
+    Ok(Some(axes_value(&st.robot.read_joints())))
 }
 
 /// The tool centre point at joints `q`, `(x, y, z)` in mm, for the trace.
@@ -1052,144 +957,82 @@ fn current_frame(st: &RobotState) -> Pose {
     st.kin.fk_tcp(&st.robot.read_joints(), &st.tool.trans)
 }
 
-fn value_frame_absolute(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    a[0] = value_frame_absolute_f(r, a, span)?.unwrap_or_default();
+fn value_frame_absolute(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
+    a[0] = value_frame_absolute_f(cx, st, a)?.unwrap_or_default();
     Ok(None)
 }
 
-fn value_frame_absolute_f(
-    r: &mut Run,
-    _a: &mut [Value],
-    span: crate::diag::Span,
-) -> R<Option<Value>> {
-    with_state(r, span, |r, st| {
-        require_init(r, st, "ValueFrameAbsolute", span)?;
-        Ok(Some(frame_value(&current_frame(st))))
-    })
+fn value_frame_absolute_f(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R<Option<Value>> {
+    require_init(cx, st, "ValueFrameAbsolute")?;
+    Ok(Some(frame_value(&current_frame(st))))
 }
 
-fn value_frame_relative(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    a[0] = value_frame_relative_f(r, a, span)?.unwrap_or_default();
+fn value_frame_relative(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
+    a[0] = value_frame_relative_f(cx, st, a)?.unwrap_or_default();
     Ok(None)
 }
 
-fn value_frame_relative_f(
-    r: &mut Run,
-    _a: &mut [Value],
-    span: crate::diag::Span,
-) -> R<Option<Value>> {
-    with_state(r, span, |r, st| {
-        require_init(r, st, "ValueFrameRelative", span)?;
-        Ok(Some(frame_value(&(st.base.inverse() * current_frame(st)))))
-    })
+fn value_frame_relative_f(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R<Option<Value>> {
+    require_init(cx, st, "ValueFrameRelative")?;
+    Ok(Some(frame_value(&(st.base.inverse() * current_frame(st)))))
 }
 
-fn value_error_status(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    a[0] = value_error_status_f(r, a, span)?.unwrap_or_default();
+fn value_error_status(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
+    a[0] = value_error_status_f(cx, st, a)?.unwrap_or_default();
     Ok(None)
 }
 
-fn value_error_status_f(
-    r: &mut Run,
-    _a: &mut [Value],
-    span: crate::diag::Span,
-) -> R<Option<Value>> {
+fn value_error_status_f(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R<Option<Value>> {
     // Always answers, before InitRobot too: a handler must be able to ask
     // which service raised, SystemNotInitialized included.
-    with_state(r, span, |r, st| {
-        wait_for_control(r, st, "ValueErrorStatus", span)?;
-        Ok(Some(Value::Int(st.error_status)))
-    })
+    wait_for_control(cx, st, "ValueErrorStatus")?;
+    Ok(Some(Value::Int(st.error_status)))
 }
 
-fn teach_box(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn teach_box(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let text = a[0].text();
     let (refresh, clear) = (a[1].int() != 0, a[2].int() != 0);
-    with_state(r, span, |r, st| {
-        require_init(r, st, "TeachBox", span)?;
-        if text.chars().count() > 60 || text.chars().any(|c| c.is_control()) {
-            let msg = match text.chars().position(|c| c.is_control()) {
-                Some(i) => format!(
-                    "the text has a control character at position {} (none allowed)",
-                    i + 1
-                ),
-                None => format!(
-                    "the text has {} characters (at most 60)",
-                    text.chars().count()
-                ),
-            };
-            return Err(fail(r, st, "TeachBox", Exc::UserInfoInvalid, msg, span));
-        }
-        let Some(mut p) = st.pendant.take() else {
-            return Err(fail(
-                r,
-                st,
-                "TeachBox",
-                Exc::CommandNotSupported,
-                "the TeachBox needs an interactive terminal (run the program from a terminal, or use the REPL's :teach)".into(),
-                span,
-            ));
+    require_init(cx, st, "TeachBox")?;
+    if text.chars().count() > 60 || text.chars().any(|c| c.is_control()) {
+        let msg = match text.chars().position(|c| c.is_control()) {
+            Some(i) => format!(
+                "the text has a control character at position {} (none allowed)",
+                i + 1
+            ),
+            None => format!(
+                "the text has {} characters (at most 60)",
+                text.chars().count()
+            ),
         };
-        let result = p.teach(st, &mut *r.m.clock, &text, refresh, clear);
-        st.pendant = Some(p);
-        match result {
-            Ok(()) => Ok(None),
-            Err(msg) => Err(fail(r, st, "TeachBox", Exc::CommandNotSupported, msg, span)),
-        }
-    })
+        return Err(fail(st, "TeachBox", Exc::UserInfoInvalid, msg));
+    }
+    let Some(mut p) = st.pendant.take() else {
+        return Err(fail(
+            st,
+            "TeachBox",
+            Exc::CommandNotSupported,
+            "the TeachBox needs an interactive terminal (run the program from a terminal, or use the REPL's :teach)".into(),
+        ));
+    };
+    let result = p.teach(st, &mut *cx.clock, &text, refresh, clear);
+    st.pendant = Some(p);
+    match result {
+        Ok(()) => Ok(None),
+        Err(msg) => Err(fail(st, "TeachBox", Exc::CommandNotSupported, msg)),
+    }
 }
 
-fn place_object(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
+fn place_object(_cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let w = a[0].real();
-    with_state(r, span, |r, st| {
-        let result = match st.robot.as_simulator() {
-            Some(sim) => sim.place_object(w).map_err(|m| (Exc::ConstraintError, m)),
-            None => Err((
-                Exc::CommandNotSupported,
-                "PlaceObject exists only on the simulator: a real hand holds real objects".into(),
-            )),
-        };
-        match result {
-            Ok(()) => Ok(None),
-            Err((exc, m)) => Err(fail(r, st, "PlaceObject", exc, m, span)),
-        }
-    })
-}
-
-// ---- SERIAL_IO: terminals map to standard output ----
-
-fn puts_string(r: &mut Run, a: &mut [Value], _: crate::diag::Span) -> R<Option<Value>> {
-    let s = a[1].text();
-    r.m.write_str(&s);
-    Ok(None)
-}
-
-fn puts_integer(r: &mut Run, a: &mut [Value], _: crate::diag::Span) -> R<Option<Value>> {
-    let s = crate::interp::value::image_int(a[1].int());
-    r.m.write_str(&s);
-    Ok(None)
-}
-
-fn new_lines(r: &mut Run, _a: &mut [Value], _: crate::diag::Span) -> R<Option<Value>> {
-    r.m.write_str("\n");
-    Ok(None)
-}
-
-fn get_lines(r: &mut Run, _a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    let _ = crate::interp::builtins::read_line(r, span)?;
-    Ok(None)
-}
-
-fn get_lines_text(r: &mut Run, a: &mut [Value], span: crate::diag::Span) -> R<Option<Value>> {
-    let mut args = [a[1].clone(), a[2].clone()];
-    crate::interp::builtins::get_line(r, &mut args, span)?;
-    a[1] = args[0].clone();
-    a[2] = args[1].clone();
-    Ok(None)
-}
-
-fn put_fixed(r: &mut Run, a: &mut [Value], _: crate::diag::Span) -> R<Option<Value>> {
-    let s = crate::interp::value::put_float(a[0].real(), 7, 3, 0);
-    r.m.write_str(&s);
-    Ok(None)
+    let result = match st.robot.as_simulator() {
+        Some(sim) => sim.place_object(w).map_err(|m| (Exc::ConstraintError, m)),
+        None => Err((
+            Exc::CommandNotSupported,
+            "PlaceObject exists only on the simulator: a real hand holds real objects".into(),
+        )),
+    };
+    match result {
+        Ok(()) => Ok(None),
+        Err((exc, m)) => Err(fail(st, "PlaceObject", exc, m)),
+    }
 }

@@ -12,241 +12,194 @@
 //! loaded frame is bit-for-bit the same.
 
 use super::*;
-use crate::diag::Span;
 
-fn path_of(r: &mut Run, st: &mut RobotState, service: &str, p: i64, span: Span) -> R<()> {
+fn path_of(st: &mut RobotState, service: &str, p: i64) -> R<()> {
     if !st.paths.contains_key(&p) {
         return Err(fail(
-            r,
             st,
             service,
             Exc::PathNotDefined,
             format!("path {p} is not defined (CreatePath ({p}) first)"),
-            span,
         ));
     }
     Ok(())
 }
 
-pub fn create_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+pub fn create_path(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let p = a[0].int();
-    with_state(r, span, |r, st| {
-        require_init(r, st, "CreatePath", span)?;
-        if st.paths.contains_key(&p) {
-            return Err(fail(
-                r,
-                st,
-                "CreatePath",
-                Exc::PathAlreadyDefined,
-                format!("path {p} is already defined"),
-                span,
-            ));
-        }
-        st.paths.insert(p, Vec::new());
-        Ok(None)
-    })
+    require_init(cx, st, "CreatePath")?;
+    if st.paths.contains_key(&p) {
+        return Err(fail(
+            st,
+            "CreatePath",
+            Exc::PathAlreadyDefined,
+            format!("path {p} is already defined"),
+        ));
+    }
+    st.paths.insert(p, Vec::new());
+    Ok(None)
 }
 
-pub fn delete_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+pub fn delete_path(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let p = a[0].int();
-    with_state(r, span, |r, st| {
-        require_init(r, st, "DeletePath", span)?;
-        path_of(r, st, "DeletePath", p, span)?;
-        st.paths.remove(&p);
-        Ok(None)
-    })
+    require_init(cx, st, "DeletePath")?;
+    path_of(st, "DeletePath", p)?;
+    st.paths.remove(&p);
+    Ok(None)
 }
 
 /// Inserts before position N; an N beyond the end appends as last + 1.
-pub fn insert_position(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+pub fn insert_position(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let (p, n, f) = (a[0].int(), a[1].int(), frame_rows(&a[2]));
-    with_state(r, span, |r, st| {
-        require_init(r, st, "InsertPosition", span)?;
-        path_of(r, st, "InsertPosition", p, span)?;
-        if let Err(e) = Pose::from_rows(f).check_rigid("position") {
-            return Err(kin_fail(r, st, "InsertPosition", &e, span));
-        }
-        let path = st.paths.entry(p).or_default();
-        let i = ((n - 1) as usize).min(path.len());
-        path.insert(i, f);
-        Ok(None)
-    })
+    require_init(cx, st, "InsertPosition")?;
+    path_of(st, "InsertPosition", p)?;
+    if let Err(e) = Pose::from_rows(f).check_rigid("position") {
+        return Err(kin_fail(st, "InsertPosition", &e));
+    }
+    let path = st.paths.entry(p).or_default();
+    let i = ((n - 1) as usize).min(path.len());
+    path.insert(i, f);
+    Ok(None)
 }
 
-fn position_index(
-    r: &mut Run,
-    st: &mut RobotState,
-    service: &str,
-    p: i64,
-    n: i64,
-    span: Span,
-) -> R<usize> {
-    path_of(r, st, service, p, span)?;
+fn position_index(st: &mut RobotState, service: &str, p: i64, n: i64) -> R<usize> {
+    path_of(st, service, p)?;
     let len = st.paths.get(&p).map(Vec::len).unwrap_or(0);
     if n < 1 || n as usize > len {
         return Err(fail(
-            r,
             st,
             service,
             Exc::PathElementNotDefined,
             format!("path {p} has {len} position(s), there is no position {n}"),
-            span,
         ));
     }
     Ok(n as usize - 1)
 }
 
-pub fn delete_position(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+pub fn delete_position(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let (p, n) = (a[0].int(), a[1].int());
-    with_state(r, span, |r, st| {
-        require_init(r, st, "DeletePosition", span)?;
-        let i = position_index(r, st, "DeletePosition", p, n, span)?;
-        if let Some(path) = st.paths.get_mut(&p) {
-            path.remove(i);
-        }
-        Ok(None)
-    })
+    require_init(cx, st, "DeletePosition")?;
+    let i = position_index(st, "DeletePosition", p, n)?;
+    if let Some(path) = st.paths.get_mut(&p) {
+        path.remove(i);
+    }
+    Ok(None)
 }
 
-pub fn value_position(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+pub fn value_position(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let (p, n) = (a[0].int(), a[1].int());
-    with_state(r, span, |r, st| {
-        require_init(r, st, "ValuePosition", span)?;
-        let i = position_index(r, st, "ValuePosition", p, n, span)?;
-        let f = st.paths[&p][i];
-        a[2] = frame_value(&Pose::from_rows(f));
-        Ok(None)
-    })
+    require_init(cx, st, "ValuePosition")?;
+    let i = position_index(st, "ValuePosition", p, n)?;
+    let f = st.paths[&p][i];
+    a[2] = frame_value(&Pose::from_rows(f));
+    Ok(None)
 }
 
 /// Moves through every position; all are solved before the first joint moves.
-pub fn move_path(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+pub fn move_path(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let p = a[0].int();
     let o = opts(a, 1);
-    with_state(r, span, |r, st| {
-        require_motion(r, st, "MovePath", &o, span)?;
-        path_of(r, st, "MovePath", p, span)?;
-        let frames = st.paths[&p].clone();
-        if frames.is_empty() {
+    require_motion(cx, st, "MovePath", &o)?;
+    path_of(st, "MovePath", p)?;
+    let frames = st.paths[&p].clone();
+    if frames.is_empty() {
+        return Err(fail(
+            st,
+            "MovePath",
+            Exc::PathElementNotDefined,
+            format!("path {p} has no positions"),
+        ));
+    }
+    let mut from = st.robot.joints();
+    let start = from;
+    let mut all: Vec<Joints> = Vec::new();
+    for (k, f) in frames.iter().enumerate() {
+        match frame_motion(st, &from, &Pose::from_rows(*f)) {
+            Ok(pts) => {
+                from = pts[pts.len() - 1];
+                all.extend(pts);
+            }
+            Err(e) => {
+                let msg = format!("position {} of path {p}: {e}", k + 1);
+                return Err(fail(st, "MovePath", e.exception().into(), msg));
+            }
+        }
+    }
+    let d = path_duration(
+        st,
+        &start,
+        &all,
+        if o.time.is_some() { 100.0 } else { st.velocity },
+    );
+    let d = match o.time {
+        Some(t) if t + 1e-9 < d => {
             return Err(fail(
-                r,
                 st,
                 "MovePath",
-                Exc::PathElementNotDefined,
-                format!("path {p} has no positions"),
-                span,
+                Exc::TimeInvalid,
+                format!("Time => {t:.3} s is shorter than the fastest run of path {p}, {d:.3} s"),
             ));
         }
-        let mut from = st.robot.joints();
-        let start = from;
-        let mut all: Vec<Joints> = Vec::new();
-        for (k, f) in frames.iter().enumerate() {
-            match frame_motion(st, &from, &Pose::from_rows(*f)) {
-                Ok(pts) => {
-                    from = pts[pts.len() - 1];
-                    all.extend(pts);
-                }
-                Err(e) => {
-                    let msg = format!("position {} of path {p}: {e}", k + 1);
-                    return Err(fail(r, st, "MovePath", e.exception().into(), msg, span));
-                }
-            }
-        }
-        let d = path_duration(
-            st,
-            &start,
-            &all,
-            if o.time.is_some() { 100.0 } else { st.velocity },
-        );
-        let d = match o.time {
-            Some(t) if t + 1e-9 < d => {
-                return Err(fail(
-                    r,
-                    st,
-                    "MovePath",
-                    Exc::TimeInvalid,
-                    format!(
-                        "Time => {t:.3} s is shorter than the fastest run of path {p}, {d:.3} s"
-                    ),
-                    span,
-                ));
-            }
-            Some(t) => t,
-            None => d,
-        };
-        perform(r, st, "MovePath", &all, d, &o, span)?;
-        Ok(None)
-    })
+        Some(t) => t,
+        None => d,
+    };
+    perform(cx, st, "MovePath", &all, d, &o)?;
+    Ok(None)
 }
 
-fn io_error(
-    r: &mut Run,
-    st: &mut RobotState,
-    service: &str,
-    exc: Exc,
-    msg: String,
-    span: Span,
-) -> Flow {
-    fail(r, st, service, exc, msg, span)
+fn io_error(st: &mut RobotState, service: &str, exc: Exc, msg: String) -> ServiceFault {
+    fail(st, service, exc, msg)
 }
 
-pub fn save_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+pub fn save_path_system(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let name = a[0].text();
-    with_state(r, span, |r, st| {
-        require_init(r, st, "SavePathSystem", span)?;
-        let mut text = String::from("adair-paths 1\n");
-        for (p, frames) in &st.paths {
-            text.push_str(&format!("path {p}\n"));
-            for (k, f) in frames.iter().enumerate() {
-                text.push_str(&format!("pos {}", k + 1));
-                for row in f {
-                    for x in row {
-                        text.push_str(&format!(" {x:?}"));
-                    }
+    require_init(cx, st, "SavePathSystem")?;
+    let mut text = String::from("adair-paths 1\n");
+    for (p, frames) in &st.paths {
+        text.push_str(&format!("path {p}\n"));
+        for (k, f) in frames.iter().enumerate() {
+            text.push_str(&format!("pos {}", k + 1));
+            for row in f {
+                for x in row {
+                    text.push_str(&format!(" {x:?}"));
                 }
-                text.push('\n');
             }
-            text.push_str("end\n");
+            text.push('\n');
         }
-        // Write a temporary file, then rename: never a half-written file.
-        let target = std::path::Path::new(&name);
-        if name.is_empty() || target.file_name().is_none() {
-            return Err(io_error(
-                r,
-                st,
-                "SavePathSystem",
-                Exc::NameError,
-                format!("\"{name}\" is not a file name"),
-                span,
-            ));
-        }
-        if let Some(dir) = target.parent().filter(|d| !d.as_os_str().is_empty())
-            && !dir.is_dir()
-        {
-            return Err(io_error(
-                r,
-                st,
-                "SavePathSystem",
-                Exc::NameError,
-                format!("the directory {} does not exist", dir.display()),
-                span,
-            ));
-        }
-        let tmp = tmp_path(target);
-        let res = std::fs::write(&tmp, text.as_bytes()).and_then(|_| std::fs::rename(&tmp, target));
-        if let Err(e) = res {
-            let _ = std::fs::remove_file(&tmp);
-            return Err(io_error(
-                r,
-                st,
-                "SavePathSystem",
-                Exc::UseError,
-                format!("cannot write {name}: {e}"),
-                span,
-            ));
-        }
-        Ok(None)
-    })
+        text.push_str("end\n");
+    }
+    // Write a temporary file, then rename: never a half-written file.
+    let target = std::path::Path::new(&name);
+    if name.is_empty() || target.file_name().is_none() {
+        return Err(io_error(
+            st,
+            "SavePathSystem",
+            Exc::NameError,
+            format!("\"{name}\" is not a file name"),
+        ));
+    }
+    if let Some(dir) = target.parent().filter(|d| !d.as_os_str().is_empty())
+        && !dir.is_dir()
+    {
+        return Err(io_error(
+            st,
+            "SavePathSystem",
+            Exc::NameError,
+            format!("the directory {} does not exist", dir.display()),
+        ));
+    }
+    let tmp = tmp_path(target);
+    let res = std::fs::write(&tmp, text.as_bytes()).and_then(|_| std::fs::rename(&tmp, target));
+    if let Err(e) = res {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(io_error(
+            st,
+            "SavePathSystem",
+            Exc::UseError,
+            format!("cannot write {name}: {e}"),
+        ));
+    }
+    Ok(None)
 }
 
 /// Parses a path file completely; nothing is loaded unless all of it is good.
@@ -342,77 +295,65 @@ fn parse(text: &str) -> Result<PathList, (usize, String)> {
     Ok(out)
 }
 
-pub fn load_path_system(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+pub fn load_path_system(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let name = a[0].text();
-    with_state(r, span, |r, st| {
-        require_init(r, st, "LoadPathSystem", span)?;
-        let text = match std::fs::read(&name) {
-            Ok(bytes) => match String::from_utf8(bytes) {
-                Ok(t) => t,
-                Err(e) => {
-                    // Malformed content: Data_Error, naming the line.
-                    let good = &e.as_bytes()[..e.utf8_error().valid_up_to()];
-                    let line = good.iter().filter(|b| **b == b'\n').count() + 1;
-                    return Err(io_error(
-                        r,
-                        st,
-                        "LoadPathSystem",
-                        Exc::DataError,
-                        format!("{name}:{line}: not UTF-8 text (a path file is text)"),
-                        span,
-                    ));
-                }
-            },
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-                return Err(io_error(
-                    r,
-                    st,
-                    "LoadPathSystem",
-                    Exc::NameError,
-                    format!("no file {name}"),
-                    span,
-                ));
-            }
+    require_init(cx, st, "LoadPathSystem")?;
+    let text = match std::fs::read(&name) {
+        Ok(bytes) => match String::from_utf8(bytes) {
+            Ok(t) => t,
             Err(e) => {
+                // Malformed content: Data_Error, naming the line.
+                let good = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+                let line = good.iter().filter(|b| **b == b'\n').count() + 1;
                 return Err(io_error(
-                    r,
-                    st,
-                    "LoadPathSystem",
-                    Exc::UseError,
-                    format!("cannot read {name}: {e}"),
-                    span,
-                ));
-            }
-        };
-        let paths = match parse(&text) {
-            Ok(p) => p,
-            Err((line, msg)) => {
-                return Err(io_error(
-                    r,
                     st,
                     "LoadPathSystem",
                     Exc::DataError,
-                    format!("{name}:{line}: {msg}"),
-                    span,
+                    format!("{name}:{line}: not UTF-8 text (a path file is text)"),
                 ));
             }
-        };
-        if let Some((p, _)) = paths.iter().find(|(p, _)| st.paths.contains_key(p)) {
-            let p = *p;
-            return Err(fail(
-                r,
+        },
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            return Err(io_error(
                 st,
                 "LoadPathSystem",
-                Exc::PathAlreadyDefined,
-                format!("{name} defines path {p}, which is already defined; nothing was loaded"),
-                span,
+                Exc::NameError,
+                format!("no file {name}"),
             ));
         }
-        for (p, frames) in paths {
-            st.paths.insert(p, frames);
+        Err(e) => {
+            return Err(io_error(
+                st,
+                "LoadPathSystem",
+                Exc::UseError,
+                format!("cannot read {name}: {e}"),
+            ));
         }
-        Ok(None)
-    })
+    };
+    let paths = match parse(&text) {
+        Ok(p) => p,
+        Err((line, msg)) => {
+            return Err(io_error(
+                st,
+                "LoadPathSystem",
+                Exc::DataError,
+                format!("{name}:{line}: {msg}"),
+            ));
+        }
+    };
+    if let Some((p, _)) = paths.iter().find(|(p, _)| st.paths.contains_key(p)) {
+        let p = *p;
+        return Err(fail(
+            st,
+            "LoadPathSystem",
+            Exc::PathAlreadyDefined,
+            format!("{name} defines path {p}, which is already defined; nothing was loaded"),
+        ));
+    }
+    for (p, frames) in paths {
+        st.paths.insert(p, frames);
+    }
+    Ok(None)
 }
 
 /// The file a save writes before renaming it over `target`: the target's

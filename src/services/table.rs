@@ -6,7 +6,6 @@
 //! a declaration that imports a service with another profile is a check error.
 
 use crate::check::ImportProfile;
-use crate::interp::Native;
 use crate::syntax::ast::Mode;
 
 /// The `:help` groups, in the order `:help` lists them.
@@ -63,7 +62,17 @@ pub struct Service {
     pub profile: &'static str,
     /// `:help` text (and the comment above the generated declaration).
     pub doc: &'static str,
-    pub body: Native,
+    pub body: Body,
+}
+
+/// What runs when a program calls an entry.
+#[derive(Clone, Copy)]
+pub enum Body {
+    /// A robot service: it gets the robot state and a narrow context.
+    Robot(super::ServiceFn),
+    /// A text helper the interpreter's builtins define under the same
+    /// import name (`SERIAL_IO` maps terminals to standard output).
+    Interp,
 }
 
 impl Service {
@@ -147,7 +156,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Width : in Float)",
         doc: "Simulator only: an object of the given width (mm) between the jaws,\nso that force-limited closing can be tried (0.0 removes it).\nExample: PlaceObject (30.0);",
-        body: super::place_object,
+        body: Body::Robot(super::place_object),
     },
     Service {
         name: "InitRobot",
@@ -157,7 +166,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "",
         doc: "Must come first: calibrates, moves to the zero pose (arm straight up), opens\nthe gripper, velocity 50 %, JointInterpolated, standard tool, robot base.\nExample: InitRobot;",
-        body: super::init_robot,
+        body: Body::Robot(super::init_robot),
     },
     Service {
         name: "EndRobot",
@@ -167,7 +176,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "",
         doc: "Moves to the nest position; all settings are lost; InitRobot is needed again.\nRaises ControlCommandActive while a Control => True motion runs.\nExample: EndRobot;",
-        body: super::end_robot,
+        body: Body::Robot(super::end_robot),
     },
     Service {
         name: "CalibrateRobot",
@@ -177,7 +186,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "",
         doc: "Recalibrates the joints (the simulator has no drift to remove).\nExample: CalibrateRobot;",
-        body: super::calibrate,
+        body: Body::Robot(super::calibrate),
     },
     Service {
         name: "SetVelocity",
@@ -187,7 +196,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Velocity : in RobotVelocity)",
         doc: "Percent of the maximum joint speed for later motions (the leading joint runs\nat that percentage; the others are slowed to start and stop with it).\nExample: SetVelocity (25.0);",
-        body: super::set_velocity,
+        body: Body::Robot(super::set_velocity),
     },
     Service {
         name: "SetMoveMode",
@@ -197,7 +206,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Kind : in Motion)",
         doc: "JointInterpolated or StraightLine for later frame and path moves.\nExample: SetMoveMode (StraightLine);",
-        body: super::set_move_mode,
+        body: Body::Robot(super::set_move_mode),
     },
     Service {
         name: "SetInterpolation",
@@ -207,7 +216,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Width : in Interpolation)",
         doc: "Spacing of the support points of straight-line moves, in mm.\nExample: SetInterpolation (5.0);",
-        body: super::set_interpolation,
+        body: Body::Robot(super::set_interpolation),
     },
     Service {
         name: "SetRobotConfig",
@@ -217,7 +226,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(ArmMode : in ArmConfig; ElbowMode : in ElbowConfig; HandMode : in HandConfig)",
         doc: "The preferred inverse-kinematics branch for frame moves; No...Config keeps\nthe branch nearest to the current pose.\nExample: SetRobotConfig (ArmForward, ElbowAbove, NoHandConfig);",
-        body: super::set_robot_config,
+        body: Body::Robot(super::set_robot_config),
     },
     Service {
         name: "ValueRobotConfig",
@@ -227,7 +236,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(ArmMode : out ArmConfig; ElbowMode : out ElbowConfig; HandMode : out HandConfig)",
         doc: "The branch of the current pose.\nExample:\n  A : ArmConfig;  E : ElbowConfig;  H : HandConfig;\n  ValueRobotConfig (A, E, H);",
-        body: super::value_robot_config,
+        body: Body::Robot(super::value_robot_config),
     },
     Service {
         name: "SetTool",
@@ -237,7 +246,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Tool : in ToolDescriptor)",
         doc: "Tool transform (flange -> TCP) and sensor ranges; current values are ignored.\nRaises FrameInvalid, ForceInvalid, DistanceInvalid.\nExample:\n  T : ToolDescriptor := ValueTool;\n  T.Trans := Trans (0.0, 0.0, 120.0);  SetTool (T);",
-        body: super::set_tool,
+        body: Body::Robot(super::set_tool),
     },
     Service {
         name: "ValueTool",
@@ -247,7 +256,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Tool : out ToolDescriptor)",
         doc: "The tool, with the current gripper opening and force.\nExample:\n  T : ToolDescriptor := ValueTool;",
-        body: super::value_tool,
+        body: Body::Robot(super::value_tool),
     },
     Service {
         name: "ValueTool",
@@ -257,7 +266,7 @@ pub const SERVICES: &[Service] = &[
         function: true,
         profile: "return ToolDescriptor",
         doc: "",
-        body: super::value_tool_f,
+        body: Body::Robot(super::value_tool_f),
     },
     Service {
         name: "MoveTool",
@@ -267,7 +276,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Distance : in ToolDistance; Force : in ToolForce)",
         doc: "Opens or closes the gripper to Distance (mm) or until Force (N) is reached;\nthe distance wins. Raises DistanceInvalid or ForceInvalid outside the tool's ranges.\nExample: MoveTool (Distance => 20.0, Force => 5.0);",
-        body: super::move_tool,
+        body: Body::Robot(super::move_tool),
     },
     Service {
         name: "MoveAxesAbsolute",
@@ -277,7 +286,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Axes : in AxesVector; Time : in Duration := 0.0; Control : in Boolean := False; RealTime : in Boolean := False)",
         doc: "Joint targets in radians; multiples of 2 pi are removed, the sign gives the\nturning direction (the other way if needed). Raises OutOfReach, TimeInvalid.\nExample: MoveAxesAbsolute ((0.0, 0.5, 0.5, 0.0, 0.0));",
-        body: super::move_axes_absolute,
+        body: Body::Robot(super::move_axes_absolute),
     },
     Service {
         name: "MoveAxesRelative",
@@ -287,7 +296,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Axes : in AxesVector; Time : in Duration := 0.0; Control : in Boolean := False; RealTime : in Boolean := False)",
         doc: "Moves every joint by the given angle from where it is. Raises OutOfReach.\nExample: MoveAxesRelative ((0.1, 0.0, 0.0, 0.0, 0.0));",
-        body: super::move_axes_relative,
+        body: Body::Robot(super::move_axes_relative),
     },
     Service {
         name: "MoveFrameAbsolute",
@@ -297,7 +306,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Goal : in Frame; Time : in Duration := 0.0; Control : in Boolean := False; RealTime : in Boolean := False)",
         doc: "Moves the TCP to Goal (robot base coordinates) in the current move mode.\nRaises FrameInvalid (not rigid, or an orientation a 5-axis arm cannot take),\nOutOfReach, TimeInvalid. Example: MoveFrameAbsolute (Trans (300.0, 0.0, 250.0) * RotY (Rad (180.0)));",
-        body: super::move_frame_absolute,
+        body: Body::Robot(super::move_frame_absolute),
     },
     Service {
         name: "MoveFrameRelative",
@@ -307,7 +316,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Goal : in Frame; Time : in Duration := 0.0; Control : in Boolean := False; RealTime : in Boolean := False)",
         doc: "As MoveFrameAbsolute, with the goal in the base frame set by SetBase.\nExample:\n  SetBase (Trans (300.0, 0.0, 0.0));\n  MoveFrameRelative (Trans (0.0, 0.0, 250.0) * RotY (Rad (180.0)));",
-        body: super::move_frame_relative,
+        body: Body::Robot(super::move_frame_relative),
     },
     Service {
         name: "SetBase",
@@ -317,7 +326,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Base : in Frame)",
         doc: "The object frame for MoveFrameRelative and ValueFrameRelative.\nExample: SetBase (Trans (300.0, 0.0, 0.0));",
-        body: super::set_base,
+        body: Body::Robot(super::set_base),
     },
     Service {
         name: "ValidFrame",
@@ -327,7 +336,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(VaryFrame : in out Frame)",
         doc: "Keeps the position and turns the orientation to the nearest one this arm\ncan reach. Example:\n  F : Frame := Trans (250.0, 150.0, 200.0) * RotY (Rad (180.0)) * RotX (Rad (15.0));\n  ValidFrame (F);  MoveFrameAbsolute (F);",
-        body: super::valid_frame,
+        body: Body::Robot(super::valid_frame),
     },
     Service {
         name: "ValueAxes",
@@ -337,7 +346,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Axes : out AxesVector)",
         doc: "The joints as the controller reads them back (radians, quantised).\nExample:\n  A : AxesVector := ValueAxes;",
-        body: super::value_axes,
+        body: Body::Robot(super::value_axes),
     },
     Service {
         name: "ValueAxes",
@@ -347,7 +356,7 @@ pub const SERVICES: &[Service] = &[
         function: true,
         profile: "return AxesVector",
         doc: "",
-        body: super::value_axes_f,
+        body: Body::Robot(super::value_axes_f),
     },
     Service {
         name: "ValueFrameAbsolute",
@@ -357,7 +366,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(ReturnFrame : out Frame)",
         doc: "The TCP frame in robot base coordinates. Example:\n  F : Frame := ValueFrameAbsolute;",
-        body: super::value_frame_absolute,
+        body: Body::Robot(super::value_frame_absolute),
     },
     Service {
         name: "ValueFrameAbsolute",
@@ -367,7 +376,7 @@ pub const SERVICES: &[Service] = &[
         function: true,
         profile: "return Frame",
         doc: "",
-        body: super::value_frame_absolute_f,
+        body: Body::Robot(super::value_frame_absolute_f),
     },
     Service {
         name: "ValueFrameRelative",
@@ -377,7 +386,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(ReturnFrame : out Frame)",
         doc: "The TCP frame in the base frame set by SetBase. Example:\n  F : Frame := ValueFrameRelative;",
-        body: super::value_frame_relative,
+        body: Body::Robot(super::value_frame_relative),
     },
     Service {
         name: "ValueFrameRelative",
@@ -387,7 +396,7 @@ pub const SERVICES: &[Service] = &[
         function: true,
         profile: "return Frame",
         doc: "",
-        body: super::value_frame_relative_f,
+        body: Body::Robot(super::value_frame_relative_f),
     },
     Service {
         name: "ValueErrorStatus",
@@ -397,7 +406,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Status : out ErrorCode)",
         doc: "The command code of the service where the last exception arose (0 if none).\nExample:\n  Code : ErrorCode := ValueErrorStatus;",
-        body: super::value_error_status,
+        body: Body::Robot(super::value_error_status),
     },
     Service {
         name: "ValueErrorStatus",
@@ -407,7 +416,7 @@ pub const SERVICES: &[Service] = &[
         function: true,
         profile: "return ErrorCode",
         doc: "",
-        body: super::value_error_status_f,
+        body: Body::Robot(super::value_error_status_f),
     },
     Service {
         name: "CreatePath",
@@ -417,7 +426,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(PathNumber : in PathNo)",
         doc: "Creates an empty path. Raises PathAlreadyDefined. Example: CreatePath (1);",
-        body: super::paths::create_path,
+        body: Body::Robot(super::paths::create_path),
     },
     Service {
         name: "DeletePath",
@@ -427,7 +436,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(PathNumber : in PathNo)",
         doc: "Deletes a path. Raises PathNotDefined. Example:\n  CreatePath (1);  DeletePath (1);",
-        body: super::paths::delete_path,
+        body: Body::Robot(super::paths::delete_path),
     },
     Service {
         name: "InsertPosition",
@@ -437,7 +446,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(PathNumber : in PathNo; PositionNumber : in PosNo; Position : in Frame)",
         doc: "Inserts F before position N (beyond the end: appends). Raises PathNotDefined.\nExample:\n  CreatePath (1);\n  InsertPosition (1, 1, Trans (300.0, 0.0, 250.0) * RotY (Rad (180.0)));",
-        body: super::paths::insert_position,
+        body: Body::Robot(super::paths::insert_position),
     },
     Service {
         name: "DeletePosition",
@@ -447,7 +456,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(PathNumber : in PathNo; PositionNumber : in PosNo)",
         doc: "Removes position N. Raises PathElementNotDefined. Example:\n  CreatePath (1);  InsertPosition (1, 1, ValueFrameAbsolute);\n  DeletePosition (1, 1);",
-        body: super::paths::delete_position,
+        body: Body::Robot(super::paths::delete_position),
     },
     Service {
         name: "ValuePosition",
@@ -457,7 +466,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(PathNumber : in PathNo; PositionNumber : in PosNo; Position : out Frame)",
         doc: "Reads position N. Raises PathElementNotDefined. Example:\n  F : Frame;  CreatePath (1);  InsertPosition (1, 1, ValueFrameAbsolute);\n  ValuePosition (1, 1, F);",
-        body: super::paths::value_position,
+        body: Body::Robot(super::paths::value_position),
     },
     Service {
         name: "MovePath",
@@ -467,7 +476,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(PathNumber : in PathNo; Time : in Duration := 0.0; Control : in Boolean := False; RealTime : in Boolean := False)",
         doc: "Moves through every position of a path; all are checked before the robot\nstarts. Raises PathNotDefined, PathElementNotDefined, OutOfReach. Example:\n  CreatePath (1);\n  InsertPosition (1, 1, Trans (300.0, 0.0, 250.0) * RotY (Rad (180.0)));\n  InsertPosition (1, 2, Trans (300.0, 100.0, 250.0) * RotY (Rad (180.0)));\n  MovePath (1);",
-        body: super::paths::move_path,
+        body: Body::Robot(super::paths::move_path),
     },
     Service {
         name: "SavePathSystem",
@@ -477,7 +486,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(PathFileName : in String)",
         doc: "Writes all paths to a text file (atomically). Raises Name_Error, Use_Error.\nExample: SavePathSystem (\"paths.txt\");",
-        body: super::paths::save_path_system,
+        body: Body::Robot(super::paths::save_path_system),
     },
     Service {
         name: "LoadPathSystem",
@@ -487,7 +496,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(PathFileName : in String)",
         doc: "Reads paths from a file: all or nothing. Raises Name_Error, Data_Error,\nPathAlreadyDefined. Example:\n  CreatePath (1);  SavePathSystem (\"paths.txt\");  DeletePath (1);\n  LoadPathSystem (\"paths.txt\");",
-        body: super::paths::load_path_system,
+        body: Body::Robot(super::paths::load_path_system),
     },
     Service {
         name: "TeachBox",
@@ -497,7 +506,7 @@ pub const SERVICES: &[Service] = &[
         function: false,
         profile: "(Text : in String := \" \"; Refresh : in Boolean := True; Clear : in Boolean := True)",
         doc: "The screen teach pendant; returns when the user leaves it. Raises\nUserInfoInvalid (text over 60 characters), CommandNotSupported without a terminal.\nExample: TeachBox (\"Jog to the part, store it with p\");",
-        body: super::teach_box,
+        body: Body::Robot(super::teach_box),
     },
 ];
 
@@ -512,7 +521,7 @@ pub const LIBRARY: &[Service] = &[
         function: false,
         profile: "(Term : in Term_T; Text : in String)",
         doc: "",
-        body: super::puts_string,
+        body: Body::Interp,
     },
     Service {
         name: "PutS",
@@ -522,7 +531,7 @@ pub const LIBRARY: &[Service] = &[
         function: false,
         profile: "(Term : in Term_T; Value : in Integer)",
         doc: "",
-        body: super::puts_integer,
+        body: Body::Interp,
     },
     Service {
         name: "New_LineS",
@@ -532,7 +541,7 @@ pub const LIBRARY: &[Service] = &[
         function: false,
         profile: "(Term : in Term_T)",
         doc: "",
-        body: super::new_lines,
+        body: Body::Interp,
     },
     Service {
         name: "Get_LineS",
@@ -542,7 +551,7 @@ pub const LIBRARY: &[Service] = &[
         function: false,
         profile: "",
         doc: "",
-        body: super::get_lines,
+        body: Body::Interp,
     },
     Service {
         name: "Get_LineS",
@@ -552,7 +561,7 @@ pub const LIBRARY: &[Service] = &[
         function: false,
         profile: "(Term : in Term_T; Text : out String; Last : out Natural)",
         doc: "",
-        body: super::get_lines_text,
+        body: Body::Interp,
     },
     Service {
         name: "Put_Fixed",
@@ -562,13 +571,21 @@ pub const LIBRARY: &[Service] = &[
         function: false,
         profile: "(X : in Float)",
         doc: "",
-        body: super::put_fixed,
+        body: Body::Interp,
     },
 ];
 
 /// The entry bound to an import name.
 pub fn by_import(import: &str) -> Option<&'static Service> {
     SERVICES.iter().chain(LIBRARY).find(|s| s.import == import)
+}
+
+/// The index in [`SERVICES`] of the service bound to an import name.
+pub fn index_of(import: &str) -> Option<u32> {
+    SERVICES
+        .iter()
+        .position(|s| s.import == import)
+        .map(|i| i as u32)
 }
 
 /// The service (not a helper) of an Ada name, for `:help`.

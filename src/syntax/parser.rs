@@ -929,13 +929,55 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
             body,
             end_label,
         });
+    // A `declare` block whose `end` never comes (the text ends first) is
+    // reported once, as unclosed, and taken as ended: trying it again as
+    // something else, level after level, took time quadratic in the nesting.
+    // (A bare `begin` at the end of the text may be a body's, and is left to
+    // the recovery of what encloses it.)
+    let open_block = kw!(Begin)
+        .ignore_then(stmts.clone())
+        .then(
+            kw!(Exception)
+                .ignore_then(handler.clone().repeated().collect::<Vec<_>>())
+                .or_not(),
+        )
+        .then(
+            kw!(End)
+                .ignore_then(ident().or_not())
+                .ignore_then(semi())
+                .to(None)
+                .or(end().map_with(|_, e| Some(e.span()))),
+        )
+        .map_with(|((stmts, handlers), missing), e| {
+            (
+                Block {
+                    stmts,
+                    handlers: handlers.unwrap_or_default(),
+                    span: e.span(),
+                },
+                missing,
+            )
+        });
+    let declare_block = kw!(Declare)
+        .ignore_then(decls.clone())
+        .then(open_block)
+        .validate(|(decls, (body, missing)), e, emitter| {
+            if let Some(at) = missing {
+                let whole: Span = e.span();
+                emitter.emit(Rich::custom(at, format!("{UNCLOSED}block {}", whole.start)));
+            }
+            (Some(decls), body)
+        });
+    let plain_block = block
+        .clone()
+        .then_ignore(ident().or_not())
+        .then_ignore(semi())
+        .map(|body| (None, body));
     let block_stmt = label
         .clone()
         .or_not()
-        .then(kw!(Declare).ignore_then(decls.clone()).or_not())
-        .then(block.clone())
-        .then_ignore(ident().or_not())
-        .then_ignore(semi())
+        .then(declare_block.or(plain_block))
+        .map(|(label, (decls, body))| ((label, decls), body))
         .map(|((label, decls), body)| StmtKind::Block {
             label,
             decls: decls.unwrap_or_default(),
@@ -1324,7 +1366,9 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
     enum SubTail {
         Unsupported(&'static str),
         Decl(Option<String>),
-        Body(Vec<Decl>, Block, Option<(String, Span)>),
+        /// Declarations, statements, the name after `end`, and where the
+        /// text ended when it ended before the body's `end`.
+        Body(Vec<Decl>, Block, Option<(String, Span)>, Option<Span>),
     }
     let spec = subprogram_spec(expr.clone());
     let subprogram = spec
@@ -1375,23 +1419,54 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                             span,
                         },
                         None,
+                        None,
                     )
                 }),
             kw!(Is)
                 .ignore_then(decls.clone())
-                .then(block.clone())
-                .then(end_name.clone())
-                .then_ignore(semi())
-                .map(|((d, b), n)| SubTail::Body(d, b, n)),
+                .then(choice((
+                    block
+                        .clone()
+                        .then(end_name.clone())
+                        .then_ignore(semi())
+                        .map(|(b, n)| (b, n, None)),
+                    // The text ends before the body's `end`: reported once
+                    // (below), and the body is taken as ended, so that what
+                    // it holds is not parsed again as something else.
+                    kw!(Begin)
+                        .ignore_then(stmts.clone())
+                        .then(
+                            kw!(Exception)
+                                .ignore_then(handler.clone().repeated().collect::<Vec<_>>())
+                                .or_not(),
+                        )
+                        .then(end().map_with(|_, e| e.span()))
+                        .map_with(|((stmts, handlers), at), e| {
+                            let b = Block {
+                                stmts,
+                                handlers: handlers.unwrap_or_default(),
+                                span: e.span(),
+                            };
+                            (b, None, Some(at))
+                        }),
+                )))
+                .map(|(d, (b, n, missing))| SubTail::Body(d, b, n, missing)),
             import_aspect
                 .or_not()
                 .then_ignore(semi())
                 .map(|imp| SubTail::Decl(imp.flatten())),
         )))
-        .map(|(spec, rest)| match rest {
+        .validate(|(spec, rest), e, emitter| match rest {
             SubTail::Unsupported(what) => DeclKind::Unsupported(what),
             SubTail::Decl(import) => DeclKind::SubprogramDecl { spec, import },
-            SubTail::Body(decls, body, end_name) => {
+            SubTail::Body(decls, body, end_name, missing) => {
+                if let Some(at) = missing {
+                    let whole: Span = e.span();
+                    emitter.emit(Rich::custom(
+                        at,
+                        format!("{UNCLOSED}body {}", whole.start),
+                    ));
+                }
                 DeclKind::SubprogramBody(Box::new(SubprogramBody {
                     spec,
                     decls,
@@ -1771,6 +1846,8 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
                 .find(|(t, _)| match word.as_str() {
                     "if" => *t == Token::Kw(Kw::If),
                     "case" => *t == Token::Kw(Kw::Case),
+                    "block" => matches!(t, Token::Kw(Kw::Declare | Kw::Begin)),
+                    "body" => matches!(t, Token::Kw(Kw::Procedure | Kw::Function)),
                     _ => matches!(t, Token::Kw(Kw::Loop | Kw::For | Kw::While)),
                 })
                 .map(|(_, s)| *s)
@@ -1779,6 +1856,28 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
                     end: start,
                     context: span.context,
                 });
+            if word == "body" {
+                let mut d = Diagnostic::syntax(
+                    span,
+                    format!("the text ends inside the body of the subprogram at {OPENER_AT}"),
+                )
+                .with_label("end of input")
+                .with_hint("end the body with `end NAME;` after its last statement");
+                d.notes
+                    .push((opener, "this subprogram's body is not closed".to_string()));
+                return d;
+            }
+            if word == "block" {
+                let mut d = Diagnostic::syntax(
+                    span,
+                    format!("`end;` expected to close the block at {OPENER_AT}"),
+                )
+                .with_label("end of input")
+                .with_hint("end the block with `end;` after its last statement");
+                d.notes
+                    .push((opener, "this block is not closed".to_string()));
+                return d;
+            }
             // A bare `end;` was taken as the construct's end; `end Name`
             // belongs to the body around it.
             let bare = tokens

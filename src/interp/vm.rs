@@ -1,0 +1,1083 @@
+//! The compiled engine. Each subprogram body (and the level-0 statements of
+//! a run) is compiled, once per run and on first call, into a flat list of
+//! instructions over the slots of its frame: the frame's own variables
+//! (`Var { level, slot }`, as the checker numbered them) followed by
+//! temporaries. A loop runs the instructions with explicit frames: a call
+//! pushes a [`Frame`] and jumps, a return pops it, an exception unwinds
+//! through handler regions and frames, with no Rust recursion, so that a
+//! task can later be suspended between two instructions.
+//!
+//! Nodes without an instruction of their own (aggregates, attributes,
+//! slices, raise, delay, ...) are evaluated by the tree walker
+//! ([`Run::eval`], [`Run::exec`], [`Run::assign`]), which stays the
+//! reference engine: `Engine::Walker` runs a whole program in it, and the
+//! golden and GNAT tests run every program in both (differential testing).
+//! The compiled engine keeps every Ada check the walker makes; it calls the
+//! walker's own check functions.
+
+use super::*;
+
+/// Which engine runs a program.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Engine {
+    /// Compiled instructions with explicit frames (the default).
+    #[default]
+    Compiled,
+    /// The tree walker over the checked program (the reference).
+    Walker,
+}
+
+impl Engine {
+    /// `ADAIR_ENGINE=walker` chooses the reference engine; anything else,
+    /// or nothing, the compiled one.
+    pub fn from_env() -> Engine {
+        match std::env::var("ADAIR_ENGINE").as_deref() {
+            Ok("walker") => Engine::Walker,
+            _ => Engine::Compiled,
+        }
+    }
+}
+
+/// One instruction. Operands are frame slots (`Var`); `Span`s are where a
+/// check that fails raises.
+#[derive(Debug)]
+enum Op<'p> {
+    Int(Var, i64),
+    Real(Var, f64),
+    Move(Var, Var),
+    IntBin(IntOp, Var, Var, Var, Span),
+    IntNeg(Var, Var, Span),
+    FloatBin(FloatOp, Var, Var, Var, Span),
+    ToReal(Var, Var),
+    Cmp(CmpOp, Var, Var, Var),
+    Eq(bool, Var, Var, Var),
+    Logic(LogicOp, Var, Var, Var),
+    Not(Var, Var),
+    RangeCheck(Var, TypeId, Span),
+    /// `dst := arr (ix...)` for an array held in a slot.
+    Index(Var, Var, Box<[Var]>, Span),
+    /// `arr (ix...) := src`.
+    StoreIndex(Var, Box<[Var]>, Var, Span),
+    Field(Var, Var, u32, Span),
+    /// The walker evaluates an expression into a slot.
+    Eval(Var, &'p Ex),
+    /// The walker assigns a slot's value to a target.
+    Assign(&'p Ex, Var),
+    /// The walker executes a statement.
+    Exec(&'p Stmt),
+    Jump(u32),
+    JumpIfNot(Var, u32),
+    JumpIf(Var, u32),
+    /// Case: the subject, (low, high, target) choices, the `others` target.
+    Case(Var, Box<[(i64, i64, u32)]>, Option<u32>, Span),
+    /// First step of a `for` loop: the counter, low, high, reverse, the
+    /// exit target (an empty range jumps there).
+    ForStart(Var, Var, Var, bool, u32),
+    /// Next step: counter, low, high, reverse, the body's start.
+    ForNext(Var, Var, Var, bool, u32, Span),
+    Poll(Span),
+    /// A call of a subprogram with a body: its argument operands, the slot
+    /// for a function's result.
+    Call(FuncId, &'p [Arg], Box<[Var]>, Option<Var>, Span),
+    /// A call the walker makes (natives, services, a subprogram without body).
+    CallWalker(FuncId, &'p [Arg], Option<Var>, Span),
+    Return(Option<Var>),
+    /// The end of a body: a procedure returns, a function raises.
+    FallOff,
+    /// Handler dispatch for the pending occurrence: the handlers, the
+    /// target of each, and the handler depth of the region.
+    Dispatch(&'p [Handler], Box<[u32]>, u32),
+    /// Leaves a handler body: its occurrence is no longer current.
+    PopCurrent,
+    /// Back to `frame's depth + n` current occurrences (an `exit` out of
+    /// handler bodies).
+    TruncCurrent(u32),
+}
+
+/// A part of the code whose exceptions go to handlers.
+struct Region {
+    start: u32,
+    end: u32,
+    dispatch: u32,
+}
+
+/// A compiled body.
+pub(crate) struct Code<'p> {
+    ops: Vec<Op<'p>>,
+    /// Slots beyond the subprogram's own: temporaries.
+    temps: u32,
+    /// Handler regions, innermost first.
+    regions: Vec<Region>,
+    /// `exit` targets of this code's loops, for an `exit` that a statement
+    /// run by the walker returns: (loop id, target, handler depth).
+    exits: Vec<(u32, u32, u32)>,
+}
+
+struct Compiler<'p, 'r> {
+    level: u16,
+    own: u32,
+    ntemp: u32,
+    max_temp: u32,
+    ops: Vec<Op<'p>>,
+    regions: Vec<Region>,
+    exits: Vec<(u32, u32, u32)>,
+    /// The loops being compiled: id, jumps to patch with the exit, handler depth.
+    loops: Vec<(u32, Vec<usize>, u32)>,
+    hdepth: u32,
+    /// Which subprograms the walker calls (bound to natives or without body).
+    walker_calls: &'r dyn Fn(FuncId) -> bool,
+}
+
+/// True when evaluating `e` may run a call or other code with effects
+/// (so that an operand read before it must be copied first).
+fn effects(e: &Ex) -> bool {
+    match &e.kind {
+        ExKind::Int(_) | ExKind::Real(_) | ExKind::Var(_) | ExKind::Str(_) | ExKind::Null => false,
+        ExKind::IntBin(_, a, b)
+        | ExKind::FloatBin(_, a, b)
+        | ExKind::Cmp(_, a, b)
+        | ExKind::Eq(_, a, b)
+        | ExKind::Logic(_, a, b) => effects(a) || effects(b),
+        ExKind::Not(a)
+        | ExKind::IntNeg(a)
+        | ExKind::FloatNeg(a)
+        | ExKind::IntAbs(a)
+        | ExKind::FloatAbs(a)
+        | ExKind::IntToFloat(a)
+        | ExKind::FloatToInt(a)
+        | ExKind::RangeCheck(a, _)
+        | ExKind::Field(a, _) => effects(a),
+        ExKind::Index(p, idx) => effects(p) || idx.iter().any(effects),
+        _ => true,
+    }
+}
+
+impl<'p> Compiler<'p, '_> {
+    fn temp(&mut self) -> Var {
+        let v = Var {
+            level: self.level,
+            slot: self.own + self.ntemp,
+        };
+        self.ntemp += 1;
+        self.max_temp = self.max_temp.max(self.ntemp);
+        v
+    }
+
+    fn is_temp(&self, v: Var) -> bool {
+        v.level == self.level && v.slot >= self.own
+    }
+
+    fn here(&self) -> u32 {
+        self.ops.len() as u32
+    }
+
+    fn patch(&mut self, at: usize, target: u32) {
+        match &mut self.ops[at] {
+            Op::Jump(t) | Op::JumpIfNot(_, t) | Op::JumpIf(_, t) | Op::ForStart(.., t) => {
+                *t = target
+            }
+            _ => unreachable!("only jumps are patched"),
+        }
+    }
+
+    /// The operand holding `e`'s value: a variable itself, or a temporary.
+    fn expr(&mut self, e: &'p Ex) -> Var {
+        if let ExKind::Var(v) = e.kind {
+            return v;
+        }
+        let t = self.temp();
+        self.expr_into(e, t);
+        t
+    }
+
+    /// An operand for the left side of a binary operation whose right side
+    /// is `right`: copied to a temporary when the right side may change it.
+    fn left(&mut self, e: &'p Ex, right: &Ex) -> Var {
+        let a = self.expr(e);
+        if !self.is_temp(a) && effects(right) {
+            let t = self.temp();
+            self.ops.push(Op::Move(t, a));
+            return t;
+        }
+        a
+    }
+
+    /// Evaluates `e` into `dst`, which is written once, at the end.
+    fn expr_into(&mut self, e: &'p Ex, dst: Var) {
+        let span = e.span;
+        match &e.kind {
+            ExKind::Int(v) => self.ops.push(Op::Int(dst, *v)),
+            ExKind::Real(v) => self.ops.push(Op::Real(dst, *v)),
+            ExKind::Var(v) => self.ops.push(Op::Move(dst, *v)),
+            ExKind::IntBin(op, a, b) => {
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::IntBin(*op, dst, x, y, span));
+            }
+            ExKind::IntNeg(a) => {
+                let x = self.expr(a);
+                self.ops.push(Op::IntNeg(dst, x, span));
+            }
+            ExKind::FloatBin(op, a, b) => {
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::FloatBin(*op, dst, x, y, span));
+            }
+            ExKind::IntToFloat(a) => {
+                let x = self.expr(a);
+                self.ops.push(Op::ToReal(dst, x));
+            }
+            ExKind::Cmp(op, a, b) => {
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::Cmp(*op, dst, x, y));
+            }
+            ExKind::Eq(ne, a, b) => {
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::Eq(*ne, dst, x, y));
+            }
+            ExKind::Logic(op @ (LogicOp::AndThen | LogicOp::OrElse), a, b) => {
+                // The result is built in a temporary: `dst` may be read by `b`.
+                let t = self.temp();
+                self.expr_into(a, t);
+                let j = self.ops.len();
+                self.ops.push(if *op == LogicOp::AndThen {
+                    Op::JumpIfNot(t, 0)
+                } else {
+                    Op::JumpIf(t, 0)
+                });
+                self.expr_into(b, t);
+                let end = self.here();
+                self.patch(j, end);
+                self.ops.push(Op::Move(dst, t));
+            }
+            ExKind::Logic(op, a, b) => {
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::Logic(*op, dst, x, y));
+            }
+            ExKind::Not(a) => {
+                let x = self.expr(a);
+                self.ops.push(Op::Not(dst, x));
+            }
+            ExKind::RangeCheck(a, t) => {
+                let x = self.expr(a);
+                self.ops.push(Op::RangeCheck(x, *t, span));
+                self.ops.push(Op::Move(dst, x));
+            }
+            ExKind::Index(p, idx) if matches!(p.kind, ExKind::Var(_)) && idx.len() <= 4 => {
+                let ExKind::Var(arr) = p.kind else {
+                    unreachable!()
+                };
+                let mut ix = Vec::with_capacity(idx.len());
+                for (k, x) in idx.iter().enumerate() {
+                    let later_effects = idx[k + 1..].iter().any(effects);
+                    let mut v = self.expr(x);
+                    if later_effects && !self.is_temp(v) {
+                        let t = self.temp();
+                        self.ops.push(Op::Move(t, v));
+                        v = t;
+                    }
+                    ix.push(v);
+                }
+                self.ops.push(Op::Index(dst, arr, ix.into(), span));
+            }
+            ExKind::Field(p, i) => {
+                let x = self.expr(p);
+                self.ops.push(Op::Field(dst, x, *i, span));
+            }
+            ExKind::Call(f, args) => self.call(*f, args, Some(dst), span),
+            _ => self.ops.push(Op::Eval(dst, e)),
+        }
+    }
+
+    fn call(&mut self, f: FuncId, args: &'p [Arg], dst: Option<Var>, span: Span) {
+        if (self.walker_calls)(f) {
+            self.ops.push(Op::CallWalker(f, args, dst, span));
+            return;
+        }
+        let mut ops = Vec::with_capacity(args.len());
+        for (k, a) in args.iter().enumerate() {
+            let later = args[k + 1..].iter().any(|b| effects(&b.value));
+            let mut v = self.expr(&a.value);
+            if later && !self.is_temp(v) {
+                let t = self.temp();
+                self.ops.push(Op::Move(t, v));
+                v = t;
+            }
+            ops.push(v);
+        }
+        self.ops.push(Op::Call(f, args, ops.into(), dst, span));
+    }
+
+    fn stmts(&mut self, ss: &'p [Stmt]) {
+        for s in ss {
+            let mark = self.ntemp;
+            self.stmt(s);
+            self.ntemp = mark;
+        }
+    }
+
+    fn stmt(&mut self, s: &'p Stmt) {
+        match &s.kind {
+            StmtKind::Null => {}
+            StmtKind::Init(v, e) => self.expr_into(e, *v),
+            StmtKind::Assign(t, e) => match &t.kind {
+                ExKind::Var(v) => self.expr_into(e, *v),
+                ExKind::Index(p, idx)
+                    if matches!(p.kind, ExKind::Var(_))
+                        && idx.len() <= 4
+                        && !idx.iter().any(effects) =>
+                {
+                    let ExKind::Var(arr) = p.kind else {
+                        unreachable!()
+                    };
+                    let src = self.expr(e);
+                    let src = if self.is_temp(src) {
+                        src
+                    } else {
+                        let t = self.temp();
+                        self.ops.push(Op::Move(t, src));
+                        t
+                    };
+                    let ix: Vec<Var> = idx.iter().map(|x| self.expr(x)).collect();
+                    self.ops.push(Op::StoreIndex(arr, ix.into(), src, t.span));
+                }
+                _ => {
+                    let src = self.temp();
+                    self.expr_into(e, src);
+                    self.ops.push(Op::Assign(t, src));
+                }
+            },
+            StmtKind::Call(f, args) => self.call(*f, args, None, s.span),
+            StmtKind::If(arms, els) => {
+                let mut ends = Vec::new();
+                for (c, body) in arms {
+                    let mark = self.ntemp;
+                    let x = self.expr(c);
+                    self.ntemp = mark;
+                    let j = self.ops.len();
+                    self.ops.push(Op::JumpIfNot(x, 0));
+                    self.stmts(body);
+                    ends.push(self.ops.len());
+                    self.ops.push(Op::Jump(0));
+                    let next = self.here();
+                    self.patch(j, next);
+                }
+                self.stmts(els);
+                let end = self.here();
+                for j in ends {
+                    self.patch(j, end);
+                }
+            }
+            StmtKind::Case(subj, arms, others) => {
+                let x = self.expr(subj);
+                let at = self.ops.len();
+                self.ops.push(Op::Case(x, Box::new([]), None, s.span));
+                let mut table = Vec::new();
+                let mut ends = Vec::new();
+                for (ranges, body) in arms {
+                    let target = self.here();
+                    table.extend(ranges.iter().map(|(l, h)| (*l, *h, target)));
+                    self.stmts(body);
+                    ends.push(self.ops.len());
+                    self.ops.push(Op::Jump(0));
+                }
+                let other = others.as_ref().map(|b| {
+                    let target = self.here();
+                    self.stmts(b);
+                    target
+                });
+                let end = self.here();
+                for j in ends {
+                    self.patch(j, end);
+                }
+                self.ops[at] = Op::Case(x, table.into(), other, s.span);
+            }
+            StmtKind::Loop { id, body } => {
+                let top = self.here();
+                self.ops.push(Op::Poll(s.span));
+                self.loop_body(*id, body);
+                self.ops.push(Op::Jump(top));
+                self.end_loop(*id);
+            }
+            StmtKind::While { id, cond, body } => {
+                let top = self.here();
+                let x = self.expr(cond);
+                let j = self.ops.len();
+                self.ops.push(Op::JumpIfNot(x, 0));
+                self.ops.push(Op::Poll(s.span));
+                self.loop_body(*id, body);
+                self.ops.push(Op::Jump(top));
+                let end = self.end_loop(*id);
+                self.patch(j, end);
+            }
+            StmtKind::For {
+                id,
+                var,
+                lo,
+                hi,
+                reverse,
+                body,
+            } => {
+                let (l, h) = (self.temp(), self.temp());
+                self.expr_into(lo, l);
+                self.expr_into(hi, h);
+                let start = self.ops.len();
+                self.ops.push(Op::ForStart(*var, l, h, *reverse, 0));
+                let body_pc = self.here();
+                self.loop_body(*id, body);
+                self.ops
+                    .push(Op::ForNext(*var, l, h, *reverse, body_pc, s.span));
+                let end = self.end_loop(*id);
+                self.patch(start, end);
+            }
+            StmtKind::Exit(id, cond) => {
+                let Some(k) = self.loops.iter().rposition(|(l, ..)| l == id) else {
+                    self.ops.push(Op::Exec(s));
+                    return;
+                };
+                let skip = cond.as_ref().map(|c| {
+                    let x = self.expr(c);
+                    let j = self.ops.len();
+                    self.ops.push(Op::JumpIfNot(x, 0));
+                    j
+                });
+                let depth = self.loops[k].2;
+                if depth < self.hdepth {
+                    self.ops.push(Op::TruncCurrent(depth));
+                }
+                let j = self.ops.len();
+                self.ops.push(Op::Jump(0));
+                self.loops[k].1.push(j);
+                if let Some(j) = skip {
+                    let next = self.here();
+                    self.patch(j, next);
+                }
+            }
+            StmtKind::Return(v) => {
+                let x = v.as_ref().map(|e| self.expr(e));
+                self.ops.push(Op::Return(x));
+            }
+            StmtKind::Block(b) => self.body(b),
+            StmtKind::Raise(..) | StmtKind::Reraise | StmtKind::Delay(_) => {
+                self.ops.push(Op::Exec(s))
+            }
+        }
+    }
+
+    fn loop_body(&mut self, id: u32, body: &'p [Stmt]) {
+        self.loops.push((id, Vec::new(), self.hdepth));
+        self.stmts(body);
+    }
+
+    /// Ends the innermost loop: its exits jump here. Returns the target.
+    fn end_loop(&mut self, id: u32) -> u32 {
+        let end = self.here();
+        let (_, jumps, depth) = self.loops.pop().expect("a loop");
+        for j in jumps {
+            self.patch(j, end);
+        }
+        self.exits.push((id, end, depth));
+        end
+    }
+
+    fn body(&mut self, b: &'p Body) {
+        if b.handlers.is_empty() {
+            self.stmts(&b.stmts);
+            return;
+        }
+        let start = self.here();
+        self.stmts(&b.stmts);
+        let end = self.here();
+        let mut ends = vec![self.ops.len()];
+        self.ops.push(Op::Jump(0));
+        let dispatch = self.here();
+        let at = self.ops.len();
+        self.ops
+            .push(Op::Dispatch(&b.handlers, Box::new([]), self.hdepth));
+        let mut targets = Vec::new();
+        for h in &b.handlers {
+            targets.push(self.here());
+            self.hdepth += 1;
+            self.stmts(&h.stmts);
+            self.hdepth -= 1;
+            self.ops.push(Op::PopCurrent);
+            ends.push(self.ops.len());
+            self.ops.push(Op::Jump(0));
+        }
+        self.ops[at] = Op::Dispatch(&b.handlers, targets.into(), self.hdepth);
+        let after = self.here();
+        for j in ends {
+            self.patch(j, after);
+        }
+        self.regions.push(Region {
+            start,
+            end,
+            dispatch,
+        });
+    }
+
+    fn finish(mut self) -> Code<'p> {
+        self.ops.push(Op::FallOff);
+        Code {
+            ops: self.ops,
+            temps: self.max_temp,
+            regions: self.regions,
+            exits: self.exits,
+        }
+    }
+}
+
+/// A frame of the compiled engine. The level-0 code's frame has no
+/// subprogram.
+struct Frame<'p> {
+    code: Rc<Code<'p>>,
+    /// Where to go on in this frame's code when the callee returns.
+    pc: u32,
+    /// The subprogram, its call's arguments and result slot, and what the
+    /// call saved.
+    call: Option<CallInfo<'p>>,
+    /// Current occurrences when the frame was entered.
+    current: usize,
+}
+
+struct CallInfo<'p> {
+    f: FuncId,
+    args: &'p [Arg],
+    dst: Option<Var>,
+    base: usize,
+    level: usize,
+    saved: usize,
+}
+
+impl<'a> Run<'a> {
+    /// Whether the walker makes the calls of `f` (a native or no body).
+    fn walker_call(&self, f: FuncId) -> bool {
+        self.m.natives.get(f as usize).copied().flatten().is_some()
+            || self.c.funcs[f as usize].body.is_none()
+    }
+
+    fn compile(&self, level: u16, own: u32, what: Compiled<'a>) -> Code<'a> {
+        let walker_calls = |f: FuncId| self.walker_call(f);
+        let mut c = Compiler {
+            level,
+            own,
+            ntemp: 0,
+            max_temp: 0,
+            ops: Vec::new(),
+            regions: Vec::new(),
+            exits: Vec::new(),
+            loops: Vec::new(),
+            hdepth: 0,
+            walker_calls: &walker_calls,
+        };
+        match what {
+            Compiled::Body(b) => c.body(b),
+            Compiled::Stmts(ss) => c.stmts(ss),
+            Compiled::Main(f) => c.call(
+                f,
+                &[],
+                None,
+                Span {
+                    start: 0,
+                    end: 0,
+                    context: 0,
+                },
+            ),
+        }
+        c.finish()
+    }
+
+    /// The compiled body of `f`, compiled on its first call.
+    fn code_of(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>, f: FuncId) -> Rc<Code<'a>> {
+        let i = f as usize;
+        if cache.len() <= i {
+            cache.resize(self.c.funcs.len().max(i + 1), None);
+        }
+        if let Some(c) = &cache[i] {
+            return c.clone();
+        }
+        let sub = &self.c.funcs[i];
+        let body = sub.body.as_deref().expect("a subprogram with a body");
+        let own = sub.nslots.max(sub.params.len() as u32);
+        let code = Rc::new(self.compile(sub.level, own, Compiled::Body(body)));
+        cache[i] = Some(code.clone());
+        code
+    }
+
+    /// Runs level-0 statements, then the main subprogram, in the compiled
+    /// engine.
+    pub(crate) fn run_compiled(&mut self, stmts: &'a [Stmt], main: Option<FuncId>) -> R<()> {
+        let mut cache = Vec::new();
+        let own = self.c.globals;
+        let code = Rc::new(self.compile(0, own, Compiled::Stmts(stmts)));
+        self.exec_code(&mut cache, code)?;
+        if let Some(f) = main {
+            let code = Rc::new(self.compile(0, own, Compiled::Main(f)));
+            self.exec_code(&mut cache, code)?;
+        }
+        Ok(())
+    }
+
+    fn sl(&self, v: Var) -> usize {
+        self.m.display[v.level as usize] + v.slot as usize
+    }
+
+    fn int_at(&self, v: Var) -> i64 {
+        match &self.m.stack[self.sl(v)] {
+            Value::Int(i) => *i,
+            other => other.int(),
+        }
+    }
+
+    fn put(&mut self, v: Var, x: Value) {
+        let i = self.sl(v);
+        self.m.stack[i] = x;
+    }
+
+    /// Runs level-0 code to its end.
+    fn exec_code(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>, code: Rc<Code<'a>>) -> R<()> {
+        let need = self.c.globals as usize + code.temps as usize;
+        if self.m.stack.len() < need {
+            self.m.stack.resize(need, Value::Undef);
+        }
+        let mut frames: Vec<Frame<'a>> = Vec::new();
+        let mut cur = code;
+        let mut pc: u32 = 0;
+        let mut current_base = self.m.current.len();
+        let mut pending: Option<Box<Occurrence>> = None;
+        let mut enter: Option<(Rc<Code<'a>>, CallInfo<'a>)> = None;
+        loop {
+            let op = &cur.ops[pc as usize];
+            pc += 1;
+            let r: R<()> = match op {
+                Op::Int(d, v) => {
+                    self.put(*d, Value::Int(*v));
+                    Ok(())
+                }
+                Op::Real(d, v) => {
+                    self.put(*d, Value::Real(*v));
+                    Ok(())
+                }
+                Op::Move(d, s) => {
+                    let v = self.m.stack[self.sl(*s)].clone();
+                    self.put(*d, v);
+                    Ok(())
+                }
+                Op::IntBin(o, d, a, b, span) => {
+                    let (x, y) = (self.int_at(*a), self.int_at(*b));
+                    self.int_op(*o, x, y, *span)
+                        .map(|v| self.put(*d, Value::Int(v)))
+                }
+                Op::IntNeg(d, a, span) => {
+                    let x = self.int_at(*a);
+                    self.int_op(IntOp::Sub, 0, x, *span)
+                        .map(|v| self.put(*d, Value::Int(v)))
+                }
+                Op::FloatBin(o, d, a, b, span) => {
+                    let x = self.m.stack[self.sl(*a)].real();
+                    let yv = &self.m.stack[self.sl(*b)];
+                    let r = match o {
+                        FloatOp::Add => Ok(x + yv.real()),
+                        FloatOp::Sub => Ok(x - yv.real()),
+                        FloatOp::Mul => Ok(x * yv.real()),
+                        FloatOp::Div => {
+                            let y = yv.real();
+                            if y == 0.0 {
+                                Err(self.check_failed("divide by zero", *span))
+                            } else {
+                                Ok(x / y)
+                            }
+                        }
+                        FloatOp::PowI => {
+                            let n = yv.int();
+                            if n < 0 && x == 0.0 {
+                                Err(self.check_failed("divide by zero", *span))
+                            } else {
+                                Ok(x.powi(n as i32))
+                            }
+                        }
+                    };
+                    r.map(|v| self.put(*d, Value::Real(v)))
+                }
+                Op::ToReal(d, a) => {
+                    let x = self.m.stack[self.sl(*a)].real();
+                    self.put(*d, Value::Real(x));
+                    Ok(())
+                }
+                Op::Cmp(o, d, a, b) => {
+                    use std::cmp::Ordering::*;
+                    let ord = {
+                        let x = &self.m.stack[self.sl(*a)];
+                        let y = &self.m.stack[self.sl(*b)];
+                        match (x, y) {
+                            (Value::Int(p), Value::Int(q)) => p.cmp(q),
+                            _ => x.compare(y),
+                        }
+                    };
+                    let r = match o {
+                        CmpOp::Lt => ord == Less,
+                        CmpOp::Le => ord != Greater,
+                        CmpOp::Gt => ord == Greater,
+                        CmpOp::Ge => ord != Less,
+                        CmpOp::Eq => ord == Equal,
+                        CmpOp::Ne => ord != Equal,
+                    };
+                    self.put(*d, Value::Int(r as i64));
+                    Ok(())
+                }
+                Op::Eq(ne, d, a, b) => {
+                    let same = self.m.stack[self.sl(*a)] == self.m.stack[self.sl(*b)];
+                    self.put(*d, Value::Int((same != *ne) as i64));
+                    Ok(())
+                }
+                Op::Logic(o, d, a, b) => {
+                    let (x, y) = (self.int_at(*a) != 0, self.int_at(*b) != 0);
+                    let r = match o {
+                        LogicOp::And | LogicOp::AndThen => x && y,
+                        LogicOp::Or | LogicOp::OrElse => x || y,
+                        LogicOp::Xor => x ^ y,
+                    };
+                    self.put(*d, Value::Int(r as i64));
+                    Ok(())
+                }
+                Op::Not(d, a) => {
+                    let x = self.int_at(*a) == 0;
+                    self.put(*d, Value::Int(x as i64));
+                    Ok(())
+                }
+                Op::RangeCheck(a, t, span) => {
+                    let v = self.m.stack[self.sl(*a)].clone();
+                    self.range_check(&v, *t, *span)
+                }
+                Op::Index(d, arr, ix, span) => {
+                    let mut idx = [0i64; 4];
+                    for (k, v) in ix.iter().enumerate() {
+                        idx[k] = self.int_at(*v);
+                    }
+                    let got = match &self.m.stack[self.sl(*arr)] {
+                        Value::Arr(a) => match a.offset(&idx[..ix.len()]) {
+                            Some(o) => Ok(a.data[o].clone()),
+                            None => Err("index check failed"),
+                        },
+                        _ => Err("access check failed"),
+                    };
+                    match got {
+                        Ok(v) => {
+                            self.put(*d, v);
+                            Ok(())
+                        }
+                        Err(what) => Err(self.check_failed(what, *span)),
+                    }
+                }
+                Op::StoreIndex(arr, ix, src, span) => {
+                    let mut idx = [0i64; 4];
+                    for (k, v) in ix.iter().enumerate() {
+                        idx[k] = self.int_at(*v);
+                    }
+                    let i = self.sl(*src);
+                    let val = std::mem::take(&mut self.m.stack[i]);
+                    let slot = self.sl(*arr);
+                    let r = match &mut self.m.stack[slot] {
+                        Value::Arr(a) => {
+                            let a = Rc::make_mut(a);
+                            match a.offset(&idx[..ix.len()]) {
+                                Some(o) => {
+                                    a.data[o] = val;
+                                    Ok(())
+                                }
+                                None => Err("index check failed"),
+                            }
+                        }
+                        _ => Err("access check failed"),
+                    };
+                    r.map_err(|what| self.check_failed(what, *span))
+                }
+                Op::Field(d, a, i, span) => {
+                    let got = match &self.m.stack[self.sl(*a)] {
+                        Value::Rec(r) => Some(r[*i as usize].clone()),
+                        _ => None,
+                    };
+                    match got {
+                        Some(v) => {
+                            self.put(*d, v);
+                            Ok(())
+                        }
+                        None => Err(self.check_failed("discriminant check failed", *span)),
+                    }
+                }
+                Op::Eval(d, e) => self.eval(e).map(|v| self.put(*d, v)),
+                Op::Assign(t, s) => {
+                    let i = self.sl(*s);
+                    let v = std::mem::take(&mut self.m.stack[i]);
+                    self.assign(t, v)
+                }
+                Op::Exec(s) => self.exec(s),
+                Op::Jump(t) => {
+                    pc = *t;
+                    Ok(())
+                }
+                Op::JumpIfNot(c, t) => {
+                    if self.int_at(*c) == 0 {
+                        pc = *t;
+                    }
+                    Ok(())
+                }
+                Op::JumpIf(c, t) => {
+                    if self.int_at(*c) != 0 {
+                        pc = *t;
+                    }
+                    Ok(())
+                }
+                Op::Case(x, table, others, span) => {
+                    let v = self.int_at(*x);
+                    match table.iter().find(|(l, h, _)| *l <= v && v <= *h) {
+                        Some((_, _, t)) => {
+                            pc = *t;
+                            Ok(())
+                        }
+                        None => match others {
+                            Some(t) => {
+                                pc = *t;
+                                Ok(())
+                            }
+                            None => Err(self.check_failed("case choice not covered", *span)),
+                        },
+                    }
+                }
+                Op::ForStart(v, l, h, rev, exit) => {
+                    let (lo, hi) = (self.int_at(*l), self.int_at(*h));
+                    if lo > hi {
+                        pc = *exit;
+                    } else {
+                        self.put(*v, Value::Int(if *rev { hi } else { lo }));
+                    }
+                    Ok(())
+                }
+                Op::ForNext(v, l, h, rev, body, span) => {
+                    let i = self.int_at(*v);
+                    let last = if *rev {
+                        self.int_at(*l)
+                    } else {
+                        self.int_at(*h)
+                    };
+                    if i == last {
+                        Ok(())
+                    } else {
+                        self.put(*v, Value::Int(if *rev { i - 1 } else { i + 1 }));
+                        pc = *body;
+                        self.poll(*span)
+                    }
+                }
+                Op::Poll(span) => self.poll(*span),
+                Op::CallWalker(f, args, d, span) => self.call(*f, args, *span).map(|v| {
+                    if let Some(d) = d {
+                        self.put(*d, v.unwrap_or_default());
+                    }
+                }),
+                Op::Call(f, args, ops, d, span) => {
+                    let mut vals = Vec::with_capacity(ops.len());
+                    for v in ops.iter() {
+                        vals.push(self.m.stack[self.sl(*v)].clone());
+                    }
+                    if self.m.depth >= MAX_DEPTH {
+                        Err(self.raise(
+                            check::STORAGE_ERROR,
+                            "stack overflow (recursion too deep)",
+                            *span,
+                        ))
+                    } else {
+                        let code = self.code_of(cache, *f);
+                        let sub = &self.c.funcs[*f as usize];
+                        let level = sub.level as usize;
+                        let nslots = sub.nslots as usize;
+                        let base = self.m.stack.len();
+                        let n = vals.len();
+                        self.m.stack.extend(vals);
+                        let own = nslots.max(n).max(sub.params.len());
+                        self.m
+                            .stack
+                            .resize(base + own + code.temps as usize, Value::Undef);
+                        if self.m.display.len() <= level {
+                            self.m.display.resize(level + 1, 0);
+                        }
+                        let saved = self.m.display[level];
+                        self.m.display[level] = base;
+                        self.m.depth += 1;
+                        self.m.calls.push(*span);
+                        enter = Some((
+                            code,
+                            CallInfo {
+                                f: *f,
+                                args,
+                                dst: *d,
+                                base,
+                                level,
+                                saved,
+                            },
+                        ));
+                        Ok(())
+                    }
+                }
+                Op::Return(x) => {
+                    // Cloned, not taken: the value may be a variable of an
+                    // enclosing frame.
+                    let v = x.map(|x| self.m.stack[self.sl(x)].clone());
+                    Err(Flow::Return(v))
+                }
+                Op::FallOff => Err(Flow::Exit(FALL_OFF)),
+                Op::Dispatch(handlers, targets, depth) => {
+                    let occ = pending.take().expect("an occurrence to dispatch");
+                    self.m.current.truncate(current_base + *depth as usize);
+                    match handlers.iter().position(|h| match &h.choices {
+                        None => true,
+                        Some(list) => list.contains(&occ.exc),
+                    }) {
+                        Some(k) => {
+                            let occ: Rc<Occurrence> = Rc::from(occ);
+                            if let Some(v) = handlers[k].occurrence {
+                                self.put(v, Value::Occ(occ.clone()));
+                            }
+                            self.m.current.push(occ);
+                            pc = targets[k];
+                            Ok(())
+                        }
+                        None => Err(Flow::Raise(occ)),
+                    }
+                }
+                Op::PopCurrent => {
+                    self.m.current.pop();
+                    Ok(())
+                }
+                Op::TruncCurrent(n) => {
+                    self.m.current.truncate(current_base + *n as usize);
+                    Ok(())
+                }
+            };
+            if let Some((code, info)) = enter.take() {
+                frames.push(Frame {
+                    code: std::mem::replace(&mut cur, code),
+                    pc,
+                    call: Some(info),
+                    current: current_base,
+                });
+                current_base = self.m.current.len();
+                pc = 0;
+                continue;
+            }
+            let Err(flow) = r else { continue };
+            // Something other than the next instruction: a return, an exit
+            // a statement run by the walker gave back, or an exception.
+            let mut flow = flow;
+            loop {
+                match flow {
+                    Flow::Exit(id) if id != FALL_OFF => {
+                        if let Some((_, t, depth)) = cur.exits.iter().find(|(l, ..)| *l == id) {
+                            self.m.current.truncate(current_base + *depth as usize);
+                            pc = *t;
+                            break;
+                        }
+                        // Not a loop of this code (the user's stop): leave
+                        // every frame.
+                        while let Some(f) = frames.pop() {
+                            self.pop_frame(&f, current_base);
+                            current_base = f.current;
+                        }
+                        return Err(Flow::Exit(id));
+                    }
+                    Flow::Exit(_) | Flow::Return(_) => {
+                        let (value, fell_off) = match flow {
+                            Flow::Return(v) => (v, false),
+                            _ => (None, true),
+                        };
+                        let Some(frame) = frames.pop() else {
+                            // The end of the level-0 code.
+                            self.m.current.truncate(current_base);
+                            return Ok(());
+                        };
+                        let info = frame.call.as_ref().expect("a called frame");
+                        // Copy-out values live in the frame.
+                        let mut outs = Vec::new();
+                        for (i, a) in info.args.iter().enumerate() {
+                            if a.mode != Mode::In {
+                                outs.push((a, std::mem::take(&mut self.m.stack[info.base + i])));
+                            }
+                        }
+                        self.pop_frame(&frame, current_base);
+                        cur = frame.code;
+                        pc = frame.pc;
+                        current_base = frame.current;
+                        let sub = &self.c.funcs[info.f as usize];
+                        let r = if fell_off && sub.ret.is_some() {
+                            Err(self.raise(
+                                check::PROGRAM_ERROR,
+                                format!("{} missing return", self.m.location(sub.span)),
+                                sub.span,
+                            ))
+                        } else {
+                            (|| {
+                                for (a, v) in outs {
+                                    if let Some(t) = a.back_check {
+                                        self.range_check(&v, t, a.value.span)?;
+                                    }
+                                    self.assign(&a.value, v)?;
+                                }
+                                if let Some(d) = info.dst {
+                                    self.put(d, value.unwrap_or_default());
+                                }
+                                Ok(())
+                            })()
+                        };
+                        match r {
+                            Ok(()) => break,
+                            Err(e) => flow = e,
+                        }
+                    }
+                    Flow::Raise(occ) => {
+                        let at = pc - 1;
+                        if let Some(r) = cur.regions.iter().find(|r| r.start <= at && at < r.end) {
+                            pc = r.dispatch;
+                            pending = Some(occ);
+                            break;
+                        }
+                        let Some(frame) = frames.pop() else {
+                            self.m.current.truncate(current_base);
+                            return Err(Flow::Raise(occ));
+                        };
+                        self.pop_frame(&frame, current_base);
+                        cur = frame.code;
+                        pc = frame.pc;
+                        current_base = frame.current;
+                        flow = Flow::Raise(occ);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Leaves a called frame: its slots, display entry, depth, call place,
+    /// and the occurrences it made current (back to `entry`, their number
+    /// when it was entered); no copy-out.
+    fn pop_frame(&mut self, f: &Frame<'a>, entry: usize) {
+        if let Some(info) = &f.call {
+            self.m.stack.truncate(info.base);
+            self.m.display[info.level] = info.saved;
+            self.m.depth -= 1;
+            self.m.calls.pop();
+        }
+        self.m.current.truncate(entry);
+    }
+}
+
+/// What is compiled: a body, level-0 statements, or the call of the main
+/// subprogram.
+enum Compiled<'a> {
+    Body(&'a Body),
+    Stmts(&'a [Stmt]),
+    Main(FuncId),
+}
+
+/// The label by which the end of a body is signalled inside the engine.
+const FALL_OFF: u32 = u32::MAX - 1;
