@@ -9,6 +9,7 @@
 #![allow(clippy::large_enum_variant)]
 
 pub mod check;
+pub mod devices;
 pub mod diag;
 pub mod driver;
 pub mod golden;

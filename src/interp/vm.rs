@@ -61,6 +61,9 @@ enum Op<'p> {
     Field(Var, Var, u32, Span),
     /// The walker evaluates an expression into a slot.
     Eval(Var, &'p Ex),
+    /// The same for a copy of an expression whose operands were computed
+    /// here first (replaced by the temporaries holding them).
+    EvalOwned(Var, Box<Ex>),
     /// The walker assigns a slot's value to a target.
     Assign(&'p Ex, Var),
     /// The walker executes a statement.
@@ -81,6 +84,8 @@ enum Op<'p> {
     Call(FuncId, &'p [Arg], Box<[Var]>, Option<Var>, Span),
     /// A call the walker makes (natives, services, a subprogram without body).
     CallWalker(FuncId, &'p [Arg], Option<Var>, Span),
+    /// The same with `in` arguments computed here first.
+    CallWalkerOwned(FuncId, Box<[Arg]>, Option<Var>, Span),
     Return(Option<Var>),
     /// The end of a body: a procedure returns, a function raises.
     FallOff,
@@ -288,13 +293,150 @@ impl<'p> Compiler<'p, '_> {
                 self.ops.push(Op::Field(dst, x, *i, span));
             }
             ExKind::Call(f, args) => self.call(*f, args, Some(dst), span),
-            _ => self.ops.push(Op::Eval(dst, e)),
+            ExKind::If(arms, els) => {
+                let t = self.temp();
+                let mut ends = Vec::new();
+                for (c, v) in arms {
+                    let x = self.expr(c);
+                    let j = self.ops.len();
+                    self.ops.push(Op::JumpIfNot(x, 0));
+                    self.expr_into(v, t);
+                    ends.push(self.ops.len());
+                    self.ops.push(Op::Jump(0));
+                    let next = self.here();
+                    self.patch(j, next);
+                }
+                self.expr_into(els, t);
+                let end = self.here();
+                for j in ends {
+                    self.patch(j, end);
+                }
+                self.ops.push(Op::Move(dst, t));
+            }
+            ExKind::Case(subj, arms, others) => {
+                let t = self.temp();
+                let x = self.expr(subj);
+                let at = self.ops.len();
+                self.ops.push(Op::Case(x, Box::new([]), None, span));
+                let mut table = Vec::new();
+                let mut ends = Vec::new();
+                for (ranges, v) in arms {
+                    let target = self.here();
+                    table.extend(ranges.iter().map(|(l, h)| (*l, *h, target)));
+                    self.expr_into(v, t);
+                    ends.push(self.ops.len());
+                    self.ops.push(Op::Jump(0));
+                }
+                let other = others.as_ref().map(|v| {
+                    let target = self.here();
+                    self.expr_into(v, t);
+                    target
+                });
+                let end = self.here();
+                for j in ends {
+                    self.patch(j, end);
+                }
+                self.ops[at] = Op::Case(x, table.into(), other, span);
+                self.ops.push(Op::Move(dst, t));
+            }
+            _ => match self.strict_copy(e) {
+                Some(copy) => self.ops.push(Op::EvalOwned(dst, Box::new(copy))),
+                None => self.ops.push(Op::Eval(dst, e)),
+            },
         }
+    }
+
+    /// For a node that evaluates each of its operands once, in order, and
+    /// has a call among them: the operands computed here (so that the calls
+    /// run compiled), and a copy of the node that reads them from their
+    /// temporaries, for the walker. None: the walker takes the node whole.
+    fn strict_copy(&mut self, e: &'p Ex) -> Option<Ex> {
+        let kids: Vec<&'p Ex> = match &e.kind {
+            ExKind::Attr(_, args) => args.iter().collect(),
+            ExKind::Concat(a, b, ..) => vec![a, b],
+            ExKind::FloatNeg(a)
+            | ExKind::IntAbs(a)
+            | ExKind::FloatAbs(a)
+            | ExKind::FloatToInt(a)
+            | ExKind::Deref(a)
+            | ExKind::ArrayConvert(a, _) => vec![a],
+            ExKind::Slice(p, l, h) => vec![p, l, h],
+            ExKind::Index(p, idx) => std::iter::once(&**p).chain(idx.iter()).collect(),
+            _ => return None,
+        };
+        if !kids.iter().any(|k| effects(k)) {
+            return None;
+        }
+        let vars: Vec<Ex> = kids
+            .iter()
+            .map(|k| {
+                let t = self.temp();
+                self.expr_into(k, t);
+                Ex {
+                    kind: ExKind::Var(t),
+                    ty: k.ty,
+                    span: k.span,
+                }
+            })
+            .collect();
+        let mut v = vars.into_iter();
+        let mut next = || Box::new(v.next().expect("an operand"));
+        let kind = match &e.kind {
+            ExKind::Attr(op, args) => ExKind::Attr(*op, args.iter().map(|_| *next()).collect()),
+            ExKind::Concat(_, _, x, y) => ExKind::Concat(next(), next(), *x, *y),
+            ExKind::FloatNeg(_) => ExKind::FloatNeg(next()),
+            ExKind::IntAbs(_) => ExKind::IntAbs(next()),
+            ExKind::FloatAbs(_) => ExKind::FloatAbs(next()),
+            ExKind::FloatToInt(_) => ExKind::FloatToInt(next()),
+            ExKind::Deref(_) => ExKind::Deref(next()),
+            ExKind::ArrayConvert(_, t) => ExKind::ArrayConvert(next(), *t),
+            ExKind::Slice(..) => ExKind::Slice(next(), next(), next()),
+            ExKind::Index(_, idx) => {
+                let p = next();
+                ExKind::Index(p, idx.iter().map(|_| *next()).collect())
+            }
+            _ => unreachable!("only the kinds above are copied"),
+        };
+        Some(Ex {
+            kind,
+            ty: e.ty,
+            span: e.span,
+        })
     }
 
     fn call(&mut self, f: FuncId, args: &'p [Arg], dst: Option<Var>, span: Span) {
         if (self.walker_calls)(f) {
-            self.ops.push(Op::CallWalker(f, args, dst, span));
+            // `in` arguments with calls in them are computed here, so that
+            // those calls run compiled.
+            if args.iter().any(|a| effects(&a.value))
+                && args
+                    .iter()
+                    .all(|a| a.mode == Mode::In || !effects(&a.value))
+            {
+                let owned: Vec<Arg> = args
+                    .iter()
+                    .map(|a| {
+                        if a.mode != Mode::In {
+                            return a.clone();
+                        }
+                        let t = self.temp();
+                        self.expr_into(&a.value, t);
+                        Arg {
+                            mode: a.mode,
+                            value: Ex {
+                                kind: ExKind::Var(t),
+                                ty: a.value.ty,
+                                span: a.value.span,
+                            },
+                            back_check: a.back_check,
+                        }
+                    })
+                    .collect();
+                self.ops
+                    .push(Op::CallWalkerOwned(f, owned.into(), dst, span));
+            } else {
+                self.ops.push(Op::CallWalker(f, args, dst, span));
+            }
             return;
         }
         let mut ops = Vec::with_capacity(args.len());
@@ -621,10 +763,12 @@ impl<'a> Run<'a> {
         Ok(())
     }
 
+    #[inline(always)]
     fn sl(&self, v: Var) -> usize {
         self.m.display[v.level as usize] + v.slot as usize
     }
 
+    #[inline(always)]
     fn int_at(&self, v: Var) -> i64 {
         match &self.m.stack[self.sl(v)] {
             Value::Int(i) => *i,
@@ -632,6 +776,7 @@ impl<'a> Run<'a> {
         }
     }
 
+    #[inline(always)]
     fn put(&mut self, v: Var, x: Value) {
         let i = self.sl(v);
         self.m.stack[i] = x;
@@ -668,8 +813,22 @@ impl<'a> Run<'a> {
                 }
                 Op::IntBin(o, d, a, b, span) => {
                     let (x, y) = (self.int_at(*a), self.int_at(*b));
-                    self.int_op(*o, x, y, *span)
-                        .map(|v| self.put(*d, Value::Int(v)))
+                    // Addition and subtraction inline; the rest (and every
+                    // overflow) through the walker's own checks.
+                    let quick = match o {
+                        IntOp::Add => Some(x + y),
+                        IntOp::Sub => Some(x - y),
+                        _ => None,
+                    };
+                    match quick {
+                        Some(v) if (i32::MIN as i64..=i32::MAX as i64).contains(&v) => {
+                            self.put(*d, Value::Int(v));
+                            Ok(())
+                        }
+                        _ => self
+                            .int_op(*o, x, y, *span)
+                            .map(|v| self.put(*d, Value::Int(v))),
+                    }
                 }
                 Op::IntNeg(d, a, span) => {
                     let x = self.int_at(*a);
@@ -809,6 +968,7 @@ impl<'a> Run<'a> {
                     }
                 }
                 Op::Eval(d, e) => self.eval(e).map(|v| self.put(*d, v)),
+                Op::EvalOwned(d, e) => self.eval(e).map(|v| self.put(*d, v)),
                 Op::Assign(t, s) => {
                     let i = self.sl(*s);
                     let v = std::mem::take(&mut self.m.stack[i]);
@@ -877,11 +1037,12 @@ impl<'a> Run<'a> {
                         self.put(*d, v.unwrap_or_default());
                     }
                 }),
-                Op::Call(f, args, ops, d, span) => {
-                    let mut vals = Vec::with_capacity(ops.len());
-                    for v in ops.iter() {
-                        vals.push(self.m.stack[self.sl(*v)].clone());
+                Op::CallWalkerOwned(f, args, d, span) => self.call(*f, args, *span).map(|v| {
+                    if let Some(d) = d {
+                        self.put(*d, v.unwrap_or_default());
                     }
+                }),
+                Op::Call(f, args, ops, d, span) => {
                     if self.m.depth >= MAX_DEPTH {
                         Err(self.raise(
                             check::STORAGE_ERROR,
@@ -894,8 +1055,13 @@ impl<'a> Run<'a> {
                         let level = sub.level as usize;
                         let nslots = sub.nslots as usize;
                         let base = self.m.stack.len();
-                        let n = vals.len();
-                        self.m.stack.extend(vals);
+                        let n = ops.len();
+                        // The arguments go straight into the new frame; the
+                        // display is still the caller's while they are read.
+                        for v in ops.iter() {
+                            let x = self.m.stack[self.sl(*v)].clone();
+                            self.m.stack.push(x);
+                        }
                         let own = nslots.max(n).max(sub.params.len());
                         self.m
                             .stack
