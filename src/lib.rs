@@ -15,6 +15,7 @@ pub mod driver;
 pub mod golden;
 pub mod interp;
 pub mod kinematics;
+pub mod lsp;
 pub mod plot;
 pub mod repl;
 pub mod services;

@@ -163,6 +163,8 @@ enum Command {
     },
     /// List the serial ports of this machine.
     Ports,
+    /// A language server (LSP 3.17) on standard input and output, for editors (see docs/editors.md).
+    Lsp,
     /// Golden tests: run each X.air and compare its output with X.out beside it.
     Test {
         /// Scripts or directories (default: the current directory).
@@ -424,6 +426,13 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 }
             }
         }
+        Some(Command::Lsp) => match adair::lsp::serve_stdio() {
+            Ok(()) => 0,
+            Err(e) => {
+                eprintln!("adair lsp: {e}");
+                1
+            }
+        },
         Some(Command::Ports) => match serialport::available_ports() {
             Ok(ports) if ports.is_empty() => {
                 println!("no serial ports found");

@@ -12,6 +12,12 @@ impl Checker {
     }
 
     pub(super) fn decl(&mut self, d: &ast::Decl, out: &mut Vec<Stmt>) {
+        let outer = self.cur_decl.replace(d.span);
+        self.decl_inner(d, out);
+        self.cur_decl = outer;
+    }
+
+    fn decl_inner(&mut self, d: &ast::Decl, out: &mut Vec<Stmt>) {
         match &d.kind {
             DeclKind::Object {
                 names,
@@ -556,7 +562,13 @@ impl Checker {
                         });
                     }
                 }
-                self.types.add(&name.name, TypeKind::Record(fields))
+                let names: Vec<&ast::Ident> = components.iter().flat_map(|c| &c.names).collect();
+                let tys: Vec<TypeId> = fields.iter().map(|f| f.ty).collect();
+                let t = self.types.add(&name.name, TypeKind::Record(fields));
+                for (i, (n, ft)) in names.into_iter().zip(tys).enumerate() {
+                    self.index_field(t, i as u32, n, ft);
+                }
+                t
             }
             TypeDef::Access(ind) => {
                 let t = self.subtype_ind(ind);
@@ -666,6 +678,15 @@ impl Checker {
             span: spec.span,
         });
         self.imports.push(None);
+        let tys: Vec<TypeId> = self.funcs[id as usize]
+            .params
+            .iter()
+            .map(|p| p.ty)
+            .collect();
+        let written = spec.params.iter().flat_map(|p| &p.names);
+        for (i, (pid, ty)) in written.zip(tys).enumerate() {
+            self.index_param(id, i as u32, pid, ty);
+        }
         match &spec.name {
             ast::Designator::Ident(i) => self.declare_checked(i, Entity::Func(id)),
             ast::Designator::Op(_, _) => self.declare(&key, Entity::Func(id)),
@@ -679,7 +700,9 @@ impl Checker {
         };
         if let Some((end, sp)) = &b.end_name {
             let name = b.spec.name.display();
-            if !end.eq_ignore_ascii_case(&name) {
+            if end.eq_ignore_ascii_case(&name) {
+                self.index_ref(*sp, &end.to_lowercase(), &Entity::Func(f));
+            } else {
                 self.err(
                     Diagnostic::syntax(*sp, format!("`end {end};` does not match `{name}`"))
                         .with_hint(format!("write `end {name};`")),
@@ -699,18 +722,19 @@ impl Checker {
         self.push_scope();
         self.name_scope(&b.spec.name.key());
         self.unit_path.push(b.spec.name.display());
-        for p in &params {
+        let mut written = b.spec.params.iter().flat_map(|p| p.names.iter());
+        for (i, p) in params.iter().enumerate() {
             let var = self.new_slot();
-            let id = ast::Ident::new(&p.name, b.spec.span);
-            self.declare(
-                &id.name,
-                Entity::Var {
-                    var,
-                    ty: p.ty,
-                    constant: p.mode == ast::Mode::In,
-                    value: None,
-                },
-            );
+            let e = Entity::Var {
+                var,
+                ty: p.ty,
+                constant: p.mode == ast::Mode::In,
+                value: None,
+            };
+            if let Some(id) = written.next() {
+                self.index_body_param(f, i as u32, id, &e);
+            }
+            self.declare(&p.name, e);
         }
         let mut elab = Vec::new();
         self.decls(&b.decls, &mut elab);
@@ -758,7 +782,11 @@ impl Checker {
             format!("{}.{}", self.unit_path.join("."), name)
         };
         let idx = if self.level == 0 && self.unit_path.is_empty() {
-            self.package(&full)
+            let idx = self.package(&full);
+            if let ast::ExprKind::Select(_, id) | ast::ExprKind::Name(id) = &p.name.kind {
+                self.index_def(&id.name, id.span, &Entity::Package(idx), None);
+            }
+            idx
         } else {
             let idx = self.packages.len();
             self.packages.push(Package {

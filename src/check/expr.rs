@@ -746,6 +746,11 @@ impl Checker {
                 return None;
             }
         };
+        for a in args {
+            if let Some(n) = &a.name {
+                self.index_named_arg(f, n);
+            }
+        }
         let params = self.funcs[f as usize].params.clone();
         let mut out = Vec::new();
         for (slot, p) in slots.into_iter().zip(&params) {
@@ -910,6 +915,14 @@ impl Checker {
     }
 
     fn expr_inner(&mut self, e: &ast::Expr, want: Option<TypeId>) -> Ex {
+        let r = self.expr_kind(e, want);
+        if r.ty != ERROR {
+            self.index.types.push((e.span, r.ty));
+        }
+        r
+    }
+
+    fn expr_kind(&mut self, e: &ast::Expr, want: Option<TypeId>) -> Ex {
         let sp = e.span;
         match &e.kind {
             ExprKind::Int(v) => match i64::try_from(*v) {
@@ -954,14 +967,20 @@ impl Checker {
             ExprKind::Null => self.mk(ExKind::Null, NULL_T, sp),
             ExprKind::Error => self.err_ex(sp),
             ExprKind::Paren(x) => self.expr(x, want),
-            ExprKind::Name(_) => {
+            ExprKind::Name(id) => {
                 let es = self.denote(e, true);
-                self.entity_value(&es, want, sp, &crate::syntax::parser::expr_text(e))
+                self.entity_value(&es, want, sp, &crate::syntax::parser::expr_text(e), id)
             }
             ExprKind::Select(p, id) => {
                 if self.expanded_prefix(p) {
                     let es = self.denote(e, true);
-                    return self.entity_value(&es, want, sp, &crate::syntax::parser::expr_text(e));
+                    return self.entity_value(
+                        &es,
+                        want,
+                        sp,
+                        &crate::syntax::parser::expr_text(e),
+                        id,
+                    );
                 }
                 let pe = self.expr(p, None);
                 self.component(pe, id, sp)
@@ -1221,7 +1240,16 @@ impl Checker {
         }
     }
 
-    fn entity_value(&mut self, es: &[Entity], want: Option<TypeId>, sp: Span, text: &str) -> Ex {
+    /// The value a name denotes; `id` is the identifier it ends with (the
+    /// resolved overload is recorded there).
+    fn entity_value(
+        &mut self,
+        es: &[Entity],
+        want: Option<TypeId>,
+        sp: Span,
+        text: &str,
+        id: &ast::Ident,
+    ) -> Ex {
         let Some(first) = es.first() else {
             return self.err_ex(sp);
         };
@@ -1257,18 +1285,21 @@ impl Checker {
                     if let Entity::EnumLit(t, pos) = e
                         && want.is_none_or(|w| self.types.compatible(*t, w))
                     {
+                        self.index_ref(id.span, &id.key, e);
                         return self.mk(ExKind::Int(*pos), *t, sp);
                     }
                 }
                 let fs: Vec<FuncId> = funcs_of(es);
                 if fs.is_empty() {
-                    if let Some(Entity::EnumLit(t, pos)) = es.first() {
+                    if let Some(e @ Entity::EnumLit(t, pos)) = es.first() {
+                        self.index_ref(id.span, &id.key, e);
                         return self.mk(ExKind::Int(*pos), *t, sp);
                     }
                     return self.err_ex(sp);
                 }
                 match self.call(&fs, &[], want, false, sp, text) {
                     Some((f, args)) => {
+                        self.index_ref(id.span, &id.key, &Entity::Func(f));
                         let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
                         self.mk(ExKind::Call(f, args), r, sp)
                     }
@@ -1315,6 +1346,7 @@ impl Checker {
             Some(fields) => match fields.iter().position(|f| f.key == id.key) {
                 Some(i) => {
                     let t = fields[i].ty;
+                    self.index_field_ref(id.span, pe.ty, i as u32);
                     self.mk(ExKind::Field(bx(pe), i as u32), t, sp)
                 }
                 None => {
@@ -1388,6 +1420,9 @@ impl Checker {
                                 .is_some_and(|a| a.0.len() == args.len())
                     })
                 {
+                    if let Some(id) = super::stmt::last_ident(p) {
+                        self.index_ref(id.span, &id.key, &Entity::Func(f));
+                    }
                     let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
                     let defaults: Vec<Arg> = self.funcs[f as usize]
                         .params
@@ -1414,6 +1449,9 @@ impl Checker {
                 }
                 match self.call(&fs, args, want, false, sp, &name) {
                     Some((f, a)) => {
+                        if let Some(id) = super::stmt::last_ident(p) {
+                            self.index_ref(id.span, &id.key, &Entity::Func(f));
+                        }
                         let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
                         self.mk(ExKind::Call(f, a), r, sp)
                     }
@@ -2309,7 +2347,10 @@ impl Checker {
                             kind: ExprKind::Name(n),
                             ..
                         }) => match fields.iter().position(|f| f.key == n.key) {
-                            Some(i) => vec![i],
+                            Some(i) => {
+                                self.index_field_ref(n.span, t, i as u32);
+                                vec![i]
+                            }
                             None => {
                                 self.err(Diagnostic::name(
                                     n.span,

@@ -8,6 +8,7 @@
 mod decl;
 pub mod exact;
 mod expr;
+pub mod index;
 pub mod ir;
 mod stmt;
 pub mod types;
@@ -136,6 +137,10 @@ pub struct Checker {
     /// for one outermost `expr` or `interps` call: no declaration happens
     /// inside an expression, so visibility is fixed while it lives.
     memo: Option<HashMap<MemoKey, Vec<TypeId>>>,
+    /// Declarations and resolved uses, for tools (see [`index`]).
+    pub index: index::Index,
+    /// The declaration being checked, for [`index::Def::decl`].
+    cur_decl: Option<Span>,
 }
 
 /// A node of the expression being checked: its source range and its kind.
@@ -184,6 +189,8 @@ impl Checker {
             missing_units: Vec::new(),
             spelling: HashMap::new(),
             memo: None,
+            index: index::Index::default(),
+            cur_decl: None,
         };
         c.standard();
         c
@@ -336,6 +343,7 @@ impl Checker {
                 ));
             }
         }
+        self.index_def(&id.name, id.span, &e, None);
         self.declare(&id.name, e);
     }
 
@@ -416,6 +424,24 @@ impl Checker {
             .fields(ty)
             .map(|f| f.iter().map(|x| x.name.clone()).collect())
             .unwrap_or_default()
+    }
+
+    /// The names a package declares visibly (lower case), for completion
+    /// after `Pkg.`; `None` when `full` names no package.
+    pub fn package_names(&self, full: &str) -> Option<Vec<String>> {
+        let p = self
+            .packages
+            .iter()
+            .find(|p| p.name.eq_ignore_ascii_case(full))?;
+        let mut v: Vec<String> = p.names.keys().cloned().collect();
+        v.sort();
+        Some(v)
+    }
+
+    /// What a name visible at the top level denotes (innermost first), for
+    /// tools that describe a name without a recorded use.
+    pub fn entities_of(&self, key: &str) -> Vec<Entity> {
+        self.lookup(key)
     }
 
     /// Names in scope, for REPL completion.
@@ -587,6 +613,9 @@ impl Checker {
         match &n.kind {
             ast::ExprKind::Name(id) => {
                 let es = self.lookup(&id.key);
+                if report {
+                    self.index_use(id, &es);
+                }
                 if es.is_empty() && report {
                     let mut d = Diagnostic::name(id.span, format!("`{}` is not declared", id.name))
                         .with_label("undefined name");
@@ -611,6 +640,9 @@ impl Checker {
                         .find(|s| s.name.as_deref() == Some(pn.key.as_str()))
                 {
                     let es = scope.names.get(&id.key).cloned().unwrap_or_default();
+                    if report {
+                        self.index_use(id, &es);
+                    }
                     if es.is_empty() && report {
                         self.err(Diagnostic::name(
                             id.span,
@@ -641,6 +673,9 @@ impl Checker {
                                 .cloned()
                                 .unwrap_or_default();
                         }
+                        if report {
+                            self.index_use(id, &es);
+                        }
                         if es.is_empty() && report {
                             let pname = self.packages[pk].name.clone();
                             let mut d = Diagnostic::name(
@@ -667,6 +702,17 @@ impl Checker {
                 }
             }
             _ => Vec::new(),
+        }
+    }
+
+    /// Records the use of a name whose meaning is settled: one entity, or a
+    /// non-overloadable one (overloads are recorded when resolved).
+    fn index_use(&mut self, id: &ast::Ident, es: &[Entity]) {
+        if let Some(e) = es.first()
+            && (es.len() == 1 || !matches!(e, Entity::Func(_) | Entity::EnumLit(..)))
+        {
+            let e = e.clone();
+            self.index_ref(id.span, &id.key, &e);
         }
     }
 

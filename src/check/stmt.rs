@@ -46,15 +46,14 @@ impl Checker {
             self.push_scope();
             let occurrence = h.occurrence.as_ref().map(|id| {
                 let var = self.new_slot();
-                self.declare(
-                    &id.name,
-                    Entity::Var {
-                        var,
-                        ty: OCCURRENCE,
-                        constant: true,
-                        value: None,
-                    },
-                );
+                let e = Entity::Var {
+                    var,
+                    ty: OCCURRENCE,
+                    constant: true,
+                    value: None,
+                };
+                self.index_def(&id.name, id.span, &e, None);
+                self.declare(&id.name, e);
                 var
             });
             self.in_handler += 1;
@@ -237,15 +236,14 @@ impl Checker {
                         };
                         self.push_scope();
                         let v = self.new_slot();
-                        self.declare(
-                            &var.name,
-                            Entity::Var {
-                                var: v,
-                                ty: t,
-                                constant: true,
-                                value: None,
-                            },
-                        );
+                        let e = Entity::Var {
+                            var: v,
+                            ty: t,
+                            constant: true,
+                            value: None,
+                        };
+                        self.index_def(&var.name, var.span, &e, Some(index::DefKind::LoopVariable));
+                        self.declare(&var.name, e);
                         let body = self.stmts(body);
                         self.pop_scope();
                         StmtKind::For {
@@ -446,6 +444,9 @@ impl Checker {
         }
         let name = crate::syntax::parser::expr_text(prefix);
         let (f, a) = self.call(&fs, args, None, true, e.span, &name)?;
+        if let Some(id) = last_ident(prefix) {
+            self.index_ref(id.span, &id.key, &Entity::Func(f));
+        }
         Some(StmtKind::Call(f, a))
     }
 }
@@ -519,7 +520,9 @@ impl Checker {
             elem,
             var.span,
         );
-        self.declare(&var.name, Entity::Alias(Box::new(element)));
+        let e = Entity::Alias(Box::new(element));
+        self.index_def(&var.name, var.span, &e, None);
+        self.declare(&var.name, e);
         let mut stmts = self.stmts(body);
         self.pop_scope();
         // Innermost dimension first: the last index varies fastest.
@@ -585,5 +588,13 @@ impl Checker {
             Some(Entity::Var { var, .. }) => Some(*var),
             _ => None,
         }
+    }
+}
+
+/// The identifier a name ends with (`P` of `P` and of `Pkg.P`).
+pub(super) fn last_ident(e: &ast::Expr) -> Option<&ast::Ident> {
+    match &e.kind {
+        ast::ExprKind::Name(id) | ast::ExprKind::Select(_, id) => Some(id),
+        _ => None,
     }
 }

@@ -677,8 +677,9 @@ fn stdlib_type_doc(name: &str) -> Option<String> {
     Some(s)
 }
 
-/// `:help` on an AdaIR exception (handbook appendix B): when adair raises it.
-fn exception_doc(name: &str) -> Option<String> {
+/// `:help` on an AdaIR exception (handbook appendix B): when adair raises it
+/// (also the language server's hover text on one).
+pub fn exception_doc(name: &str) -> Option<String> {
     const EXCEPTIONS: &[(&str, &str)] = &[
         (
             "CommandNotImplemented",

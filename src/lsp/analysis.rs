@@ -1,0 +1,188 @@
+//! One checked text: the checker's state after checking it (with its side
+//! tables), its syntax tree as far as it parses, and its diagnostics. Built
+//! fresh for each version of a document from a checker that has checked the
+//! embedded stdlib once ([`Base`]).
+
+use crate::check::Checker;
+use crate::diag::{Diagnostic, FileId, Sources, Span};
+use crate::syntax::ast;
+use std::path::{Path, PathBuf};
+
+/// The checker after the embedded stdlib, cloned for every analysis, and
+/// where the stdlib texts are readable by an editor.
+#[derive(Clone)]
+pub struct Base {
+    pub checker: Checker,
+    pub sources: Sources,
+    /// The file each stdlib source is written to, by source id, so that
+    /// "go to definition" can open the AdaIR package (see docs/editors.md).
+    pub stdlib_files: Vec<(FileId, PathBuf)>,
+}
+
+impl Base {
+    /// Checks the stdlib as every session does. `stdlib_dir`: where its
+    /// texts (as checked: with the service declarations generated from the
+    /// table) are written for the editor; `None` writes nothing.
+    pub fn new(stdlib_dir: Option<&Path>) -> Base {
+        let session = crate::session::Session::new(Box::new(std::io::sink()));
+        let mut stdlib_files = Vec::new();
+        for (id, (name, text)) in crate::session::STDLIB.iter().enumerate() {
+            let Some(dir) = stdlib_dir else { break };
+            let file = Path::new(name).file_name().unwrap_or_default();
+            let path = dir.join(file);
+            let text = crate::session::stdlib_text(text);
+            // Written only when it changed: an editor may have it open.
+            let same = std::fs::read_to_string(&path).is_ok_and(|t| t == text);
+            let ok = same
+                || (std::fs::create_dir_all(dir).is_ok()
+                    && std::fs::write(&path, text.as_bytes()).is_ok());
+            if ok {
+                stdlib_files.push((id as FileId, path));
+            }
+        }
+        Base {
+            checker: session.checker,
+            sources: session.sources,
+            stdlib_files,
+        }
+    }
+
+    /// Where the stdlib files go by default: a directory per adair version
+    /// under the user's cache directory (`$XDG_CACHE_HOME/adair`,
+    /// `~/.cache/adair`), or the temporary directory.
+    pub fn default_stdlib_dir() -> PathBuf {
+        let base = std::env::var_os("XDG_CACHE_HOME")
+            .map(PathBuf::from)
+            .filter(|p| p.is_absolute())
+            .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".cache")))
+            .unwrap_or_else(std::env::temp_dir);
+        base.join("adair")
+            .join(env!("CARGO_PKG_VERSION"))
+            .join("stdlib")
+    }
+}
+
+/// A document as checked.
+pub struct Analysis {
+    pub text: String,
+    pub file: FileId,
+    pub sources: Sources,
+    pub checker: Checker,
+    pub unit: Option<ast::CompilationUnit>,
+    /// As `adair check` would show them: with errors, only the errors.
+    pub diags: Vec<Diagnostic>,
+    pub lines: LineIndex,
+    /// Whether the checker panicked (a bug; reported as a diagnostic).
+    pub crashed: Option<String>,
+}
+
+impl Analysis {
+    /// Lexes, parses and checks `text` (named `name` in messages) as
+    /// `Session::check_source` does, on a copy of the base checker.
+    pub fn new(base: &Base, name: &str, text: &str) -> Analysis {
+        let mut sources = base.sources.clone();
+        let mut checker = base.checker.clone();
+        let file = sources.add(name, text);
+        checker.add_text(file, text);
+        let checked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            let (unit, mut diags) = crate::syntax::parse_source(text, file);
+            if let Some(unit) = &unit {
+                let script = unit
+                    .items
+                    .iter()
+                    .any(|i| matches!(i, ast::TopItem::Stmt(_)));
+                if script {
+                    for p in crate::session::SCRIPT_USES {
+                        checker.use_everywhere(p);
+                    }
+                }
+                checker.check_unit(unit);
+                diags.extend(checker.take_diags());
+            }
+            (unit, diags)
+        }));
+        let (unit, mut diags, crashed) = match checked {
+            Ok((u, d)) => (u, d, None),
+            Err(p) => {
+                let msg = p
+                    .downcast_ref::<String>()
+                    .cloned()
+                    .or_else(|| p.downcast_ref::<&str>().map(|s| s.to_string()))
+                    .unwrap_or_else(|| "panic".into());
+                (None, Vec::new(), Some(msg))
+            }
+        };
+        diags.sort_by_key(|d| (d.span.context, d.span.start));
+        // As the command line: a warning beside errors is often their echo.
+        if diags.iter().any(|d| !d.is_warning()) {
+            diags.retain(|d| !d.is_warning());
+        }
+        Analysis {
+            text: text.to_string(),
+            file,
+            sources,
+            checker,
+            unit,
+            diags,
+            lines: LineIndex::new(text),
+            crashed,
+        }
+    }
+
+    /// The text of a span of any source (the document or the stdlib).
+    pub fn span_text(&self, s: Span) -> &str {
+        self.sources
+            .text(s.context)
+            .get(s.start..s.end)
+            .unwrap_or("")
+    }
+}
+
+/// Byte offsets <-> LSP positions (line, UTF-16 code units).
+#[derive(Clone, Debug)]
+pub struct LineIndex {
+    starts: Vec<usize>,
+}
+
+impl LineIndex {
+    pub fn new(text: &str) -> LineIndex {
+        let mut starts = vec![0];
+        starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        LineIndex { starts }
+    }
+
+    /// The position of byte `offset` of `text` (clamped to the text).
+    pub fn position(&self, text: &str, offset: usize) -> lsp_types::Position {
+        let mut offset = offset.min(text.len());
+        while !text.is_char_boundary(offset) {
+            offset -= 1;
+        }
+        let line = self.starts.partition_point(|&s| s <= offset) - 1;
+        let start = self.starts[line];
+        let character: usize = text[start..offset].chars().map(char::len_utf16).sum();
+        lsp_types::Position::new(line as u32, character as u32)
+    }
+
+    /// The byte offset of a position (clamped to its line and the text).
+    pub fn offset(&self, text: &str, p: lsp_types::Position) -> usize {
+        let Some(&start) = self.starts.get(p.line as usize) else {
+            return text.len();
+        };
+        let end = self
+            .starts
+            .get(p.line as usize + 1)
+            .map_or(text.len(), |e| e - 1);
+        let mut units = 0usize;
+        for (i, c) in text[start..end].char_indices() {
+            if units >= p.character as usize {
+                return start + i;
+            }
+            units += c.len_utf16();
+        }
+        end
+    }
+
+    pub fn range(&self, text: &str, s: Span) -> lsp_types::Range {
+        lsp_types::Range::new(self.position(text, s.start), self.position(text, s.end))
+    }
+}
