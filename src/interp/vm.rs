@@ -792,6 +792,26 @@ impl<'a> Run<'a> {
         }
     }
 
+    /// `dst := x op y` for integers: addition and subtraction inline, the
+    /// rest (and every overflow) through the walker's own checks.
+    #[inline(always)]
+    fn int_arith(&mut self, o: IntOp, d: Var, x: i64, y: i64, span: Span) -> R<()> {
+        let quick = match o {
+            IntOp::Add => Some(x + y),
+            IntOp::Sub => Some(x - y),
+            _ => None,
+        };
+        match quick {
+            Some(v) if (i32::MIN as i64..=i32::MAX as i64).contains(&v) => {
+                self.put(d, Value::Int(v));
+                Ok(())
+            }
+            _ => self
+                .int_op(o, x, y, span)
+                .map(|v| self.put(d, Value::Int(v))),
+        }
+    }
+
     #[inline(always)]
     fn put(&mut self, v: Var, x: Value) {
         let i = self.sl(v);
@@ -829,55 +849,19 @@ impl<'a> Run<'a> {
                 }
                 Op::IntBin(o, d, a, b, span) => {
                     let (x, y) = (self.int_at(*a), self.int_at(*b));
-                    // Addition and subtraction inline; the rest (and every
-                    // overflow) through the walker's own checks.
-                    let quick = match o {
-                        IntOp::Add => Some(x + y),
-                        IntOp::Sub => Some(x - y),
-                        _ => None,
-                    };
-                    match quick {
-                        Some(v) if (i32::MIN as i64..=i32::MAX as i64).contains(&v) => {
-                            self.put(*d, Value::Int(v));
-                            Ok(())
-                        }
-                        _ => self
-                            .int_op(*o, x, y, *span)
-                            .map(|v| self.put(*d, Value::Int(v))),
-                    }
+                    self.int_arith(*o, *d, x, y, *span)
                 }
                 Op::IntBinK(o, d, a, y, span) => {
-                    let (x, y) = (self.int_at(*a), *y);
-                    let quick = match o {
-                        IntOp::Add => Some(x + y),
-                        IntOp::Sub => Some(x - y),
-                        _ => None,
-                    };
-                    match quick {
-                        Some(v) if (i32::MIN as i64..=i32::MAX as i64).contains(&v) => {
-                            self.put(*d, Value::Int(v));
-                            Ok(())
-                        }
-                        _ => self
-                            .int_op(*o, x, y, *span)
-                            .map(|v| self.put(*d, Value::Int(v))),
-                    }
+                    let x = self.int_at(*a);
+                    self.int_arith(*o, *d, x, *y, *span)
                 }
                 Op::CmpK(o, d, a, k) => {
-                    use std::cmp::Ordering::*;
                     // As `Value::compare` orders them (an Int against an Int).
                     let ord = match &self.m.stack[self.sl(*a)] {
                         Value::Int(x) => x.cmp(k),
                         other => other.compare(&Value::Int(*k)),
                     };
-                    let r = match o {
-                        CmpOp::Lt => ord == Less,
-                        CmpOp::Le => ord != Greater,
-                        CmpOp::Gt => ord == Greater,
-                        CmpOp::Ge => ord != Less,
-                        CmpOp::Eq => ord == Equal,
-                        CmpOp::Ne => ord != Equal,
-                    };
+                    let r = holds(*o, ord);
                     self.put(*d, Value::Int(r as i64));
                     Ok(())
                 }
@@ -918,7 +902,6 @@ impl<'a> Run<'a> {
                     Ok(())
                 }
                 Op::Cmp(o, d, a, b) => {
-                    use std::cmp::Ordering::*;
                     let ord = {
                         let x = &self.m.stack[self.sl(*a)];
                         let y = &self.m.stack[self.sl(*b)];
@@ -927,14 +910,7 @@ impl<'a> Run<'a> {
                             _ => x.compare(y),
                         }
                     };
-                    let r = match o {
-                        CmpOp::Lt => ord == Less,
-                        CmpOp::Le => ord != Greater,
-                        CmpOp::Gt => ord == Greater,
-                        CmpOp::Ge => ord != Less,
-                        CmpOp::Eq => ord == Equal,
-                        CmpOp::Ne => ord != Equal,
-                    };
+                    let r = holds(*o, ord);
                     self.put(*d, Value::Int(r as i64));
                     Ok(())
                 }
@@ -1294,6 +1270,19 @@ enum Compiled<'a> {
     Body(&'a Body),
     Stmts(&'a [Stmt]),
     Main(FuncId),
+}
+
+/// Whether a comparison holds for operands ordered `ord`.
+fn holds(o: CmpOp, ord: std::cmp::Ordering) -> bool {
+    use std::cmp::Ordering::*;
+    match o {
+        CmpOp::Lt => ord == Less,
+        CmpOp::Le => ord != Greater,
+        CmpOp::Gt => ord == Greater,
+        CmpOp::Ge => ord != Less,
+        CmpOp::Eq => ord == Equal,
+        CmpOp::Ne => ord != Equal,
+    }
 }
 
 /// The label by which the end of a body is signalled inside the engine.
