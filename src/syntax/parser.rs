@@ -1856,26 +1856,25 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
                     end: start,
                     context: span.context,
                 });
-            if word == "body" {
-                let mut d = Diagnostic::syntax(
-                    span,
-                    format!("the text ends inside the body of the subprogram at {OPENER_AT}"),
-                )
-                .with_label("end of input")
-                .with_hint("end the body with `end NAME;` after its last statement");
-                d.notes
-                    .push((opener, "this subprogram's body is not closed".to_string()));
-                return d;
-            }
-            if word == "block" {
-                let mut d = Diagnostic::syntax(
-                    span,
-                    format!("`end;` expected to close the block at {OPENER_AT}"),
-                )
-                .with_label("end of input")
-                .with_hint("end the block with `end;` after its last statement");
-                d.notes
-                    .push((opener, "this block is not closed".to_string()));
+            // A block or a body that the text ends inside (taken as ended).
+            let ended = match word.as_str() {
+                "body" => Some((
+                    "the text ends inside the body of the subprogram",
+                    "end the body with `end NAME;` after its last statement",
+                    "this subprogram's body is not closed",
+                )),
+                "block" => Some((
+                    "`end;` expected to close the block",
+                    "end the block with `end;` after its last statement",
+                    "this block is not closed",
+                )),
+                _ => None,
+            };
+            if let Some((message, hint, note)) = ended {
+                let mut d = Diagnostic::syntax(span, format!("{message} at {OPENER_AT}"))
+                    .with_label("end of input")
+                    .with_hint(hint);
+                d.notes.push((opener, note.to_string()));
                 return d;
             }
             // A bare `end;` was taken as the construct's end; `end Name`
