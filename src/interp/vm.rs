@@ -332,27 +332,7 @@ impl<'p> Compiler<'p, '_> {
             ExKind::Case(subj, arms, others) => {
                 let t = self.temp();
                 let x = self.expr(subj);
-                let at = self.ops.len();
-                self.ops.push(Op::Case(x, Box::new([]), None, span));
-                let mut table = Vec::new();
-                let mut ends = Vec::new();
-                for (ranges, v) in arms {
-                    let target = self.here();
-                    table.extend(ranges.iter().map(|(l, h)| (*l, *h, target)));
-                    self.expr_into(v, t);
-                    ends.push(self.ops.len());
-                    self.ops.push(Op::Jump(0));
-                }
-                let other = others.as_ref().map(|v| {
-                    let target = self.here();
-                    self.expr_into(v, t);
-                    target
-                });
-                let end = self.here();
-                for j in ends {
-                    self.patch(j, end);
-                }
-                self.ops[at] = Op::Case(x, table.into(), other, span);
+                self.case(x, span, arms, others.as_deref(), |c, v| c.expr_into(v, t));
                 self.ops.push(Op::Move(dst, t));
             }
             _ => match self.strict_copy(e) {
@@ -531,27 +511,7 @@ impl<'p> Compiler<'p, '_> {
             }
             StmtKind::Case(subj, arms, others) => {
                 let x = self.expr(subj);
-                let at = self.ops.len();
-                self.ops.push(Op::Case(x, Box::new([]), None, s.span));
-                let mut table = Vec::new();
-                let mut ends = Vec::new();
-                for (ranges, body) in arms {
-                    let target = self.here();
-                    table.extend(ranges.iter().map(|(l, h)| (*l, *h, target)));
-                    self.stmts(body);
-                    ends.push(self.ops.len());
-                    self.ops.push(Op::Jump(0));
-                }
-                let other = others.as_ref().map(|b| {
-                    let target = self.here();
-                    self.stmts(b);
-                    target
-                });
-                let end = self.here();
-                for j in ends {
-                    self.patch(j, end);
-                }
-                self.ops[at] = Op::Case(x, table.into(), other, s.span);
+                self.case(x, s.span, arms, others.as_ref(), |c, b| c.stmts(b));
             }
             StmtKind::Loop { id, body } => {
                 let top = self.here();
@@ -623,6 +583,39 @@ impl<'p> Compiler<'p, '_> {
                 self.ops.push(Op::Exec(s))
             }
         }
+    }
+
+    /// A `case` (statement or expression) on `x`: a jump table to each
+    /// alternative, compiled by `each`, and from each to the end.
+    fn case<T>(
+        &mut self,
+        x: Var,
+        span: Span,
+        arms: &'p [(Vec<(i64, i64)>, T)],
+        others: Option<&'p T>,
+        mut each: impl FnMut(&mut Self, &'p T),
+    ) {
+        let at = self.ops.len();
+        self.ops.push(Op::Case(x, Box::new([]), None, span));
+        let mut table = Vec::new();
+        let mut ends = Vec::new();
+        for (ranges, alt) in arms {
+            let target = self.here();
+            table.extend(ranges.iter().map(|(l, h)| (*l, *h, target)));
+            each(self, alt);
+            ends.push(self.ops.len());
+            self.ops.push(Op::Jump(0));
+        }
+        let other = others.map(|alt| {
+            let target = self.here();
+            each(self, alt);
+            target
+        });
+        let end = self.here();
+        for j in ends {
+            self.patch(j, end);
+        }
+        self.ops[at] = Op::Case(x, table.into(), other, span);
     }
 
     fn loop_body(&mut self, id: u32, body: &'p [Stmt]) {
