@@ -1,6 +1,7 @@
 //! Declarations: types, subtypes, objects, numbers, exceptions, subprograms
 //! and packages.
 
+use super::tasks::BodyKind;
 use super::*;
 use crate::syntax::ast::{DeclKind, TypeDef};
 
@@ -124,12 +125,15 @@ impl Checker {
                 }
                 self.err(Diagnostic::unsupported(d.span, what));
             }
-            DeclKind::TaskSpec(_) | DeclKind::TaskBody(_) | DeclKind::InterruptUse { .. } => {
-                self.err(
-                    Diagnostic::unsupported(d.span, "a task")
-                        .with_hint("tasks, rendezvous and interrupt entries are not implemented yet in this version of adair"),
-                );
+            DeclKind::TaskSpec(t) => self.task_spec(t, d.span, out),
+            DeclKind::TaskBody(b) => self.task_body(b, d.span),
+            DeclKind::ProtectedSpec(p) => self.protected_spec(p, out),
+            DeclKind::ProtectedBody(b) => self.protected_body(b),
+            DeclKind::EntryBody(b) => self.entry_body(b),
+            DeclKind::InterruptUse { entry, address } => {
+                self.address_clause(entry, address, d.span)
             }
+            DeclKind::Pragma { name, .. } => self.pragma(name, d.span),
         }
     }
 
@@ -147,7 +151,7 @@ impl Checker {
         }
     }
 
-    fn object(
+    pub(super) fn object(
         &mut self,
         names: &[ast::Ident],
         constant: bool,
@@ -178,6 +182,10 @@ impl Checker {
         } else {
             None
         };
+        let creates_task = self.types.has_task(t);
+        if creates_task && let Some(m) = self.masters.last_mut() {
+            *m = true;
+        }
         // An unconstrained array object takes the bounds of its initial value.
         for n in names {
             let var = self.new_slot();
@@ -208,6 +216,13 @@ impl Checker {
                     value: static_v.clone(),
                 },
             );
+        }
+        // A library-level (or script) task is activated where it is declared.
+        if creates_task && self.masters.is_empty() {
+            out.push(Stmt {
+                kind: StmtKind::Activate,
+                span,
+            });
         }
     }
 
@@ -584,7 +599,7 @@ impl Checker {
 
     // ---- subprograms ----
 
-    fn params(&mut self, ps: &[ast::Param]) -> Vec<Param> {
+    pub(super) fn params(&mut self, ps: &[ast::Param]) -> Vec<Param> {
         let mut out = Vec::new();
         for p in ps {
             let t = self.type_mark(&p.ty);
@@ -610,7 +625,12 @@ impl Checker {
         out
     }
 
-    fn same_profile(&self, a: &Subprogram, params: &[Param], ret: Option<TypeId>) -> bool {
+    pub(super) fn same_profile(
+        &self,
+        a: &Subprogram,
+        params: &[Param],
+        ret: Option<TypeId>,
+    ) -> bool {
         a.params.len() == params.len()
             && a.params
                 .iter()
@@ -709,52 +729,24 @@ impl Checker {
                 );
             }
         }
+        let written: Vec<&ast::Ident> = b.spec.params.iter().flat_map(|p| p.names.iter()).collect();
+        let saw_return = self.check_body(
+            f,
+            &b.spec.name.key(),
+            &b.spec.name.display(),
+            &written,
+            &b.decls,
+            &b.body,
+            BodyKind::Subprogram,
+        );
         let ret = self.funcs[f as usize].ret;
-        let params = self.funcs[f as usize].params.clone();
-        self.level += 1;
-        self.unread.push(HashMap::new());
-        self.ctx.push(FuncCtx {
-            func: Some(f),
-            ret,
-            saw_return: false,
-            next_slot: 0,
-        });
-        self.push_scope();
-        self.name_scope(&b.spec.name.key());
-        self.unit_path.push(b.spec.name.display());
-        let mut written = b.spec.params.iter().flat_map(|p| p.names.iter());
-        for (i, p) in params.iter().enumerate() {
-            let var = self.new_slot();
-            let e = Entity::Var {
-                var,
-                ty: p.ty,
-                constant: p.mode == ast::Mode::In,
-                value: None,
-            };
-            if let Some(id) = written.next() {
-                self.index_body_param(f, i as u32, id, &e);
-            }
-            self.declare(&p.name, e);
-        }
-        let mut elab = Vec::new();
-        self.decls(&b.decls, &mut elab);
-        let inner = self.block(&b.body);
-        elab.push(Stmt {
-            kind: StmtKind::Block(Box::new(inner)),
-            span: b.body.span,
-        });
-        self.unit_path.pop();
-        self.pop_scope();
-        let ctx = self.ctx.pop().expect("ctx");
-        self.report_unread();
-        self.level -= 1;
         // A statement the parser could not read may have been the return.
         let unreadable = b
             .body
             .stmts
             .iter()
             .any(|s| matches!(s.kind, ast::StmtKind::Error));
-        if ret.is_some() && !ctx.saw_return && !unreadable {
+        if ret.is_some() && !saw_return && !unreadable {
             self.err(
                 Diagnostic::ty(
                     b.spec.span,
@@ -766,12 +758,117 @@ impl Checker {
                 .with_hint("a function must return a value on every path: add `return Value;`"),
             );
         }
+    }
+
+    /// Checks the body of subprogram `f` (a subprogram, a task body, a
+    /// protected operation or entry): its parameters become its first
+    /// slots, then its declarations and statements. A body whose
+    /// declarations may create tasks is their master; a task body also
+    /// reports its activation. Returns whether a `return` was seen.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn check_body(
+        &mut self,
+        f: FuncId,
+        key: &str,
+        display: &str,
+        written: &[&ast::Ident],
+        decls: &[ast::Decl],
+        body: &ast::Block,
+        kind: BodyKind,
+    ) -> bool {
+        let ret = self.funcs[f as usize].ret;
+        let params = self.funcs[f as usize].params.clone();
+        self.level += 1;
+        self.unread.push(HashMap::new());
+        self.ctx.push(FuncCtx {
+            func: Some(f),
+            ret,
+            saw_return: false,
+            next_slot: 0,
+        });
+        self.push_scope();
+        self.name_scope(key);
+        self.unit_path.push(display.to_string());
+        let mut written = written.iter();
+        let mut last = None;
+        for (i, p) in params.iter().enumerate() {
+            let var = self.new_slot();
+            last = Some(var);
+            let e = Entity::Var {
+                var,
+                ty: p.ty,
+                constant: p.mode == ast::Mode::In,
+                value: None,
+            };
+            match written.next() {
+                Some(id) => {
+                    self.index_body_param(f, i as u32, id, &e);
+                    self.declare(&p.name, e);
+                }
+                // The hidden object parameter of a protected operation.
+                None => self.declare(&p.name, e),
+            }
+        }
+        if let BodyKind::Protected(k) = kind {
+            self.prot_ctx.push((k, last));
+            self.declare_components(k, last);
+        }
+        self.masters.push(false);
+        let mut elab = Vec::new();
+        self.decls(decls, &mut elab);
+        let inner = self.block(body);
+        let creates = self.masters.pop().unwrap_or(false);
+        let body_span = body.span;
+        let elab = self.master_region(elab, inner, body_span, creates, kind == BodyKind::Task);
+        if matches!(kind, BodyKind::Protected(_)) {
+            self.prot_ctx.pop();
+        }
+        self.unit_path.pop();
+        self.pop_scope();
+        let ctx = self.ctx.pop().expect("ctx");
+        self.report_unread();
+        self.level -= 1;
         let sub = &mut self.funcs[f as usize];
         sub.nslots = ctx.next_slot;
         sub.body = Some(Rc::new(Body {
             stmts: elab,
             handlers: Vec::new(),
         }));
+        ctx.saw_return
+    }
+
+    /// The statements of a declarative region: its elaboration `elab`,
+    /// then `inner`. When the region may create tasks, they are activated
+    /// at its `begin` and the region is their master; a task body always
+    /// reports its activation.
+    pub(super) fn master_region(
+        &mut self,
+        mut elab: Vec<Stmt>,
+        inner: Body,
+        span: Span,
+        creates: bool,
+        task_body: bool,
+    ) -> Vec<Stmt> {
+        if creates || task_body {
+            elab.push(Stmt {
+                kind: StmtKind::Activate,
+                span,
+            });
+        }
+        elab.push(Stmt {
+            kind: StmtKind::Block(Box::new(inner)),
+            span,
+        });
+        if !creates {
+            return elab;
+        }
+        vec![Stmt {
+            kind: StmtKind::Master(Box::new(Body {
+                stmts: elab,
+                handlers: Vec::new(),
+            })),
+            span,
+        }]
     }
 
     fn package_spec(&mut self, p: &ast::PackageSpec, out: &mut Vec<Stmt>) {

@@ -13,7 +13,7 @@ impl Checker {
         Ex { kind, ty, span }
     }
 
-    fn err_ex(&self, span: Span) -> Ex {
+    pub(super) fn err_ex(&self, span: Span) -> Ex {
         Ex {
             kind: ExKind::Error,
             ty: ERROR,
@@ -483,7 +483,7 @@ impl Checker {
 
     /// Is `p` the prefix of an expanded name (a package, or an enclosing
     /// subprogram or named block), rather than a record value?
-    fn expanded_prefix(&mut self, p: &ast::Expr) -> bool {
+    pub(super) fn expanded_prefix(&mut self, p: &ast::Expr) -> bool {
         match &p.kind {
             ExprKind::Name(id)
                 if self
@@ -805,7 +805,7 @@ impl Checker {
                 }
             }
         }
-        Some((f, out))
+        Some(self.internal_prot_call(f, out, span))
     }
 
     pub fn signature(&self, f: FuncId) -> String {
@@ -1335,6 +1335,9 @@ impl Checker {
     }
 
     fn component(&mut self, mut pe: Ex, id: &ast::Ident, sp: Span) -> Ex {
+        if let TypeKind::Protected(k) = self.types.kind(pe.ty).clone() {
+            return self.prot_function(k, pe, id, &[], sp);
+        }
         if let Some(d) = self.types.designated(pe.ty) {
             let psp = pe.span;
             pe = self.mk(ExKind::Deref(bx(pe)), d, psp);
@@ -1380,6 +1383,12 @@ impl Checker {
     }
 
     fn apply(&mut self, p: &ast::Expr, args: &[ast::Arg], want: Option<TypeId>, sp: Span) -> Ex {
+        if let ExprKind::Select(q, id) = &p.kind
+            && let Some(k) = self.peek_protected(q)
+        {
+            let obj = self.expr(q, None);
+            return self.prot_function(k, obj, id, args, sp);
+        }
         let pes = match &p.kind {
             ExprKind::Name(_) => self.denote(p, true),
             ExprKind::Select(q, _) if self.expanded_prefix(q) => self.denote(p, true),
@@ -2521,6 +2530,11 @@ impl Checker {
         sp: Span,
     ) -> Ex {
         let key = a.key.as_str();
+        if matches!(key, "count" | "callable" | "terminated")
+            && let Some(x) = self.task_attribute(p, key, sp)
+        {
+            return x;
+        }
         let type_prefix = self.denote_quiet_type(p);
         let arg = |this: &mut Self, i: usize, t: Option<TypeId>| -> Ex {
             match args.get(i) {

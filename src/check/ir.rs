@@ -112,6 +112,13 @@ pub enum AttrOp {
     Ceiling,
     Truncation,
     Rounding,
+    /// `T'Callable`, `T'Terminated` of a task value.
+    Callable,
+    Terminated,
+    /// `E'Count` of an entry of the running task.
+    Count(u32),
+    /// `E'Count` of an entry of a protected object (the argument).
+    ProtCount(u32),
 }
 
 #[derive(Clone, Debug)]
@@ -228,7 +235,109 @@ pub enum StmtKind {
     Block(Box<Body>),
     Raise(ExcId, Option<Ex>),
     Reraise,
-    Delay(Ex),
+    /// `delay D;` or `delay until T;` (true): seconds, or a time.
+    Delay(bool, Ex),
+    /// The `begin` of a declarative part that may have created tasks:
+    /// activates them and waits for their activation; in a task body it
+    /// also tells the task's activator that its own activation is done.
+    Activate,
+    /// A declarative region that may create tasks: its end waits for them
+    /// (their master).
+    Master(Box<Body>),
+    Accept(Box<Accept>),
+    EntryCall(Box<EntryCall>),
+    /// A protected procedure called from outside the object: the call, then
+    /// the object's entry queues are served (the last argument is the object).
+    ProtCall(FuncId, Vec<Arg>),
+    Select(Box<Select>),
+    /// A timed (`or delay`) or conditional (`else`) entry call.
+    TimedCall(Box<TimedCall>),
+    Abort(Vec<Ex>),
+}
+
+/// `accept E (params) do body end E;`: the entry of the enclosing task's
+/// type, and the slots of its parameters in the task body's frame.
+#[derive(Clone, Debug)]
+pub struct Accept {
+    pub entry: u32,
+    pub params: Vec<(Var, Mode)>,
+    pub body: Option<Body>,
+}
+
+/// An entry call: of a task (the task value) or of a protected object (the
+/// object, last among the arguments).
+#[derive(Clone, Debug)]
+pub struct EntryCall {
+    pub target: CallTarget,
+    pub args: Vec<Arg>,
+}
+
+#[derive(Clone, Debug)]
+pub enum CallTarget {
+    Task { task: Ex, ttype: u32, entry: u32 },
+    Prot { prot: u32, entry: u32 },
+}
+
+#[derive(Clone, Debug)]
+pub struct Select {
+    pub alts: Vec<(Option<Ex>, Accept, Vec<Stmt>)>,
+    /// `or delay [until] D; stmts`, with its guard.
+    pub delay: Option<(Option<Ex>, bool, Ex, Vec<Stmt>)>,
+    /// `or terminate;`, with its guard.
+    pub terminate: Option<Option<Ex>>,
+    pub els: Option<Vec<Stmt>>,
+}
+
+#[derive(Clone, Debug)]
+pub struct TimedCall {
+    pub call: EntryCall,
+    pub then: Vec<Stmt>,
+    /// The delay (until?, duration or time) and its statements; `None`: the
+    /// conditional call's `else`.
+    pub delay: Option<(bool, Ex)>,
+    pub other: Vec<Stmt>,
+}
+
+/// A task type (a single task is an object of an anonymous one).
+#[derive(Clone, Debug)]
+pub struct TaskDef {
+    pub name: String,
+    pub entries: Vec<EntryDef>,
+    /// The task body: a subprogram without parameters, one level below the
+    /// type's declaration.
+    pub body: Option<FuncId>,
+    pub priority: Option<Ex>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct EntryDef {
+    pub name: String,
+    /// The profile (a subprogram without body), for calls.
+    pub profile: FuncId,
+    /// `for E use at Addr;`: an interrupt entry.
+    pub interrupt: Option<i64>,
+}
+
+/// A protected type. Its value is an access to a record whose first
+/// component is the object's number and the rest its components; every
+/// operation takes the object as a last, hidden parameter.
+#[derive(Clone, Debug)]
+pub struct ProtDef {
+    pub name: String,
+    /// The record of the components (hidden number first).
+    pub rec: TypeId,
+    pub entries: Vec<ProtEntry>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct ProtEntry {
+    pub name: String,
+    pub profile: FuncId,
+    /// A function of the object only; and the body (parameters, object).
+    pub barrier: Option<FuncId>,
+    pub body: Option<FuncId>,
 }
 
 /// The alternatives of a `case`: static choice ranges and statements.
@@ -285,6 +394,8 @@ pub struct ProgramRef<'a> {
     pub types: &'a crate::check::types::Types,
     pub excs: &'a [Exception],
     pub globals: u32,
+    pub tasks: &'a [TaskDef],
+    pub prots: &'a [ProtDef],
 }
 
 /// A whole checked program (or one REPL entry against kept state).

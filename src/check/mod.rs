@@ -11,6 +11,7 @@ mod expr;
 pub mod index;
 pub mod ir;
 mod stmt;
+mod tasks;
 pub mod types;
 
 use crate::diag::{Diagnostic, Span};
@@ -141,6 +142,21 @@ pub struct Checker {
     pub index: index::Index,
     /// The declaration being checked, for [`index::Def::decl`].
     cur_decl: Option<Span>,
+    /// Task types and protected types.
+    pub tasks: Vec<TaskDef>,
+    pub prots: Vec<ProtDef>,
+    /// The task types whose bodies are being checked (innermost last).
+    task_ctx: Vec<u32>,
+    /// The protected bodies being checked: the type and the slot of the
+    /// object parameter of the operation being checked.
+    prot_ctx: Vec<(u32, Option<Var>)>,
+    /// Each protected type's subprograms: name, profile, real subprogram,
+    /// whether it is a function.
+    prot_members: Vec<Vec<(String, FuncId, FuncId, bool)>>,
+    /// Profile -> real subprogram of protected operations.
+    prot_real: HashMap<FuncId, (FuncId, u32)>,
+    /// Per declarative region being checked: whether it may create tasks.
+    masters: Vec<bool>,
 }
 
 /// A node of the expression being checked: its source range and its kind.
@@ -191,6 +207,13 @@ impl Checker {
             memo: None,
             index: index::Index::default(),
             cur_decl: None,
+            tasks: Vec::new(),
+            prots: Vec::new(),
+            task_ctx: Vec::new(),
+            prot_ctx: Vec::new(),
+            prot_members: Vec::new(),
+            prot_real: HashMap::new(),
+            masters: Vec::new(),
         };
         c.standard();
         c
@@ -858,6 +881,8 @@ impl Checker {
             types: &self.types,
             excs: &self.excs,
             globals: self.globals,
+            tasks: &self.tasks,
+            prots: &self.prots,
         }
     }
 

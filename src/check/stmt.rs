@@ -334,13 +334,21 @@ impl Checker {
                     self.unit_path.push(l.name.clone());
                 }
                 let mut elab = Vec::new();
+                self.masters.push(false);
                 self.decls(decls, &mut elab);
                 let inner = self.block(body);
+                let creates = self.masters.pop().unwrap_or(false);
                 if label.is_some() {
                     self.unit_path.pop();
                 }
                 self.pop_scope();
-                if elab.is_empty() {
+                if creates {
+                    let stmts = self.master_region(elab, inner, sp, true, false);
+                    StmtKind::Block(Box::new(Body {
+                        stmts,
+                        handlers: Vec::new(),
+                    }))
+                } else if elab.is_empty() {
                     StmtKind::Block(Box::new(inner))
                 } else {
                     elab.push(Stmt {
@@ -380,17 +388,26 @@ impl Checker {
                     },
                 }
             }
-            S::Delay(d) => {
-                let e = self.expr(d, Some(DURATION));
-                StmtKind::Delay(self.coerce(e, DURATION))
+            S::Delay(until, d) => {
+                let d = self.delay_amount(*until, d);
+                StmtKind::Delay(*until, d)
             }
-            S::Accept { .. } | S::Select(_) => {
-                self.err(
-                    Diagnostic::unsupported(sp, "a task statement (`accept`/`select`)")
-                        .with_hint("tasks are not implemented yet in this version of adair"),
-                );
-                return;
+            S::Abort(ts) => {
+                let ts = ts.iter().filter_map(|t| self.task_value(t)).collect();
+                StmtKind::Abort(ts)
             }
+            S::Accept {
+                entry,
+                params,
+                body,
+            } => match self.accept(entry, params, body.as_ref(), sp) {
+                Some(a) => StmtKind::Accept(Box::new(a)),
+                None => return,
+            },
+            S::Select(alts) => match self.select(alts, sp) {
+                Some(k) => k,
+                None => return,
+            },
         };
         out.push(Stmt { kind, span: sp });
     }
@@ -402,11 +419,14 @@ impl Checker {
         r
     }
 
-    fn call_stmt(&mut self, e: &ast::Expr) -> Option<StmtKind> {
+    pub(super) fn call_stmt(&mut self, e: &ast::Expr) -> Option<StmtKind> {
         let (prefix, args): (&ast::Expr, &[ast::Arg]) = match &e.kind {
             ast::ExprKind::Apply(p, a) => (p, a),
             _ => (e, &[]),
         };
+        if let Some(r) = self.concurrent_call(prefix, args, e.span) {
+            return r;
+        }
         let es = match &prefix.kind {
             ast::ExprKind::Name(_) | ast::ExprKind::Select(..) => self.denote(prefix, true),
             _ => Vec::new(),

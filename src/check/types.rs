@@ -37,6 +37,11 @@ pub enum TypeKind {
     Occurrence,
     /// `Ada.Calendar.Time` (seconds of virtual time).
     Time,
+    /// A task type (index into the checker's task table); a task object's
+    /// value is its task number.
+    Task(u32),
+    /// A protected type (index into the protected table).
+    Protected(u32),
     /// A type the checker could not determine (after an error).
     Error,
 }
@@ -173,6 +178,30 @@ impl Types {
         match self.kind(t) {
             TypeKind::Enum(l) => Some(l),
             _ => None,
+        }
+    }
+    /// Whether an object of type `t` holds a task (so that its declaration
+    /// creates one and its scope is the task's master).
+    pub fn has_task(&self, t: TypeId) -> bool {
+        match &self.list[t as usize].kind {
+            TypeKind::Task(_) => true,
+            TypeKind::Array { elem, .. } => self.has_task(*elem),
+            TypeKind::Record(fs) => fs.iter().any(|f| self.has_task(f.ty)),
+            _ => match self.kind(t) {
+                TypeKind::Task(_) => true,
+                TypeKind::Array { elem, .. } => self.has_task(*elem),
+                _ => false,
+            },
+        }
+    }
+    /// Whether a default value of `t` must be built once per component
+    /// (tasks and protected objects are not copied).
+    pub fn is_unique(&self, t: TypeId) -> bool {
+        match self.kind(t) {
+            TypeKind::Task(_) | TypeKind::Protected(_) => true,
+            TypeKind::Array { elem, .. } => self.is_unique(*elem),
+            TypeKind::Record(fs) => fs.iter().any(|f| self.is_unique(f.ty)),
+            _ => false,
         }
     }
     pub fn designated(&self, t: TypeId) -> Option<TypeId> {

@@ -8,6 +8,7 @@
 
 pub mod builtins;
 pub mod memory;
+pub(crate) mod tasking;
 pub mod value;
 pub mod vm;
 
@@ -241,6 +242,7 @@ impl Machine {
             m: self,
             c: chk,
             svc,
+            sched: Default::default(),
         };
         let compiled = run.m.engine == vm::Engine::Compiled;
         let r = (|| -> R<()> {
@@ -303,6 +305,7 @@ impl Machine {
             m: self,
             c: chk,
             svc,
+            sched: Default::default(),
         };
         let r = run.eval(e);
         run.m.stack.truncate(need);
@@ -391,6 +394,8 @@ pub struct Run<'a> {
     pub m: &'a mut Machine,
     pub c: ProgramRef<'a>,
     svc: Option<&'a mut dyn Services>,
+    /// Tasks and protected objects of this run (empty without tasks).
+    pub(crate) sched: tasking::Sched<'a>,
 }
 
 enum Step {
@@ -596,16 +601,30 @@ impl Run<'_> {
                     }
                 }
             }
-            StmtKind::Delay(d) => {
-                let secs = self.eval(d)?.real();
+            StmtKind::Delay(until, d) => {
+                let x = self.eval(d)?.real();
                 // Duration is fixed point in Ada: no NaN, no infinity. A
                 // negative delay is no delay (RM 9.6).
-                if !secs.is_finite() {
+                if !x.is_finite() {
                     return Err(self.check_failed("delay of a non-finite duration", s.span));
                 }
+                let secs = if *until { x - self.m.clock.now() } else { x };
                 self.m.clock.sleep(secs);
                 Ok(())
             }
+            // The walker runs no tasks: a program with tasks is refused at
+            // the first task's creation; what is left has none.
+            StmtKind::Activate | StmtKind::Abort(_) => Ok(()),
+            StmtKind::Master(b) => self.body(b),
+            StmtKind::ProtCall(f, args) => self.call(*f, args, s.span).map(|_| ()),
+            StmtKind::Accept(_)
+            | StmtKind::EntryCall(_)
+            | StmtKind::Select(_)
+            | StmtKind::TimedCall(_) => Err(self.raise(
+                check::PROGRAM_ERROR,
+                "tasks run in the compiled engine only (unset ADAIR_ENGINE)",
+                s.span,
+            )),
         }
     }
 
@@ -1109,7 +1128,11 @@ impl Run<'_> {
             ExKind::Alloc(init, t) => {
                 let v = match init {
                     Some(x) => self.eval(x)?,
-                    None => self.default_value(*t, e.span)?,
+                    None => {
+                        let v = self.default_value(*t, e.span)?;
+                        self.activate_allocated();
+                        v
+                    }
                 };
                 self.reserve(4, e.span)?;
                 Value::Ptr(Some(Rc::new(RefCell::new(v))))
@@ -1256,6 +1279,8 @@ impl Run<'_> {
                 }
                 Value::Rec(Rc::new(v))
             }
+            TypeKind::Task(k) => self.create_task(k, span)?,
+            TypeKind::Protected(k) => self.create_protected(k, span)?,
             TypeKind::Array { elem, .. } => {
                 let bounds = self.array_bounds(t)?.unwrap_or_default();
                 let n: i64 = bounds
@@ -1270,11 +1295,18 @@ impl Run<'_> {
                     ));
                 }
                 self.reserve(n, span)?;
-                let d = self.default_value(elem, span)?;
-                Value::Arr(Rc::new(Array {
-                    bounds,
-                    data: vec![d; n as usize],
-                }))
+                let data = if self.c.types.is_unique(elem) {
+                    // Each component its own task or protected object.
+                    let mut v = Vec::with_capacity(n as usize);
+                    for _ in 0..n {
+                        v.push(self.default_value(elem, span)?);
+                    }
+                    v
+                } else {
+                    let d = self.default_value(elem, span)?;
+                    vec![d; n as usize]
+                };
+                Value::Arr(Rc::new(Array { bounds, data }))
             }
             TypeKind::Access(_) => Value::Ptr(None),
             TypeKind::Time => Value::Real(0.0),
@@ -1499,6 +1531,9 @@ impl Run<'_> {
             None => Value::Undef,
         };
         Ok(match op {
+            AttrOp::Callable | AttrOp::Terminated | AttrOp::Count(_) | AttrOp::ProtCount(_) => {
+                self.task_attr(op, std::slice::from_ref(&a0))
+            }
             AttrOp::ArrFirst(d) | AttrOp::ArrLast(d) | AttrOp::ArrLength(d) => {
                 let Value::Arr(a) = a0 else {
                     return Err(self.check_failed("access check failed", sp));

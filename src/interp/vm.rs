@@ -101,6 +101,90 @@ enum Op<'p> {
     /// Back to `frame's depth + n` current occurrences (an `exit` out of
     /// handler bodies).
     TruncCurrent(u32),
+    // ---- tasking (see `tasking.rs`) ----
+    /// `delay` (false) or `delay until` (true).
+    Delay(Var, bool, Span),
+    /// Activates the tasks created so far and waits for their activation.
+    Activate(Span),
+    /// A master region begins; its end waits for its tasks.
+    MasterEnter,
+    MasterLeave,
+    /// An exception leaves a master region: wait for its tasks, then
+    /// propagate it.
+    MasterUnwind,
+    /// Library-level tasks, at the end of the run.
+    AwaitAll,
+    /// `accept`: the entry and the parameters' slots.
+    Accept(u32, &'p [(Var, Mode)]),
+    /// The end of a rendezvous: `out` values go to the caller.
+    AcceptEnd(&'p [(Var, Mode)]),
+    /// An exception leaves an accept body: the caller gets it too.
+    AcceptFail,
+    /// An entry call of a task.
+    EntryCall(Box<EntryOp<'p>>),
+    /// After an entry call: copy-out, the caller's exception, or the jump
+    /// to a timed call's delay (conditional call's else) statements.
+    EntryDone(&'p [Arg], Box<[Var]>, Option<u32>, Span),
+    /// A protected entry call.
+    ProtEntry(Box<EntryOp<'p>>),
+    /// After a protected action: the object's queues are served.
+    ProtDone(Var, Box<[Arg]>, Span),
+    Select(Box<SelectOp<'p>>),
+    Abort(Box<[Var]>),
+}
+
+/// An entry call: the task (or object), entry, arguments and their
+/// operands, the timeout (delay or time) of a timed call, whether it is
+/// conditional, and where a timed call's delay statements begin.
+#[derive(Debug)]
+struct EntryOp<'p> {
+    target: Var,
+    kind: u32,
+    entry: u32,
+    args: &'p [Arg],
+    ops: Box<[Var]>,
+    timed: Option<(Var, bool)>,
+    conditional: bool,
+    other: u32,
+    /// The barrier's argument (the object), for protected entries.
+    barrier_args: Box<[Arg]>,
+    span: Span,
+}
+
+#[derive(Debug)]
+struct SelectOp<'p> {
+    /// Guard, entry, parameters, target.
+    alts: Vec<(Option<Var>, u32, &'p [(Var, Mode)], u32)>,
+    /// Guard, amount, until, target.
+    delay: Option<(Option<Var>, Var, bool, u32)>,
+    terminate: Option<Option<Var>>,
+    els: Option<u32>,
+    span: Span,
+}
+
+/// The registers of a thread of the engine that is not running.
+pub(crate) struct Regs<'p> {
+    frames: Vec<Frame<'p>>,
+    cur: Rc<Code<'p>>,
+    pc: u32,
+    current_base: usize,
+    pending: Option<Box<Occurrence>>,
+    /// A task's own frame (its body): base and top.
+    root: Option<(usize, usize)>,
+}
+
+impl Regs<'_> {
+    /// The stack regions of the thread's frames.
+    pub(crate) fn regions(&self) -> Vec<(usize, usize)> {
+        self.root
+            .into_iter()
+            .chain(
+                self.frames
+                    .iter()
+                    .filter_map(|f| f.call.as_ref().map(|c| (c.base, c.top))),
+            )
+            .collect()
+    }
 }
 
 /// A part of the code whose exceptions go to handlers.
@@ -130,9 +214,12 @@ struct Compiler<'p, 'r> {
     ops: Vec<Op<'p>>,
     regions: Vec<Region>,
     exits: Vec<(u32, u32, u32)>,
-    /// The loops being compiled: id, jumps to patch with the exit, handler depth.
-    loops: Vec<(u32, Vec<usize>, u32)>,
+    /// The loops being compiled: id, jumps to patch with the exit, handler
+    /// depth, master regions open at the loop.
+    loops: Vec<(u32, Vec<usize>, u32, u32)>,
     hdepth: u32,
+    /// Master regions open at this point of the code.
+    masters: u32,
     /// Which subprograms the walker calls (bound to natives or without body).
     walker_calls: &'r dyn Fn(FuncId) -> bool,
 }
@@ -566,6 +653,9 @@ impl<'p> Compiler<'p, '_> {
                 if depth < self.hdepth {
                     self.ops.push(Op::TruncCurrent(depth));
                 }
+                for _ in self.loops[k].3..self.masters {
+                    self.ops.push(Op::MasterLeave);
+                }
                 let j = self.ops.len();
                 self.ops.push(Op::Jump(0));
                 self.loops[k].1.push(j);
@@ -576,13 +666,235 @@ impl<'p> Compiler<'p, '_> {
             }
             StmtKind::Return(v) => {
                 let x = v.as_ref().map(|e| self.expr(e));
+                for _ in 0..self.masters {
+                    self.ops.push(Op::MasterLeave);
+                }
                 self.ops.push(Op::Return(x));
             }
             StmtKind::Block(b) => self.body(b),
-            StmtKind::Raise(..) | StmtKind::Reraise | StmtKind::Delay(_) => {
-                self.ops.push(Op::Exec(s))
+            StmtKind::Raise(..) | StmtKind::Reraise => self.ops.push(Op::Exec(s)),
+            StmtKind::Delay(until, d) => {
+                let x = self.expr(d);
+                self.ops.push(Op::Delay(x, *until, s.span));
+            }
+            StmtKind::Activate => self.ops.push(Op::Activate(s.span)),
+            StmtKind::Master(b) => {
+                self.ops.push(Op::MasterEnter);
+                self.masters += 1;
+                self.guarded(|c| c.body(b), Op::MasterLeave, Op::MasterUnwind);
+                self.masters -= 1;
+            }
+            StmtKind::Accept(a) => self.accept(a),
+            StmtKind::EntryCall(ec) => {
+                let other = self.entry_call(ec, None, false, s.span);
+                debug_assert!(other.is_none());
+            }
+            StmtKind::TimedCall(tc) => {
+                let amount = tc.delay.as_ref().map(|(until, d)| (self.expr(d), *until));
+                let at = self.entry_call(&tc.call, amount, tc.delay.is_none(), s.span);
+                self.stmts(&tc.then);
+                let j = self.ops.len();
+                self.ops.push(Op::Jump(0));
+                let other = self.here();
+                if let Some(at) = at {
+                    self.set_other(at, other);
+                }
+                self.stmts(&tc.other);
+                let end = self.here();
+                self.patch(j, end);
+            }
+            StmtKind::ProtCall(f, args) => {
+                self.call(*f, args, None, s.span);
+                let obj = self.expr(&args.last().expect("the object").value);
+                let bargs = self.obj_args(obj, &args.last().expect("the object").value);
+                self.ops.push(Op::ProtDone(obj, bargs, s.span));
+            }
+            StmtKind::Select(sel) => self.select(sel, s.span),
+            StmtKind::Abort(ts) => {
+                let ops: Vec<Var> = ts.iter().map(|t| self.expr(t)).collect();
+                self.ops.push(Op::Abort(ops.into()));
             }
         }
+    }
+
+    /// Compiles `inner` as a region whose normal end runs `leave` and
+    /// whose exceptions go to `unwind` (which propagates them).
+    fn guarded(&mut self, inner: impl FnOnce(&mut Self), leave: Op<'p>, unwind: Op<'p>) {
+        let start = self.here();
+        inner(self);
+        let end = self.here();
+        self.ops.push(leave);
+        let j = self.ops.len();
+        self.ops.push(Op::Jump(0));
+        let dispatch = self.here();
+        self.ops.push(unwind);
+        let after = self.here();
+        self.patch(j, after);
+        self.regions.push(Region {
+            start,
+            end,
+            dispatch,
+        });
+    }
+
+    /// `accept`: wait for a caller, then the body (whose exception the
+    /// caller gets too), then the end of the rendezvous.
+    fn accept(&mut self, a: &'p Accept) {
+        self.ops.push(Op::Accept(a.entry, &a.params));
+        self.accept_rest(a);
+    }
+
+    fn accept_rest(&mut self, a: &'p Accept) {
+        match &a.body {
+            Some(b) => self.guarded(|c| c.body(b), Op::AcceptEnd(&a.params), Op::AcceptFail),
+            None => self.ops.push(Op::AcceptEnd(&a.params)),
+        }
+    }
+
+    /// The object as the argument of its barriers.
+    fn obj_args(&self, obj: Var, like: &Ex) -> Box<[Arg]> {
+        Box::new([Arg {
+            mode: Mode::In,
+            value: Ex {
+                kind: ExKind::Var(obj),
+                ty: like.ty,
+                span: like.span,
+            },
+            back_check: None,
+        }])
+    }
+
+    /// An entry call; returns the instruction whose `other` target (timed
+    /// and conditional calls) is to be set.
+    fn entry_call(
+        &mut self,
+        ec: &'p EntryCall,
+        timed: Option<(Var, bool)>,
+        conditional: bool,
+        span: Span,
+    ) -> Option<usize> {
+        // Each argument in a temporary of its own: the server writes the
+        // `out` values there.
+        let (target, kind, entry) = match &ec.target {
+            CallTarget::Task { task, entry, .. } => {
+                let t = self.temp();
+                self.expr_into(task, t);
+                (t, u32::MAX, *entry)
+            }
+            CallTarget::Prot { prot, entry } => (Var { level: 0, slot: 0 }, *prot, *entry),
+        };
+        let ops: Vec<Var> = ec
+            .args
+            .iter()
+            .map(|a| {
+                let t = self.temp();
+                self.expr_into(&a.value, t);
+                t
+            })
+            .collect();
+        let is_timed = timed.is_some() || conditional;
+        match &ec.target {
+            CallTarget::Task { .. } => {
+                self.ops.push(Op::EntryCall(Box::new(EntryOp {
+                    target,
+                    kind,
+                    entry,
+                    args: &ec.args,
+                    ops: ops.clone().into(),
+                    timed,
+                    conditional,
+                    other: 0,
+                    barrier_args: Box::new([]),
+                    span,
+                })));
+                let at = self.ops.len();
+                self.ops
+                    .push(Op::EntryDone(&ec.args, ops.into(), None, span));
+                is_timed.then_some(at)
+            }
+            CallTarget::Prot { .. } => {
+                let obj = *ops.last().expect("the object");
+                let last = &ec.args.last().expect("the object").value;
+                let bargs = self.obj_args(obj, last);
+                let at = self.ops.len();
+                self.ops.push(Op::ProtEntry(Box::new(EntryOp {
+                    target: obj,
+                    kind,
+                    entry,
+                    args: &ec.args,
+                    ops: ops.into(),
+                    timed,
+                    conditional,
+                    other: 0,
+                    barrier_args: bargs.clone(),
+                    span,
+                })));
+                self.ops.push(Op::ProtDone(obj, bargs, span));
+                is_timed.then_some(at)
+            }
+        }
+    }
+
+    fn set_other(&mut self, at: usize, target: u32) {
+        match &mut self.ops[at] {
+            Op::EntryDone(_, _, other, _) => *other = Some(target),
+            Op::ProtEntry(e) => e.other = target,
+            _ => unreachable!("an entry call"),
+        }
+    }
+
+    fn select(&mut self, sel: &'p Select, span: Span) {
+        let mut alts = Vec::new();
+        for (g, a, _) in &sel.alts {
+            let g = g.as_ref().map(|g| self.expr(g));
+            alts.push((g, a.entry, &a.params[..], 0u32));
+        }
+        let delay = sel.delay.as_ref().map(|(g, until, d, _)| {
+            let g = g.as_ref().map(|g| self.expr(g));
+            let x = self.expr(d);
+            (g, x, *until, 0u32)
+        });
+        let terminate = sel
+            .terminate
+            .as_ref()
+            .map(|g| g.as_ref().map(|g| self.expr(g)));
+        let at = self.ops.len();
+        self.ops.push(Op::Jump(0));
+        let mut ends = Vec::new();
+        for (k, (_, a, then)) in sel.alts.iter().enumerate() {
+            alts[k].3 = self.here();
+            self.accept_rest(a);
+            self.stmts(then);
+            ends.push(self.ops.len());
+            self.ops.push(Op::Jump(0));
+        }
+        let delay = delay.map(|(g, x, until, _)| {
+            let t = self.here();
+            if let Some((_, _, _, then)) = &sel.delay {
+                self.stmts(then);
+            }
+            ends.push(self.ops.len());
+            self.ops.push(Op::Jump(0));
+            (g, x, until, t)
+        });
+        let els = sel.els.as_ref().map(|then| {
+            let t = self.here();
+            self.stmts(then);
+            ends.push(self.ops.len());
+            self.ops.push(Op::Jump(0));
+            t
+        });
+        let end = self.here();
+        for j in ends {
+            self.patch(j, end);
+        }
+        self.ops[at] = Op::Select(Box::new(SelectOp {
+            alts,
+            delay,
+            terminate,
+            els,
+            span,
+        }));
     }
 
     /// A `case` (statement or expression) on `x`: a jump table to each
@@ -619,14 +931,14 @@ impl<'p> Compiler<'p, '_> {
     }
 
     fn loop_body(&mut self, id: u32, body: &'p [Stmt]) {
-        self.loops.push((id, Vec::new(), self.hdepth));
+        self.loops.push((id, Vec::new(), self.hdepth, self.masters));
         self.stmts(body);
     }
 
     /// Ends the innermost loop: its exits jump here. Returns the target.
     fn end_loop(&mut self, id: u32) -> u32 {
         let end = self.here();
-        let (_, jumps, depth) = self.loops.pop().expect("a loop");
+        let (_, jumps, depth, _) = self.loops.pop().expect("a loop");
         for j in jumps {
             self.patch(j, end);
         }
@@ -683,7 +995,7 @@ impl<'p> Compiler<'p, '_> {
 
 /// A frame of the compiled engine. The level-0 code's frame has no
 /// subprogram.
-struct Frame<'p> {
+pub(crate) struct Frame<'p> {
     code: Rc<Code<'p>>,
     /// Where to go on in this frame's code when the callee returns.
     pc: u32,
@@ -699,6 +1011,8 @@ struct CallInfo<'p> {
     args: &'p [Arg],
     dst: Option<Var>,
     base: usize,
+    /// The end of the frame's slots.
+    top: usize,
     level: usize,
     saved: usize,
 }
@@ -722,6 +1036,7 @@ impl<'a> Run<'a> {
             exits: Vec::new(),
             loops: Vec::new(),
             hdepth: 0,
+            masters: 0,
             walker_calls: &walker_calls,
         };
         match what {
@@ -764,12 +1079,527 @@ impl<'a> Run<'a> {
         let mut cache = Vec::new();
         let own = self.c.globals;
         let code = Rc::new(self.compile(0, own, Compiled::Stmts(stmts)));
-        self.exec_code(&mut cache, code)?;
-        if let Some(f) = main {
+        let mut r = self.exec_code(&mut cache, code);
+        if r.is_ok()
+            && let Some(f) = main
+        {
             let code = Rc::new(self.compile(0, own, Compiled::Main(f)));
+            r = self.exec_code(&mut cache, code);
+        }
+        // The environment waits for the library-level tasks, also after an
+        // exception (which then ends the run).
+        if self.sched.active() && !matches!(r, Err(Flow::Exit(_))) {
+            let code = Rc::new(Code {
+                ops: vec![Op::AwaitAll, Op::FallOff],
+                temps: 0,
+                regions: Vec::new(),
+                exits: Vec::new(),
+            });
+            let sched_cur = self.sched.cur;
+            debug_assert_eq!(sched_cur, 0);
             self.exec_code(&mut cache, code)?;
         }
+        r
+    }
+
+    /// Pushes the frame of a call of `f` whose arguments are in `ops`.
+    fn push_call(
+        &mut self,
+        cache: &mut Vec<Option<Rc<Code<'a>>>>,
+        f: FuncId,
+        args: &'a [Arg],
+        ops: &[Var],
+        d: Option<Var>,
+        span: Span,
+    ) -> R<(Rc<Code<'a>>, CallInfo<'a>)> {
+        if self.m.depth >= MAX_DEPTH {
+            return Err(self.raise(
+                check::STORAGE_ERROR,
+                "stack overflow (recursion too deep)",
+                span,
+            ));
+        }
+        let code = self.code_of(cache, f);
+        let sub = &self.c.funcs[f as usize];
+        let level = sub.level as usize;
+        let nslots = sub.nslots as usize;
+        let base = self.m.stack.len();
+        let n = ops.len();
+        // The arguments go straight into the new frame; the display is
+        // still the caller's while they are read.
+        for v in ops.iter() {
+            let x = self.m.stack[self.sl(*v)].clone();
+            self.m.stack.push(x);
+        }
+        let own = nslots.max(n).max(sub.params.len());
+        let top = base + own + code.temps as usize;
+        self.m.stack.resize(top, Value::Undef);
+        if self.m.display.len() <= level {
+            self.m.display.resize(level + 1, 0);
+        }
+        let saved = self.m.display[level];
+        self.m.display[level] = base;
+        self.m.depth += 1;
+        self.m.calls.push(span);
+        Ok((
+            code,
+            CallInfo {
+                f,
+                args,
+                dst: d,
+                base,
+                top,
+                level,
+                saved,
+            },
+        ))
+    }
+
+    /// Whether this instruction runs a second time (after its thread was
+    /// blocked by it); clears the mark.
+    fn rerun(&mut self) -> bool {
+        self.sched.active() && std::mem::take(&mut self.sched.me().rerun)
+    }
+
+    fn op_delay(&mut self, x: Var, until: bool, span: Span) -> R<()> {
+        let v = self.m.stack[self.sl(x)].real();
+        if !v.is_finite() {
+            return Err(self.check_failed("delay of a non-finite duration", span));
+        }
+        let now = self.m.clock.now();
+        let t = if until { v } else { now + v };
+        if !self.sched.active() {
+            self.m.clock.sleep(t - now);
+        } else if t <= now {
+            self.sched.yield_now();
+        } else {
+            self.sched.block(tasking::Wait::Delay(t), false);
+        }
         Ok(())
+    }
+
+    /// `Activate`: a task reports its own activation to its activator,
+    /// then activates the tasks it created and waits for their activation.
+    fn op_activate(&mut self, span: Span) -> R<()> {
+        if !self.sched.active() {
+            return Ok(());
+        }
+        let me = self.sched.cur;
+        if self.rerun() {
+            if std::mem::take(&mut self.sched.threads[me].activation_failed) {
+                return Err(self.raise(
+                    check::TASKING_ERROR,
+                    "a task raised an exception during its activation",
+                    span,
+                ));
+            }
+            return Ok(());
+        }
+        if let Some(a) = self.sched.threads[me].activator.take() {
+            self.activation_done(a, false);
+        }
+        let new = std::mem::take(&mut self.sched.threads[me].unactivated);
+        if new.is_empty() {
+            return Ok(());
+        }
+        for t in &new {
+            self.sched.threads[*t].activator = Some(me);
+            self.sched.make_ready(*t);
+        }
+        self.sched.threads[me].activating = new.len();
+        self.sched.block(tasking::Wait::Activation, true);
+        Ok(())
+    }
+
+    /// Whether the tasks of the running thread's innermost master (or,
+    /// `all`, the library level's) have ended; if not, the thread waits.
+    fn dependents_done(&mut self, all: bool) -> bool {
+        if !self.sched.active() {
+            return true;
+        }
+        self.rerun();
+        let me = self.sched.cur;
+        let deps: &[tasking::Tid] = if all {
+            &self.sched.library
+        } else {
+            self.sched.threads[me]
+                .masters
+                .last()
+                .map_or(&[], |m| &m[..])
+        };
+        let done = deps
+            .iter()
+            .all(|d| self.sched.threads[*d].wait == tasking::Wait::Terminated);
+        if !done {
+            // Tasks created but never activated (an exception before the
+            // `begin`) are not waited for: they end now.
+            let never: Vec<tasking::Tid> = deps
+                .iter()
+                .copied()
+                .filter(|d| self.sched.threads[*d].wait == tasking::Wait::Unactivated)
+                .collect();
+            for t in never {
+                self.end_thread(t, false);
+            }
+            let done = self.sched.threads[me]
+                .masters
+                .last()
+                .filter(|_| !all)
+                .map_or_else(
+                    || {
+                        self.sched
+                            .library
+                            .iter()
+                            .all(|d| self.sched.threads[*d].wait == tasking::Wait::Terminated)
+                    },
+                    |m| {
+                        m.iter()
+                            .all(|d| self.sched.threads[*d].wait == tasking::Wait::Terminated)
+                    },
+                );
+            if !done {
+                self.sched.block(tasking::Wait::Dependents, true);
+            }
+            return done;
+        }
+        true
+    }
+
+    /// Starts the rendezvous with caller `c`: its arguments into the
+    /// accept's parameters.
+    fn begin_rendezvous(&mut self, c: tasking::Tid, params: &[(Var, Mode)]) {
+        let me = self.sched.cur;
+        for (i, (v, _)) in params.iter().enumerate() {
+            let x = self.m.stack[self.sched.threads[c].call[i]].clone();
+            self.put(*v, x);
+        }
+        self.sched.threads[c].wait = tasking::Wait::Rendezvous(me);
+        self.sched.threads[me].rendezvous.push(c);
+    }
+
+    /// Ends the innermost rendezvous: `out` values (or the exception) to
+    /// the caller, who becomes ready.
+    fn end_rendezvous(&mut self, params: &[(Var, Mode)], err: Option<Box<Occurrence>>) {
+        let me = self.sched.cur;
+        let Some(c) = self.sched.threads[me].rendezvous.pop() else {
+            return;
+        };
+        for (i, (v, mode)) in params.iter().enumerate() {
+            if *mode != Mode::In {
+                let x = self.m.stack[self.sl(*v)].clone();
+                let slot = self.sched.threads[c].call[i];
+                self.m.stack[slot] = x;
+            }
+        }
+        self.sched.threads[c].outcome = match err {
+            Some(o) => tasking::Outcome::Error(o),
+            None => tasking::Outcome::Done,
+        };
+        self.sched.make_ready(c);
+    }
+
+    fn deadline(&mut self, timed: Option<(Var, bool)>) -> Option<f64> {
+        timed.map(|(v, until)| {
+            let x = self.m.stack[self.sl(v)].real();
+            if until { x } else { self.m.clock.now() + x }
+        })
+    }
+
+    fn op_entry_call(&mut self, ec: &EntryOp<'a>) -> R<()> {
+        self.tasking_on();
+        let me = self.sched.cur;
+        let s = self.int_at(ec.target) as usize;
+        let alive = self
+            .sched
+            .threads
+            .get(s)
+            .is_some_and(|t| t.callable && t.wait != tasking::Wait::Terminated);
+        if !alive {
+            let name = self
+                .sched
+                .threads
+                .get(s)
+                .map(|t| t.name.clone())
+                .unwrap_or_default();
+            return Err(self.raise(
+                check::TASKING_ERROR,
+                format!(
+                    "{} the called task {name} has ended",
+                    self.m.location(ec.span)
+                ),
+                ec.span,
+            ));
+        }
+        let slots: Vec<usize> = ec.ops.iter().map(|v| self.sl(*v)).collect();
+        self.sched.threads[me].call = slots;
+        self.sched.threads[me].outcome = tasking::Outcome::Pending;
+        let open = self.sched.accepting(s, ec.entry);
+        let deadline = self.deadline(ec.timed);
+        let now = self.m.clock.now();
+        if !open && (ec.conditional || deadline.is_some_and(|d| d <= now)) {
+            self.sched.threads[me].outcome = tasking::Outcome::Timeout;
+            return Ok(());
+        }
+        self.sched.threads[s].entries[ec.entry as usize].push_back(me);
+        if open {
+            self.sched.make_ready(s);
+        }
+        self.sched.block(
+            tasking::Wait::Call {
+                server: s,
+                entry: ec.entry,
+                deadline,
+            },
+            false,
+        );
+        Ok(())
+    }
+
+    /// After an entry call: false when it timed out (or was not taken).
+    fn entry_done(&mut self, args: &'a [Arg], ops: &[Var], span: Span) -> R<bool> {
+        let me = self.sched.cur;
+        match std::mem::take(&mut self.sched.threads[me].outcome) {
+            tasking::Outcome::Timeout => Ok(false),
+            tasking::Outcome::Error(mut o) => {
+                if o.span.start == 0 && o.span.end == 0 {
+                    o.span = span;
+                    o.message = format!("{} {}", self.m.location(span), o.message);
+                }
+                Err(Flow::Raise(o))
+            }
+            tasking::Outcome::Done | tasking::Outcome::Pending => {
+                for (a, v) in args.iter().zip(ops.iter()) {
+                    if a.mode != Mode::In {
+                        let i = self.sl(*v);
+                        let x = std::mem::take(&mut self.m.stack[i]);
+                        if let Some(t) = a.back_check {
+                            self.range_check(&x, t, a.value.span)?;
+                        }
+                        self.assign(&a.value, x)?;
+                    }
+                }
+                Ok(true)
+            }
+        }
+    }
+
+    fn barrier_open(&mut self, k: u32, entry: u32, bargs: &[Arg], span: Span) -> R<bool> {
+        let Some(b) = self.c.prots[k as usize].entries[entry as usize].barrier else {
+            return Ok(false);
+        };
+        Ok(self.call(b, bargs, span)?.is_some_and(|v| v.int() != 0))
+    }
+
+    fn op_prot_entry(&mut self, ec: &EntryOp<'a>) -> R<ProtStep> {
+        let active = self.sched.active();
+        let me = self.sched.cur;
+        if active {
+            self.rerun();
+            if std::mem::take(&mut self.sched.threads[me].timed_out) {
+                return Ok(ProtStep::Other);
+            }
+            if std::mem::take(&mut self.sched.threads[me].granted) {
+                self.sched.threads[me].proxied = true;
+                return Ok(ProtStep::Body);
+            }
+        }
+        let obj = self.m.stack[self.sl(ec.target)].clone();
+        let pid = Self::prot_id(&obj);
+        let queued = self
+            .sched
+            .prots
+            .get(pid)
+            .is_some_and(|p| !p.queues[ec.entry as usize].is_empty());
+        if !queued && self.barrier_open(ec.kind, ec.entry, &ec.barrier_args, ec.span)? {
+            return Ok(ProtStep::Body);
+        }
+        let deadline = self.deadline(ec.timed);
+        if ec.conditional || deadline.is_some_and(|d| d <= self.m.clock.now()) {
+            return Ok(ProtStep::Other);
+        }
+        self.tasking_on();
+        let me = self.sched.cur;
+        self.sched.prots[pid].queues[ec.entry as usize].push_back(me);
+        self.sched.block(
+            tasking::Wait::Prot {
+                obj: pid,
+                entry: ec.entry,
+                deadline,
+            },
+            true,
+        );
+        Ok(ProtStep::Wait)
+    }
+
+    /// The end of a protected action on `obj`: the first queued call whose
+    /// barrier is now open runs its body next (before any other task), and
+    /// the task that ran an entry body for another gives way.
+    fn serve(&mut self, obj: Var, bargs: &[Arg], span: Span) -> R<()> {
+        if !self.sched.active() {
+            return Ok(());
+        }
+        let me = self.sched.cur;
+        let proxied = std::mem::take(&mut self.sched.threads[me].proxied);
+        let v = self.m.stack[self.sl(obj)].clone();
+        let pid = Self::prot_id(&v);
+        let k = self.sched.prots[pid].ptype;
+        let n = self.sched.prots[pid].queues.len();
+        let mut grant = None;
+        for e in 0..n {
+            if self.sched.prots[pid].queues[e].is_empty() {
+                continue;
+            }
+            if self.barrier_open(k, e as u32, bargs, span)? {
+                grant = self.sched.prots[pid].queues[e].pop_front();
+                break;
+            }
+        }
+        match grant {
+            Some(w) => {
+                self.sched.threads[w].granted = true;
+                if proxied {
+                    self.sched.make_ready(me);
+                } else {
+                    self.sched.make_first(me);
+                }
+                self.sched.make_first(w);
+                self.sched.switch = true;
+            }
+            None if proxied => self.sched.yield_now(),
+            None => {}
+        }
+        Ok(())
+    }
+
+    /// A selective accept: Some(target) when an alternative is taken now.
+    fn op_select(&mut self, sel: &SelectOp<'a>) -> R<Option<u32>> {
+        let me = self.sched.cur;
+        let again = self.rerun();
+        if std::mem::take(&mut self.sched.threads[me].timed_out)
+            && let Some((.., t)) = sel.delay
+        {
+            return Ok(Some(t));
+        }
+        let open = |this: &Self, g: Option<Var>| g.is_none_or(|g| this.int_at(g) != 0);
+        for (g, entry, params, target) in &sel.alts {
+            if open(self, *g)
+                && let Some(c) = self.sched.threads[me].entries[*entry as usize].pop_front()
+            {
+                self.begin_rendezvous(c, params);
+                return Ok(Some(*target));
+            }
+        }
+        if let Some(t) = sel.els {
+            return Ok(Some(t));
+        }
+        let entries: Vec<u32> = sel
+            .alts
+            .iter()
+            .filter(|a| open(self, a.0))
+            .map(|a| a.1)
+            .collect();
+        let delay = sel.delay.filter(|d| open(self, d.0));
+        let terminate = sel.terminate.is_some_and(|g| open(self, g));
+        if entries.is_empty() && delay.is_none() && !terminate {
+            return Err(self.raise(
+                check::PROGRAM_ERROR,
+                format!(
+                    "{} every alternative of the select is closed",
+                    self.m.location(sel.span)
+                ),
+                sel.span,
+            ));
+        }
+        let deadline = if again {
+            self.sched.threads[me].deadline
+        } else {
+            let d = delay.and_then(|(_, x, until, _)| self.deadline(Some((x, until))));
+            self.sched.threads[me].deadline = d;
+            d
+        };
+        if let (Some(d), Some((.., t))) = (deadline, delay)
+            && d <= self.m.clock.now()
+        {
+            return Ok(Some(t));
+        }
+        self.sched.block(
+            tasking::Wait::Accept {
+                entries,
+                deadline,
+                terminate,
+            },
+            true,
+        );
+        Ok(None)
+    }
+
+    /// Exchanges the machine's per-thread registers with thread `t`'s.
+    fn swap_registers(&mut self, t: tasking::Tid) {
+        let th = &mut self.sched.threads[t];
+        std::mem::swap(&mut self.m.display, &mut th.display);
+        std::mem::swap(&mut self.m.current, &mut th.current);
+        std::mem::swap(&mut self.m.depth, &mut th.depth);
+        std::mem::swap(&mut self.m.calls, &mut th.calls);
+    }
+
+    /// Makes `t` the running thread: its saved registers, or its body's
+    /// first frame when it starts.
+    fn resume(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>, t: tasking::Tid) -> R<Regs<'a>> {
+        self.sched.cur = t;
+        self.sched.switches += 1;
+        self.sched.threads[t].wait = tasking::Wait::Running;
+        if let Some(r) = self.sched.threads[t].regs.take() {
+            self.swap_registers(t);
+            return Ok(r);
+        }
+        let (body, mut display) = self.sched.threads[t].start.take().expect("a task to start");
+        let code = self.code_of(cache, body);
+        let sub = &self.c.funcs[body as usize];
+        let level = sub.level as usize;
+        let own = (sub.nslots as usize).max(sub.params.len());
+        let base = self.m.stack.len();
+        let top = base + own + code.temps as usize;
+        self.m.stack.resize(top, Value::Undef);
+        display.resize(level + 1, 0);
+        display[level] = base;
+        let th = &mut self.sched.threads[t];
+        th.display = display;
+        th.current = Vec::new();
+        th.depth = 0;
+        th.calls = Vec::new();
+        self.swap_registers(t);
+        Ok(Regs {
+            frames: Vec::new(),
+            cur: code,
+            pc: 0,
+            current_base: 0,
+            pending: None,
+            root: Some((base, top)),
+        })
+    }
+
+    /// The running task's body has ended (`failed`: by an exception).
+    fn task_ends(&mut self, root: Option<(usize, usize)>, failed: bool) {
+        let me = self.sched.cur;
+        if let Some((b, t)) = root {
+            self.free_frame(b, t);
+        }
+        let during_activation = failed && self.sched.threads[me].activator.is_some();
+        self.end_thread(me, during_activation);
+        self.swap_registers(me);
+    }
+
+    /// Switches to the next ready thread after the running one ended.
+    fn next_thread(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>) -> R<Regs<'a>> {
+        let next = loop {
+            if let Some(n) = self.sched.pick() {
+                break n;
+            }
+            if !self.idle() {
+                return Err(self.deadlock());
+            }
+        };
+        self.resume(cache, next)
     }
 
     #[inline(always)]
@@ -823,6 +1653,8 @@ impl<'a> Run<'a> {
         let mut current_base = self.m.current.len();
         let mut pending: Option<Box<Occurrence>> = None;
         let mut enter: Option<(Rc<Code<'a>>, CallInfo<'a>)> = None;
+        // A task's own frame (None: the main program's code).
+        let mut root: Option<(usize, usize)> = None;
         loop {
             let op = &cur.ops[pc as usize];
             pc += 1;
@@ -1063,48 +1895,12 @@ impl<'a> Run<'a> {
                     }
                 }),
                 Op::Call(f, args, ops, d, span) => {
-                    if self.m.depth >= MAX_DEPTH {
-                        Err(self.raise(
-                            check::STORAGE_ERROR,
-                            "stack overflow (recursion too deep)",
-                            *span,
-                        ))
-                    } else {
-                        let code = self.code_of(cache, *f);
-                        let sub = &self.c.funcs[*f as usize];
-                        let level = sub.level as usize;
-                        let nslots = sub.nslots as usize;
-                        let base = self.m.stack.len();
-                        let n = ops.len();
-                        // The arguments go straight into the new frame; the
-                        // display is still the caller's while they are read.
-                        for v in ops.iter() {
-                            let x = self.m.stack[self.sl(*v)].clone();
-                            self.m.stack.push(x);
+                    match self.push_call(cache, *f, args, ops, *d, *span) {
+                        Ok(e) => {
+                            enter = Some(e);
+                            Ok(())
                         }
-                        let own = nslots.max(n).max(sub.params.len());
-                        self.m
-                            .stack
-                            .resize(base + own + code.temps as usize, Value::Undef);
-                        if self.m.display.len() <= level {
-                            self.m.display.resize(level + 1, 0);
-                        }
-                        let saved = self.m.display[level];
-                        self.m.display[level] = base;
-                        self.m.depth += 1;
-                        self.m.calls.push(*span);
-                        enter = Some((
-                            code,
-                            CallInfo {
-                                f: *f,
-                                args,
-                                dst: *d,
-                                base,
-                                level,
-                                saved,
-                            },
-                        ));
-                        Ok(())
+                        Err(e) => Err(e),
                     }
                 }
                 Op::Return(x) => {
@@ -1141,7 +1937,147 @@ impl<'a> Run<'a> {
                     self.m.current.truncate(current_base + *n as usize);
                     Ok(())
                 }
+                Op::Delay(x, until, span) => self.op_delay(*x, *until, *span),
+                Op::Activate(span) => self.op_activate(*span),
+                Op::MasterEnter => {
+                    self.tasking_on();
+                    self.sched.me().masters.push(Vec::new());
+                    Ok(())
+                }
+                Op::MasterLeave => {
+                    if self.dependents_done(false) {
+                        self.sched.me().masters.pop();
+                    }
+                    Ok(())
+                }
+                Op::MasterUnwind => {
+                    if self.dependents_done(false) {
+                        self.sched.me().masters.pop();
+                        Err(Flow::Raise(pending.take().expect("an occurrence")))
+                    } else {
+                        Ok(())
+                    }
+                }
+                Op::AwaitAll => {
+                    self.dependents_done(true);
+                    Ok(())
+                }
+                Op::Accept(entry, params) => {
+                    let me = self.sched.cur;
+                    self.sched.threads[me].rerun = false;
+                    match self.sched.threads[me].entries[*entry as usize].pop_front() {
+                        Some(c) => {
+                            self.begin_rendezvous(c, params);
+                            Ok(())
+                        }
+                        None => {
+                            self.sched.block(
+                                tasking::Wait::Accept {
+                                    entries: vec![*entry],
+                                    deadline: None,
+                                    terminate: false,
+                                },
+                                true,
+                            );
+                            Ok(())
+                        }
+                    }
+                }
+                Op::AcceptEnd(params) => {
+                    self.end_rendezvous(params, None);
+                    Ok(())
+                }
+                Op::AcceptFail => {
+                    let occ = pending.take().expect("an occurrence");
+                    self.end_rendezvous(&[], Some(occ.clone()));
+                    Err(Flow::Raise(occ))
+                }
+                Op::EntryCall(ec) => self.op_entry_call(ec),
+                Op::EntryDone(args, ops, other, span) => match self.entry_done(args, ops, *span) {
+                    Ok(true) => Ok(()),
+                    Ok(false) => {
+                        pc = other.expect("a timed or conditional call");
+                        Ok(())
+                    }
+                    Err(e) => Err(e),
+                },
+                Op::ProtEntry(ec) => match self.op_prot_entry(ec) {
+                    Ok(ProtStep::Body) => {
+                        let sub = &self.c.prots[ec.kind as usize].entries[ec.entry as usize];
+                        let body = sub.body.expect("an entry body");
+                        match self.push_call(cache, body, ec.args, &ec.ops, None, ec.span) {
+                            Ok(e) => {
+                                enter = Some(e);
+                                Ok(())
+                            }
+                            Err(e) => Err(e),
+                        }
+                    }
+                    Ok(ProtStep::Other) => {
+                        // Skip the ProtDone after it.
+                        pc = ec.other;
+                        Ok(())
+                    }
+                    Ok(ProtStep::Wait) => Ok(()),
+                    Err(e) => Err(e),
+                },
+                Op::ProtDone(obj, bargs, span) => self.serve(*obj, bargs, *span),
+                Op::Select(sel) => match self.op_select(sel) {
+                    Ok(Some(t)) => {
+                        pc = t;
+                        Ok(())
+                    }
+                    Ok(None) => Ok(()),
+                    Err(e) => Err(e),
+                },
+                Op::Abort(ts) => {
+                    for t in ts.iter() {
+                        let t = self.int_at(*t) as usize;
+                        self.abort_task(t);
+                    }
+                    Ok(())
+                }
             };
+            if self.sched.switch {
+                // The running thread blocked (or ended): save it, run the
+                // next ready one.
+                self.sched.switch = false;
+                let th = &mut self.sched.threads[self.sched.cur];
+                if std::mem::take(&mut th.reexec) {
+                    pc -= 1;
+                    th.rerun = true;
+                }
+                let me = self.sched.cur;
+                let regs = Regs {
+                    frames: std::mem::take(&mut frames),
+                    cur: cur.clone(),
+                    pc,
+                    current_base,
+                    pending: pending.take(),
+                    root,
+                };
+                if self.sched.threads[me].wait == tasking::Wait::Terminated && me != 0 {
+                    for (b, t) in regs.regions() {
+                        self.free_frame(b, t);
+                    }
+                    self.end_thread(me, false);
+                } else {
+                    self.sched.threads[me].regs = Some(regs);
+                }
+                self.swap_registers(me);
+                let next = loop {
+                    if let Some(n) = self.sched.pick() {
+                        break n;
+                    }
+                    if !self.idle() {
+                        return Err(self.deadlock());
+                    }
+                };
+                let r = self.resume(cache, next)?;
+                (frames, cur, pc, current_base, pending, root) =
+                    (r.frames, r.cur, r.pc, r.current_base, r.pending, r.root);
+                continue;
+            }
             if let Some((code, info)) = enter.take() {
                 frames.push(Frame {
                     code: std::mem::replace(&mut cur, code),
@@ -1179,9 +2115,17 @@ impl<'a> Run<'a> {
                             _ => (None, true),
                         };
                         let Some(frame) = frames.pop() else {
-                            // The end of the level-0 code.
                             self.m.current.truncate(current_base);
-                            return Ok(());
+                            if root.is_none() {
+                                // The end of the level-0 code.
+                                return Ok(());
+                            }
+                            // The end of a task body.
+                            self.task_ends(root, false);
+                            let r = self.next_thread(cache)?;
+                            (frames, cur, pc, current_base, pending, root) =
+                                (r.frames, r.cur, r.pc, r.current_base, r.pending, r.root);
+                            break;
                         };
                         let info = frame.call.as_ref().expect("a called frame");
                         // Copy-out values live in the frame.
@@ -1230,7 +2174,15 @@ impl<'a> Run<'a> {
                         }
                         let Some(frame) = frames.pop() else {
                             self.m.current.truncate(current_base);
-                            return Err(Flow::Raise(occ));
+                            if root.is_none() {
+                                return Err(Flow::Raise(occ));
+                            }
+                            // An exception ends a task silently.
+                            self.task_ends(root, true);
+                            let r = self.next_thread(cache)?;
+                            (frames, cur, pc, current_base, pending, root) =
+                                (r.frames, r.cur, r.pc, r.current_base, r.pending, r.root);
+                            break;
                         };
                         self.pop_frame(&frame, current_base);
                         cur = frame.code;
@@ -1248,13 +2200,23 @@ impl<'a> Run<'a> {
     /// when it was entered); no copy-out.
     fn pop_frame(&mut self, f: &Frame<'a>, entry: usize) {
         if let Some(info) = &f.call {
-            self.m.stack.truncate(info.base);
+            self.free_frame(info.base, info.top);
             self.m.display[info.level] = info.saved;
             self.m.depth -= 1;
             self.m.calls.pop();
         }
         self.m.current.truncate(entry);
     }
+}
+
+/// What a protected entry call does now.
+enum ProtStep {
+    /// The barrier is open (or the call was granted): run the body.
+    Body,
+    /// A conditional call not taken, or a timed one that timed out.
+    Other,
+    /// Queued: the task waits.
+    Wait,
 }
 
 /// What is compiled: a body, level-0 statements, or the call of the main

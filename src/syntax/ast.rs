@@ -81,10 +81,19 @@ pub enum DeclKind {
     Unsupported(&'static str),
     TaskSpec(Box<TaskSpec>),
     TaskBody(Box<TaskBody>),
-    /// `for E use at Addr;`
+    /// `for E use at Addr;` (an interrupt entry or a device register).
     InterruptUse {
         entry: Ident,
         address: Expr,
+    },
+    ProtectedSpec(Box<ProtectedSpec>),
+    ProtectedBody(Box<ProtectedBody>),
+    /// `entry E (...) when Barrier is ... begin ... end E;` in a protected body.
+    EntryBody(Box<EntryBody>),
+    /// `pragma Name (Args);`
+    Pragma {
+        name: Ident,
+        args: Vec<Expr>,
     },
 }
 
@@ -234,6 +243,44 @@ pub struct TaskSpec {
     pub name: Ident,
     pub entries: Vec<EntryDecl>,
     pub is_type: bool,
+    /// `for E use at Addr;` inside the spec.
+    pub addresses: Vec<(Ident, Expr)>,
+    /// `pragma Priority (N);` inside the spec.
+    pub priority: Option<Expr>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProtectedSpec {
+    pub name: Ident,
+    pub is_type: bool,
+    /// Subprogram declarations and entries (as `SubprogramDecl` and `Entry`).
+    pub ops: Vec<ProtOp>,
+    /// The private part: components (object declarations) and more operations.
+    pub private: Vec<Decl>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ProtOp {
+    Sub(SubprogramSpec),
+    Entry(EntryDecl),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProtectedBody {
+    pub name: Ident,
+    pub decls: Vec<Decl>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct EntryBody {
+    pub name: Ident,
+    pub params: Vec<Param>,
+    pub barrier: Expr,
+    pub decls: Vec<Decl>,
+    pub body: Block,
+    pub span: Span,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -307,7 +354,10 @@ pub enum StmtKind {
         name: Option<Name>,
         message: Option<Expr>,
     },
-    Delay(Expr),
+    /// `delay D;` or `delay until T;` (true).
+    Delay(bool, Expr),
+    /// `abort T1, T2;`
+    Abort(Vec<Expr>),
     Accept {
         entry: Ident,
         params: Vec<Param>,
@@ -329,7 +379,10 @@ pub struct SelectAlt {
 #[derive(Clone, Debug, PartialEq)]
 pub enum SelectKind {
     Accept(Box<Stmt>, Vec<Stmt>),
-    Delay(Expr, Vec<Stmt>),
+    /// `delay [until] D; stmts`
+    Delay(bool, Expr, Vec<Stmt>),
+    /// An entry call and the statements after it (timed and conditional calls).
+    Call(Expr, Vec<Stmt>),
     Terminate,
     Else(Vec<Stmt>),
 }

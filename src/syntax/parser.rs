@@ -1003,9 +1003,18 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .map(|(name, message)| StmtKind::Raise { name, message });
     let delay_stmt = kw!(Delay)
         .ignore_then(kw!(Until).or_not())
-        .ignore_then(expr.clone())
+        .then(expr.clone())
         .then_ignore(semi())
-        .map(StmtKind::Delay);
+        .map(|(until, d)| StmtKind::Delay(until.is_some(), d));
+    let abort_stmt = kw!(Abort)
+        .ignore_then(
+            expr.clone()
+                .separated_by(just(Token::Comma))
+                .at_least(1)
+                .collect::<Vec<_>>(),
+        )
+        .then_ignore(semi())
+        .map(StmtKind::Abort);
     let accept = kw!(Accept)
         .ignore_then(ident())
         .then(params(expr.clone()))
@@ -1046,11 +1055,18 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 .then(stmts.clone())
                 .map(|(a, s)| SelectKind::Accept(Box::new(a), s)),
             kw!(Delay)
-                .ignore_then(expr.clone())
+                .ignore_then(kw!(Until).or_not())
+                .then(expr.clone())
                 .then_ignore(semi())
                 .then(stmts.clone())
-                .map(|(d, s)| SelectKind::Delay(d, s)),
+                .map(|((until, d), s)| SelectKind::Delay(until.is_some(), d, s)),
             kw!(Terminate).then(semi()).to(SelectKind::Terminate),
+            // An entry call: the first alternative of a timed or
+            // conditional entry call.
+            expr.clone()
+                .then_ignore(semi())
+                .then(stmts.clone())
+                .map(|(c, s)| SelectKind::Call(c, s)),
         )))
         .map_with(|(guard, kind), e| SelectAlt {
             guard,
@@ -1122,6 +1138,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         return_stmt,
         raise_stmt,
         delay_stmt,
+        abort_stmt,
         accept.clone().map(|s| s.kind),
         select_stmt,
         goto,
@@ -1363,6 +1380,12 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 })
         });
     #[derive(Clone)]
+    enum TaskItem {
+        Entry(EntryDecl),
+        Address(DeclKind),
+        Pragma(DeclKind),
+    }
+    #[derive(Clone)]
     enum SubTail {
         Unsupported(&'static str),
         Decl(Option<String>),
@@ -1543,10 +1566,22 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .then_ignore(semi())
         .map(DeclKind::Use);
     let pragma = kw!(Pragma)
-        .then(ident())
-        .then(any().and_is(semi().not()).repeated())
-        .then(semi())
-        .to(DeclKind::Unsupported("pragma"));
+        .ignore_then(ident())
+        .then(
+            ident()
+                .then(just(Token::Arrow))
+                .or_not()
+                .ignore_then(expr.clone())
+                .separated_by(just(Token::Comma))
+                .collect::<Vec<_>>()
+                .delimited_by(just(Token::LParen), just(Token::RParen))
+                .or_not(),
+        )
+        .then_ignore(semi())
+        .map(|(name, args)| DeclKind::Pragma {
+            name,
+            args: args.unwrap_or_default(),
+        });
     let entry_decl = kw!(Entry)
         .ignore_then(ident())
         .then(params(expr.clone()))
@@ -1580,23 +1615,42 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
             .then(
                 kw!(Is)
                     .ignore_then(
-                        entry_decl
-                            .map(Some)
-                            .or(interrupt_use.clone().map(|_| None))
-                            .repeated()
-                            .collect::<Vec<_>>(),
+                        choice((
+                            entry_decl.clone().map(TaskItem::Entry),
+                            interrupt_use.clone().map(TaskItem::Address),
+                            pragma.clone().map(TaskItem::Pragma),
+                        ))
+                        .repeated()
+                        .collect::<Vec<_>>(),
                     )
                     .then_ignore(kw!(End))
                     .then_ignore(ident().or_not())
                     .or_not(),
             )
             .then_ignore(semi())
-            .map(|((is_type, name), entries)| {
-                DeclKind::TaskSpec(Box::new(TaskSpec {
+            .map(|((is_type, name), items)| {
+                let mut spec = TaskSpec {
                     name,
-                    entries: entries.unwrap_or_default().into_iter().flatten().collect(),
+                    entries: Vec::new(),
                     is_type: is_type.is_some(),
-                }))
+                    addresses: Vec::new(),
+                    priority: None,
+                };
+                for item in items.unwrap_or_default() {
+                    match item {
+                        TaskItem::Entry(e) => spec.entries.push(e),
+                        TaskItem::Address(DeclKind::InterruptUse { entry, address }) => {
+                            spec.addresses.push((entry, address))
+                        }
+                        TaskItem::Pragma(DeclKind::Pragma { name, mut args })
+                            if name.key == "priority" && args.len() == 1 =>
+                        {
+                            spec.priority = args.pop()
+                        }
+                        _ => {}
+                    }
+                }
+                DeclKind::TaskSpec(Box::new(spec))
             }),
     )));
     let generic = kw!(Generic)
@@ -1609,16 +1663,67 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         )
         .ignore_then(decl.clone())
         .to(DeclKind::Unsupported("a generic unit"));
-    let protected = kw!(Protected)
-        .then(kw!(Type).or(kw!(Body)).or_not())
-        .then(ident())
-        .then(
-            any()
-                .and_is(kw!(End).then(ident()).then(semi()).not())
-                .repeated(),
-        )
-        .then(kw!(End).then(ident()).then(semi()))
-        .to(DeclKind::Unsupported("a protected object"));
+    let prot_op = choice((
+        entry_decl.clone().map(|e| Some(ProtOp::Entry(e))),
+        spec.clone()
+            .then_ignore(semi())
+            .map(|s| Some(ProtOp::Sub(s))),
+        pragma.clone().to(None),
+    ));
+    let protected = kw!(Protected).ignore_then(choice((
+        kw!(Body)
+            .ignore_then(ident())
+            .then_ignore(kw!(Is))
+            .then(decls.clone())
+            .then_ignore(kw!(End))
+            .then_ignore(ident().or_not())
+            .then_ignore(semi())
+            .map_with(|(name, decls), e| {
+                DeclKind::ProtectedBody(Box::new(ProtectedBody {
+                    name,
+                    decls,
+                    span: e.span(),
+                }))
+            }),
+        kw!(Type)
+            .or_not()
+            .then(ident())
+            .then_ignore(kw!(Is))
+            .then(prot_op.repeated().collect::<Vec<_>>())
+            .then(kw!(Private).ignore_then(decls.clone()).or_not())
+            .then_ignore(kw!(End))
+            .then_ignore(ident().or_not())
+            .then_ignore(semi())
+            .map_with(|(((is_type, name), ops), private), e| {
+                DeclKind::ProtectedSpec(Box::new(ProtectedSpec {
+                    name,
+                    is_type: is_type.is_some(),
+                    ops: ops.into_iter().flatten().collect(),
+                    private: private.unwrap_or_default(),
+                    span: e.span(),
+                }))
+            }),
+    )));
+    let entry_body = kw!(Entry)
+        .ignore_then(ident())
+        .then(params(expr.clone()))
+        .then_ignore(kw!(When))
+        .then(expr.clone())
+        .then_ignore(kw!(Is))
+        .then(decls.clone())
+        .then(block.clone())
+        .then_ignore(ident().or_not())
+        .then_ignore(semi())
+        .map_with(|((((name, params), barrier), decls), body), e| {
+            DeclKind::EntryBody(Box::new(EntryBody {
+                name,
+                params,
+                barrier,
+                decls,
+                body,
+                span: e.span(),
+            }))
+        });
 
     decl.define(
         choice((
@@ -1633,6 +1738,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
             interrupt_use,
             generic,
             protected,
+            entry_body,
         ))
         .map_with(|kind, e| Decl {
             kind,

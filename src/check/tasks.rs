@@ -1,0 +1,1095 @@
+//! Tasks, entries, `accept`, `select`, protected objects and address
+//! clauses (tasks.md). A task type is a table entry with its entries'
+//! profiles and its body (a subprogram without parameters); a protected
+//! type is a record of components reached through a hidden last parameter
+//! of every operation.
+
+use super::*;
+
+/// What kind of body [`Checker::check_body`] checks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum BodyKind {
+    Subprogram,
+    Task,
+    /// An operation or entry of the protected type.
+    Protected(u32),
+}
+
+/// The name of the hidden object parameter of protected operations.
+const SELF: &str = "<protected object>";
+
+impl Checker {
+    fn new_func(
+        &mut self,
+        name: String,
+        params: Vec<Param>,
+        ret: Option<TypeId>,
+        span: Span,
+    ) -> FuncId {
+        let id = self.funcs.len() as FuncId;
+        self.funcs.push(Subprogram {
+            name,
+            params,
+            ret,
+            level: self.level + 1,
+            nslots: 0,
+            body: None,
+            span,
+        });
+        self.imports.push(None);
+        id
+    }
+
+    fn static_int(&mut self, e: &ast::Expr, what: &str) -> Option<i64> {
+        let x = self.expr(e, Some(UNIV_INT));
+        match self.static_value(&x) {
+            Some(Static::Int(v)) => i64::try_from(v).ok(),
+            _ => {
+                if x.ty != ERROR {
+                    self.err(Diagnostic::ty(
+                        e.span,
+                        format!("{what} must be a static integer"),
+                    ));
+                }
+                None
+            }
+        }
+    }
+
+    pub(super) fn task_spec(&mut self, t: &ast::TaskSpec, span: Span, out: &mut Vec<Stmt>) {
+        let k = self.tasks.len() as u32;
+        let name = t.name.name.clone();
+        let ty = self.types.add(&name, TypeKind::Task(k));
+        let mut entries = Vec::new();
+        for e in &t.entries {
+            if entries
+                .iter()
+                .any(|x: &EntryDef| x.name.eq_ignore_ascii_case(&e.name.name))
+            {
+                self.err(
+                    Diagnostic::name(e.name.span, format!("entry `{}` is declared twice", e.name.name))
+                        .with_hint("entry families and overloaded entries are not supported: give each entry its own name"),
+                );
+            }
+            let params = self.params(&e.params);
+            let f = self.new_func(format!("{name}.{}", e.name.name), params, None, e.span);
+            entries.push(EntryDef {
+                name: e.name.name.clone(),
+                profile: f,
+                interrupt: None,
+            });
+        }
+        for (id, addr) in &t.addresses {
+            let Some(i) = entries
+                .iter()
+                .position(|x| x.name.eq_ignore_ascii_case(&id.name))
+            else {
+                self.err(Diagnostic::name(
+                    id.span,
+                    format!("`{}` is not an entry of task `{name}`", id.name),
+                ));
+                continue;
+            };
+            if !self.funcs[entries[i].profile as usize].params.is_empty() {
+                self.err(
+                    Diagnostic::ty(id.span, format!("the interrupt entry `{}` has parameters", id.name))
+                        .with_hint("an interrupt carries no data: declare `entry Interrupt;` and read the device's registers"),
+                );
+            }
+            if let Some(a) = self.static_int(addr, "an address") {
+                entries[i].interrupt = Some(a);
+            }
+        }
+        let priority = t.priority.as_ref().map(|p| {
+            let e = self.expr(p, Some(INTEGER));
+            self.coerce(e, INTEGER)
+        });
+        self.tasks.push(TaskDef {
+            name: name.clone(),
+            entries,
+            body: None,
+            priority,
+            span,
+        });
+        if t.is_type {
+            self.declare_checked(&t.name, Entity::Type(ty));
+        } else {
+            self.object(std::slice::from_ref(&t.name), false, ty, None, span, out);
+        }
+    }
+
+    /// The task or protected type a body names.
+    fn body_target(&mut self, id: &ast::Ident) -> Option<TypeKind> {
+        self.lookup(&id.key).iter().find_map(|e| {
+            let t = match e {
+                Entity::Type(t) | Entity::Var { ty: t, .. } => *t,
+                _ => return None,
+            };
+            match self.types.kind(t) {
+                k @ (TypeKind::Task(_) | TypeKind::Protected(_)) => Some(k.clone()),
+                _ => None,
+            }
+        })
+    }
+
+    pub(super) fn task_body(&mut self, b: &ast::TaskBody, span: Span) {
+        let Some(TypeKind::Task(k)) = self.body_target(&b.name) else {
+            self.err(
+                Diagnostic::name(
+                    b.name.span,
+                    format!("task body `{}` has no task declaration", b.name.name),
+                )
+                .with_hint(format!(
+                    "declare `task {} is ... end {};` (or `task type`) before its body",
+                    b.name.name, b.name.name
+                )),
+            );
+            return;
+        };
+        if self.tasks[k as usize].body.is_some() {
+            self.err(Diagnostic::name(
+                b.name.span,
+                format!("task `{}` already has a body", b.name.name),
+            ));
+            return;
+        }
+        let f = self.new_func(b.name.name.clone(), Vec::new(), None, span);
+        self.tasks[k as usize].body = Some(f);
+        self.task_ctx.push(k);
+        self.check_body(
+            f,
+            &b.name.key,
+            &b.name.name,
+            &[],
+            &b.decls,
+            &b.body,
+            BodyKind::Task,
+        );
+        self.task_ctx.pop();
+    }
+
+    pub(super) fn protected_spec(&mut self, p: &ast::ProtectedSpec, out: &mut Vec<Stmt>) {
+        let k = self.prots.len() as u32;
+        let name = p.name.name.clone();
+        // The components: a record with the object's number first.
+        let mut fields = vec![types::Field {
+            name: "<number>".into(),
+            key: "<number>".into(),
+            ty: INTEGER,
+            default: None,
+        }];
+        for d in &p.private {
+            match &d.kind {
+                ast::DeclKind::Object {
+                    names,
+                    ty,
+                    init,
+                    constant: false,
+                    anon: None,
+                } => {
+                    let t = self.subtype_ind(ty);
+                    let default = init.as_ref().map(|e| {
+                        let x = self.expr(e, Some(t));
+                        self.coerce(x, t)
+                    });
+                    for n in names {
+                        fields.push(types::Field {
+                            name: n.name.clone(),
+                            key: n.key.clone(),
+                            ty: t,
+                            default: default.clone(),
+                        });
+                    }
+                }
+                ast::DeclKind::Pragma { .. } => {}
+                _ => self.err(
+                    Diagnostic::unsupported(
+                        d.span,
+                        "this declaration in a protected type's private part",
+                    )
+                    .with_hint("the private part holds the components: `Count : Natural := 0;`"),
+                ),
+            }
+        }
+        let rec = self
+            .types
+            .add(&format!("{name} components"), TypeKind::Record(fields));
+        let access = self
+            .types
+            .add(&format!("{name} object"), TypeKind::Access(rec));
+        let ty = self.types.add(&name, TypeKind::Protected(k));
+        let self_param = |ty| Param {
+            name: SELF.into(),
+            mode: ast::Mode::In,
+            ty,
+            default: None,
+        };
+        let mut members = Vec::new();
+        let mut entries = Vec::new();
+        for op in &p.ops {
+            match op {
+                ast::ProtOp::Sub(spec) => {
+                    let params = self.params(&spec.params);
+                    let ret = spec.ret.as_ref().map(|r| self.type_mark(r));
+                    let display = spec.name.display();
+                    let profile =
+                        self.new_func(format!("{name}.{display}"), params.clone(), ret, spec.span);
+                    let mut real_params = params;
+                    real_params.push(self_param(access));
+                    let real =
+                        self.new_func(format!("{name}.{display}"), real_params, ret, spec.span);
+                    self.prot_real.insert(profile, (real, k));
+                    members.push((spec.name.key(), profile, real, ret.is_some()));
+                }
+                ast::ProtOp::Entry(e) => {
+                    let params = self.params(&e.params);
+                    let profile =
+                        self.new_func(format!("{name}.{}", e.name.name), params, None, e.span);
+                    entries.push(ProtEntry {
+                        name: e.name.name.clone(),
+                        profile,
+                        barrier: None,
+                        body: None,
+                    });
+                }
+            }
+        }
+        self.prot_members.resize(k as usize + 1, Vec::new());
+        self.prot_members[k as usize] = members;
+        self.prots.push(ProtDef {
+            name: name.clone(),
+            rec,
+            entries,
+            span: p.span,
+        });
+        if p.is_type {
+            self.declare_checked(&p.name, Entity::Type(ty));
+        } else {
+            self.object(std::slice::from_ref(&p.name), false, ty, None, p.span, out);
+        }
+    }
+
+    /// The access type of a protected type's object parameter.
+    fn prot_access(&self, k: u32) -> TypeId {
+        let rec = self.prots[k as usize].rec;
+        (0..self.types.list.len() as TypeId)
+            .rev()
+            .find(|t| matches!(self.types.get(*t).kind, TypeKind::Access(d) if d == rec))
+            .unwrap_or(ERROR)
+    }
+
+    pub(super) fn protected_body(&mut self, b: &ast::ProtectedBody) {
+        let Some(TypeKind::Protected(k)) = self.body_target(&b.name) else {
+            self.err(Diagnostic::name(
+                b.name.span,
+                format!(
+                    "protected body `{}` has no protected declaration",
+                    b.name.name
+                ),
+            ));
+            return;
+        };
+        self.prot_ctx.push((k, None));
+        self.push_scope();
+        // The operations are visible inside the body by their names.
+        let members = self.prot_members[k as usize].clone();
+        for (key, profile, _, _) in &members {
+            self.declare(key, Entity::Func(*profile));
+        }
+        for d in &b.decls {
+            match &d.kind {
+                ast::DeclKind::SubprogramBody(sb) => self.prot_op_body(k, sb),
+                ast::DeclKind::EntryBody(eb) => self.entry_body_of(k, eb),
+                ast::DeclKind::Pragma { .. } => {}
+                _ => self.err(
+                    Diagnostic::unsupported(d.span, "this declaration in a protected body")
+                        .with_hint(
+                            "a protected body holds the bodies of its subprograms and entries",
+                        ),
+                ),
+            }
+        }
+        self.pop_scope();
+        self.prot_ctx.pop();
+        for (key, profile, real, _) in &members {
+            if self.funcs[*real as usize].body.is_none() {
+                let what = self.spelled(key);
+                self.err(Diagnostic::name(
+                    b.span,
+                    format!("protected body `{}` lacks a body for `{what}`", b.name.name),
+                ));
+                let _ = profile;
+            }
+        }
+        for e in self.prots[k as usize].entries.clone() {
+            if e.body.is_none() {
+                self.err(Diagnostic::name(
+                    b.span,
+                    format!(
+                        "protected body `{}` lacks a body for entry `{}`",
+                        b.name.name, e.name
+                    ),
+                ));
+            }
+        }
+    }
+
+    fn prot_op_body(&mut self, k: u32, b: &ast::SubprogramBody) {
+        let key = b.spec.name.key();
+        let params = self.params(&b.spec.params);
+        let ret = b.spec.ret.as_ref().map(|r| self.type_mark(r));
+        let found = self.prot_members[k as usize]
+            .iter()
+            .find(|(n, p, _, _)| {
+                *n == key && self.same_profile(&self.funcs[*p as usize], &params, ret)
+            })
+            .map(|(_, _, r, _)| *r);
+        let Some(real) = found else {
+            self.err(Diagnostic::name(
+                b.spec.span,
+                format!(
+                    "`{}` is not declared in protected `{}` with this profile",
+                    b.spec.name.display(),
+                    self.prots[k as usize].name
+                ),
+            ));
+            return;
+        };
+        if self.funcs[real as usize].body.is_some() {
+            self.err(Diagnostic::name(
+                b.spec.span,
+                format!("`{}` already has a body", b.spec.name.display()),
+            ));
+            return;
+        }
+        let written: Vec<&ast::Ident> = b.spec.params.iter().flat_map(|p| p.names.iter()).collect();
+        let saw = self.check_body(
+            real,
+            &key,
+            &b.spec.name.display(),
+            &written,
+            &b.decls,
+            &b.body,
+            BodyKind::Protected(k),
+        );
+        if ret.is_some() && !saw {
+            self.err(Diagnostic::ty(
+                b.spec.span,
+                format!(
+                    "function `{}` has no `return` statement",
+                    b.spec.name.display()
+                ),
+            ));
+        }
+    }
+
+    pub(super) fn entry_body(&mut self, b: &ast::EntryBody) {
+        match self.prot_ctx.last() {
+            Some((k, _)) => {
+                let k = *k;
+                self.entry_body_of(k, b)
+            }
+            None => self.err(Diagnostic::syntax(
+                b.span,
+                "an entry body stands only in a protected body",
+            )),
+        }
+    }
+
+    fn entry_body_of(&mut self, k: u32, b: &ast::EntryBody) {
+        let Some(i) = self.prots[k as usize]
+            .entries
+            .iter()
+            .position(|e| e.name.eq_ignore_ascii_case(&b.name.name))
+        else {
+            self.err(Diagnostic::name(
+                b.name.span,
+                format!(
+                    "`{}` is not an entry of protected `{}`",
+                    b.name.name, self.prots[k as usize].name
+                ),
+            ));
+            return;
+        };
+        let entry = self.prots[k as usize].entries[i].clone();
+        if entry.body.is_some() {
+            self.err(Diagnostic::name(
+                b.name.span,
+                format!("entry `{}` already has a body", b.name.name),
+            ));
+            return;
+        }
+        let params = self.params(&b.params);
+        let profile = self.funcs[entry.profile as usize].clone();
+        if !self.same_profile(&profile, &params, None) {
+            self.err(Diagnostic::ty(
+                b.name.span,
+                format!(
+                    "the parameters of entry body `{}` differ from its declaration",
+                    b.name.name
+                ),
+            ));
+        }
+        let access = self.prot_access(k);
+        let pname = self.prots[k as usize].name.clone();
+        // The barrier: a function of the object alone.
+        let barrier = self.new_func(
+            format!("{pname}.{} barrier", b.name.name),
+            vec![Param {
+                name: SELF.into(),
+                mode: ast::Mode::In,
+                ty: access,
+                default: None,
+            }],
+            Some(BOOLEAN),
+            b.barrier.span,
+        );
+        let ret_stmt = ast::Block {
+            stmts: vec![ast::Stmt {
+                kind: ast::StmtKind::Return(Some(b.barrier.clone())),
+                span: b.barrier.span,
+            }],
+            handlers: Vec::new(),
+            span: b.barrier.span,
+        };
+        self.check_body(
+            barrier,
+            "<barrier>",
+            &b.name.name,
+            &[],
+            &[],
+            &ret_stmt,
+            BodyKind::Protected(k),
+        );
+        let mut real_params = profile.params.clone();
+        real_params.push(Param {
+            name: SELF.into(),
+            mode: ast::Mode::In,
+            ty: access,
+            default: None,
+        });
+        let body = self.new_func(
+            format!("{pname}.{}", b.name.name),
+            real_params,
+            None,
+            b.span,
+        );
+        let written: Vec<&ast::Ident> = b.params.iter().flat_map(|p| p.names.iter()).collect();
+        self.check_body(
+            body,
+            &b.name.key,
+            &b.name.name,
+            &written,
+            &b.decls,
+            &b.body,
+            BodyKind::Protected(k),
+        );
+        let e = &mut self.prots[k as usize].entries[i];
+        e.barrier = Some(barrier);
+        e.body = Some(body);
+    }
+
+    /// Inside a protected operation: the components by name, as components
+    /// of the object parameter.
+    pub(super) fn declare_components(&mut self, k: u32, obj: Option<Var>) {
+        let Some(obj) = obj else { return };
+        let rec = self.prots[k as usize].rec;
+        let access = self.prot_access(k);
+        let sp = self.prots[k as usize].span;
+        let fields = self
+            .types
+            .fields(rec)
+            .map(|f| f.to_vec())
+            .unwrap_or_default();
+        for (i, f) in fields.iter().enumerate().skip(1) {
+            let p = Ex {
+                kind: ExKind::Var(obj),
+                ty: access,
+                span: sp,
+            };
+            let d = Ex {
+                kind: ExKind::Deref(Box::new(p)),
+                ty: rec,
+                span: sp,
+            };
+            let x = Ex {
+                kind: ExKind::Field(Box::new(d), i as u32),
+                ty: f.ty,
+                span: sp,
+            };
+            self.declare(&f.name, Entity::Alias(Box::new(x)));
+        }
+    }
+
+    /// A call of a protected operation from inside the protected body (by
+    /// its name alone) goes to the same object.
+    pub(super) fn internal_prot_call(
+        &mut self,
+        f: FuncId,
+        mut args: Vec<Arg>,
+        span: Span,
+    ) -> (FuncId, Vec<Arg>) {
+        let Some(&(real, k)) = self.prot_real.get(&f) else {
+            return (f, args);
+        };
+        match self.prot_ctx.iter().rev().find(|(p, _)| *p == k) {
+            Some((_, Some(obj))) => {
+                let access = self.prot_access(k);
+                args.push(Arg {
+                    mode: ast::Mode::In,
+                    value: Ex {
+                        kind: ExKind::Var(*obj),
+                        ty: access,
+                        span,
+                    },
+                    back_check: None,
+                });
+                (real, args)
+            }
+            _ => (f, args),
+        }
+    }
+
+    /// The protected type of a prefix that names a protected object, looked
+    /// at without reporting anything.
+    pub(super) fn peek_protected(&mut self, q: &ast::Expr) -> Option<u32> {
+        let t = match &q.kind {
+            ast::ExprKind::Name(id) => match self.lookup(&id.key).first() {
+                Some(Entity::Var { ty, .. }) => *ty,
+                _ => return None,
+            },
+            ast::ExprKind::Apply(p, _) => match &p.kind {
+                ast::ExprKind::Name(id) => match self.lookup(&id.key).first() {
+                    Some(Entity::Var { ty, .. }) => self.types.array(*ty).map(|a| a.1)?,
+                    _ => return None,
+                },
+                _ => return None,
+            },
+            _ => return None,
+        };
+        let t = self.types.designated(t).unwrap_or(t);
+        match self.types.kind(t) {
+            TypeKind::Protected(k) => Some(*k),
+            _ => None,
+        }
+    }
+
+    fn prot_obj(&mut self, obj: Ex) -> Ex {
+        match self.types.designated(obj.ty) {
+            Some(d) if matches!(self.types.kind(d), TypeKind::Protected(_)) => {
+                let sp = obj.span;
+                Ex {
+                    kind: ExKind::Deref(Box::new(obj)),
+                    ty: d,
+                    span: sp,
+                }
+            }
+            _ => obj,
+        }
+    }
+
+    fn obj_arg(&self, k: u32, obj: Ex) -> Arg {
+        let access = self.prot_access(k);
+        Arg {
+            mode: ast::Mode::In,
+            value: Ex { ty: access, ..obj },
+            back_check: None,
+        }
+    }
+
+    /// `P.F` or `P.F (args)` in an expression: a protected function.
+    pub(super) fn prot_function(
+        &mut self,
+        k: u32,
+        obj: Ex,
+        id: &ast::Ident,
+        args: &[ast::Arg],
+        sp: Span,
+    ) -> Ex {
+        let obj = self.prot_obj(obj);
+        let fs: Vec<FuncId> = self.prot_members[k as usize]
+            .iter()
+            .filter(|(n, ..)| *n == id.key)
+            .map(|(_, p, _, _)| *p)
+            .collect();
+        if fs.is_empty() {
+            self.err(Diagnostic::name(
+                id.span,
+                format!(
+                    "`{}` is not a function of protected `{}`",
+                    id.name, self.prots[k as usize].name
+                ),
+            ));
+            return self.err_ex(sp);
+        }
+        let outer = std::mem::take(&mut self.prot_ctx);
+        let r = self.call(&fs, args, None, false, sp, &id.name);
+        self.prot_ctx = outer;
+        let Some((f, mut a)) = r else {
+            return self.err_ex(sp);
+        };
+        let Some(&(real, _)) = self.prot_real.get(&f) else {
+            return self.err_ex(sp);
+        };
+        self.index_ref(id.span, &id.key, &Entity::Func(f));
+        a.push(self.obj_arg(k, obj));
+        let r = self.funcs[real as usize].ret.unwrap_or(ERROR);
+        self.mk(ExKind::Call(real, a), r, sp)
+    }
+
+    /// A task value: a task object, or an access to one.
+    pub(super) fn task_value(&mut self, e: &ast::Expr) -> Option<Ex> {
+        let x = self.expr(e, None);
+        let x = match self.types.designated(x.ty) {
+            Some(d) if matches!(self.types.kind(d), TypeKind::Task(_)) => {
+                let sp = x.span;
+                Ex {
+                    kind: ExKind::Deref(Box::new(x)),
+                    ty: d,
+                    span: sp,
+                }
+            }
+            _ => x,
+        };
+        match self.types.kind(x.ty) {
+            TypeKind::Task(_) => Some(x),
+            TypeKind::Error => None,
+            _ => {
+                self.err(Diagnostic::ty(
+                    e.span,
+                    format!(
+                        "a task is expected here, this is `{}`",
+                        self.types.name(x.ty)
+                    ),
+                ));
+                None
+            }
+        }
+    }
+
+    /// `T.E (args)` or `P.Op (args)` as a statement: an entry call or a
+    /// protected procedure. `None`: not a call on a task or protected object.
+    pub(super) fn concurrent_call(
+        &mut self,
+        prefix: &ast::Expr,
+        args: &[ast::Arg],
+        span: Span,
+    ) -> Option<Option<StmtKind>> {
+        let ast::ExprKind::Select(q, id) = &prefix.kind else {
+            return None;
+        };
+        if self.expanded_prefix(q) {
+            return None;
+        }
+        let is_conc = |this: &mut Self, t: TypeId| {
+            let t = this.types.designated(t).unwrap_or(t);
+            matches!(
+                this.types.kind(t),
+                TypeKind::Task(_) | TypeKind::Protected(_)
+            )
+        };
+        let peek = match &q.kind {
+            ast::ExprKind::Name(n) => match self.lookup(&n.key).first() {
+                Some(Entity::Var { ty, .. }) => Some(*ty),
+                _ => None,
+            },
+            _ => None,
+        };
+        if let Some(t) = peek
+            && !is_conc(self, t)
+        {
+            return None;
+        }
+        let obj = self.expr(q, None);
+        if !is_conc(self, obj.ty) {
+            return None;
+        }
+        Some(self.entry_or_procedure(obj, id, args, span))
+    }
+
+    fn entry_or_procedure(
+        &mut self,
+        obj: Ex,
+        id: &ast::Ident,
+        args: &[ast::Arg],
+        span: Span,
+    ) -> Option<StmtKind> {
+        let obj = match self.types.designated(obj.ty) {
+            Some(d) => {
+                let sp = obj.span;
+                Ex {
+                    kind: ExKind::Deref(Box::new(obj)),
+                    ty: d,
+                    span: sp,
+                }
+            }
+            None => obj,
+        };
+        match self.types.kind(obj.ty).clone() {
+            TypeKind::Task(k) => {
+                let def = &self.tasks[k as usize];
+                let Some(i) = def
+                    .entries
+                    .iter()
+                    .position(|e| e.name.eq_ignore_ascii_case(&id.name))
+                else {
+                    let names: Vec<String> = def.entries.iter().map(|e| e.name.clone()).collect();
+                    let mut d = Diagnostic::name(
+                        id.span,
+                        format!("`{}` is not an entry of task `{}`", id.name, def.name),
+                    );
+                    if !names.is_empty() {
+                        d = d.with_hint(format!("its entries: {}", names.join(", ")));
+                    }
+                    self.err(d);
+                    return None;
+                };
+                let profile = def.entries[i].profile;
+                let name = format!("{}.{}", def.name, id.name);
+                let (_, a) = self.call(&[profile], args, None, true, span, &name)?;
+                Some(StmtKind::EntryCall(Box::new(EntryCall {
+                    target: CallTarget::Task {
+                        task: obj,
+                        ttype: k,
+                        entry: i as u32,
+                    },
+                    args: a,
+                })))
+            }
+            TypeKind::Protected(k) => {
+                if let Some(i) = self.prots[k as usize]
+                    .entries
+                    .iter()
+                    .position(|e| e.name.eq_ignore_ascii_case(&id.name))
+                {
+                    let profile = self.prots[k as usize].entries[i].profile;
+                    let name = format!("{}.{}", self.prots[k as usize].name, id.name);
+                    let (_, mut a) = self.call(&[profile], args, None, true, span, &name)?;
+                    a.push(self.obj_arg(k, obj));
+                    return Some(StmtKind::EntryCall(Box::new(EntryCall {
+                        target: CallTarget::Prot {
+                            prot: k,
+                            entry: i as u32,
+                        },
+                        args: a,
+                    })));
+                }
+                let fs: Vec<FuncId> = self.prot_members[k as usize]
+                    .iter()
+                    .filter(|(n, ..)| *n == id.key)
+                    .map(|(_, p, _, _)| *p)
+                    .collect();
+                if fs.is_empty() {
+                    self.err(Diagnostic::name(
+                        id.span,
+                        format!(
+                            "`{}` is not declared in protected `{}`",
+                            id.name, self.prots[k as usize].name
+                        ),
+                    ));
+                    return None;
+                }
+                let outer = std::mem::take(&mut self.prot_ctx);
+                let r = self.call(&fs, args, None, true, span, &id.name);
+                self.prot_ctx = outer;
+                let (f, mut a) = r?;
+                let real = self.prot_real.get(&f)?.0;
+                self.index_ref(id.span, &id.key, &Entity::Func(f));
+                a.push(self.obj_arg(k, obj));
+                Some(StmtKind::ProtCall(real, a))
+            }
+            _ => None,
+        }
+    }
+
+    /// `accept E (...) [do ... end E];` in the body of the task declaring E.
+    pub(super) fn accept(
+        &mut self,
+        entry: &ast::Ident,
+        params: &[ast::Param],
+        body: Option<&ast::Block>,
+        sp: Span,
+    ) -> Option<Accept> {
+        let Some(&k) = self.task_ctx.last() else {
+            self.err(Diagnostic::syntax(
+                sp,
+                "`accept` stands only in a task body",
+            ));
+            return None;
+        };
+        let in_body = self.ctx.last().and_then(|c| c.func) == self.tasks[k as usize].body;
+        if !in_body {
+            self.err(Diagnostic::syntax(
+                sp,
+                "`accept` stands in the task body itself, not in a subprogram inside it",
+            ));
+            return None;
+        }
+        let def = self.tasks[k as usize].clone();
+        let Some(i) = def
+            .entries
+            .iter()
+            .position(|e| e.name.eq_ignore_ascii_case(&entry.name))
+        else {
+            self.err(Diagnostic::name(
+                entry.span,
+                format!("`{}` is not an entry of task `{}`", entry.name, def.name),
+            ));
+            return None;
+        };
+        let profile = self.funcs[def.entries[i].profile as usize].clone();
+        let ps = self.params(params);
+        if !self.same_profile(&profile, &ps, None) {
+            self.err(
+                Diagnostic::ty(
+                    sp,
+                    format!(
+                        "the parameters of `accept {}` differ from the entry's declaration",
+                        entry.name
+                    ),
+                )
+                .with_hint(format!(
+                    "declared as `{}`",
+                    self.signature(def.entries[i].profile)
+                )),
+            );
+            return None;
+        }
+        self.push_scope();
+        let mut slots = Vec::new();
+        let written = params.iter().flat_map(|p| p.names.iter());
+        for (p, id) in profile.params.iter().zip(written) {
+            let var = self.new_slot();
+            let e = Entity::Var {
+                var,
+                ty: p.ty,
+                constant: p.mode == ast::Mode::In,
+                value: None,
+            };
+            self.index_def(&id.name, id.span, &e, None);
+            self.declare(&id.name, e);
+            slots.push((var, p.mode));
+        }
+        let body = body.map(|b| self.block(b));
+        self.pop_scope();
+        Some(Accept {
+            entry: i as u32,
+            params: slots,
+            body,
+        })
+    }
+
+    pub(super) fn delay_amount(&mut self, until: bool, d: &ast::Expr) -> Ex {
+        if until {
+            let e = self.expr(d, None);
+            if e.ty != ERROR && !matches!(self.types.kind(e.ty), TypeKind::Time) {
+                self.err(
+                    Diagnostic::ty(
+                        d.span,
+                        format!(
+                            "`delay until` needs a time, this is `{}`",
+                            self.types.name(e.ty)
+                        ),
+                    )
+                    .with_hint("`delay until Clock + 1.0;` (Ada.Calendar or Ada.Real_Time)"),
+                );
+            }
+            e
+        } else {
+            let e = self.expr(d, Some(DURATION));
+            self.coerce(e, DURATION)
+        }
+    }
+
+    fn guard(&mut self, g: &Option<ast::Expr>) -> Option<Ex> {
+        g.as_ref().map(|g| {
+            let e = self.expr(g, Some(BOOLEAN));
+            self.coerce(e, BOOLEAN)
+        })
+    }
+
+    pub(super) fn select(&mut self, alts: &[ast::SelectAlt], sp: Span) -> Option<StmtKind> {
+        use ast::SelectKind as K;
+        // A timed or conditional entry call.
+        if let Some(K::Call(call, then)) = alts.first().map(|a| &a.kind) {
+            let call_stmt = self.call_stmt(call)?;
+            let StmtKind::EntryCall(ec) = call_stmt else {
+                self.err(Diagnostic::ty(
+                    call.span,
+                    "a timed or conditional call must call an entry",
+                ));
+                return None;
+            };
+            let then = self.scoped(then);
+            let (delay, other) = match alts.get(1).map(|a| &a.kind) {
+                Some(K::Delay(until, d, s)) if alts.len() == 2 && alts[1].guard.is_none() => {
+                    (Some((*until, self.delay_amount(*until, d))), self.scoped(s))
+                }
+                Some(K::Else(s)) if alts.len() == 2 => (None, self.scoped(s)),
+                _ => {
+                    self.err(
+                        Diagnostic::syntax(
+                            sp,
+                            "an entry call in `select` takes one `or delay ...;` or one `else`",
+                        )
+                        .with_hint("`select T.E; or delay 1.0; Put_Line (\"late\"); end select;`"),
+                    );
+                    return None;
+                }
+            };
+            return Some(StmtKind::TimedCall(Box::new(TimedCall {
+                call: *ec,
+                then,
+                delay,
+                other,
+            })));
+        }
+        let mut out = Select {
+            alts: Vec::new(),
+            delay: None,
+            terminate: None,
+            els: None,
+        };
+        for a in alts {
+            match &a.kind {
+                K::Accept(acc, then) => {
+                    let guard = self.guard(&a.guard);
+                    let ast::StmtKind::Accept {
+                        entry,
+                        params,
+                        body,
+                    } = &acc.kind
+                    else {
+                        continue;
+                    };
+                    let Some(x) = self.accept(entry, params, body.as_ref(), acc.span) else {
+                        continue;
+                    };
+                    let then = self.scoped(then);
+                    out.alts.push((guard, x, then));
+                }
+                K::Delay(until, d, then) => {
+                    let guard = self.guard(&a.guard);
+                    if out.delay.is_some() || out.terminate.is_some() {
+                        self.err(Diagnostic::syntax(
+                            a.span,
+                            "a `select` has at most one `delay` or `terminate` alternative here",
+                        ));
+                        continue;
+                    }
+                    let d = self.delay_amount(*until, d);
+                    let then = self.scoped(then);
+                    out.delay = Some((guard, *until, d, then));
+                }
+                K::Terminate => {
+                    let guard = self.guard(&a.guard);
+                    if out.delay.is_some() || out.terminate.is_some() {
+                        self.err(Diagnostic::syntax(
+                            a.span,
+                            "a `select` cannot have both `terminate` and `delay`, nor two of them",
+                        ));
+                        continue;
+                    }
+                    out.terminate = Some(guard);
+                }
+                K::Else(s) => {
+                    if out.delay.is_some() || out.terminate.is_some() {
+                        self.err(Diagnostic::syntax(
+                            a.span,
+                            "a `select` with `else` has no `delay` or `terminate` alternative",
+                        ));
+                    }
+                    out.els = Some(self.scoped(s));
+                }
+                K::Call(c, _) => {
+                    self.err(Diagnostic::syntax(
+                        c.span,
+                        "an entry call stands only first in a timed or conditional call",
+                    ));
+                }
+            }
+        }
+        if out.alts.is_empty() {
+            self.err(Diagnostic::syntax(
+                sp,
+                "a selective accept needs at least one `accept` alternative",
+            ));
+            return None;
+        }
+        Some(StmtKind::Select(Box::new(out)))
+    }
+
+    fn scoped(&mut self, ss: &[ast::Stmt]) -> Vec<Stmt> {
+        self.push_scope();
+        let r = self.stmts(ss);
+        self.pop_scope();
+        r
+    }
+
+    /// `E'Count`, `T'Callable`, `T'Terminated`.
+    pub(super) fn task_attribute(&mut self, p: &ast::Expr, key: &str, sp: Span) -> Option<Ex> {
+        if key == "count" {
+            let ast::ExprKind::Name(id) = &p.kind else {
+                return None;
+            };
+            if let Some(&(k, obj)) = self.prot_ctx.last()
+                && let Some(i) = self.prots[k as usize]
+                    .entries
+                    .iter()
+                    .position(|e| e.name.eq_ignore_ascii_case(&id.name))
+            {
+                let obj = obj?;
+                let access = self.prot_access(k);
+                let o = Ex {
+                    kind: ExKind::Var(obj),
+                    ty: access,
+                    span: sp,
+                };
+                return Some(self.mk(
+                    ExKind::Attr(AttrOp::ProtCount(i as u32), vec![o]),
+                    INTEGER,
+                    sp,
+                ));
+            }
+            if let Some(&k) = self.task_ctx.last()
+                && let Some(i) = self.tasks[k as usize]
+                    .entries
+                    .iter()
+                    .position(|e| e.name.eq_ignore_ascii_case(&id.name))
+            {
+                return Some(self.mk(
+                    ExKind::Attr(AttrOp::Count(i as u32), Vec::new()),
+                    INTEGER,
+                    sp,
+                ));
+            }
+            self.err(Diagnostic::name(
+                id.span,
+                format!(
+                    "`{}'Count` needs an entry of the enclosing task or protected body",
+                    id.name
+                ),
+            ));
+            return Some(self.err_ex(sp));
+        }
+        let t = self.task_value(p)?;
+        let op = if key == "callable" {
+            AttrOp::Callable
+        } else {
+            AttrOp::Terminated
+        };
+        Some(self.mk(ExKind::Attr(op, vec![t]), BOOLEAN, sp))
+    }
+
+    /// `for X use at Addr;` outside a task spec: a device register.
+    pub(super) fn address_clause(&mut self, name: &ast::Ident, _address: &ast::Expr, span: Span) {
+        self.err(
+            Diagnostic::unsupported(span, "an address clause on an object").with_hint(format!(
+                "`{}` cannot be mapped to a device register yet",
+                name.name
+            )),
+        );
+    }
+
+    pub(super) fn pragma(&mut self, _name: &ast::Ident, _span: Span) {}
+}

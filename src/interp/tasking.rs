@@ -1,0 +1,716 @@
+//! Tasks on the compiled engine (tasks.md): each task is a thread of the
+//! engine's explicit frames (its own registers, display and occurrences),
+//! all in one value stack; one runs at a time, chosen by a deterministic
+//! scheduler on the virtual clock.
+//!
+//! - A task runs until it blocks (an entry call, an accept or select that
+//!   must wait, a delay, a master waiting for its tasks, its end); then the
+//!   ready task that has waited longest, highest priority first, runs.
+//! - When no task is ready, the clock advances to the earliest wake-up
+//!   (a delay, a timed call's or select's timeout); when there is none,
+//!   the program is deadlocked and ends with a diagnostic naming each task
+//!   and what it waits for.
+//! - Frames of different tasks interleave in the one stack: a frame that
+//!   is not on top when it ends leaves a hole, taken back when the frames
+//!   above it end.
+//!
+//! Before the first task is created no thread exists and nothing here
+//! costs anything: a sequential program runs exactly as before.
+
+use super::vm::Regs;
+use super::*;
+use std::collections::{HashMap, VecDeque};
+
+pub(crate) type Tid = usize;
+
+/// What a thread waits for.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Wait {
+    Running,
+    Ready,
+    /// Created by a declaration, not yet activated.
+    Unactivated,
+    /// An activator waiting for its tasks' activation.
+    Activation,
+    Delay(f64),
+    /// An entry call queued on a task, not yet accepted.
+    Call {
+        server: Tid,
+        entry: u32,
+        deadline: Option<f64>,
+    },
+    /// An entry call being accepted.
+    Rendezvous(Tid),
+    /// An `accept` or `select` waiting for a caller.
+    Accept {
+        entries: Vec<u32>,
+        deadline: Option<f64>,
+        terminate: bool,
+    },
+    /// A protected entry call queued on a closed barrier.
+    Prot {
+        obj: usize,
+        entry: u32,
+        deadline: Option<f64>,
+    },
+    /// A master waiting for its dependent tasks.
+    Dependents,
+    Terminated,
+}
+
+/// How an entry call ended, for the caller.
+#[derive(Debug, Default)]
+pub(crate) enum Outcome {
+    #[default]
+    Pending,
+    Done,
+    Timeout,
+    Error(Box<Occurrence>),
+}
+
+pub(crate) struct Thread<'a> {
+    pub name: String,
+    pub wait: Wait,
+    pub priority: i64,
+    /// Registers of the engine while the thread does not run (a task not
+    /// started yet has none).
+    pub regs: Option<Regs<'a>>,
+    /// A task not started yet: its body and the display it sees.
+    pub start: Option<(FuncId, Vec<usize>)>,
+    pub display: Vec<usize>,
+    pub current: Vec<Rc<Occurrence>>,
+    pub depth: usize,
+    pub calls: Vec<Span>,
+    /// Callers queued on each entry.
+    pub entries: Vec<VecDeque<Tid>>,
+    /// Callers in rendezvous with this task (nested accepts).
+    pub rendezvous: Vec<Tid>,
+    /// The stack slots of the entry call this thread makes (its operands).
+    pub call: Vec<usize>,
+    pub outcome: Outcome,
+    /// The task waiting for this task's activation (until it is reported).
+    pub activator: Option<Tid>,
+    pub activating: usize,
+    pub activation_failed: bool,
+    pub unactivated: Vec<Tid>,
+    /// Dependent tasks of each master region being executed.
+    pub masters: Vec<Vec<Tid>>,
+    /// The thread whose master this task depends on.
+    pub parent: Option<Tid>,
+    /// The blocking instruction runs again when the thread resumes.
+    pub reexec: bool,
+    /// The instruction now running is such a second run.
+    pub rerun: bool,
+    /// Resumed because its timeout passed.
+    pub timed_out: bool,
+    /// A protected entry call granted by another task (its barrier is open
+    /// and the body is to run now).
+    pub granted: bool,
+    /// Running an entry body granted by another task, which waits for it.
+    pub proxied: bool,
+    pub deadline: Option<f64>,
+    pub callable: bool,
+    /// When it became ready or blocked (longest waiting first).
+    pub seq: u64,
+    /// The task's type (None: the environment task).
+    pub ttype: Option<u32>,
+}
+
+impl<'a> Thread<'a> {
+    fn new(name: String, ttype: Option<u32>, entries: usize) -> Thread<'a> {
+        Thread {
+            name,
+            wait: Wait::Unactivated,
+            priority: DEFAULT_PRIORITY,
+            regs: None,
+            start: None,
+            display: Vec::new(),
+            current: Vec::new(),
+            depth: 0,
+            calls: Vec::new(),
+            entries: vec![VecDeque::new(); entries],
+            rendezvous: Vec::new(),
+            call: Vec::new(),
+            outcome: Outcome::Pending,
+            activator: None,
+            activating: 0,
+            activation_failed: false,
+            unactivated: Vec::new(),
+            masters: Vec::new(),
+            parent: None,
+            reexec: false,
+            rerun: false,
+            timed_out: false,
+            proxied: false,
+            granted: false,
+            deadline: None,
+            callable: true,
+            seq: 0,
+            ttype,
+        }
+    }
+}
+
+/// GNAT's `System.Default_Priority`.
+pub(crate) const DEFAULT_PRIORITY: i64 = 15;
+
+/// The entry queues of one protected object.
+#[derive(Default)]
+pub(crate) struct ProtState {
+    pub queues: Vec<VecDeque<Tid>>,
+    pub ptype: u32,
+}
+
+#[derive(Default)]
+pub(crate) struct Sched<'a> {
+    /// Empty until the first task is created; then [0] is the environment
+    /// task (the main program).
+    pub threads: Vec<Thread<'a>>,
+    pub cur: Tid,
+    pub ready: VecDeque<Tid>,
+    pub prots: Vec<ProtState>,
+    /// Freed frame regions not on top of the stack: top -> base.
+    pub holes: HashMap<usize, usize>,
+    /// Set by an instruction that blocked the running thread.
+    pub switch: bool,
+    /// Tasks whose master is the library level (the environment).
+    pub library: Vec<Tid>,
+    pub seq: u64,
+    /// Task switches so far (for `--trace`).
+    pub switches: u64,
+}
+
+impl<'a> Sched<'a> {
+    pub fn active(&self) -> bool {
+        !self.threads.is_empty()
+    }
+
+    pub fn me(&mut self) -> &mut Thread<'a> {
+        &mut self.threads[self.cur]
+    }
+
+    fn tick(&mut self) -> u64 {
+        self.seq += 1;
+        self.seq
+    }
+
+    /// Makes `t` ready (at the end of the queue).
+    pub fn make_ready(&mut self, t: Tid) {
+        let s = self.tick();
+        let th = &mut self.threads[t];
+        if th.wait == Wait::Terminated {
+            return;
+        }
+        th.wait = Wait::Ready;
+        th.seq = s;
+        self.ready.push_back(t);
+    }
+
+    /// Makes `t` ready to run before every other ready task.
+    pub fn make_first(&mut self, t: Tid) {
+        let s = self.tick();
+        let th = &mut self.threads[t];
+        th.wait = Wait::Ready;
+        th.seq = s;
+        self.ready.retain(|x| *x != t);
+        self.ready.push_front(t);
+    }
+
+    /// Blocks the running thread on `w`; `again`: its instruction runs
+    /// again when it resumes.
+    pub fn block(&mut self, w: Wait, again: bool) {
+        let s = self.tick();
+        let me = self.me();
+        me.wait = w;
+        me.reexec = again;
+        me.seq = s;
+        self.switch = true;
+    }
+
+    /// The running thread gives way to the ready ones.
+    pub fn yield_now(&mut self) {
+        let c = self.cur;
+        self.make_ready(c);
+        self.switch = true;
+    }
+
+    /// The next ready thread: highest priority, then longest waiting.
+    pub fn pick(&mut self) -> Option<Tid> {
+        let best = self
+            .ready
+            .iter()
+            .enumerate()
+            .max_by(|(_, a), (_, b)| {
+                let (pa, pb) = (self.threads[**a].priority, self.threads[**b].priority);
+                // Equal priority: the one queued first wins (max_by keeps
+                // the last maximum, so compare positions reversed).
+                pa.cmp(&pb).then(std::cmp::Ordering::Greater)
+            })
+            .map(|(i, _)| i)?;
+        self.ready.remove(best)
+    }
+
+    /// Whether the server `s` is waiting in an accept or select with
+    /// `entry` open.
+    pub fn accepting(&self, s: Tid, entry: u32) -> bool {
+        matches!(&self.threads[s].wait, Wait::Accept { entries, .. } if entries.contains(&entry))
+    }
+
+    /// Whether task `t` can take its `terminate` alternative: it waits at
+    /// one, and so does every task depending on it (or has ended).
+    fn at_terminate(&self, t: Tid) -> bool {
+        match &self.threads[t].wait {
+            Wait::Terminated => true,
+            Wait::Accept {
+                terminate: true, ..
+            } => self.threads[t]
+                .masters
+                .iter()
+                .flatten()
+                .all(|d| self.at_terminate(*d)),
+            _ => false,
+        }
+    }
+
+    /// The earliest time a blocked thread waits for.
+    pub fn next_deadline(&self) -> Option<f64> {
+        self.threads
+            .iter()
+            .filter_map(|t| match &t.wait {
+                Wait::Delay(d) => Some(*d),
+                Wait::Call { deadline, .. }
+                | Wait::Accept { deadline, .. }
+                | Wait::Prot { deadline, .. } => *deadline,
+                _ => None,
+            })
+            .min_by(|a, b| a.total_cmp(b))
+    }
+
+    /// What each living task waits for, for the deadlock diagnostic and `:tasks`.
+    pub fn describe(&self, tasks: &[TaskDef], prots: &[ProtDef]) -> Vec<String> {
+        let entry_name = |t: Tid, e: u32| {
+            self.threads[t]
+                .ttype
+                .and_then(|k| tasks.get(k as usize))
+                .and_then(|d| d.entries.get(e as usize))
+                .map(|x| x.name.clone())
+                .unwrap_or_else(|| format!("entry {e}"))
+        };
+        self.threads
+            .iter()
+            .enumerate()
+            .filter(|(_, t)| t.wait != Wait::Terminated)
+            .map(|(i, t)| {
+                let what = match &t.wait {
+                    Wait::Running => "runs".to_string(),
+                    Wait::Ready => "is ready to run".to_string(),
+                    Wait::Unactivated => "is not activated yet".to_string(),
+                    Wait::Activation => "waits for the activation of its tasks".to_string(),
+                    Wait::Delay(d) => format!("waits in a delay until {d:.3} s"),
+                    Wait::Call { server, entry, .. } => format!(
+                        "waits in a call of {}.{} (not accepted)",
+                        self.threads[*server].name,
+                        entry_name(*server, *entry)
+                    ),
+                    Wait::Rendezvous(s) => {
+                        format!("waits for {} to end a rendezvous", self.threads[*s].name)
+                    }
+                    Wait::Accept { entries, .. } => {
+                        let names: Vec<String> =
+                            entries.iter().map(|e| entry_name(i, *e)).collect();
+                        if names.len() == 1 {
+                            format!("waits to accept {}", names[0])
+                        } else {
+                            format!("waits to accept one of {}", names.join(", "))
+                        }
+                    }
+                    Wait::Prot { obj, entry, .. } => {
+                        let p = &self.prots[*obj];
+                        let (pn, en) = prots
+                            .get(p.ptype as usize)
+                            .map(|d| {
+                                (
+                                    d.name.clone(),
+                                    d.entries
+                                        .get(*entry as usize)
+                                        .map(|e| e.name.clone())
+                                        .unwrap_or_default(),
+                                )
+                            })
+                            .unwrap_or_default();
+                        format!("waits on the closed barrier of {pn}.{en}")
+                    }
+                    Wait::Dependents => "waits for its tasks to end".to_string(),
+                    Wait::Terminated => "has ended".to_string(),
+                };
+                format!("{} {what}", t.name)
+            })
+            .collect()
+    }
+}
+
+impl<'a> Run<'a> {
+    /// Creates the environment thread (the running program) when the first
+    /// task appears.
+    pub(crate) fn tasking_on(&mut self) {
+        if self.sched.active() {
+            return;
+        }
+        let mut main = Thread::new("main".into(), None, 0);
+        main.wait = Wait::Running;
+        self.sched.threads.push(main);
+        self.sched.cur = 0;
+    }
+
+    /// A new task of type `k` (a declaration's default value or an
+    /// allocator): not activated; its master is the running thread's
+    /// innermost master region.
+    pub(crate) fn create_task(&mut self, k: u32, span: Span) -> R<Value> {
+        if self.m.engine == vm::Engine::Walker {
+            return Err(self.raise(
+                check::PROGRAM_ERROR,
+                "tasks run in the compiled engine only (unset ADAIR_ENGINE)",
+                span,
+            ));
+        }
+        self.tasking_on();
+        let def = &self.c.tasks[k as usize];
+        let Some(body) = def.body else {
+            return Err(self.raise(
+                check::PROGRAM_ERROR,
+                format!("task `{}` has no body", def.name),
+                span,
+            ));
+        };
+        let priority = match &def.priority {
+            Some(p) => self.eval(p)?.int(),
+            None => DEFAULT_PRIORITY,
+        };
+        let level = self.c.funcs[body as usize].level as usize;
+        let display: Vec<usize> = self.m.display[..level.min(self.m.display.len())].to_vec();
+        let tid = self.sched.threads.len();
+        let same = self
+            .sched
+            .threads
+            .iter()
+            .filter(|t| t.ttype == Some(k))
+            .count();
+        let name = if same == 0 {
+            def.name.clone()
+        } else {
+            format!("{} #{}", def.name, same + 1)
+        };
+        let mut t = Thread::new(name, Some(k), def.entries.len());
+        t.priority = priority;
+        t.start = Some((body, display));
+        let cur = self.sched.cur;
+        t.parent = Some(cur);
+        self.sched.threads.push(t);
+        let me = &mut self.sched.threads[cur];
+        match me.masters.last_mut() {
+            Some(m) => m.push(tid),
+            None => self.sched.library.push(tid),
+        }
+        self.sched.threads[cur].unactivated.push(tid);
+        Ok(Value::Int(tid as i64))
+    }
+
+    /// Tasks created by an allocator are activated by it.
+    pub(crate) fn activate_allocated(&mut self) {
+        if !self.sched.active() {
+            return;
+        }
+        let cur = self.sched.cur;
+        let new = std::mem::take(&mut self.sched.threads[cur].unactivated);
+        for t in new {
+            self.sched.make_ready(t);
+        }
+    }
+
+    /// A new protected object of type `k`.
+    pub(crate) fn create_protected(&mut self, k: u32, span: Span) -> R<Value> {
+        let def = &self.c.prots[k as usize];
+        let rec = def.rec;
+        let n = def.entries.len();
+        let v = self.default_value(rec, span)?;
+        let pid = self.sched.prots.len();
+        self.sched.prots.push(ProtState {
+            queues: vec![VecDeque::new(); n],
+            ptype: k,
+        });
+        let v = match v {
+            Value::Rec(mut r) => {
+                Rc::make_mut(&mut r)[0] = Value::Int(pid as i64);
+                Value::Rec(r)
+            }
+            other => other,
+        };
+        Ok(Value::Ptr(Some(Rc::new(RefCell::new(v)))))
+    }
+
+    /// The number of the protected object an object value designates.
+    pub(crate) fn prot_id(v: &Value) -> usize {
+        match v {
+            Value::Ptr(Some(p)) => match &*p.borrow() {
+                Value::Rec(r) => r.first().map(|x| x.int() as usize).unwrap_or(0),
+                _ => 0,
+            },
+            _ => 0,
+        }
+    }
+
+    /// `'Count`, `'Callable`, `'Terminated`.
+    pub(crate) fn task_attr(&mut self, op: AttrOp, args: &[Value]) -> Value {
+        let b = |x: bool| Value::Int(x as i64);
+        match op {
+            AttrOp::Count(e) => {
+                let n = if self.sched.active() {
+                    let me = self.sched.cur;
+                    self.sched.threads[me]
+                        .entries
+                        .get(e as usize)
+                        .map_or(0, |q| q.len())
+                } else {
+                    0
+                };
+                Value::Int(n as i64)
+            }
+            AttrOp::ProtCount(e) => {
+                let pid = Self::prot_id(&args[0]);
+                let n = self
+                    .sched
+                    .prots
+                    .get(pid)
+                    .and_then(|p| p.queues.get(e as usize))
+                    .map_or(0, |q| q.len());
+                Value::Int(n as i64)
+            }
+            AttrOp::Callable => {
+                let t = args[0].int() as usize;
+                b(self.sched.threads.get(t).is_some_and(|t| t.callable))
+            }
+            AttrOp::Terminated => {
+                let t = args[0].int() as usize;
+                b(self
+                    .sched
+                    .threads
+                    .get(t)
+                    .is_none_or(|t| t.wait == Wait::Terminated))
+            }
+            _ => Value::Undef,
+        }
+    }
+
+    /// Frees a frame's slots `base .. top`: truncates when they are on top
+    /// of the stack, else leaves a hole.
+    pub(crate) fn free_frame(&mut self, base: usize, top: usize) {
+        if !self.sched.active() || top >= self.m.stack.len() {
+            self.m.stack.truncate(base);
+            while let Some(b) = self.sched.holes.remove(&self.m.stack.len()) {
+                self.m.stack.truncate(b);
+            }
+            return;
+        }
+        for v in &mut self.m.stack[base..top] {
+            *v = Value::Undef;
+        }
+        self.sched.holes.insert(top, base);
+    }
+
+    /// Ends thread `t`: its callers get Tasking_Error, its master and
+    /// activator hear of it.
+    pub(crate) fn end_thread(&mut self, t: Tid, failed_activation: bool) {
+        let th = &mut self.sched.threads[t];
+        th.wait = Wait::Terminated;
+        th.callable = false;
+        let queued: Vec<Tid> = th.entries.iter_mut().flat_map(|q| q.drain(..)).collect();
+        let partners = std::mem::take(&mut th.rendezvous);
+        let activator = th.activator.take();
+        let parent = th.parent;
+        let name = th.name.clone();
+        for c in queued.into_iter().chain(partners) {
+            let occ = Occurrence {
+                exc: check::TASKING_ERROR,
+                message: format!("the called task {name} has ended"),
+                span: Span {
+                    start: 0,
+                    end: 0,
+                    context: 0,
+                },
+                chain: Vec::new(),
+            };
+            self.sched.threads[c].outcome = Outcome::Error(Box::new(occ));
+            self.sched.make_ready(c);
+        }
+        self.sched.ready.retain(|x| *x != t);
+        if let Some(a) = activator {
+            self.activation_done(a, failed_activation);
+        }
+        if let Some(p) = parent
+            && self.sched.threads[p].wait == Wait::Dependents
+        {
+            self.sched.make_ready(p);
+        }
+    }
+
+    /// One of `a`'s tasks finished its activation.
+    pub(crate) fn activation_done(&mut self, a: Tid, failed: bool) {
+        let th = &mut self.sched.threads[a];
+        th.activating = th.activating.saturating_sub(1);
+        th.activation_failed |= failed;
+        if th.activating == 0 && th.wait == Wait::Activation {
+            self.sched.make_ready(a);
+        }
+    }
+
+    /// When nothing is ready: tasks at `terminate` whose masters wait end;
+    /// else the clock advances to the earliest wake-up. False: nothing can
+    /// ever run again (deadlock).
+    pub(crate) fn idle(&mut self) -> bool {
+        // Terminate alternatives.
+        let waiting: Vec<Tid> = (0..self.sched.threads.len())
+            .filter(|t| self.sched.threads[*t].wait == Wait::Dependents)
+            .collect();
+        let mut ended = false;
+        for m in waiting {
+            let deps: Vec<Tid> = self.sched.threads[m]
+                .masters
+                .last()
+                .cloned()
+                .unwrap_or_default();
+            let deps: Vec<Tid> = if m == 0 && self.sched.threads[m].masters.is_empty() {
+                self.sched.library.clone()
+            } else {
+                deps
+            };
+            if !deps.is_empty() && deps.iter().all(|d| self.sched.at_terminate(*d)) {
+                for d in deps {
+                    self.terminate_tree(d);
+                }
+                ended = true;
+            }
+        }
+        if ended || !self.sched.ready.is_empty() {
+            return true;
+        }
+        let Some(t) = self.sched.next_deadline() else {
+            return false;
+        };
+        let now = self.m.clock.now();
+        if t > now {
+            self.m.clock.sleep(t - now);
+        }
+        let now = self.m.clock.now().max(t);
+        let mut woken: Vec<(u64, Tid)> = Vec::new();
+        for (i, th) in self.sched.threads.iter().enumerate() {
+            let due = match &th.wait {
+                Wait::Delay(d) => *d <= now,
+                Wait::Call { deadline, .. }
+                | Wait::Accept { deadline, .. }
+                | Wait::Prot { deadline, .. } => deadline.is_some_and(|d| d <= now),
+                _ => false,
+            };
+            if due {
+                woken.push((th.seq, i));
+            }
+        }
+        woken.sort();
+        for (_, i) in woken {
+            match self.sched.threads[i].wait.clone() {
+                Wait::Call { server, entry, .. } => {
+                    self.sched.threads[server].entries[entry as usize].retain(|c| *c != i);
+                    self.sched.threads[i].outcome = Outcome::Timeout;
+                }
+                Wait::Prot { obj, entry, .. } => {
+                    self.sched.prots[obj].queues[entry as usize].retain(|c| *c != i);
+                    self.sched.threads[i].timed_out = true;
+                }
+                Wait::Accept { .. } => self.sched.threads[i].timed_out = true,
+                _ => {}
+            }
+            self.sched.make_ready(i);
+        }
+        true
+    }
+
+    /// Ends a task waiting at `terminate`, and its dependents first.
+    fn terminate_tree(&mut self, t: Tid) {
+        if self.sched.threads[t].wait == Wait::Terminated {
+            return;
+        }
+        let deps: Vec<Tid> = self.sched.threads[t]
+            .masters
+            .iter()
+            .flatten()
+            .copied()
+            .collect();
+        for d in deps {
+            self.terminate_tree(d);
+        }
+        self.discard_thread(t);
+        self.end_thread(t, false);
+    }
+
+    /// Frees the frames of a thread that will not run again.
+    pub(crate) fn discard_thread(&mut self, t: Tid) {
+        if let Some(regs) = self.sched.threads[t].regs.take() {
+            for (base, top) in regs.regions() {
+                self.free_frame(base, top);
+            }
+        }
+    }
+
+    /// `abort T`: T and its dependents become not callable and end.
+    pub(crate) fn abort_task(&mut self, t: Tid) {
+        if t >= self.sched.threads.len() || self.sched.threads[t].wait == Wait::Terminated {
+            return;
+        }
+        self.sched.threads[t].callable = false;
+        let deps: Vec<Tid> = self.sched.threads[t]
+            .masters
+            .iter()
+            .flatten()
+            .chain(self.sched.threads[t].unactivated.iter())
+            .copied()
+            .collect();
+        for d in deps {
+            self.abort_task(d);
+        }
+        if t == self.sched.cur {
+            // The running task ends at once (the engine switches).
+            self.sched.switch = true;
+            self.sched.threads[t].wait = Wait::Terminated;
+            return;
+        }
+        // Leave any queue it waits in.
+        match self.sched.threads[t].wait.clone() {
+            Wait::Call { server, entry, .. } => {
+                self.sched.threads[server].entries[entry as usize].retain(|c| *c != t)
+            }
+            Wait::Prot { obj, entry, .. } => {
+                self.sched.prots[obj].queues[entry as usize].retain(|c| *c != t)
+            }
+            _ => {}
+        }
+        self.discard_thread(t);
+        self.end_thread(t, false);
+    }
+
+    /// The deadlock diagnostic: every task and what it waits for.
+    pub(crate) fn deadlock(&mut self) -> Flow {
+        let lines = self.sched.describe(self.c.tasks, self.c.prots);
+        let msg = format!(
+            "deadlock: every task is blocked and nothing can wake one: {}",
+            lines.join("; ")
+        );
+        self.raise(
+            check::PROGRAM_ERROR,
+            msg,
+            Span {
+                start: 0,
+                end: 0,
+                context: 0,
+            },
+        )
+    }
+}
