@@ -125,6 +125,8 @@ impl Diagnostic {
     fn severity_and_message(&self) -> (&'static str, String) {
         match self.phase {
             Phase::Warning => ("warning", self.message.clone()),
+            // A deadlock is no exception the program could handle.
+            Phase::Runtime if self.message.starts_with("deadlock:") => ("error", self.message.clone()),
             Phase::Runtime => ("error", format!("unhandled exception: {}", self.message)),
             _ => ("error", self.message.clone()),
         }

@@ -299,6 +299,16 @@ impl Session {
 
     /// The diagnostic for an exception that left the program.
     pub fn exception_diag(&self, o: &Occurrence) -> Diagnostic {
+        if let Some(rest) = o.message.strip_prefix(crate::interp::tasking::DEADLOCK) {
+            // One note per task: what it waits for, where.
+            let mut d = Diagnostic::new(Phase::Runtime, o.span, crate::interp::tasking::DEADLOCK)
+                .with_label("blocked here")
+                .with_hint("a task waits forever when nobody calls the entry it accepts, or calls an entry nobody accepts: check that every call has its accept");
+            for (line, s) in rest.lines().skip(1).zip(&o.chain) {
+                d = d.with_note(*s, line.to_string());
+            }
+            return d;
+        }
         let name = &self.checker.excs[o.exc as usize].name;
         let msg = if o.message.is_empty() {
             format!("raised {name}")

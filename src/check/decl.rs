@@ -201,7 +201,9 @@ impl Checker {
                 kind: StmtKind::Init(var, value),
                 span,
             });
+            // A task or protected object works without being read.
             if !constant
+                && !self.types.is_unique(t)
                 && self.level > 0
                 && let Some(frame) = self.unread.get_mut(self.level as usize - 1)
             {

@@ -590,7 +590,7 @@ impl Checker {
             self.missing_units.push(text.to_lowercase());
             self.err(
                 Diagnostic::name(n.span, format!("no library unit named `{text}`"))
-                    .with_hint("AdaIR provides Ada.Text_IO, Ada.Integer_Text_IO, Ada.Float_Text_IO, Ada.Numerics, Ada.Numerics.Elementary_Functions, Ada.Calendar, Ada.Exceptions and AdaIR"),
+                    .with_hint("AdaIR provides Ada.Text_IO, Ada.Integer_Text_IO, Ada.Float_Text_IO, Ada.Numerics, Ada.Numerics.Elementary_Functions, Ada.Calendar, Ada.Real_Time, Ada.Exceptions and AdaIR"),
             );
         }
     }

@@ -8,7 +8,7 @@
 
 pub mod builtins;
 pub mod memory;
-pub(crate) mod tasking;
+pub mod tasking;
 pub mod value;
 pub mod vm;
 

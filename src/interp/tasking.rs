@@ -114,6 +114,8 @@ pub(crate) struct Thread<'a> {
     pub seq: u64,
     /// The task's type (None: the environment task).
     pub ttype: Option<u32>,
+    /// Where it blocked last.
+    pub at: Span,
 }
 
 impl<'a> Thread<'a> {
@@ -147,6 +149,7 @@ impl<'a> Thread<'a> {
             callable: true,
             seq: 0,
             ttype,
+            at: crate::diag::span(0, 0, 0),
         }
     }
 }
@@ -161,7 +164,6 @@ pub(crate) struct ProtState {
     pub ptype: u32,
 }
 
-#[derive(Default)]
 pub(crate) struct Sched<'a> {
     /// Empty until the first task is created; then [0] is the environment
     /// task (the main program).
@@ -178,6 +180,26 @@ pub(crate) struct Sched<'a> {
     pub seq: u64,
     /// Task switches so far (for `--trace`).
     pub switches: u64,
+    /// False while the compiled engine evaluates an allocator whose tasks
+    /// it activates itself (and waits for).
+    pub alloc_activates: bool,
+}
+
+impl Default for Sched<'_> {
+    fn default() -> Self {
+        Sched {
+            threads: Vec::new(),
+            cur: 0,
+            ready: VecDeque::new(),
+            prots: Vec::new(),
+            holes: HashMap::new(),
+            switch: false,
+            library: Vec::new(),
+            seq: 0,
+            switches: 0,
+            alloc_activates: true,
+        }
+    }
 }
 
 impl<'a> Sched<'a> {
@@ -218,9 +240,10 @@ impl<'a> Sched<'a> {
 
     /// Blocks the running thread on `w`; `again`: its instruction runs
     /// again when it resumes.
-    pub fn block(&mut self, w: Wait, again: bool) {
+    pub fn block(&mut self, w: Wait, again: bool, at: Span) {
         let s = self.tick();
         let me = self.me();
+        me.at = at;
         me.wait = w;
         me.reexec = again;
         me.seq = s;
@@ -287,7 +310,7 @@ impl<'a> Sched<'a> {
     }
 
     /// What each living task waits for, for the deadlock diagnostic and `:tasks`.
-    pub fn describe(&self, tasks: &[TaskDef], prots: &[ProtDef]) -> Vec<String> {
+    pub fn describe(&self, tasks: &[TaskDef], prots: &[ProtDef]) -> Vec<(Span, String)> {
         let entry_name = |t: Tid, e: u32| {
             self.threads[t]
                 .ttype
@@ -343,7 +366,7 @@ impl<'a> Sched<'a> {
                     Wait::Dependents => "waits for its tasks to end".to_string(),
                     Wait::Terminated => "has ended".to_string(),
                 };
-                format!("{} {what}", t.name)
+                (t.at, format!("{} {what}", t.name))
             })
             .collect()
     }
@@ -417,7 +440,7 @@ impl<'a> Run<'a> {
 
     /// Tasks created by an allocator are activated by it.
     pub(crate) fn activate_allocated(&mut self) {
-        if !self.sched.active() {
+        if !self.sched.active() || !self.sched.alloc_activates {
             return;
         }
         let cur = self.sched.cur;
@@ -696,21 +719,23 @@ impl<'a> Run<'a> {
         self.end_thread(t, false);
     }
 
-    /// The deadlock diagnostic: every task and what it waits for.
+    /// The deadlock diagnostic: every task and what it waits for (one
+    /// line each after the first; their places are the chain).
     pub(crate) fn deadlock(&mut self) -> Flow {
         let lines = self.sched.describe(self.c.tasks, self.c.prots);
-        let msg = format!(
-            "deadlock: every task is blocked and nothing can wake one: {}",
-            lines.join("; ")
-        );
-        self.raise(
-            check::PROGRAM_ERROR,
-            msg,
-            Span {
-                start: 0,
-                end: 0,
-                context: 0,
-            },
-        )
+        let mut msg = String::from(DEADLOCK);
+        for (_, l) in &lines {
+            msg.push('\n');
+            msg.push_str(l);
+        }
+        Flow::Raise(Box::new(Occurrence {
+            exc: check::PROGRAM_ERROR,
+            message: msg,
+            span: lines.first().map_or(crate::diag::span(0, 0, 0), |l| l.0),
+            chain: lines.iter().map(|l| l.0).collect(),
+        }))
     }
 }
+
+/// The first line of the deadlock diagnostic.
+pub const DEADLOCK: &str = "deadlock: every task is blocked and nothing can wake one";

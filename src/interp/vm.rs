@@ -108,14 +108,14 @@ enum Op<'p> {
     Activate(Span),
     /// A master region begins; its end waits for its tasks.
     MasterEnter,
-    MasterLeave,
+    MasterLeave(Span),
     /// An exception leaves a master region: wait for its tasks, then
     /// propagate it.
-    MasterUnwind,
+    MasterUnwind(Span),
     /// Library-level tasks, at the end of the run.
     AwaitAll,
     /// `accept`: the entry and the parameters' slots.
-    Accept(u32, &'p [(Var, Mode)]),
+    Accept(u32, &'p [(Var, Mode)], Span),
     /// The end of a rendezvous: `out` values go to the caller.
     AcceptEnd(&'p [(Var, Mode)]),
     /// An exception leaves an accept body: the caller gets it too.
@@ -131,6 +131,9 @@ enum Op<'p> {
     ProtDone(Var, Box<[Arg]>, Span),
     Select(Box<SelectOp<'p>>),
     Abort(Box<[Var]>),
+    /// An allocator of a task: the task is activated by the next
+    /// instruction (`Activate`), not left to the walker.
+    AllocTask(Var, &'p Ex),
 }
 
 /// An entry call: the task (or object), entry, arguments and their
@@ -222,6 +225,8 @@ struct Compiler<'p, 'r> {
     masters: u32,
     /// Which subprograms the walker calls (bound to natives or without body).
     walker_calls: &'r dyn Fn(FuncId) -> bool,
+    /// Whether an access type designates a task (its allocator activates it).
+    has_task: &'r dyn Fn(TypeId) -> bool,
 }
 
 /// True when evaluating `e` may run a call or other code with effects
@@ -414,6 +419,15 @@ impl<'p> Compiler<'p, '_> {
                 for j in ends {
                     self.patch(j, end);
                 }
+                self.ops.push(Op::Move(dst, t));
+            }
+            // A task made by an allocator is activated by it, which waits
+            // for the activation (Tasking_Error when it fails, and the
+            // target keeps its value).
+            ExKind::Alloc(None, _) if (self.has_task)(e.ty) => {
+                let t = self.temp();
+                self.ops.push(Op::AllocTask(t, e));
+                self.ops.push(Op::Activate(span));
                 self.ops.push(Op::Move(dst, t));
             }
             ExKind::Case(subj, arms, others) => {
@@ -654,7 +668,7 @@ impl<'p> Compiler<'p, '_> {
                     self.ops.push(Op::TruncCurrent(depth));
                 }
                 for _ in self.loops[k].3..self.masters {
-                    self.ops.push(Op::MasterLeave);
+                    self.ops.push(Op::MasterLeave(s.span));
                 }
                 let j = self.ops.len();
                 self.ops.push(Op::Jump(0));
@@ -667,7 +681,7 @@ impl<'p> Compiler<'p, '_> {
             StmtKind::Return(v) => {
                 let x = v.as_ref().map(|e| self.expr(e));
                 for _ in 0..self.masters {
-                    self.ops.push(Op::MasterLeave);
+                    self.ops.push(Op::MasterLeave(s.span));
                 }
                 self.ops.push(Op::Return(x));
             }
@@ -681,10 +695,10 @@ impl<'p> Compiler<'p, '_> {
             StmtKind::Master(b) => {
                 self.ops.push(Op::MasterEnter);
                 self.masters += 1;
-                self.guarded(|c| c.body(b), Op::MasterLeave, Op::MasterUnwind);
+                self.guarded(|c| c.body(b), Op::MasterLeave(s.span), Op::MasterUnwind(s.span));
                 self.masters -= 1;
             }
-            StmtKind::Accept(a) => self.accept(a),
+            StmtKind::Accept(a) => self.accept(a, s.span),
             StmtKind::EntryCall(ec) => {
                 let other = self.entry_call(ec, None, false, s.span);
                 debug_assert!(other.is_none());
@@ -739,8 +753,8 @@ impl<'p> Compiler<'p, '_> {
 
     /// `accept`: wait for a caller, then the body (whose exception the
     /// caller gets too), then the end of the rendezvous.
-    fn accept(&mut self, a: &'p Accept) {
-        self.ops.push(Op::Accept(a.entry, &a.params));
+    fn accept(&mut self, a: &'p Accept, span: Span) {
+        self.ops.push(Op::Accept(a.entry, &a.params, span));
         self.accept_rest(a);
     }
 
@@ -1026,6 +1040,12 @@ impl<'a> Run<'a> {
 
     fn compile(&self, level: u16, own: u32, what: Compiled<'a>) -> Code<'a> {
         let walker_calls = |f: FuncId| self.walker_call(f);
+        let has_task = |t: TypeId| {
+            self.c
+                .types
+                .designated(t)
+                .is_some_and(|d| self.c.types.has_task(d))
+        };
         let mut c = Compiler {
             level,
             own,
@@ -1038,6 +1058,7 @@ impl<'a> Run<'a> {
             hdepth: 0,
             masters: 0,
             walker_calls: &walker_calls,
+            has_task: &has_task,
         };
         match what {
             Compiled::Body(b) => c.body(b),
@@ -1173,7 +1194,7 @@ impl<'a> Run<'a> {
         } else if t <= now {
             self.sched.yield_now();
         } else {
-            self.sched.block(tasking::Wait::Delay(t), false);
+            self.sched.block(tasking::Wait::Delay(t), false, span);
         }
         Ok(())
     }
@@ -1207,13 +1228,13 @@ impl<'a> Run<'a> {
             self.sched.make_ready(*t);
         }
         self.sched.threads[me].activating = new.len();
-        self.sched.block(tasking::Wait::Activation, true);
+        self.sched.block(tasking::Wait::Activation, true, span);
         Ok(())
     }
 
     /// Whether the tasks of the running thread's innermost master (or,
     /// `all`, the library level's) have ended; if not, the thread waits.
-    fn dependents_done(&mut self, all: bool) -> bool {
+    fn dependents_done(&mut self, all: bool, span: Span) -> bool {
         if !self.sched.active() {
             return true;
         }
@@ -1258,7 +1279,7 @@ impl<'a> Run<'a> {
                     },
                 );
             if !done {
-                self.sched.block(tasking::Wait::Dependents, true);
+                self.sched.block(tasking::Wait::Dependents, true, span);
             }
             return done;
         }
@@ -1351,6 +1372,7 @@ impl<'a> Run<'a> {
                 deadline,
             },
             false,
+            ec.span,
         );
         Ok(())
     }
@@ -1427,6 +1449,7 @@ impl<'a> Run<'a> {
                 deadline,
             },
             true,
+            ec.span,
         );
         Ok(ProtStep::Wait)
     }
@@ -1529,6 +1552,7 @@ impl<'a> Run<'a> {
                 terminate,
             },
             true,
+            sel.span,
         );
         Ok(None)
     }
@@ -1944,14 +1968,14 @@ impl<'a> Run<'a> {
                     self.sched.me().masters.push(Vec::new());
                     Ok(())
                 }
-                Op::MasterLeave => {
-                    if self.dependents_done(false) {
+                Op::MasterLeave(span) => {
+                    if self.dependents_done(false, *span) {
                         self.sched.me().masters.pop();
                     }
                     Ok(())
                 }
-                Op::MasterUnwind => {
-                    if self.dependents_done(false) {
+                Op::MasterUnwind(span) => {
+                    if self.dependents_done(false, *span) {
                         self.sched.me().masters.pop();
                         Err(Flow::Raise(pending.take().expect("an occurrence")))
                     } else {
@@ -1959,10 +1983,10 @@ impl<'a> Run<'a> {
                     }
                 }
                 Op::AwaitAll => {
-                    self.dependents_done(true);
+                    self.dependents_done(true, crate::diag::span(0, 0, 0));
                     Ok(())
                 }
-                Op::Accept(entry, params) => {
+                Op::Accept(entry, params, span) => {
                     let me = self.sched.cur;
                     self.sched.threads[me].rerun = false;
                     match self.sched.threads[me].entries[*entry as usize].pop_front() {
@@ -1978,6 +2002,7 @@ impl<'a> Run<'a> {
                                     terminate: false,
                                 },
                                 true,
+                                *span,
                             );
                             Ok(())
                         }
@@ -2030,6 +2055,12 @@ impl<'a> Run<'a> {
                     Ok(None) => Ok(()),
                     Err(e) => Err(e),
                 },
+                Op::AllocTask(d, e) => {
+                    self.sched.alloc_activates = false;
+                    let r = self.eval(e);
+                    self.sched.alloc_activates = true;
+                    r.map(|v| self.put(*d, v))
+                }
                 Op::Abort(ts) => {
                     for t in ts.iter() {
                         let t = self.int_at(*t) as usize;
