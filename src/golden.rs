@@ -50,6 +50,19 @@ fn directives(text: &str) -> (String, bool) {
     (robot, trace)
 }
 
+/// The device file a script asks for (`-- adair: --devices FILE.toml`, a
+/// path relative to the script's directory).
+fn devices_directive(text: &str) -> Option<String> {
+    text.lines()
+        .take_while(|l| l.starts_with("--"))
+        .filter_map(|l| l.strip_prefix("-- adair:"))
+        .find_map(|rest| {
+            let words: Vec<&str> = rest.split_whitespace().collect();
+            let i = words.iter().position(|w| *w == "--devices")?;
+            words.get(i + 1).map(|w| w.to_string())
+        })
+}
+
 /// Runs a script as `adair run` would (no colour) and returns its golden text.
 /// A trace asked for by the script is interleaved with its output.
 pub fn run_case(path: &Path) -> String {
@@ -66,6 +79,8 @@ pub struct Target {
     /// The engine to run in (None: the session's default, `ADAIR_ENGINE`
     /// or the compiled one); the tests run every script in both.
     pub engine: Option<crate::interp::vm::Engine>,
+    /// The simulated devices (a script's `--devices` directive).
+    pub devices: Option<crate::devices::Devices>,
 }
 
 /// [`run_case`] on `target`.
@@ -76,7 +91,21 @@ pub fn run_case_on(path: &Path, target: &Target) -> String {
         Err(e) => return format!("-- stderr --\nerror: cannot read {name}: {e}\n-- exit: 2\n"),
     };
     let (robot, trace) = directives(&text);
-    let r = run_text_on(&name, &text, &robot, trace, target);
+    let devices = match devices_directive(&text) {
+        None => None,
+        Some(f) => {
+            let p = path.parent().unwrap_or(Path::new(".")).join(f);
+            match crate::devices::Devices::load(&p) {
+                Ok(d) => Some(d),
+                Err(e) => return format!("-- stderr --\n{e}\n-- exit: 2\n"),
+            }
+        }
+    };
+    let target = Target {
+        devices: devices.or_else(|| target.devices.clone()),
+        ..target.clone()
+    };
+    let r = run_text_on(&name, &text, &robot, trace, &target);
     let mut out = r.output;
     if !r.diagnostics.is_empty() {
         out.push_str("-- stderr --\n");
@@ -86,6 +115,17 @@ pub fn run_case_on(path: &Path, target: &Target) -> String {
         out.push_str(&format!("-- exit: {}\n", r.code));
     }
     out
+}
+
+/// Whether a program declares tasks or protected objects: those run in the
+/// compiled engine only (the reference walker cannot suspend a task), so the
+/// differential tests run them once.
+pub fn uses_tasks(text: &str) -> bool {
+    use crate::syntax::token::{Kw, Token};
+    crate::syntax::lexer::lex(text, 0)
+        .0
+        .iter()
+        .any(|t| matches!(t.0, Token::Kw(Kw::Task | Kw::Protected)))
 }
 
 /// What a run printed: the program's output (with the motion trace, if asked
@@ -112,6 +152,10 @@ pub fn run_text_on(name: &str, text: &str, robot: &str, trace: bool, target: &Ta
         s.machine.engine = e;
     }
     let tracer = || trace.then(|| Box::new(buf.clone()) as Box<dyn Write>);
+    if let Some(d) = &target.devices {
+        s.set_devices(d.clone());
+    }
+    s.machine.trace = tracer();
     match crate::kinematics::RobotDescription::builtin(robot) {
         Ok(desc) => match &target.port {
             None => s.set_robot(desc, tracer(), false),

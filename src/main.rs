@@ -22,6 +22,10 @@ struct Cli {
     #[arg(long, global = true, value_name = "SIZE", default_value = "4G",
           value_parser = adair::interp::memory::parse_size)]
     max_memory: usize,
+    /// The simulated devices (tasks.md): a TOML device file. Without it, the
+    /// appendix C parallel port at 8#340#.
+    #[arg(long, global = true, value_name = "FILE.toml")]
+    devices: Option<PathBuf>,
     #[command(subcommand)]
     command: Option<Command>,
 }
@@ -224,11 +228,21 @@ fn main() -> ExitCode {
         }
     };
     adair::interp::memory::set_limit(cli.max_memory);
+    let devices = match &cli.devices {
+        None => None,
+        Some(p) => match adair::devices::Devices::load(p) {
+            Ok(d) => Some(d),
+            Err(e) => {
+                eprintln!("{e}");
+                return ExitCode::from(2);
+            }
+        },
+    };
     let color = color(&cli.color);
     // Deep recursion in user programs needs a big stack for the tree walker.
     let child = std::thread::Builder::new()
         .stack_size(512 << 20)
-        .spawn(move || real_main(cli.command, color));
+        .spawn(move || real_main(cli.command, color, devices));
     match child.map(|h| h.join()) {
         Ok(Ok(code)) => ExitCode::from(code),
         _ => {
@@ -238,7 +252,11 @@ fn main() -> ExitCode {
     }
 }
 
-fn real_main(command: Option<Command>, color: bool) -> u8 {
+fn real_main(
+    command: Option<Command>,
+    color: bool,
+    devices: Option<adair::devices::Devices>,
+) -> u8 {
     match command {
         None if std::io::stdin().is_terminal() => adair::repl::term::interactive(color) as u8,
         None => {
@@ -261,6 +279,7 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 robot: Some(robot),
                 port: serial.settings(),
                 rehearse,
+                devices: devices.clone(),
             };
             if std::io::stdin().is_terminal() {
                 adair::repl::term::interactive_on(color, drive) as u8
@@ -315,6 +334,12 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
             let mut s = Session::new(Box::new(std::io::LineWriter::new(std::io::stdout())));
             s.strict = strict;
             s.warnings_to = Some((Box::new(std::io::stderr()), color));
+            if let Some(d) = &devices {
+                s.set_devices(d.clone());
+            }
+            if robot.trace {
+                s.machine.trace = Some(Box::new(std::io::stderr()));
+            }
             // Ctrl-C stops the motion and ends the program (exit 130).
             let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
             let seen = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
@@ -469,6 +494,9 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 };
                 let mut s = Session::new(Box::new(std::io::sink()));
                 s.strict = strict;
+                if let Some(d) = &devices {
+                    s.set_devices(d.clone());
+                }
                 match s.check_source(&f.to_string_lossy(), &text, false) {
                     Err(d) => {
                         eprint!("{}", adair::diag::render(&d, &s.sources, color));
@@ -489,6 +517,7 @@ fn real_main(command: Option<Command>, color: bool) -> u8 {
                 port: serial.settings(),
                 rehearse,
                 engine: None,
+                devices: devices.clone(),
             };
             let paths = if paths.is_empty() {
                 vec![PathBuf::from(".")]

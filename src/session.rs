@@ -118,6 +118,14 @@ impl Session {
         s
     }
 
+    /// Chooses the simulated devices (`--devices FILE.toml`; the default is
+    /// the appendix C parallel port at 8#340#): address clauses are checked
+    /// against them and programs run against a fresh world of them.
+    pub fn set_devices(&mut self, d: crate::devices::Devices) {
+        self.checker.devices = std::rc::Rc::new(d.clone());
+        self.machine.world = Some(crate::devices::World::new(d));
+    }
+
     /// Chooses the robot the services drive (the simulator of `desc`), the
     /// writer that receives the motion trace, and real-time pacing.
     pub fn set_robot(

@@ -858,6 +858,25 @@ impl Checker {
                 }
                 ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _, _) => e = p,
                 ExKind::Deref(_) | ExKind::Error => return,
+                ExKind::Register(a) => {
+                    if let Some((d, role)) = self.devices.lookup(*a)
+                        && !role.is_writable()
+                    {
+                        let name = self.snippet(e.span);
+                        let dev = self.devices.devices()[d].name.clone();
+                        self.err(
+                            Diagnostic::ty(
+                                span,
+                                format!(
+                                    "`{name}` is the {} of device `{dev}`: the outside world sets it, the program only reads it",
+                                    role.describe()
+                                ),
+                            )
+                            .with_label(format!("used as {what}")),
+                        );
+                    }
+                    return;
+                }
                 // A constant with a static value stands in the IR as its value.
                 ExKind::Int(_) | ExKind::Real(_)
                     if self

@@ -173,6 +173,10 @@ pub enum ExKind {
     Default(TypeId),
     /// Reads the current exception occurrence of a handler.
     Error,
+    /// A device register (`for X use at Addr;`): reads see the device,
+    /// assignments reach it. Its type is an integer type or an array
+    /// `(0 .. 15) of Boolean` (bit I is element I).
+    Register(u32),
 }
 
 /// An array aggregate, with the array type that fixes its bounds.

@@ -157,6 +157,8 @@ pub struct Checker {
     prot_real: HashMap<FuncId, (FuncId, u32)>,
     /// Per declarative region being checked: whether it may create tasks.
     masters: Vec<bool>,
+    /// The devices address clauses bind to (`--devices`, or the default set).
+    pub devices: Rc<crate::devices::Devices>,
 }
 
 /// A node of the expression being checked: its source range and its kind.
@@ -214,6 +216,7 @@ impl Checker {
             prot_members: Vec::new(),
             prot_real: HashMap::new(),
             masters: Vec::new(),
+            devices: Rc::new(crate::devices::Devices::default_set()),
         };
         c.standard();
         c
@@ -347,6 +350,25 @@ impl Checker {
             None => {}
         }
         scope.names.entry(key).or_default().push(e);
+    }
+
+    /// Replaces the latest meaning of `key` in the innermost scope (and in
+    /// its package's table): an object that an address clause maps.
+    fn redeclare(&mut self, key: &str, e: Entity) {
+        let scope = self.scopes.last_mut().expect("scope");
+        if let Some(last) = scope.names.get_mut(key).and_then(|v| v.last_mut()) {
+            *last = e.clone();
+        }
+        if let Some((p, private)) = scope.package {
+            let table = if private {
+                &mut self.packages[p].private
+            } else {
+                &mut self.packages[p].names
+            };
+            if let Some(last) = table.get_mut(key).and_then(|v| v.last_mut()) {
+                *last = e;
+            }
+        }
     }
 
     /// Declares a name, reporting a clash with a non-overloadable name of the

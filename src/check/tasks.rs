@@ -72,7 +72,7 @@ impl Checker {
                 );
             }
             let params = self.params(&e.params);
-            let f = self.new_func(format!("{name}.{}", e.name.name), params, None, e.span);
+            let f = self.new_func(format!("{name}.{}", e.name.name), params, None, e.name.span);
             entries.push(EntryDef {
                 name: e.name.name.clone(),
                 profile: f,
@@ -97,7 +97,24 @@ impl Checker {
                 );
             }
             if let Some(a) = self.static_int(addr, "an address") {
-                entries[i].interrupt = Some(a);
+                match u32::try_from(a).ok().and_then(|x| self.devices.lookup(x)) {
+                    None => self.err(self.no_device(addr.span, a)),
+                    Some((d, role)) if role != crate::devices::Role::Interrupt => {
+                        let dname = self.devices.devices()[d].name.clone();
+                        self.err(
+                            Diagnostic::ty(
+                                addr.span,
+                                format!(
+                                    "{} is the {} of device `{dname}`, not an interrupt",
+                                    crate::devices::ada_address(a as u32),
+                                    role.describe()
+                                ),
+                            )
+                            .with_hint("an entry is bound to an interrupt address; map a register to an object: `R : Word; for R use at ...;`"),
+                        );
+                    }
+                    Some(_) => entries[i].interrupt = Some(a),
+                }
             }
         }
         let priority = t.priority.as_ref().map(|p| {
@@ -810,19 +827,21 @@ impl Checker {
         body: Option<&ast::Block>,
         sp: Span,
     ) -> Option<Accept> {
+        let here = self
+            .ctx
+            .last()
+            .and_then(|c| c.func)
+            .map(|f| format!("procedure {}", self.funcs[f as usize].name))
+            .unwrap_or_else(|| "the main program".into());
+        let misplaced = format!(
+            "an accept statement may only appear in the body of the task that declares the entry, not in {here}"
+        );
         let Some(&k) = self.task_ctx.last() else {
-            self.err(Diagnostic::syntax(
-                sp,
-                "`accept` stands only in a task body",
-            ));
+            self.err(Diagnostic::syntax(sp, misplaced));
             return None;
         };
-        let in_body = self.ctx.last().and_then(|c| c.func) == self.tasks[k as usize].body;
-        if !in_body {
-            self.err(Diagnostic::syntax(
-                sp,
-                "`accept` stands in the task body itself, not in a subprogram inside it",
-            ));
+        if self.ctx.last().and_then(|c| c.func) != self.tasks[k as usize].body {
+            self.err(Diagnostic::syntax(sp, misplaced));
             return None;
         }
         let def = self.tasks[k as usize].clone();
@@ -831,28 +850,54 @@ impl Checker {
             .iter()
             .position(|e| e.name.eq_ignore_ascii_case(&entry.name))
         else {
-            self.err(Diagnostic::name(
-                entry.span,
-                format!("`{}` is not an entry of task `{}`", entry.name, def.name),
-            ));
+            let names: Vec<&str> = def.entries.iter().map(|e| e.name.as_str()).collect();
+            self.err(
+                Diagnostic::name(
+                    entry.span,
+                    format!("no entry `{}` is declared for task `{}`", entry.name, def.name),
+                )
+                .with_hint(format!(
+                    "the accept statement must name one of its entries ({})",
+                    names.join(", ")
+                )),
+            );
             return None;
         };
         let profile = self.funcs[def.entries[i].profile as usize].clone();
         let ps = self.params(params);
         if !self.same_profile(&profile, &ps, None) {
-            self.err(
-                Diagnostic::ty(
-                    sp,
-                    format!(
-                        "the parameters of `accept {}` differ from the entry's declaration",
-                        entry.name
-                    ),
-                )
-                .with_hint(format!(
-                    "declared as `{}`",
-                    self.signature(def.entries[i].profile)
-                )),
-            );
+            let want: Vec<String> = profile
+                .params
+                .iter()
+                .map(|p| {
+                    let mode = match p.mode {
+                        ast::Mode::In => "",
+                        ast::Mode::Out => "out ",
+                        ast::Mode::InOut => "in out ",
+                    };
+                    format!("{} : {mode}{}", p.name, self.types.name(p.ty))
+                })
+                .collect();
+            let decl = self.declared_at(def.entries[i].profile);
+            let what = match (ps.len(), want.len()) {
+                (0, 1) => format!(
+                    "`accept {}` has no parameters but the entry {}{decl} has one, `{}`",
+                    entry.name, entry.name, want[0]
+                ),
+                _ => format!(
+                    "the parameters of `accept {}` differ from those of the entry {}{decl}",
+                    entry.name, entry.name
+                ),
+            };
+            let with = if want.is_empty() {
+                String::new()
+            } else {
+                format!(" ({})", want.join("; "))
+            };
+            self.err(Diagnostic::ty(sp, what).with_hint(format!(
+                "accept {}{with} do ... end {};",
+                entry.name, entry.name
+            )));
             return None;
         }
         self.push_scope();
@@ -1081,15 +1126,109 @@ impl Checker {
         Some(self.mk(ExKind::Attr(op, vec![t]), BOOLEAN, sp))
     }
 
-    /// `for X use at Addr;` outside a task spec: a device register.
-    pub(super) fn address_clause(&mut self, name: &ast::Ident, _address: &ast::Expr, span: Span) {
-        self.err(
-            Diagnostic::unsupported(span, "an address clause on an object").with_hint(format!(
-                "`{}` cannot be mapped to a device register yet",
-                name.name
-            )),
+    /// `for X use at Addr;` outside a task spec: `X` becomes a device
+    /// register.
+    pub(super) fn address_clause(&mut self, name: &ast::Ident, address: &ast::Expr, span: Span) {
+        let Some(addr) = self.static_int(address, "an address") else {
+            return;
+        };
+        let here = crate::devices::ada_address(addr as u32);
+        let Some((dev, role)) = u32::try_from(addr).ok().and_then(|a| self.devices.lookup(a)) else {
+            self.err(self.no_device(address.span, addr));
+            return;
+        };
+        let dname = self.devices.devices()[dev].name.clone();
+        if role == crate::devices::Role::Interrupt {
+            self.err(
+                Diagnostic::ty(
+                    address.span,
+                    format!("{here} is the interrupt of device `{dname}`: an object cannot be mapped to it"),
+                )
+                .with_hint(format!("bind an entry to it in a task: `entry Interrupt; for Interrupt use at {here};`")),
+            );
+            return;
+        }
+        let Some(Entity::Var { ty, var, .. }) = self
+            .scopes
+            .last()
+            .and_then(|s| s.names.get(&name.key))
+            .and_then(|es| es.last().cloned())
+        else {
+            self.err(Diagnostic::name(
+                name.span,
+                format!("`{}` is not an object declared in this declarative part", name.name),
+            ));
+            return;
+        };
+        let bits = self.types.array(ty).is_some_and(|(ix, elem, _)| {
+            ix.len() == 1 && self.types.base(elem) == BOOLEAN
+        });
+        if !self.types.is_integer(ty) && !bits {
+            self.err(
+                Diagnostic::ty(
+                    span,
+                    format!("a register is 16 bits: `{}` must be of an integer type or an array (0 .. 15) of Boolean", name.name),
+                )
+                .with_hint("declare it as `type Word is array (0 .. 15) of Boolean;` or an integer type"),
+            );
+            return;
+        }
+        // The device reads and writes it: no "never read" warning.
+        for frame in &mut self.unread {
+            frame.remove(&var);
+        }
+        let reg = Entity::Alias(Box::new(Ex {
+            kind: ExKind::Register(addr as u32),
+            ty,
+            span: name.span,
+        }));
+        self.redeclare(&name.key, reg);
+    }
+
+    /// "no device at ADDR" naming the device file and its addresses.
+    fn no_device(&self, sp: Span, addr: i64) -> Diagnostic {
+        let here = if addr >= 0 {
+            crate::devices::ada_address(addr as u32)
+        } else {
+            addr.to_string()
+        };
+        let known: Vec<String> = self
+            .devices
+            .addresses()
+            .map(|(a, d, r)| {
+                format!(
+                    "{} ({} of `{}`)",
+                    crate::devices::ada_address(a),
+                    r.describe(),
+                    self.devices.devices()[d].name
+                )
+            })
+            .collect();
+        let mut d = Diagnostic::name(
+            sp,
+            format!("no device has the address {here} in {}", self.devices.source()),
         );
+        d = if known.is_empty() {
+            d.with_hint("the device file declares no devices: give one with `--devices FILE.toml`")
+        } else {
+            d.with_hint(format!("the addresses there: {}", known.join(", ")))
+        };
+        d
     }
 
     pub(super) fn pragma(&mut self, _name: &ast::Ident, _span: Span) {}
+
+    /// ` (declared at L:C)` for a subprogram or entry profile.
+    fn declared_at(&self, f: FuncId) -> String {
+        let sp = self.funcs[f as usize].span;
+        match self.texts.get(&sp.context) {
+            Some(t) => {
+                let before = &t[..sp.start.min(t.len())];
+                let line = before.matches('\n').count() + 1;
+                let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+                format!(" (declared at {line}:{col})")
+            }
+            None => String::new(),
+        }
+    }
 }

@@ -104,6 +104,8 @@ pub trait Services {
 /// of the call, the user's stop request. Not the stack, not the program.
 pub struct ServiceCx<'a> {
     pub clock: &'a mut dyn Clock,
+    /// The simulated devices: the gripper picks and puts down their objects.
+    pub world: Option<&'a mut crate::devices::World>,
     /// The call being served.
     pub span: Span,
     files: &'a [(String, Vec<usize>)],
@@ -181,6 +183,13 @@ pub struct Machine {
     /// The engine that runs programs (the compiled one unless the
     /// reference walker is asked for).
     pub engine: vm::Engine,
+    /// The simulated devices (tasks.md): registers, belts, interrupts.
+    pub world: Option<crate::devices::World>,
+    /// Where `--trace` writes task switches, device events and interrupts.
+    pub trace: Option<Box<dyn Write>>,
+    /// The tasks of the last run at its end, and what each waited for
+    /// (`:tasks`).
+    pub last_tasks: Vec<String>,
 }
 
 const MAX_DEPTH: usize = 20_000;
@@ -204,6 +213,9 @@ impl Machine {
             current: Vec::new(),
             resolver: |n| builtins::lookup(n).map(Binding::Native),
             engine: vm::Engine::from_env(),
+            world: Some(crate::devices::World::new(crate::devices::Devices::default_set())),
+            trace: None,
+            last_tasks: Vec::new(),
         }
     }
 
@@ -263,6 +275,20 @@ impl Machine {
             }
             Ok(())
         })();
+        if run.sched.active() {
+            run.m.last_tasks = run
+                .sched
+                .threads
+                .iter()
+                .map(|t| {
+                    if t.wait == tasking::Wait::Terminated {
+                        format!("{} ended", t.name)
+                    } else {
+                        format!("{} did not end", t.name)
+                    }
+                })
+                .collect();
+        }
         // Any frames left by an exception are dropped; level-0 slots stay.
         run.m.stack.truncate(need);
         let _ = run.m.out.flush();
@@ -282,6 +308,12 @@ impl Machine {
     /// there (kept between runs), no frames. Returns the level-0 slot count.
     fn prepare(&mut self, chk: ProgramRef<'_>) -> usize {
         self.bind_natives(chk);
+        // `--trace` shows what the devices do.
+        if self.trace.is_some()
+            && let Some(w) = self.world.as_mut()
+        {
+            w.set_logging(true);
+        }
         let need = chk.globals as usize;
         if self.stack.len() < need {
             self.stack.resize(need, Value::Undef);
@@ -666,6 +698,7 @@ impl Run<'_> {
 
     /// Hands a service call to the lent services with a narrow context.
     fn call_service(&mut self, i: u32, args: &mut [Value], span: Span) -> R<Option<Value>> {
+        self.world_sync();
         let Some(svc) = self.svc.as_deref_mut() else {
             return Err(self.raise(
                 check::PROGRAM_ERROR,
@@ -673,17 +706,46 @@ impl Run<'_> {
                 span,
             ));
         };
+        // With tasks, a motion blocks only its caller: the service runs on
+        // a clock that keeps the time it takes, and the caller then waits
+        // that long on the virtual clock while the other tasks run.
+        let tasks = self.sched.active();
+        let mut deferred = tasking::DeferClock {
+            base: self.m.clock.now(),
+            spent: 0.0,
+        };
+        let clock: &mut dyn Clock = if tasks {
+            &mut deferred
+        } else {
+            &mut *self.m.clock
+        };
         let mut cx = ServiceCx {
-            clock: &mut *self.m.clock,
+            clock,
+            world: self.m.world.as_mut(),
             span,
             files: &self.m.files,
             interrupted: self.m.interrupted.as_deref(),
         };
-        match svc.call(i, &mut cx, args) {
+        let r = svc.call(i, &mut cx, args);
+        if tasks && deferred.spent > 0.0 {
+            let until = deferred.base + deferred.spent;
+            self.sched.robot_free_at = until;
+            self.sched
+                .block(tasking::Wait::Delay(until), false, span);
+        }
+        match r {
             Ok(v) => Ok(v),
             Err(ServiceFault::Raise(exc, msg)) => Err(self.raise(exc, msg, span)),
             Err(ServiceFault::Stop) => Err(Flow::Exit(STOP_LABEL)),
         }
+    }
+
+    /// Whether `f` is a robot service.
+    pub(crate) fn is_service(&self, f: FuncId) -> bool {
+        matches!(
+            self.m.natives.get(f as usize),
+            Some(Some(Binding::Service(_)))
+        )
     }
 
     /// Calls a subprogram with copy-in/copy-out parameters.
@@ -803,6 +865,14 @@ impl Run<'_> {
                     let root = &mut self.m.stack[i];
                     return write_path(root, &steps, val)
                         .map_err(|(what, sp)| self.check_failed(what, sp));
+                }
+                // A device register: read, change, write back.
+                ExKind::Register(a) => {
+                    let mut root = self.read_register(*a, e.ty, e.span)?;
+                    steps.reverse();
+                    write_path(&mut root, &steps, val)
+                        .map_err(|(what, sp)| self.check_failed(what, sp))?;
+                    return self.write_register(*a, &root, e.span);
                 }
                 ExKind::Index(p, idx) => {
                     let mut ix = Vec::with_capacity(idx.len());
@@ -1141,6 +1211,7 @@ impl Run<'_> {
             ExKind::Error => {
                 return Err(self.raise(check::PROGRAM_ERROR, "erroneous expression", e.span));
             }
+            ExKind::Register(a) => self.read_register(*a, e.ty, e.span)?,
         })
     }
 

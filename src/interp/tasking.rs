@@ -23,6 +23,9 @@ use std::collections::{HashMap, VecDeque};
 
 pub(crate) type Tid = usize;
 
+/// The caller of an interrupt entry: the device, not a task.
+pub(crate) const INTERRUPT: Tid = usize::MAX;
+
 /// What a thread waits for.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) enum Wait {
@@ -154,6 +157,26 @@ impl<'a> Thread<'a> {
     }
 }
 
+/// The clock a service sees while tasks run: it keeps the time the service
+/// spends (a motion's duration) instead of advancing the virtual clock,
+/// which the caller then waits out as a delay.
+pub(crate) struct DeferClock {
+    pub base: f64,
+    pub spent: f64,
+}
+
+impl Clock for DeferClock {
+    fn now(&self) -> f64 {
+        self.base + self.spent
+    }
+    fn sleep(&mut self, seconds: f64) {
+        if seconds > 0.0 {
+            self.spent += seconds;
+        }
+    }
+    fn pace(&mut self, _seconds: f64) {}
+}
+
 /// GNAT's `System.Default_Priority`.
 pub(crate) const DEFAULT_PRIORITY: i64 = 15;
 
@@ -183,6 +206,9 @@ pub(crate) struct Sched<'a> {
     /// False while the compiled engine evaluates an allocator whose tasks
     /// it activates itself (and waits for).
     pub alloc_activates: bool,
+    /// The services are a monitor: the time until which the robot is in a
+    /// motion another task started.
+    pub robot_free_at: f64,
 }
 
 impl Default for Sched<'_> {
@@ -198,6 +224,7 @@ impl Default for Sched<'_> {
             seq: 0,
             switches: 0,
             alloc_activates: true,
+            robot_free_at: 0.0,
         }
     }
 }
@@ -552,6 +579,9 @@ impl<'a> Run<'a> {
         let parent = th.parent;
         let name = th.name.clone();
         for c in queued.into_iter().chain(partners) {
+            if c == INTERRUPT {
+                continue;
+            }
             let occ = Occurrence {
                 exc: check::TASKING_ERROR,
                 message: format!("the called task {name} has ended"),
@@ -616,14 +646,20 @@ impl<'a> Run<'a> {
         if ended || !self.sched.ready.is_empty() {
             return true;
         }
-        let Some(t) = self.sched.next_deadline() else {
-            return false;
-        };
         let now = self.m.clock.now();
+        let device = self.m.world.as_ref().and_then(|w| w.next_wakeup(now));
+        let t = match (self.sched.next_deadline(), device) {
+            (Some(a), Some(b)) => a.min(b),
+            (a, b) => match a.or(b) {
+                Some(t) => t,
+                None => return false,
+            },
+        };
         if t > now {
             self.m.clock.sleep(t - now);
         }
         let now = self.m.clock.now().max(t);
+        self.world_sync();
         let mut woken: Vec<(u64, Tid)> = Vec::new();
         for (i, th) in self.sched.threads.iter().enumerate() {
             let due = match &th.wait {
@@ -717,6 +753,119 @@ impl<'a> Run<'a> {
         }
         self.discard_thread(t);
         self.end_thread(t, false);
+    }
+
+    /// Brings the devices to the clock's time and queues the interrupts
+    /// that happened on their entries; writes the trace.
+    pub(crate) fn world_sync(&mut self) {
+        let now = self.m.clock.now();
+        let Some(w) = self.m.world.as_mut() else {
+            return;
+        };
+        let irqs = w.advance_to(now);
+        let log = w.take_log();
+        if let Some(t) = self.m.trace.as_mut() {
+            for h in &log {
+                let _ = writeln!(t, "{h}");
+            }
+        }
+        for i in irqs {
+            self.deliver(i.address, i.time);
+        }
+    }
+
+    /// An interrupt at `address`: queued on the entry bound to it, as an
+    /// entry call (its task wakes when it accepts that entry).
+    pub(crate) fn deliver(&mut self, address: crate::devices::Address, time: f64) {
+        let bound = (0..self.sched.threads.len()).find_map(|t| {
+            let th = &self.sched.threads[t];
+            if th.wait == Wait::Terminated {
+                return None;
+            }
+            let k = th.ttype?;
+            let e = self.c.tasks[k as usize]
+                .entries
+                .iter()
+                .position(|e| e.interrupt == Some(address as i64))?;
+            Some((t, e))
+        });
+        let line = match bound {
+            Some((t, e)) => {
+                self.sched.threads[t].entries[e].push_back(INTERRUPT);
+                if self.sched.accepting(t, e as u32) {
+                    self.sched.make_ready(t);
+                }
+                let name = &self.c.tasks[self.sched.threads[t].ttype.unwrap_or(0) as usize].entries[e].name;
+                format!(
+                    "interrupt {} queued on {}.{name}",
+                    crate::devices::ada_address(address),
+                    self.sched.threads[t].name
+                )
+            }
+            None => format!(
+                "interrupt {}: no task has an entry bound to it, lost",
+                crate::devices::ada_address(address)
+            ),
+        };
+        self.trace_line(time, &line);
+    }
+
+    pub(crate) fn trace_line(&mut self, time: f64, what: &str) {
+        if let Some(t) = self.m.trace.as_mut() {
+            let _ = writeln!(t, "[t={time:9.3} s] tasks: {what}");
+        }
+    }
+
+    /// A device register's value as a value of type `ty`.
+    pub(crate) fn read_register(&mut self, a: u32, ty: TypeId, span: Span) -> R<Value> {
+        self.world_sync();
+        let v = self.m.world.as_ref().and_then(|w| w.read(a));
+        let Some(v) = v else {
+            return Err(self.raise(
+                check::PROGRAM_ERROR,
+                format!("no register at {}", crate::devices::ada_address(a)),
+                span,
+            ));
+        };
+        Ok(match self.c.types.array(ty) {
+            Some(_) => {
+                let (lo, hi) = self
+                    .array_bounds(ty)?
+                    .and_then(|b| b.first().copied())
+                    .unwrap_or((0, 15));
+                let data = (lo..=hi)
+                    .map(|i| Value::Int(((v >> ((i - lo) & 15)) & 1) as i64))
+                    .collect();
+                Value::Arr(Rc::new(Array {
+                    bounds: vec![(lo, hi)],
+                    data,
+                }))
+            }
+            None => Value::Int(v as i64),
+        })
+    }
+
+    /// Writes a value to a device register.
+    pub(crate) fn write_register(&mut self, a: u32, v: &Value, span: Span) -> R<()> {
+        self.world_sync();
+        let word: u16 = match v {
+            Value::Arr(arr) => arr
+                .data
+                .iter()
+                .enumerate()
+                .take(16)
+                .fold(0u16, |w, (i, b)| w | (u16::from(b.int() != 0) << i)),
+            other => other.int() as u16,
+        };
+        let r = match self.m.world.as_mut() {
+            Some(w) => w.write(a, word).map_err(|e| e.to_string()),
+            None => Err("no devices".to_string()),
+        };
+        if let Err(msg) = r {
+            return Err(self.raise(check::PROGRAM_ERROR, msg, span));
+        }
+        self.world_sync();
+        Ok(())
     }
 
     /// The deadlock diagnostic: every task and what it waits for (one

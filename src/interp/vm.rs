@@ -1290,6 +1290,10 @@ impl<'a> Run<'a> {
     /// accept's parameters.
     fn begin_rendezvous(&mut self, c: tasking::Tid, params: &[(Var, Mode)]) {
         let me = self.sched.cur;
+        if c == tasking::INTERRUPT {
+            self.sched.threads[me].rendezvous.push(c);
+            return;
+        }
         for (i, (v, _)) in params.iter().enumerate() {
             let x = self.m.stack[self.sched.threads[c].call[i]].clone();
             self.put(*v, x);
@@ -1305,6 +1309,9 @@ impl<'a> Run<'a> {
         let Some(c) = self.sched.threads[me].rendezvous.pop() else {
             return;
         };
+        if c == tasking::INTERRUPT {
+            return;
+        }
         for (i, (v, mode)) in params.iter().enumerate() {
             if *mode != Mode::In {
                 let x = self.m.stack[self.sl(*v)].clone();
@@ -1569,6 +1576,14 @@ impl<'a> Run<'a> {
     /// Makes `t` the running thread: its saved registers, or its body's
     /// first frame when it starts.
     fn resume(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>, t: tasking::Tid) -> R<Regs<'a>> {
+        if self.m.trace.is_some() && self.sched.cur != t {
+            let (from, to) = (
+                self.sched.threads[self.sched.cur].name.clone(),
+                self.sched.threads[t].name.clone(),
+            );
+            let now = self.m.clock.now();
+            self.trace_line(now, &format!("{from} -> {to}"));
+        }
         self.sched.cur = t;
         self.sched.switches += 1;
         self.sched.threads[t].wait = tasking::Wait::Running;
@@ -1908,16 +1923,34 @@ impl<'a> Run<'a> {
                     }
                 }
                 Op::Poll(span) => self.poll(*span),
-                Op::CallWalker(f, args, d, span) => self.call(*f, args, *span).map(|v| {
-                    if let Some(d) = d {
-                        self.put(*d, v.unwrap_or_default());
-                    }
-                }),
-                Op::CallWalkerOwned(f, args, d, span) => self.call(*f, args, *span).map(|v| {
-                    if let Some(d) = d {
-                        self.put(*d, v.unwrap_or_default());
-                    }
-                }),
+                // A motion service while another task's motion runs waits
+                // for it (the services are a monitor).
+                Op::CallWalker(f, _, _, span) | Op::CallWalkerOwned(f, _, _, span)
+                    if self.sched.active()
+                        && self.m.clock.now() < self.sched.robot_free_at
+                        && self.is_service(*f) =>
+                {
+                    let until = self.sched.robot_free_at;
+                    self.sched
+                        .block(tasking::Wait::Delay(until), true, *span);
+                    Ok(())
+                }
+                Op::CallWalker(f, args, d, span) => {
+                    self.rerun();
+                    self.call(*f, args, *span).map(|v| {
+                        if let Some(d) = d {
+                            self.put(*d, v.unwrap_or_default());
+                        }
+                    })
+                }
+                Op::CallWalkerOwned(f, args, d, span) => {
+                    self.rerun();
+                    self.call(*f, args, *span).map(|v| {
+                        if let Some(d) = d {
+                            self.put(*d, v.unwrap_or_default());
+                        }
+                    })
+                }
                 Op::Call(f, args, ops, d, span) => {
                     match self.push_call(cache, *f, args, ops, *d, *span) {
                         Ok(e) => {

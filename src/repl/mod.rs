@@ -37,6 +37,8 @@ pub struct Drive {
     /// pose, and moves the arm only when that rehearsal raises nothing
     /// (`--rehearse`).
     pub rehearse: bool,
+    /// The simulated devices (`--devices`); None keeps the default set.
+    pub devices: Option<crate::devices::Devices>,
 }
 
 pub struct Repl {
@@ -51,6 +53,8 @@ pub struct Repl {
     port: Option<crate::driver::serial::PortSettings>,
     /// Rehearse each entry on the simulator before the arm moves.
     rehearse: bool,
+    /// `--devices`, kept for `:reset`.
+    devices: Option<crate::devices::Devices>,
 }
 
 const COMMANDS: &[(&str, &str)] = &[
@@ -74,6 +78,10 @@ const COMMANDS: &[(&str, &str)] = &[
         ":plot FILE.svg",
         "draw the motions since the start (or :reset): joints, TCP path",
     ),
+    (":devices", "the simulated devices: registers, interrupts, objects"),
+    (":irq ADDR", "raise the interrupt at ADDR (8#340#, 0o340, 224)"),
+    (":set ADDR VALUE", "set the input register at ADDR (16#00FF#, 0xFF, 255)"),
+    (":tasks", "the tasks of the last entry and what each waited for"),
     (":reset", "forget everything declared and start again"),
     (":quit", "leave (Ctrl-D too)"),
 ];
@@ -100,6 +108,7 @@ impl Repl {
             terminal: false,
             port: None,
             rehearse: false,
+            devices: None,
         };
         r.install_robot();
         r.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
@@ -124,6 +133,10 @@ impl Repl {
         }
         self.rehearse = d.rehearse && d.port.is_some();
         self.port = d.port;
+        if let Some(devs) = d.devices {
+            self.devices = Some(devs.clone());
+            self.session.set_devices(devs);
+        }
         self.install_robot();
         Ok(())
     }
@@ -414,9 +427,64 @@ impl Repl {
                 };
                 self.entry(&format!("TeachBox (\"{}\");", text.replace('"', "\"\"")))
             }
+            "devices" => match &self.session.machine.world {
+                Some(w) => ok(w.describe()),
+                None => ok("no devices\n".into()),
+            },
+            "irq" => match arg.map(parse_number) {
+                Some(Some(a)) => {
+                    let r = match self.session.machine.world.as_mut() {
+                        Some(w) => w.raise_interrupt(a as u32).map_err(|e| e.to_string()),
+                        None => Err("no devices".into()),
+                    };
+                    match r {
+                        Ok(Some(_)) => ok(format!(
+                            "interrupt {} raised (no task outlives an entry: nobody accepts it now)\n",
+                            crate::devices::ada_address(a as u32)
+                        )),
+                        Ok(None) => ok(format!(
+                            "interrupt {} dropped: its device has interrupts disabled\n",
+                            crate::devices::ada_address(a as u32)
+                        )),
+                        Err(e) => fail(format!(":irq: {e}\n")),
+                    }
+                }
+                _ => fail(":irq ADDR (8#340#, 0o340 or 224)\n".into()),
+            },
+            "set" => match (arg.and_then(parse_number), words.next().and_then(parse_number)) {
+                (Some(a), Some(v)) if v <= u16::MAX as i64 => {
+                    let r = match self.session.machine.world.as_mut() {
+                        Some(w) => w.set_input(a as u32, v as u16).map_err(|e| e.to_string()),
+                        None => Err("no devices".into()),
+                    };
+                    match r {
+                        Ok(_) => ok(format!(
+                            "{} := {}\n",
+                            crate::devices::ada_address(a as u32),
+                            crate::devices::ada_word(v as u16)
+                        )),
+                        Err(e) => fail(format!(":set: {e}\n")),
+                    }
+                }
+                _ => fail(":set ADDR VALUE (a 16-bit value: 16#00FF#, 0xFF or 255)\n".into()),
+            },
+            "tasks" => {
+                let t = &self.session.machine.last_tasks;
+                if t.is_empty() {
+                    ok("no tasks: an entry that declares tasks waits for them at its end\n".into())
+                } else {
+                    ok(format!(
+                        "the tasks of the last entry (tasks do not outlive their entry):\n{}",
+                        t.iter().map(|l| format!("  {l}\n")).collect::<String>()
+                    ))
+                }
+            }
             "reset" => {
                 self.session = Session::new((self.make_out)());
                 self.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+                if let Some(d) = self.devices.clone() {
+                    self.session.set_devices(d);
+                }
                 self.install_robot();
                 self.script_uses();
                 ok("reset: everything declared is forgotten\n".into())
@@ -763,4 +831,21 @@ pub fn exception_doc(name: &str) -> Option<String> {
         .iter()
         .find(|(n, _)| n.eq_ignore_ascii_case(name))
         .map(|(n, d)| format!("exception AdaIR.{n} (handbook appendix B)\nraised when {d}\n"))
+}
+
+/// An address or register value as the REPL takes it: Ada based literals
+/// (`8#340#`, `16#00FF#`), Rust-style `0o340`, `0xFF`, `0b1`, or decimal.
+pub fn parse_number(text: &str) -> Option<i64> {
+    let t = text.replace('_', "");
+    if let Some((base, rest)) = t.split_once('#') {
+        let digits = rest.strip_suffix('#')?;
+        return i64::from_str_radix(digits, base.parse().ok()?).ok();
+    }
+    let lower = t.to_ascii_lowercase();
+    for (p, radix) in [("0x", 16), ("0o", 8), ("0b", 2)] {
+        if let Some(d) = lower.strip_prefix(p) {
+            return i64::from_str_radix(d, radix).ok();
+        }
+    }
+    t.parse().ok()
 }

@@ -50,6 +50,8 @@ pub struct RobotState {
     /// Set when the user stopped the program (Ctrl-C) during or before a
     /// motion: where it was and where the robot stayed. The run has ended.
     pub stopped: Option<String>,
+    /// The device object (tasks.md) between the simulated jaws.
+    pub held: Option<String>,
 }
 
 /// How a service ends early: an exception, or the user's stop.
@@ -126,6 +128,7 @@ impl RobotState {
             pendant: None,
             excs,
             stopped: None,
+            held: None,
         }
     }
 }
@@ -846,7 +849,44 @@ fn move_tool(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Valu
         st.force_setting = force;
     }
     let before = st.robot.gripper();
-    match st.robot.move_gripper(target, limit) {
+    // The simulated devices' objects (tasks.md): closing on one whose
+    // centre is at the TCP picks it, opening puts it down there.
+    let tcp = current_frame(st).translation;
+    let at = [tcp.x, tcp.y, tcp.z];
+    let closing = target < before.opening;
+    let mut grasp = None;
+    if closing
+        && st.held.is_none()
+        && let Some(w) = cx.world.as_deref()
+        && let Some(o) = w.object_at(at, crate::devices::GRIP_TOLERANCE_MM)
+        && o.width <= before.opening
+        && let Some(sim) = st.robot.as_simulator()
+        && sim.place_object(o.width).is_ok()
+    {
+        grasp = Some(o.name);
+    }
+    let moved = st.robot.move_gripper(target, limit);
+    if let (Some(name), Ok(g)) = (&grasp, &moved)
+        && let Some(w) = cx.world.as_deref_mut()
+    {
+        let width = w.objects().iter().find(|o| &o.name == name).map(|o| o.width);
+        if width.is_some_and(|x| (g.opening - x).abs() < 1e-6) && w.pick(name).is_ok() {
+            st.held = Some(name.clone());
+        }
+    }
+    if !closing
+        && let Ok(g) = &moved
+        && let Some(name) = st.held.clone()
+        && g.opening > before.opening
+        && let Some(w) = cx.world.as_deref_mut()
+    {
+        let _ = w.put_down(&name, at);
+        st.held = None;
+        if let Some(sim) = st.robot.as_simulator() {
+            let _ = sim.place_object(0.0);
+        }
+    }
+    match moved {
         Ok(g2) => {
             // The jaws move at 100 mm/s at full velocity.
             let d = (before.opening - g2.opening).abs() / (100.0 * st.velocity / 100.0).max(1e-6);
