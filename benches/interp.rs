@@ -1,6 +1,7 @@
 //! The interpreter on the three benchmark programs of `bench/programs`
 //! (recursive fib (27), 200,000 4x4 matrix products, a 100,000-node list,
-//! 10,000 joint moves on the simulator).
+//! 10,000 joint moves on the simulator, 10,000 rendezvous between two tasks,
+//! 1,000 tasks created and finished).
 //! `bench/compare.sh` runs the same programs in CPython, Lua and GNAT.
 
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -15,7 +16,14 @@ fn run(path: &str) {
 fn programs(c: &mut Criterion) {
     let mut g = c.benchmark_group("interp");
     g.sample_size(10);
-    for p in ["fib.adb", "matrix.adb", "list.adb", "moves.air"] {
+    for p in [
+        "fib.adb",
+        "matrix.adb",
+        "list.adb",
+        "moves.air",
+        "rendezvous.adb",
+        "tasks1000.adb",
+    ] {
         let path = format!("{}/bench/programs/{p}", env!("CARGO_MANIFEST_DIR"));
         g.bench_function(p, |b| b.iter(|| run(&path)));
     }

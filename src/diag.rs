@@ -126,7 +126,9 @@ impl Diagnostic {
         match self.phase {
             Phase::Warning => ("warning", self.message.clone()),
             // A deadlock is no exception the program could handle.
-            Phase::Runtime if self.message.starts_with("deadlock:") => ("error", self.message.clone()),
+            Phase::Runtime if self.message.starts_with("deadlock:") => {
+                ("error", self.message.clone())
+            }
             Phase::Runtime => ("error", format!("unhandled exception: {}", self.message)),
             _ => ("error", self.message.clone()),
         }

@@ -219,12 +219,10 @@ impl Checker {
                 },
             );
         }
-        // A library-level (or script) task is activated where it is declared.
+        // A library-level (or script) task is activated with the others
+        // before the next statement (see `activate_library_tasks`).
         if creates_task && self.masters.is_empty() {
-            out.push(Stmt {
-                kind: StmtKind::Activate,
-                span,
-            });
+            self.library_tasks = true;
         }
     }
 

@@ -157,6 +157,8 @@ pub struct Checker {
     prot_real: HashMap<FuncId, (FuncId, u32)>,
     /// Per declarative region being checked: whether it may create tasks.
     masters: Vec<bool>,
+    /// Library-level tasks created and not yet activated.
+    library_tasks: bool,
     /// The devices address clauses bind to (`--devices`, or the default set).
     pub devices: Rc<crate::devices::Devices>,
 }
@@ -216,6 +218,7 @@ impl Checker {
             prot_members: Vec::new(),
             prot_real: HashMap::new(),
             masters: Vec::new(),
+            library_tasks: false,
             devices: Rc::new(crate::devices::Devices::default_set()),
         };
         c.standard();
@@ -594,7 +597,21 @@ impl Checker {
                 ast::TopItem::Stmt(s) => self.stmt(s, &mut out),
             }
         }
+        self.activate_library_tasks(&mut out);
         (out, main)
+    }
+
+    /// Library-level (and script) tasks are activated together before the
+    /// next statement that is no declaration, or at the end of the unit
+    /// (before the main program runs), so that they can call each other
+    /// whatever their order of declaration.
+    pub(super) fn activate_library_tasks(&mut self, out: &mut Vec<Stmt>) {
+        if std::mem::take(&mut self.library_tasks) {
+            out.push(Stmt {
+                kind: StmtKind::Activate,
+                span: crate::diag::span(0, 0, 0),
+            });
+        }
     }
 
     fn funcs_named(&self, key: &str, _after: usize) -> Option<FuncId> {

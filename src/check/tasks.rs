@@ -854,7 +854,10 @@ impl Checker {
             self.err(
                 Diagnostic::name(
                     entry.span,
-                    format!("no entry `{}` is declared for task `{}`", entry.name, def.name),
+                    format!(
+                        "no entry `{}` is declared for task `{}`",
+                        entry.name, def.name
+                    ),
                 )
                 .with_hint(format!(
                     "the accept statement must name one of its entries ({})",
@@ -1133,7 +1136,10 @@ impl Checker {
             return;
         };
         let here = crate::devices::ada_address(addr as u32);
-        let Some((dev, role)) = u32::try_from(addr).ok().and_then(|a| self.devices.lookup(a)) else {
+        let Some((dev, role)) = u32::try_from(addr)
+            .ok()
+            .and_then(|a| self.devices.lookup(a))
+        else {
             self.err(self.no_device(address.span, addr));
             return;
         };
@@ -1156,13 +1162,17 @@ impl Checker {
         else {
             self.err(Diagnostic::name(
                 name.span,
-                format!("`{}` is not an object declared in this declarative part", name.name),
+                format!(
+                    "`{}` is not an object declared in this declarative part",
+                    name.name
+                ),
             ));
             return;
         };
-        let bits = self.types.array(ty).is_some_and(|(ix, elem, _)| {
-            ix.len() == 1 && self.types.base(elem) == BOOLEAN
-        });
+        let bits = self
+            .types
+            .array(ty)
+            .is_some_and(|(ix, elem, _)| ix.len() == 1 && self.types.base(elem) == BOOLEAN);
         if !self.types.is_integer(ty) && !bits {
             self.err(
                 Diagnostic::ty(
@@ -1206,7 +1216,10 @@ impl Checker {
             .collect();
         let mut d = Diagnostic::name(
             sp,
-            format!("no device has the address {here} in {}", self.devices.source()),
+            format!(
+                "no device has the address {here} in {}",
+                self.devices.source()
+            ),
         );
         d = if known.is_empty() {
             d.with_hint("the device file declares no devices: give one with `--devices FILE.toml`")

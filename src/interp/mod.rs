@@ -213,7 +213,9 @@ impl Machine {
             current: Vec::new(),
             resolver: |n| builtins::lookup(n).map(Binding::Native),
             engine: vm::Engine::from_env(),
-            world: Some(crate::devices::World::new(crate::devices::Devices::default_set())),
+            world: Some(crate::devices::World::new(
+                crate::devices::Devices::default_set(),
+            )),
             trace: None,
             last_tasks: Vec::new(),
         }
@@ -730,8 +732,7 @@ impl Run<'_> {
         if tasks && deferred.spent > 0.0 {
             let until = deferred.base + deferred.spent;
             self.sched.robot_free_at = until;
-            self.sched
-                .block(tasking::Wait::Delay(until), false, span);
+            self.sched.block(tasking::Wait::Delay(until), false, span);
         }
         match r {
             Ok(v) => Ok(v),

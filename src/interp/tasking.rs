@@ -795,7 +795,9 @@ impl<'a> Run<'a> {
                 if self.sched.accepting(t, e as u32) {
                     self.sched.make_ready(t);
                 }
-                let name = &self.c.tasks[self.sched.threads[t].ttype.unwrap_or(0) as usize].entries[e].name;
+                let name = &self.c.tasks[self.sched.threads[t].ttype.unwrap_or(0) as usize].entries
+                    [e]
+                    .name;
                 format!(
                     "interrupt {} queued on {}.{name}",
                     crate::devices::ada_address(address),

@@ -154,10 +154,12 @@ struct EntryOp<'p> {
     span: Span,
 }
 
+/// A select's accept alternative: guard, entry, parameters, target.
+type AcceptAlt<'p> = (Option<Var>, u32, &'p [(Var, Mode)], u32);
+
 #[derive(Debug)]
 struct SelectOp<'p> {
-    /// Guard, entry, parameters, target.
-    alts: Vec<(Option<Var>, u32, &'p [(Var, Mode)], u32)>,
+    alts: Vec<AcceptAlt<'p>>,
     /// Guard, amount, until, target.
     delay: Option<(Option<Var>, Var, bool, u32)>,
     terminate: Option<Option<Var>>,
@@ -695,7 +697,11 @@ impl<'p> Compiler<'p, '_> {
             StmtKind::Master(b) => {
                 self.ops.push(Op::MasterEnter);
                 self.masters += 1;
-                self.guarded(|c| c.body(b), Op::MasterLeave(s.span), Op::MasterUnwind(s.span));
+                self.guarded(
+                    |c| c.body(b),
+                    Op::MasterLeave(s.span),
+                    Op::MasterUnwind(s.span),
+                );
                 self.masters -= 1;
             }
             StmtKind::Accept(a) => self.accept(a, s.span),
@@ -1337,6 +1343,21 @@ impl<'a> Run<'a> {
         self.tasking_on();
         let me = self.sched.cur;
         let s = self.int_at(ec.target) as usize;
+        let known = self
+            .sched
+            .threads
+            .get(s)
+            .is_some_and(|t| t.ttype.is_some() && (ec.entry as usize) < t.entries.len());
+        if !known {
+            return Err(self.raise(
+                check::PROGRAM_ERROR,
+                format!(
+                    "{} the called task is not elaborated yet",
+                    self.m.location(ec.span)
+                ),
+                ec.span,
+            ));
+        }
         let alive = self
             .sched
             .threads
@@ -1931,8 +1952,7 @@ impl<'a> Run<'a> {
                         && self.is_service(*f) =>
                 {
                     let until = self.sched.robot_free_at;
-                    self.sched
-                        .block(tasking::Wait::Delay(until), true, *span);
+                    self.sched.block(tasking::Wait::Delay(until), true, *span);
                     Ok(())
                 }
                 Op::CallWalker(f, args, d, span) => {

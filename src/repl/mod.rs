@@ -78,10 +78,22 @@ const COMMANDS: &[(&str, &str)] = &[
         ":plot FILE.svg",
         "draw the motions since the start (or :reset): joints, TCP path",
     ),
-    (":devices", "the simulated devices: registers, interrupts, objects"),
-    (":irq ADDR", "raise the interrupt at ADDR (8#340#, 0o340, 224)"),
-    (":set ADDR VALUE", "set the input register at ADDR (16#00FF#, 0xFF, 255)"),
-    (":tasks", "the tasks of the last entry and what each waited for"),
+    (
+        ":devices",
+        "the simulated devices: registers, interrupts, objects",
+    ),
+    (
+        ":irq ADDR",
+        "raise the interrupt at ADDR (8#340#, 0o340, 224)",
+    ),
+    (
+        ":set ADDR VALUE",
+        "set the input register at ADDR (16#00FF#, 0xFF, 255)",
+    ),
+    (
+        ":tasks",
+        "the tasks of the last entry and what each waited for",
+    ),
     (":reset", "forget everything declared and start again"),
     (":quit", "leave (Ctrl-D too)"),
 ];
@@ -451,7 +463,10 @@ impl Repl {
                 }
                 _ => fail(":irq ADDR (8#340#, 0o340 or 224)\n".into()),
             },
-            "set" => match (arg.and_then(parse_number), words.next().and_then(parse_number)) {
+            "set" => match (
+                arg.and_then(parse_number),
+                words.next().and_then(parse_number),
+            ) {
                 (Some(a), Some(v)) if v <= u16::MAX as i64 => {
                     let r = match self.session.machine.world.as_mut() {
                         Some(w) => w.set_input(a as u32, v as u16).map_err(|e| e.to_string()),

@@ -869,7 +869,11 @@ fn move_tool(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Valu
     if let (Some(name), Ok(g)) = (&grasp, &moved)
         && let Some(w) = cx.world.as_deref_mut()
     {
-        let width = w.objects().iter().find(|o| &o.name == name).map(|o| o.width);
+        let width = w
+            .objects()
+            .iter()
+            .find(|o| &o.name == name)
+            .map(|o| o.width);
         if width.is_some_and(|x| (g.opening - x).abs() < 1e-6) && w.pick(name).is_ok() {
             st.held = Some(name.clone());
         }

@@ -1132,6 +1132,12 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         kw!(Null).then(semi()).to(StmtKind::Null),
         if_stmt,
         case_stmt,
+        // An address clause among statements (script mode): `for R use at A;`.
+        kw!(For)
+            .then(ident())
+            .then(kw!(Use))
+            .rewind()
+            .ignore_then(decl_stmt.clone()),
         loop_stmt,
         block_stmt,
         exit_stmt,

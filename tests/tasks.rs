@@ -1,0 +1,287 @@
+//! Tasks, devices and their mistakes as a user meets them (tasks.md): the
+//! real binary, its exit status and what it prints. The scheduling order
+//! itself is pinned by the golden scenarios in `tests/golden/tasks/` and the
+//! GNAT programs `tests/ada/task_*.adb`.
+
+use std::process::Command;
+
+fn adair_env(args: &[&str], env: &[(&str, &str)], input: Option<&str>) -> (i32, String, String) {
+    use std::io::Write;
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_adair"));
+    cmd.args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("NO_COLOR", "1")
+        .env_remove("ADAIR_ENGINE")
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped());
+    for (k, v) in env {
+        cmd.env(k, v);
+    }
+    let mut child = cmd.spawn().expect("run adair");
+    let mut stdin = child.stdin.take().expect("stdin");
+    stdin
+        .write_all(input.unwrap_or("").as_bytes())
+        .expect("write stdin");
+    drop(stdin);
+    let out = child.wait_with_output().expect("wait for adair");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn adair(args: &[&str]) -> (i32, String, String) {
+    adair_env(args, &[], None)
+}
+
+fn temp_file(name: &str, text: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("adair-tasks-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let p = dir.join(name);
+    std::fs::write(&p, text).expect("write");
+    p.to_string_lossy().into_owned()
+}
+
+const SERVER: &str = "with Ada.Text_IO; use Ada.Text_IO;
+procedure Server_Main is
+   task Server is
+      entry Put (X : Integer);
+      entry Get (Y : out Integer);
+   end Server;
+   task body Server is
+      V : Integer := 0;
+   begin
+      accept Put (X : Integer) do
+         V := X;
+      end Put;
+      accept Get (Y : out Integer) do
+         Y := V * 2;
+      end Get;
+   end Server;
+   R : Integer;
+begin
+   Server.Put (21);
+   Server.Get (R);
+   Put_Line (Integer'Image (R));
+end Server_Main;
+";
+
+#[test]
+fn a_rendezvous_passes_in_and_out_parameters() {
+    let f = temp_file("server.adb", SERVER);
+    let (code, out, err) = adair(&["run", &f]);
+    assert_eq!((code, out.as_str()), (0, " 42\n"), "{err}");
+}
+
+#[test]
+fn the_reference_walker_refuses_tasks_with_a_clear_message() {
+    let f = temp_file("server_walker.adb", SERVER);
+    let (code, _, err) = adair_env(&["run", &f], &[("ADAIR_ENGINE", "walker")], None);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("tasks run in the compiled engine only"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_deadlock_names_every_task_and_what_it_waits_for_and_exits_1() {
+    let f = temp_file(
+        "dead.air",
+        "task A is
+   entry Ping;
+end A;
+task B is
+   entry Ping;
+end B;
+task body A is
+begin
+   B.Ping;
+   accept Ping;
+end A;
+task body B is
+begin
+   A.Ping;
+   accept Ping;
+end B;
+",
+    );
+    let (code, _, err) = adair(&["run", &f]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("error: deadlock"), "{err}");
+    assert!(!err.contains("unhandled exception"), "{err}");
+    assert!(err.contains("A waits in a call of B.Ping"), "{err}");
+    assert!(err.contains("B waits in a call of A.Ping"), "{err}");
+    assert!(err.contains("main waits for its tasks to end"), "{err}");
+}
+
+#[test]
+fn a_call_to_an_ended_task_is_tasking_error() {
+    let f = temp_file(
+        "ended.air",
+        "task T is
+   entry E;
+end T;
+task body T is
+begin
+   null;
+end T;
+delay 0.1;
+begin
+   T.E;
+exception
+   when Tasking_Error => Put_Line (\"Tasking_Error\");
+end;
+",
+    );
+    let (code, out, err) = adair(&["run", &f]);
+    assert_eq!((code, out.as_str()), (0, "Tasking_Error\n"), "{err}");
+}
+
+#[test]
+fn a_malformed_device_file_is_one_error_with_its_line_and_exit_2() {
+    let toml = temp_file(
+        "bad.toml",
+        "[[device]]\nname = \"p\"\nkind = \"parallel\"\ninterrupt = \"8#340#\"\n",
+    );
+    let prog = temp_file("p.air", "Put_Line (\"never\");\n");
+    let (code, out, err) = adair(&["--devices", &toml, "run", &prog]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty(), "nothing ran: {out}");
+    assert!(
+        err.contains("bad.toml:4:"),
+        "the line of the mistake: {err}"
+    );
+    assert_eq!(err.matches("error").count(), 1, "one error: {err}");
+}
+
+#[test]
+fn an_address_no_device_has_is_a_check_error_naming_it_and_the_device_file() {
+    let f = temp_file(
+        "noaddr.air",
+        "type Word is range 0 .. 16#FFFF#;
+R : Word;
+for R use at 8#360#;
+Put_Line (Word'Image (R));
+",
+    );
+    let (code, _, err) = adair(&["run", &f]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("no device has the address 8#360#"), "{err}");
+    assert!(err.contains("the default device set"), "{err}");
+    assert!(
+        err.contains("8#342#"),
+        "the addresses there are listed: {err}"
+    );
+    let cell = "examples/devices/cell.toml";
+    let (code, _, err) = adair(&["--devices", cell, "check", &f]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains(cell), "names the device file: {err}");
+}
+
+#[test]
+fn an_interrupt_entry_with_parameters_is_a_check_error() {
+    let f = temp_file(
+        "irqparam.air",
+        "task H is
+   entry Interrupt (X : Integer);
+   for Interrupt use at 8#340#;
+end H;
+task body H is
+begin
+   accept Interrupt (X : Integer);
+end H;
+",
+    );
+    let (code, _, err) = adair(&["check", &f]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("the interrupt entry `Interrupt` has parameters"),
+        "{err}"
+    );
+}
+
+#[test]
+fn an_input_register_cannot_be_assigned() {
+    let f = temp_file(
+        "input.air",
+        "type Word is range 0 .. 16#FFFF#;
+R : Word;
+for R use at 8#342#;
+R := 5;
+",
+    );
+    let (code, _, err) = adair(&["check", &f]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("input register of device `parallel`"), "{err}");
+}
+
+#[test]
+fn registers_read_the_device_and_bits_are_written_back() {
+    // The output register keeps what was written, bit by bit; the input
+    // register reads what the device file's event set at 0.5 s.
+    let f = temp_file(
+        "regs.air",
+        "type Bits is array (0 .. 15) of Boolean;
+type Word is range 0 .. 16#FFFF#;
+Output : Bits;
+for Output use at 8#344#;
+Output_Word : Word;
+for Output_Word use at 8#344#;
+Input : Word;
+for Input use at 8#342#;
+Output := (others => False);
+Output (0) := True;
+Output (4) := True;
+Put_Line (Word'Image (Output_Word));
+Put_Line (Word'Image (Input));
+delay 1.0;
+Put_Line (Word'Image (Input));
+",
+    );
+    let (code, out, err) = adair(&["--devices", "examples/devices/parallel.toml", "run", &f]);
+    assert_eq!((code, out.as_str()), (0, " 17\n 0\n 255\n"), "{err}");
+}
+
+#[test]
+fn the_repl_shows_and_sets_the_devices() {
+    let input = ":set 8#342# 16#00FF#\n:devices\n:irq 8#340#\n:set 8#344# 1\n:tasks\n";
+    let (code, out, err) = adair_env(&["repl"], &[], Some(input));
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("8#342# := 16#00FF#"), "{out}");
+    assert!(
+        out.contains("16#00FF#"),
+        ":devices shows the input register: {out}"
+    );
+    assert!(
+        out.contains("interrupt 8#340# dropped"),
+        "interrupts are disabled at the start: {out}"
+    );
+    assert!(
+        out.contains(":set:"),
+        "an output register is not an input: {out}"
+    );
+    assert!(out.contains("no tasks"), "{out}");
+}
+
+#[test]
+fn trace_shows_task_switches_interrupts_and_device_events() {
+    let (code, _, err) = adair(&[
+        "--devices",
+        "examples/devices/cell.toml",
+        "run",
+        "--trace",
+        "examples/tasks/conveyor_cell.air",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    for want in [
+        "tasks: main -> Belt",
+        "tasks: interrupt 8#354# queued on Barrier.Interrupt",
+        "devices: belt: box1 reaches the end",
+        "devices: gripper: box1 picked",
+    ] {
+        assert!(err.contains(want), "missing `{want}` in:\n{err}");
+    }
+}
