@@ -837,6 +837,25 @@ impl Checker {
         ctx.saw_return
     }
 
+    /// The last `end ...;` of a region's text (the whole span if there is
+    /// none).
+    fn end_of(&self, span: Span) -> Span {
+        let Some(t) = self.texts.get(&span.context) else {
+            return span;
+        };
+        let Some(text) = t.get(span.start..span.end.min(t.len())) else {
+            return span;
+        };
+        match text.to_ascii_lowercase().rfind("end") {
+            Some(i) => Span {
+                start: span.start + i,
+                end: span.end,
+                context: span.context,
+            },
+            None => span,
+        }
+    }
+
     /// The statements of a declarative region: its elaboration `elab`,
     /// then `inner`. When the region may create tasks, they are activated
     /// at its `begin` and the region is their master; a task body always
@@ -862,6 +881,8 @@ impl Checker {
         if !creates {
             return elab;
         }
+        // The region's `end`, where it waits for its tasks.
+        let span = self.end_of(span);
         vec![Stmt {
             kind: StmtKind::Master(Box::new(Body {
                 stmts: elab,
