@@ -277,7 +277,8 @@ impl Machine {
             }
             Ok(())
         })();
-        if run.sched.active() {
+        let tasks = run.sched.active();
+        if tasks {
             run.m.last_tasks = run
                 .sched
                 .threads
@@ -295,6 +296,13 @@ impl Machine {
         run.m.stack.truncate(need);
         let _ = run.m.out.flush();
         match r {
+            // The user's stop in a program with tasks (see `poll`).
+            Err(Flow::Exit(STOP_LABEL)) if tasks => Err(Box::new(Occurrence {
+                exc: check::PROGRAM_ERROR,
+                message: "interrupted (Ctrl-C): every task stopped".into(),
+                span: crate::diag::span(0, 0, 0),
+                chain: Vec::new(),
+            })),
             Ok(()) | Err(Flow::Return(_)) | Err(Flow::Exit(_)) => Ok(()),
             Err(Flow::Raise(o)) => Err(o),
         }
@@ -667,6 +675,11 @@ impl Run<'_> {
         if let Some(flag) = &self.m.interrupted
             && flag.swap(false, std::sync::atomic::Ordering::SeqCst)
         {
+            // With tasks, the user's stop ends the whole program (an
+            // exception would end only the task that saw it).
+            if self.sched.active() {
+                return Err(Flow::Exit(STOP_LABEL));
+            }
             return Err(self.raise(check::PROGRAM_ERROR, "interrupted (Ctrl-C)", span));
         }
         Ok(())

@@ -890,3 +890,90 @@ impl<'a> Run<'a> {
 
 /// The first line of the deadlock diagnostic.
 pub const DEADLOCK: &str = "deadlock: every task is blocked and nothing can wake one";
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sched(priorities: &[i64]) -> Sched<'static> {
+        let mut s = Sched::default();
+        for (i, p) in priorities.iter().enumerate() {
+            let mut t = Thread::new(format!("T{i}"), Some(0), 1);
+            t.priority = *p;
+            s.threads.push(t);
+        }
+        s
+    }
+
+    #[test]
+    fn the_ready_task_that_waited_longest_runs_first() {
+        let mut s = sched(&[15, 15, 15]);
+        for t in [2, 0, 1] {
+            s.make_ready(t);
+        }
+        let order: Vec<Tid> = std::iter::from_fn(|| s.pick()).collect();
+        assert_eq!(order, vec![2, 0, 1]);
+    }
+
+    #[test]
+    fn a_higher_priority_runs_first_then_the_longest_waiting() {
+        let mut s = sched(&[10, 20, 10, 20]);
+        for t in [0, 1, 2, 3] {
+            s.make_ready(t);
+        }
+        let order: Vec<Tid> = std::iter::from_fn(|| s.pick()).collect();
+        assert_eq!(order, vec![1, 3, 0, 2]);
+    }
+
+    #[test]
+    fn make_first_goes_before_every_ready_task_of_its_priority() {
+        let mut s = sched(&[15, 15, 15]);
+        s.make_ready(0);
+        s.make_ready(1);
+        s.make_first(2);
+        assert_eq!(s.pick(), Some(2));
+        assert_eq!(s.pick(), Some(0));
+    }
+
+    #[test]
+    fn a_terminated_task_is_never_made_ready() {
+        let mut s = sched(&[15, 15]);
+        s.threads[1].wait = Wait::Terminated;
+        s.make_ready(1);
+        s.make_ready(0);
+        assert_eq!(s.pick(), Some(0));
+        assert_eq!(s.pick(), None);
+    }
+
+    #[test]
+    fn the_next_deadline_is_the_earliest_of_delays_and_timeouts() {
+        let mut s = sched(&[15, 15, 15]);
+        s.threads[0].wait = Wait::Delay(3.0);
+        s.threads[1].wait = Wait::Accept {
+            entries: vec![0],
+            deadline: Some(2.5),
+            terminate: false,
+        };
+        s.threads[2].wait = Wait::Call {
+            server: 1,
+            entry: 0,
+            deadline: None,
+        };
+        assert_eq!(s.next_deadline(), Some(2.5));
+    }
+
+    #[test]
+    fn a_task_at_terminate_with_dependents_waits_for_them_to_terminate_too() {
+        let mut s = sched(&[15, 15]);
+        s.threads[0].wait = Wait::Accept {
+            entries: vec![],
+            deadline: None,
+            terminate: true,
+        };
+        s.threads[0].masters = vec![vec![1]];
+        s.threads[1].wait = Wait::Delay(1.0);
+        assert!(!s.at_terminate(0));
+        s.threads[1].wait = Wait::Terminated;
+        assert!(s.at_terminate(0));
+    }
+}
