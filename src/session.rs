@@ -253,11 +253,17 @@ impl Session {
         self.checker.add_text(id, text);
         let (unit, mut diags) = crate::syntax::parse_source(text, id);
         let Some(unit) = unit else { return Err(diags) };
+        use crate::syntax::ast::{DeclKind, TopItem};
+        // A script: statements at the top, or only declarations without a
+        // `with` and without a main procedure (tasks that do the work).
+        let main_candidate = unit.items.iter().any(|i| {
+            matches!(i, TopItem::Decl(d) if matches!(&d.kind,
+                DeclKind::SubprogramBody(b) if b.spec.params.is_empty() && b.spec.ret.is_none()))
+        });
+        let withs = unit.items.iter().any(|i| matches!(i, TopItem::With(..)));
         let is_script = script
-            || unit
-                .items
-                .iter()
-                .any(|i| matches!(i, crate::syntax::ast::TopItem::Stmt(_)));
+            || unit.items.iter().any(|i| matches!(i, TopItem::Stmt(_)))
+            || (!withs && !main_candidate);
         if is_script {
             for p in SCRIPT_USES {
                 self.checker.use_everywhere(p);
