@@ -207,7 +207,13 @@ impl Session {
         let col = self.machine.col;
         let stand_in = self.robot.as_ref().map(|r| r.rehearsal());
         let robot = std::mem::replace(&mut self.robot, stand_in);
+        // The tasks of earlier entries and the devices are rehearsed on
+        // copies too.
+        let tasks = self.machine.save_tasks();
+        let world = self.machine.world.clone();
         let result = f(self);
+        self.machine.world = world;
+        self.machine.restore_tasks(tasks);
         self.robot = robot;
         self.machine.col = col;
         self.machine.clock = clock;

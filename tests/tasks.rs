@@ -285,3 +285,48 @@ fn trace_shows_task_switches_interrupts_and_device_events() {
         assert!(err.contains(want), "missing `{want}` in:\n{err}");
     }
 }
+
+#[test]
+fn in_the_repl_tasks_live_on_between_entries_and_take_interrupts() {
+    let input = "\
+type Bits is array (0 .. 15) of Boolean;
+Control : Bits; for Control use at 8#346#;
+task Handler is entry Interrupt; for Interrupt use at 8#340#; entry Count (N : out Integer); end Handler; task body Handler is Seen : Integer := 0; begin loop select accept Interrupt; Seen := Seen + 1; Put_Line (\"handled interrupt\" & Integer'Image (Seen)); or accept Count (N : out Integer) do N := Seen; end Count; end select; end loop; end Handler;
+:tasks
+:irq 8#340#
+Control (0) := True;
+:irq 8#340#
+N : Integer;
+Handler.Count (N);
+N
+";
+    let (code, out, err) = adair_env(&["repl", "--strict"], &[], Some(input));
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(
+        out.contains("Handler waits to accept one of Interrupt, Count"),
+        ":tasks shows what the task waits for: {out}"
+    );
+    assert!(out.contains("interrupt 8#340# dropped"), "{out}");
+    assert_eq!(
+        out.matches("handled interrupt 1").count(),
+        1,
+        "the enabled interrupt reaches the task between entries: {out}"
+    );
+    assert!(
+        out.trim_end().ends_with('1'),
+        "a later entry calls the task: {out}"
+    );
+}
+
+#[test]
+fn in_the_repl_a_task_needs_its_body_in_the_same_entry() {
+    let (code, out, err) = adair_env(
+        &["repl", "--strict"],
+        &[],
+        Some("task T is entry E; end T;\n"),
+    );
+    assert_eq!(code, 1, "{out}{err}");
+    let all = format!("{out}{err}");
+    assert!(all.contains("task `T` has no body"), "{all}");
+    assert!(all.contains("in the same entry"), "{all}");
+}

@@ -157,6 +157,9 @@ pub struct Checker {
     prot_real: HashMap<FuncId, (FuncId, u32)>,
     /// Per declarative region being checked: whether it may create tasks.
     masters: Vec<bool>,
+    /// Protected types whose body was seen (missing operations in it are
+    /// reported there).
+    prot_bodied: Vec<u32>,
     /// Library-level tasks created and not yet activated.
     library_tasks: bool,
     /// The devices address clauses bind to (`--devices`, or the default set).
@@ -218,6 +221,7 @@ impl Checker {
             prot_members: Vec::new(),
             prot_real: HashMap::new(),
             masters: Vec::new(),
+            prot_bodied: Vec::new(),
             library_tasks: false,
             devices: Rc::new(crate::devices::Devices::default_set()),
         };
@@ -566,6 +570,40 @@ impl Checker {
     /// statements are allowed; returns the statements to run at level 0 and,
     /// for a main-procedure program, the main subprogram.
     pub fn check_unit(&mut self, unit: &ast::CompilationUnit) -> (Vec<Stmt>, Option<FuncId>) {
+        let (tasks0, prots0) = (self.tasks.len(), self.prots.len());
+        let r = self.check_unit_items(unit);
+        // Every task and protected type declared here has its body here.
+        let mut missing: Vec<Diagnostic> = self.tasks[tasks0..]
+            .iter()
+            .filter(|t| t.body.is_none())
+            .map(|t| {
+                Diagnostic::name(t.span, format!("task `{}` has no body", t.name)).with_hint(format!(
+                    "write `task body {} is ... begin ... end {};` in the same declarative part (in the REPL: in the same entry)",
+                    t.name, t.name
+                ))
+            })
+            .collect();
+        for (k, p) in self.prots.iter().enumerate().skip(prots0) {
+            let unfinished = p.entries.iter().any(|e| e.body.is_none())
+                || self.prot_members[k]
+                    .iter()
+                    .any(|(_, _, real, _)| self.funcs[*real as usize].body.is_none());
+            if unfinished && !self.prot_bodied.contains(&(k as u32)) {
+                missing.push(
+                    Diagnostic::name(p.span, format!("protected `{}` has no body", p.name)).with_hint(format!(
+                        "write `protected body {} is ... end {};` in the same declarative part (in the REPL: in the same entry)",
+                        p.name, p.name
+                    )),
+                );
+            }
+        }
+        for d in missing {
+            self.err(d);
+        }
+        r
+    }
+
+    fn check_unit_items(&mut self, unit: &ast::CompilationUnit) -> (Vec<Stmt>, Option<FuncId>) {
         let mut out = Vec::new();
         let has_stmts = unit
             .items

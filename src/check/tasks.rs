@@ -306,6 +306,7 @@ impl Checker {
             ));
             return;
         };
+        self.prot_bodied.push(k);
         self.prot_ctx.push((k, None));
         self.push_scope();
         // The operations are visible inside the body by their names.

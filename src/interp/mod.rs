@@ -187,9 +187,14 @@ pub struct Machine {
     pub world: Option<crate::devices::World>,
     /// Where `--trace` writes task switches, device events and interrupts.
     pub trace: Option<Box<dyn Write>>,
-    /// The tasks of the last run at its end, and what each waited for
-    /// (`:tasks`).
-    pub last_tasks: Vec<String>,
+    /// Tasks and protected objects (empty without tasks). A run starts
+    /// afresh unless `keep_tasks` (the REPL) keeps the tasks of earlier
+    /// entries.
+    pub(crate) sched: tasking::Sched,
+    pub keep_tasks: bool,
+    /// Interrupts raised between runs (`:irq`), delivered when the next run
+    /// starts.
+    pub pending_irqs: Vec<(crate::devices::Address, f64)>,
 }
 
 const MAX_DEPTH: usize = 20_000;
@@ -217,7 +222,9 @@ impl Machine {
                 crate::devices::Devices::default_set(),
             )),
             trace: None,
-            last_tasks: Vec::new(),
+            sched: tasking::Sched::default(),
+            keep_tasks: false,
+            pending_irqs: Vec::new(),
         }
     }
 
@@ -252,11 +259,25 @@ impl Machine {
     ) -> Result<(), Box<Occurrence>> {
         let need = self.prepare(chk);
         let _cap = memory::HardCap::arm();
+        if self.keep_tasks && self.sched.alive() {
+            // The REPL's tasks live on; the new entry's level-0 slots must
+            // stay below their frames.
+            if need + 1024 > self.sched.floor {
+                return Err(Box::new(Occurrence {
+                    exc: check::STORAGE_ERROR,
+                    message: format!(
+                        "too many declarations while tasks run ({need} level-0 slots; :reset starts afresh)"
+                    ),
+                    span: crate::diag::span(0, 0, 0),
+                    chain: Vec::new(),
+                }));
+            }
+            self.reset_main();
+        }
         let mut run = Run {
             m: self,
             c: chk,
             svc,
-            sched: Default::default(),
         };
         let compiled = run.m.engine == vm::Engine::Compiled;
         let r = (|| -> R<()> {
@@ -277,23 +298,13 @@ impl Machine {
             }
             Ok(())
         })();
-        let tasks = run.sched.active();
-        if tasks {
-            run.m.last_tasks = run
-                .sched
-                .threads
-                .iter()
-                .map(|t| {
-                    if t.wait == tasking::Wait::Terminated {
-                        format!("{} ended", t.name)
-                    } else {
-                        format!("{} did not end", t.name)
-                    }
-                })
-                .collect();
+        let tasks = run.m.sched.active();
+        let alive = run.m.sched.alive();
+        if !(run.m.keep_tasks && alive) {
+            // Any frames left by an exception are dropped; level-0 slots stay.
+            run.m.stack.truncate(need);
+            run.m.sched = tasking::Sched::default();
         }
-        // Any frames left by an exception are dropped; level-0 slots stay.
-        run.m.stack.truncate(need);
         let _ = run.m.out.flush();
         match r {
             // The user's stop in a program with tasks (see `poll`).
@@ -312,6 +323,61 @@ impl Machine {
     /// when the user interrupts; returns the fraction done (1.0 = all).
     pub fn pace(&mut self, seconds: f64) -> f64 {
         pace(&mut *self.clock, self.interrupted.as_deref(), seconds)
+    }
+
+    /// A copy of the tasks' state (a rehearsal runs on it).
+    pub(crate) fn save_tasks(&self) -> tasking::Sched {
+        self.sched.clone()
+    }
+
+    pub(crate) fn restore_tasks(&mut self, s: tasking::Sched) {
+        self.sched = s;
+    }
+
+    /// `:tasks`: every task and what it waits for.
+    pub fn describe_tasks(&self, chk: ProgramRef<'_>) -> Vec<String> {
+        self.sched
+            .describe(chk.tasks, chk.prots)
+            .into_iter()
+            .map(|(_, l)| l)
+            .collect()
+    }
+
+    /// Before a REPL entry while tasks of earlier entries live: the main
+    /// program (thread 0) starts afresh, out of every queue, its frames of
+    /// an entry that ended blocked (a deadlock) freed.
+    fn reset_main(&mut self) {
+        let sc = &mut self.sched;
+        for t in sc.threads.iter_mut() {
+            for q in t.entries.iter_mut() {
+                q.retain(|c| *c != 0);
+            }
+            t.rendezvous.retain(|c| *c != 0);
+        }
+        for p in sc.prots.iter_mut() {
+            for q in p.queues.iter_mut() {
+                q.retain(|c| *c != 0);
+            }
+        }
+        sc.ready.retain(|c| *c != 0);
+        let main = &mut sc.threads[0];
+        main.wait = tasking::Wait::Running;
+        main.masters.clear();
+        main.reexec = false;
+        main.rerun = false;
+        main.outcome = tasking::Outcome::Pending;
+        let regions = main.regs.take().map(|r| r.regions()).unwrap_or_default();
+        let never: Vec<tasking::Tid> = std::mem::take(&mut main.unactivated);
+        for t in never {
+            sc.threads[t].wait = tasking::Wait::Terminated;
+        }
+        sc.cur = 0;
+        let len = self.stack.len();
+        for (b, t) in regions {
+            for v in &mut self.stack[b.min(len)..t.min(len)] {
+                *v = Value::Undef;
+            }
+        }
     }
 
     /// Makes ready for a run at level 0: natives bound, the level-0 slots
@@ -347,10 +413,11 @@ impl Machine {
             m: self,
             c: chk,
             svc,
-            sched: Default::default(),
         };
         let r = run.eval(e);
-        run.m.stack.truncate(need);
+        if !(run.m.keep_tasks && run.m.sched.alive()) {
+            run.m.stack.truncate(need);
+        }
         let _ = run.m.out.flush();
         match r {
             Ok(v) => Ok(v),
@@ -436,8 +503,6 @@ pub struct Run<'a> {
     pub m: &'a mut Machine,
     pub c: ProgramRef<'a>,
     svc: Option<&'a mut dyn Services>,
-    /// Tasks and protected objects of this run (empty without tasks).
-    pub(crate) sched: tasking::Sched<'a>,
 }
 
 enum Step {
@@ -677,7 +742,7 @@ impl Run<'_> {
         {
             // With tasks, the user's stop ends the whole program (an
             // exception would end only the task that saw it).
-            if self.sched.active() {
+            if self.m.sched.active() {
                 return Err(Flow::Exit(STOP_LABEL));
             }
             return Err(self.raise(check::PROGRAM_ERROR, "interrupted (Ctrl-C)", span));
@@ -724,7 +789,7 @@ impl Run<'_> {
         // With tasks, a motion blocks only its caller: the service runs on
         // a clock that keeps the time it takes, and the caller then waits
         // that long on the virtual clock while the other tasks run.
-        let tasks = self.sched.active();
+        let tasks = self.m.sched.active();
         let mut deferred = tasking::DeferClock {
             base: self.m.clock.now(),
             spent: 0.0,
@@ -742,10 +807,10 @@ impl Run<'_> {
             interrupted: self.m.interrupted.as_deref(),
         };
         let r = svc.call(i, &mut cx, args);
-        if tasks && deferred.spent > 0.0 {
+        if tasks && deferred.spent > 0.0 && r.is_ok() {
             let until = deferred.base + deferred.spent;
-            self.sched.robot_free_at = until;
-            self.sched.block(tasking::Wait::Delay(until), false, span);
+            self.m.sched.robot_free_at = until;
+            self.m.sched.block(tasking::Wait::Delay(until), false, span);
         }
         match r {
             Ok(v) => Ok(v),

@@ -62,7 +62,7 @@ pub(crate) enum Wait {
 }
 
 /// How an entry call ended, for the caller.
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub(crate) enum Outcome {
     #[default]
     Pending,
@@ -71,13 +71,14 @@ pub(crate) enum Outcome {
     Error(Box<Occurrence>),
 }
 
-pub(crate) struct Thread<'a> {
+#[derive(Clone)]
+pub(crate) struct Thread {
     pub name: String,
     pub wait: Wait,
     pub priority: i64,
     /// Registers of the engine while the thread does not run (a task not
     /// started yet has none).
-    pub regs: Option<Regs<'a>>,
+    pub regs: Option<Regs>,
     /// A task not started yet: its body and the display it sees.
     pub start: Option<(FuncId, Vec<usize>)>,
     pub display: Vec<usize>,
@@ -121,8 +122,8 @@ pub(crate) struct Thread<'a> {
     pub at: Span,
 }
 
-impl<'a> Thread<'a> {
-    fn new(name: String, ttype: Option<u32>, entries: usize) -> Thread<'a> {
+impl Thread {
+    fn new(name: String, ttype: Option<u32>, entries: usize) -> Thread {
         Thread {
             name,
             wait: Wait::Unactivated,
@@ -177,20 +178,24 @@ impl Clock for DeferClock {
     fn pace(&mut self, _seconds: f64) {}
 }
 
+/// Level-0 slots later REPL entries may add while tasks live.
+const KEPT_HEADROOM: usize = 1 << 16;
+
 /// GNAT's `System.Default_Priority`.
 pub(crate) const DEFAULT_PRIORITY: i64 = 15;
 
 /// The entry queues of one protected object.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub(crate) struct ProtState {
     pub queues: Vec<VecDeque<Tid>>,
     pub ptype: u32,
 }
 
-pub(crate) struct Sched<'a> {
+#[derive(Clone)]
+pub(crate) struct Sched {
     /// Empty until the first task is created; then [0] is the environment
     /// task (the main program).
-    pub threads: Vec<Thread<'a>>,
+    pub threads: Vec<Thread>,
     pub cur: Tid,
     pub ready: VecDeque<Tid>,
     pub prots: Vec<ProtState>,
@@ -209,9 +214,12 @@ pub(crate) struct Sched<'a> {
     /// The services are a monitor: the time until which the robot is in a
     /// motion another task started.
     pub robot_free_at: f64,
+    /// Where task frames start in the stack when tasks outlive a run (the
+    /// REPL): above every level-0 slot of later entries.
+    pub floor: usize,
 }
 
-impl Default for Sched<'_> {
+impl Default for Sched {
     fn default() -> Self {
         Sched {
             threads: Vec::new(),
@@ -225,16 +233,25 @@ impl Default for Sched<'_> {
             switches: 0,
             alloc_activates: true,
             robot_free_at: 0.0,
+            floor: 0,
         }
     }
 }
 
-impl<'a> Sched<'a> {
+impl Sched {
     pub fn active(&self) -> bool {
         !self.threads.is_empty()
     }
 
-    pub fn me(&mut self) -> &mut Thread<'a> {
+    /// Whether a task (not the main program) has not ended.
+    pub fn alive(&self) -> bool {
+        self.threads
+            .iter()
+            .skip(1)
+            .any(|t| t.wait != Wait::Terminated)
+    }
+
+    pub fn me(&mut self) -> &mut Thread {
         &mut self.threads[self.cur]
     }
 
@@ -399,17 +416,20 @@ impl<'a> Sched<'a> {
     }
 }
 
-impl<'a> Run<'a> {
+impl Run<'_> {
     /// Creates the environment thread (the running program) when the first
     /// task appears.
     pub(crate) fn tasking_on(&mut self) {
-        if self.sched.active() {
+        if self.m.sched.active() {
             return;
         }
         let mut main = Thread::new("main".into(), None, 0);
         main.wait = Wait::Running;
-        self.sched.threads.push(main);
-        self.sched.cur = 0;
+        self.m.sched.threads.push(main);
+        self.m.sched.cur = 0;
+        if self.m.keep_tasks {
+            self.m.sched.floor = self.c.globals as usize + KEPT_HEADROOM;
+        }
     }
 
     /// A new task of type `k` (a declaration's default value or an
@@ -438,8 +458,9 @@ impl<'a> Run<'a> {
         };
         let level = self.c.funcs[body as usize].level as usize;
         let display: Vec<usize> = self.m.display[..level.min(self.m.display.len())].to_vec();
-        let tid = self.sched.threads.len();
+        let tid = self.m.sched.threads.len();
         let same = self
+            .m
             .sched
             .threads
             .iter()
@@ -453,27 +474,27 @@ impl<'a> Run<'a> {
         let mut t = Thread::new(name, Some(k), def.entries.len());
         t.priority = priority;
         t.start = Some((body, display));
-        let cur = self.sched.cur;
+        let cur = self.m.sched.cur;
         t.parent = Some(cur);
-        self.sched.threads.push(t);
-        let me = &mut self.sched.threads[cur];
+        self.m.sched.threads.push(t);
+        let me = &mut self.m.sched.threads[cur];
         match me.masters.last_mut() {
             Some(m) => m.push(tid),
-            None => self.sched.library.push(tid),
+            None => self.m.sched.library.push(tid),
         }
-        self.sched.threads[cur].unactivated.push(tid);
+        self.m.sched.threads[cur].unactivated.push(tid);
         Ok(Value::Int(tid as i64))
     }
 
     /// Tasks created by an allocator are activated by it.
     pub(crate) fn activate_allocated(&mut self) {
-        if !self.sched.active() || !self.sched.alloc_activates {
+        if !self.m.sched.active() || !self.m.sched.alloc_activates {
             return;
         }
-        let cur = self.sched.cur;
-        let new = std::mem::take(&mut self.sched.threads[cur].unactivated);
+        let cur = self.m.sched.cur;
+        let new = std::mem::take(&mut self.m.sched.threads[cur].unactivated);
         for t in new {
-            self.sched.make_ready(t);
+            self.m.sched.make_ready(t);
         }
     }
 
@@ -483,8 +504,8 @@ impl<'a> Run<'a> {
         let rec = def.rec;
         let n = def.entries.len();
         let v = self.default_value(rec, span)?;
-        let pid = self.sched.prots.len();
-        self.sched.prots.push(ProtState {
+        let pid = self.m.sched.prots.len();
+        self.m.sched.prots.push(ProtState {
             queues: vec![VecDeque::new(); n],
             ptype: k,
         });
@@ -514,9 +535,9 @@ impl<'a> Run<'a> {
         let b = |x: bool| Value::Int(x as i64);
         match op {
             AttrOp::Count(e) => {
-                let n = if self.sched.active() {
-                    let me = self.sched.cur;
-                    self.sched.threads[me]
+                let n = if self.m.sched.active() {
+                    let me = self.m.sched.cur;
+                    self.m.sched.threads[me]
                         .entries
                         .get(e as usize)
                         .map_or(0, |q| q.len())
@@ -528,6 +549,7 @@ impl<'a> Run<'a> {
             AttrOp::ProtCount(e) => {
                 let pid = Self::prot_id(&args[0]);
                 let n = self
+                    .m
                     .sched
                     .prots
                     .get(pid)
@@ -537,11 +559,12 @@ impl<'a> Run<'a> {
             }
             AttrOp::Callable => {
                 let t = args[0].int() as usize;
-                b(self.sched.threads.get(t).is_some_and(|t| t.callable))
+                b(self.m.sched.threads.get(t).is_some_and(|t| t.callable))
             }
             AttrOp::Terminated => {
                 let t = args[0].int() as usize;
                 b(self
+                    .m
                     .sched
                     .threads
                     .get(t)
@@ -554,9 +577,9 @@ impl<'a> Run<'a> {
     /// Frees a frame's slots `base .. top`: truncates when they are on top
     /// of the stack, else leaves a hole.
     pub(crate) fn free_frame(&mut self, base: usize, top: usize) {
-        if !self.sched.active() || top >= self.m.stack.len() {
+        if !self.m.sched.active() || top >= self.m.stack.len() {
             self.m.stack.truncate(base);
-            while let Some(b) = self.sched.holes.remove(&self.m.stack.len()) {
+            while let Some(b) = self.m.sched.holes.remove(&self.m.stack.len()) {
                 self.m.stack.truncate(b);
             }
             return;
@@ -564,13 +587,13 @@ impl<'a> Run<'a> {
         for v in &mut self.m.stack[base..top] {
             *v = Value::Undef;
         }
-        self.sched.holes.insert(top, base);
+        self.m.sched.holes.insert(top, base);
     }
 
     /// Ends thread `t`: its callers get Tasking_Error, its master and
     /// activator hear of it.
     pub(crate) fn end_thread(&mut self, t: Tid, failed_activation: bool) {
-        let th = &mut self.sched.threads[t];
+        let th = &mut self.m.sched.threads[t];
         th.wait = Wait::Terminated;
         th.callable = false;
         let queued: Vec<Tid> = th.entries.iter_mut().flat_map(|q| q.drain(..)).collect();
@@ -592,27 +615,27 @@ impl<'a> Run<'a> {
                 },
                 chain: Vec::new(),
             };
-            self.sched.threads[c].outcome = Outcome::Error(Box::new(occ));
-            self.sched.make_ready(c);
+            self.m.sched.threads[c].outcome = Outcome::Error(Box::new(occ));
+            self.m.sched.make_ready(c);
         }
-        self.sched.ready.retain(|x| *x != t);
+        self.m.sched.ready.retain(|x| *x != t);
         if let Some(a) = activator {
             self.activation_done(a, failed_activation);
         }
         if let Some(p) = parent
-            && self.sched.threads[p].wait == Wait::Dependents
+            && self.m.sched.threads[p].wait == Wait::Dependents
         {
-            self.sched.make_ready(p);
+            self.m.sched.make_ready(p);
         }
     }
 
     /// One of `a`'s tasks finished its activation.
     pub(crate) fn activation_done(&mut self, a: Tid, failed: bool) {
-        let th = &mut self.sched.threads[a];
+        let th = &mut self.m.sched.threads[a];
         th.activating = th.activating.saturating_sub(1);
         th.activation_failed |= failed;
         if th.activating == 0 && th.wait == Wait::Activation {
-            self.sched.make_ready(a);
+            self.m.sched.make_ready(a);
         }
     }
 
@@ -621,34 +644,34 @@ impl<'a> Run<'a> {
     /// ever run again (deadlock).
     pub(crate) fn idle(&mut self) -> bool {
         // Terminate alternatives.
-        let waiting: Vec<Tid> = (0..self.sched.threads.len())
-            .filter(|t| self.sched.threads[*t].wait == Wait::Dependents)
+        let waiting: Vec<Tid> = (0..self.m.sched.threads.len())
+            .filter(|t| self.m.sched.threads[*t].wait == Wait::Dependents)
             .collect();
         let mut ended = false;
         for m in waiting {
-            let deps: Vec<Tid> = self.sched.threads[m]
+            let deps: Vec<Tid> = self.m.sched.threads[m]
                 .masters
                 .last()
                 .cloned()
                 .unwrap_or_default();
-            let deps: Vec<Tid> = if m == 0 && self.sched.threads[m].masters.is_empty() {
-                self.sched.library.clone()
+            let deps: Vec<Tid> = if m == 0 && self.m.sched.threads[m].masters.is_empty() {
+                self.m.sched.library.clone()
             } else {
                 deps
             };
-            if !deps.is_empty() && deps.iter().all(|d| self.sched.at_terminate(*d)) {
+            if !deps.is_empty() && deps.iter().all(|d| self.m.sched.at_terminate(*d)) {
                 for d in deps {
                     self.terminate_tree(d);
                 }
                 ended = true;
             }
         }
-        if ended || !self.sched.ready.is_empty() {
+        if ended || !self.m.sched.ready.is_empty() {
             return true;
         }
         let now = self.m.clock.now();
         let device = self.m.world.as_ref().and_then(|w| w.next_wakeup(now));
-        let t = match (self.sched.next_deadline(), device) {
+        let t = match (self.m.sched.next_deadline(), device) {
             (Some(a), Some(b)) => a.min(b),
             (a, b) => match a.or(b) {
                 Some(t) => t,
@@ -661,7 +684,7 @@ impl<'a> Run<'a> {
         let now = self.m.clock.now().max(t);
         self.world_sync();
         let mut woken: Vec<(u64, Tid)> = Vec::new();
-        for (i, th) in self.sched.threads.iter().enumerate() {
+        for (i, th) in self.m.sched.threads.iter().enumerate() {
             let due = match &th.wait {
                 Wait::Delay(d) => *d <= now,
                 Wait::Call { deadline, .. }
@@ -675,29 +698,29 @@ impl<'a> Run<'a> {
         }
         woken.sort();
         for (_, i) in woken {
-            match self.sched.threads[i].wait.clone() {
+            match self.m.sched.threads[i].wait.clone() {
                 Wait::Call { server, entry, .. } => {
-                    self.sched.threads[server].entries[entry as usize].retain(|c| *c != i);
-                    self.sched.threads[i].outcome = Outcome::Timeout;
+                    self.m.sched.threads[server].entries[entry as usize].retain(|c| *c != i);
+                    self.m.sched.threads[i].outcome = Outcome::Timeout;
                 }
                 Wait::Prot { obj, entry, .. } => {
-                    self.sched.prots[obj].queues[entry as usize].retain(|c| *c != i);
-                    self.sched.threads[i].timed_out = true;
+                    self.m.sched.prots[obj].queues[entry as usize].retain(|c| *c != i);
+                    self.m.sched.threads[i].timed_out = true;
                 }
-                Wait::Accept { .. } => self.sched.threads[i].timed_out = true,
+                Wait::Accept { .. } => self.m.sched.threads[i].timed_out = true,
                 _ => {}
             }
-            self.sched.make_ready(i);
+            self.m.sched.make_ready(i);
         }
         true
     }
 
     /// Ends a task waiting at `terminate`, and its dependents first.
     fn terminate_tree(&mut self, t: Tid) {
-        if self.sched.threads[t].wait == Wait::Terminated {
+        if self.m.sched.threads[t].wait == Wait::Terminated {
             return;
         }
-        let deps: Vec<Tid> = self.sched.threads[t]
+        let deps: Vec<Tid> = self.m.sched.threads[t]
             .masters
             .iter()
             .flatten()
@@ -712,7 +735,7 @@ impl<'a> Run<'a> {
 
     /// Frees the frames of a thread that will not run again.
     pub(crate) fn discard_thread(&mut self, t: Tid) {
-        if let Some(regs) = self.sched.threads[t].regs.take() {
+        if let Some(regs) = self.m.sched.threads[t].regs.take() {
             for (base, top) in regs.regions() {
                 self.free_frame(base, top);
             }
@@ -721,33 +744,33 @@ impl<'a> Run<'a> {
 
     /// `abort T`: T and its dependents become not callable and end.
     pub(crate) fn abort_task(&mut self, t: Tid) {
-        if t >= self.sched.threads.len() || self.sched.threads[t].wait == Wait::Terminated {
+        if t >= self.m.sched.threads.len() || self.m.sched.threads[t].wait == Wait::Terminated {
             return;
         }
-        self.sched.threads[t].callable = false;
-        let deps: Vec<Tid> = self.sched.threads[t]
+        self.m.sched.threads[t].callable = false;
+        let deps: Vec<Tid> = self.m.sched.threads[t]
             .masters
             .iter()
             .flatten()
-            .chain(self.sched.threads[t].unactivated.iter())
+            .chain(self.m.sched.threads[t].unactivated.iter())
             .copied()
             .collect();
         for d in deps {
             self.abort_task(d);
         }
-        if t == self.sched.cur {
+        if t == self.m.sched.cur {
             // The running task ends at once (the engine switches).
-            self.sched.switch = true;
-            self.sched.threads[t].wait = Wait::Terminated;
+            self.m.sched.switch = true;
+            self.m.sched.threads[t].wait = Wait::Terminated;
             return;
         }
         // Leave any queue it waits in.
-        match self.sched.threads[t].wait.clone() {
+        match self.m.sched.threads[t].wait.clone() {
             Wait::Call { server, entry, .. } => {
-                self.sched.threads[server].entries[entry as usize].retain(|c| *c != t)
+                self.m.sched.threads[server].entries[entry as usize].retain(|c| *c != t)
             }
             Wait::Prot { obj, entry, .. } => {
-                self.sched.prots[obj].queues[entry as usize].retain(|c| *c != t)
+                self.m.sched.prots[obj].queues[entry as usize].retain(|c| *c != t)
             }
             _ => {}
         }
@@ -777,8 +800,8 @@ impl<'a> Run<'a> {
     /// An interrupt at `address`: queued on the entry bound to it, as an
     /// entry call (its task wakes when it accepts that entry).
     pub(crate) fn deliver(&mut self, address: crate::devices::Address, time: f64) {
-        let bound = (0..self.sched.threads.len()).find_map(|t| {
-            let th = &self.sched.threads[t];
+        let bound = (0..self.m.sched.threads.len()).find_map(|t| {
+            let th = &self.m.sched.threads[t];
             if th.wait == Wait::Terminated {
                 return None;
             }
@@ -791,17 +814,17 @@ impl<'a> Run<'a> {
         });
         let line = match bound {
             Some((t, e)) => {
-                self.sched.threads[t].entries[e].push_back(INTERRUPT);
-                if self.sched.accepting(t, e as u32) {
-                    self.sched.make_ready(t);
+                self.m.sched.threads[t].entries[e].push_back(INTERRUPT);
+                if self.m.sched.accepting(t, e as u32) {
+                    self.m.sched.make_ready(t);
                 }
-                let name = &self.c.tasks[self.sched.threads[t].ttype.unwrap_or(0) as usize].entries
-                    [e]
+                let name = &self.c.tasks[self.m.sched.threads[t].ttype.unwrap_or(0) as usize]
+                    .entries[e]
                     .name;
                 format!(
                     "interrupt {} queued on {}.{name}",
                     crate::devices::ada_address(address),
-                    self.sched.threads[t].name
+                    self.m.sched.threads[t].name
                 )
             }
             None => format!(
@@ -873,7 +896,7 @@ impl<'a> Run<'a> {
     /// The deadlock diagnostic: every task and what it waits for (one
     /// line each after the first; their places are the chain).
     pub(crate) fn deadlock(&mut self) -> Flow {
-        let lines = self.sched.describe(self.c.tasks, self.c.prots);
+        let lines = self.m.sched.describe(self.c.tasks, self.c.prots);
         let mut msg = String::from(DEADLOCK);
         for (_, l) in &lines {
             msg.push('\n');
@@ -895,7 +918,7 @@ pub const DEADLOCK: &str = "deadlock: every task is blocked and nothing can wake
 mod tests {
     use super::*;
 
-    fn sched(priorities: &[i64]) -> Sched<'static> {
+    fn sched(priorities: &[i64]) -> Sched {
         let mut s = Sched::default();
         for (i, p) in priorities.iter().enumerate() {
             let mut t = Thread::new(format!("T{i}"), Some(0), 1);

@@ -114,6 +114,9 @@ enum Op<'p> {
     MasterUnwind(Span),
     /// Library-level tasks, at the end of the run.
     AwaitAll,
+    /// The end of a REPL entry while tasks live on: the ready tasks run
+    /// until every one has blocked.
+    Settle,
     /// `accept`: the entry and the parameters' slots.
     Accept(u32, &'p [(Var, Mode)], Span),
     /// The end of a rendezvous: `out` values go to the caller.
@@ -167,10 +170,15 @@ struct SelectOp<'p> {
     span: Span,
 }
 
-/// The registers of a thread of the engine that is not running.
-pub(crate) struct Regs<'p> {
-    frames: Vec<Frame<'p>>,
-    cur: Rc<Code<'p>>,
+/// The registers of a thread of the engine that is not running. They do
+/// not borrow the program: each frame's code is found again by its
+/// subprogram (compiled again, identically, in a later run: the REPL keeps
+/// tasks between entries), a call's arguments from the call instruction.
+#[derive(Clone)]
+pub(crate) struct Regs {
+    frames: Vec<SavedFrame>,
+    /// The running code's subprogram (None: the level-0 code).
+    cur: Option<FuncId>,
     pc: u32,
     current_base: usize,
     pending: Option<Box<Occurrence>>,
@@ -178,7 +186,17 @@ pub(crate) struct Regs<'p> {
     root: Option<(usize, usize)>,
 }
 
-impl Regs<'_> {
+/// A [`Frame`] saved in [`Regs`].
+#[derive(Clone)]
+struct SavedFrame {
+    func: Option<FuncId>,
+    pc: u32,
+    /// The callee: subprogram, result slot, base, top, level, saved display.
+    call: Option<(FuncId, Option<Var>, usize, usize, usize, usize)>,
+    current: usize,
+}
+
+impl Regs {
     /// The stack regions of the thread's frames.
     pub(crate) fn regions(&self) -> Vec<(usize, usize)> {
         self.root
@@ -186,11 +204,21 @@ impl Regs<'_> {
             .chain(
                 self.frames
                     .iter()
-                    .filter_map(|f| f.call.as_ref().map(|c| (c.base, c.top))),
+                    .filter_map(|f| f.call.map(|c| (c.2, c.3))),
             )
             .collect()
     }
 }
+
+/// The live registers of the running thread, as the engine's loop holds them.
+type Live<'a> = (
+    Vec<Frame<'a>>,
+    Rc<Code<'a>>,
+    u32,
+    usize,
+    Option<Box<Occurrence>>,
+    Option<(usize, usize)>,
+);
 
 /// A part of the code whose exceptions go to handlers.
 struct Region {
@@ -201,6 +229,8 @@ struct Region {
 
 /// A compiled body.
 pub(crate) struct Code<'p> {
+    /// The subprogram whose body this is (None: level-0 code).
+    func: Option<FuncId>,
     ops: Vec<Op<'p>>,
     /// Slots beyond the subprogram's own: temporaries.
     temps: u32,
@@ -1002,9 +1032,10 @@ impl<'p> Compiler<'p, '_> {
         });
     }
 
-    fn finish(mut self) -> Code<'p> {
+    fn finish(mut self, func: Option<FuncId>) -> Code<'p> {
         self.ops.push(Op::FallOff);
         Code {
+            func,
             ops: self.ops,
             temps: self.max_temp,
             regions: self.regions,
@@ -1044,7 +1075,7 @@ impl<'a> Run<'a> {
             || self.c.funcs[f as usize].body.is_none()
     }
 
-    fn compile(&self, level: u16, own: u32, what: Compiled<'a>) -> Code<'a> {
+    fn compile(&self, level: u16, own: u32, what: Compiled<'a>, func: Option<FuncId>) -> Code<'a> {
         let walker_calls = |f: FuncId| self.walker_call(f);
         let has_task = |t: TypeId| {
             self.c
@@ -1080,7 +1111,7 @@ impl<'a> Run<'a> {
                 },
             ),
         }
-        c.finish()
+        c.finish(func)
     }
 
     /// The compiled body of `f`, compiled on its first call.
@@ -1095,7 +1126,7 @@ impl<'a> Run<'a> {
         let sub = &self.c.funcs[i];
         let body = sub.body.as_deref().expect("a subprogram with a body");
         let own = sub.nslots.max(sub.params.len() as u32);
-        let code = Rc::new(self.compile(sub.level, own, Compiled::Body(body)));
+        let code = Rc::new(self.compile(sub.level, own, Compiled::Body(body), Some(f)));
         cache[i] = Some(code.clone());
         code
     }
@@ -1105,24 +1136,34 @@ impl<'a> Run<'a> {
     pub(crate) fn run_compiled(&mut self, stmts: &'a [Stmt], main: Option<FuncId>) -> R<()> {
         let mut cache = Vec::new();
         let own = self.c.globals;
-        let code = Rc::new(self.compile(0, own, Compiled::Stmts(stmts)));
+        for (a, t) in std::mem::take(&mut self.m.pending_irqs) {
+            self.deliver(a, t);
+        }
+        let code = Rc::new(self.compile(0, own, Compiled::Stmts(stmts), None));
         let mut r = self.exec_code(&mut cache, code);
         if r.is_ok()
             && let Some(f) = main
         {
-            let code = Rc::new(self.compile(0, own, Compiled::Main(f)));
+            let code = Rc::new(self.compile(0, own, Compiled::Main(f), None));
             r = self.exec_code(&mut cache, code);
         }
         // The environment waits for the library-level tasks, also after an
         // exception (which then ends the run).
-        if self.sched.active() && !matches!(r, Err(Flow::Exit(_))) {
+        if self.m.sched.active() && !matches!(r, Err(Flow::Exit(_))) {
+            // The REPL keeps its tasks: the entry ends when no task is ready.
+            let last = if self.m.keep_tasks {
+                Op::Settle
+            } else {
+                Op::AwaitAll
+            };
             let code = Rc::new(Code {
-                ops: vec![Op::AwaitAll, Op::FallOff],
+                func: None,
+                ops: vec![last, Op::FallOff],
                 temps: 0,
                 regions: Vec::new(),
                 exits: Vec::new(),
             });
-            let sched_cur = self.sched.cur;
+            let sched_cur = self.m.sched.cur;
             debug_assert_eq!(sched_cur, 0);
             self.exec_code(&mut cache, code)?;
         }
@@ -1185,7 +1226,7 @@ impl<'a> Run<'a> {
     /// Whether this instruction runs a second time (after its thread was
     /// blocked by it); clears the mark.
     fn rerun(&mut self) -> bool {
-        self.sched.active() && std::mem::take(&mut self.sched.me().rerun)
+        self.m.sched.active() && std::mem::take(&mut self.m.sched.me().rerun)
     }
 
     fn op_delay(&mut self, x: Var, until: bool, span: Span) -> R<()> {
@@ -1195,12 +1236,12 @@ impl<'a> Run<'a> {
         }
         let now = self.m.clock.now();
         let t = if until { v } else { now + v };
-        if !self.sched.active() {
+        if !self.m.sched.active() {
             self.m.clock.sleep(t - now);
         } else if t <= now {
-            self.sched.yield_now();
+            self.m.sched.yield_now();
         } else {
-            self.sched.block(tasking::Wait::Delay(t), false, span);
+            self.m.sched.block(tasking::Wait::Delay(t), false, span);
         }
         Ok(())
     }
@@ -1208,12 +1249,12 @@ impl<'a> Run<'a> {
     /// `Activate`: a task reports its own activation to its activator,
     /// then activates the tasks it created and waits for their activation.
     fn op_activate(&mut self, span: Span) -> R<()> {
-        if !self.sched.active() {
+        if !self.m.sched.active() {
             return Ok(());
         }
-        let me = self.sched.cur;
+        let me = self.m.sched.cur;
         if self.rerun() {
-            if std::mem::take(&mut self.sched.threads[me].activation_failed) {
+            if std::mem::take(&mut self.m.sched.threads[me].activation_failed) {
                 return Err(self.raise(
                     check::TASKING_ERROR,
                     "a task raised an exception during its activation",
@@ -1222,70 +1263,71 @@ impl<'a> Run<'a> {
             }
             return Ok(());
         }
-        if let Some(a) = self.sched.threads[me].activator.take() {
+        if let Some(a) = self.m.sched.threads[me].activator.take() {
             self.activation_done(a, false);
         }
-        let new = std::mem::take(&mut self.sched.threads[me].unactivated);
+        let new = std::mem::take(&mut self.m.sched.threads[me].unactivated);
         if new.is_empty() {
             return Ok(());
         }
         for t in &new {
-            self.sched.threads[*t].activator = Some(me);
-            self.sched.make_ready(*t);
+            self.m.sched.threads[*t].activator = Some(me);
+            self.m.sched.make_ready(*t);
         }
-        self.sched.threads[me].activating = new.len();
-        self.sched.block(tasking::Wait::Activation, true, span);
+        self.m.sched.threads[me].activating = new.len();
+        self.m.sched.block(tasking::Wait::Activation, true, span);
         Ok(())
     }
 
     /// Whether the tasks of the running thread's innermost master (or,
     /// `all`, the library level's) have ended; if not, the thread waits.
     fn dependents_done(&mut self, all: bool, span: Span) -> bool {
-        if !self.sched.active() {
+        if !self.m.sched.active() {
             return true;
         }
         self.rerun();
-        let me = self.sched.cur;
+        let me = self.m.sched.cur;
         let deps: &[tasking::Tid] = if all {
-            &self.sched.library
+            &self.m.sched.library
         } else {
-            self.sched.threads[me]
+            self.m.sched.threads[me]
                 .masters
                 .last()
                 .map_or(&[], |m| &m[..])
         };
         let done = deps
             .iter()
-            .all(|d| self.sched.threads[*d].wait == tasking::Wait::Terminated);
+            .all(|d| self.m.sched.threads[*d].wait == tasking::Wait::Terminated);
         if !done {
             // Tasks created but never activated (an exception before the
             // `begin`) are not waited for: they end now.
             let never: Vec<tasking::Tid> = deps
                 .iter()
                 .copied()
-                .filter(|d| self.sched.threads[*d].wait == tasking::Wait::Unactivated)
+                .filter(|d| self.m.sched.threads[*d].wait == tasking::Wait::Unactivated)
                 .collect();
             for t in never {
                 self.end_thread(t, false);
             }
-            let done = self.sched.threads[me]
+            let done = self.m.sched.threads[me]
                 .masters
                 .last()
                 .filter(|_| !all)
                 .map_or_else(
                     || {
-                        self.sched
+                        self.m
+                            .sched
                             .library
                             .iter()
-                            .all(|d| self.sched.threads[*d].wait == tasking::Wait::Terminated)
+                            .all(|d| self.m.sched.threads[*d].wait == tasking::Wait::Terminated)
                     },
                     |m| {
                         m.iter()
-                            .all(|d| self.sched.threads[*d].wait == tasking::Wait::Terminated)
+                            .all(|d| self.m.sched.threads[*d].wait == tasking::Wait::Terminated)
                     },
                 );
             if !done {
-                self.sched.block(tasking::Wait::Dependents, true, span);
+                self.m.sched.block(tasking::Wait::Dependents, true, span);
             }
             return done;
         }
@@ -1295,24 +1337,24 @@ impl<'a> Run<'a> {
     /// Starts the rendezvous with caller `c`: its arguments into the
     /// accept's parameters.
     fn begin_rendezvous(&mut self, c: tasking::Tid, params: &[(Var, Mode)]) {
-        let me = self.sched.cur;
+        let me = self.m.sched.cur;
         if c == tasking::INTERRUPT {
-            self.sched.threads[me].rendezvous.push(c);
+            self.m.sched.threads[me].rendezvous.push(c);
             return;
         }
         for (i, (v, _)) in params.iter().enumerate() {
-            let x = self.m.stack[self.sched.threads[c].call[i]].clone();
+            let x = self.m.stack[self.m.sched.threads[c].call[i]].clone();
             self.put(*v, x);
         }
-        self.sched.threads[c].wait = tasking::Wait::Rendezvous(me);
-        self.sched.threads[me].rendezvous.push(c);
+        self.m.sched.threads[c].wait = tasking::Wait::Rendezvous(me);
+        self.m.sched.threads[me].rendezvous.push(c);
     }
 
     /// Ends the innermost rendezvous: `out` values (or the exception) to
     /// the caller, who becomes ready.
     fn end_rendezvous(&mut self, params: &[(Var, Mode)], err: Option<Box<Occurrence>>) {
-        let me = self.sched.cur;
-        let Some(c) = self.sched.threads[me].rendezvous.pop() else {
+        let me = self.m.sched.cur;
+        let Some(c) = self.m.sched.threads[me].rendezvous.pop() else {
             return;
         };
         if c == tasking::INTERRUPT {
@@ -1321,15 +1363,15 @@ impl<'a> Run<'a> {
         for (i, (v, mode)) in params.iter().enumerate() {
             if *mode != Mode::In {
                 let x = self.m.stack[self.sl(*v)].clone();
-                let slot = self.sched.threads[c].call[i];
+                let slot = self.m.sched.threads[c].call[i];
                 self.m.stack[slot] = x;
             }
         }
-        self.sched.threads[c].outcome = match err {
+        self.m.sched.threads[c].outcome = match err {
             Some(o) => tasking::Outcome::Error(o),
             None => tasking::Outcome::Done,
         };
-        self.sched.make_ready(c);
+        self.m.sched.make_ready(c);
     }
 
     fn deadline(&mut self, timed: Option<(Var, bool)>) -> Option<f64> {
@@ -1341,9 +1383,10 @@ impl<'a> Run<'a> {
 
     fn op_entry_call(&mut self, ec: &EntryOp<'a>) -> R<()> {
         self.tasking_on();
-        let me = self.sched.cur;
+        let me = self.m.sched.cur;
         let s = self.int_at(ec.target) as usize;
         let known = self
+            .m
             .sched
             .threads
             .get(s)
@@ -1359,12 +1402,14 @@ impl<'a> Run<'a> {
             ));
         }
         let alive = self
+            .m
             .sched
             .threads
             .get(s)
             .is_some_and(|t| t.callable && t.wait != tasking::Wait::Terminated);
         if !alive {
             let name = self
+                .m
                 .sched
                 .threads
                 .get(s)
@@ -1380,20 +1425,20 @@ impl<'a> Run<'a> {
             ));
         }
         let slots: Vec<usize> = ec.ops.iter().map(|v| self.sl(*v)).collect();
-        self.sched.threads[me].call = slots;
-        self.sched.threads[me].outcome = tasking::Outcome::Pending;
-        let open = self.sched.accepting(s, ec.entry);
+        self.m.sched.threads[me].call = slots;
+        self.m.sched.threads[me].outcome = tasking::Outcome::Pending;
+        let open = self.m.sched.accepting(s, ec.entry);
         let deadline = self.deadline(ec.timed);
         let now = self.m.clock.now();
         if !open && (ec.conditional || deadline.is_some_and(|d| d <= now)) {
-            self.sched.threads[me].outcome = tasking::Outcome::Timeout;
+            self.m.sched.threads[me].outcome = tasking::Outcome::Timeout;
             return Ok(());
         }
-        self.sched.threads[s].entries[ec.entry as usize].push_back(me);
+        self.m.sched.threads[s].entries[ec.entry as usize].push_back(me);
         if open {
-            self.sched.make_ready(s);
+            self.m.sched.make_ready(s);
         }
-        self.sched.block(
+        self.m.sched.block(
             tasking::Wait::Call {
                 server: s,
                 entry: ec.entry,
@@ -1407,8 +1452,8 @@ impl<'a> Run<'a> {
 
     /// After an entry call: false when it timed out (or was not taken).
     fn entry_done(&mut self, args: &'a [Arg], ops: &[Var], span: Span) -> R<bool> {
-        let me = self.sched.cur;
-        match std::mem::take(&mut self.sched.threads[me].outcome) {
+        let me = self.m.sched.cur;
+        match std::mem::take(&mut self.m.sched.threads[me].outcome) {
             tasking::Outcome::Timeout => Ok(false),
             tasking::Outcome::Error(mut o) => {
                 if o.span.start == 0 && o.span.end == 0 {
@@ -1441,21 +1486,22 @@ impl<'a> Run<'a> {
     }
 
     fn op_prot_entry(&mut self, ec: &EntryOp<'a>) -> R<ProtStep> {
-        let active = self.sched.active();
-        let me = self.sched.cur;
+        let active = self.m.sched.active();
+        let me = self.m.sched.cur;
         if active {
             self.rerun();
-            if std::mem::take(&mut self.sched.threads[me].timed_out) {
+            if std::mem::take(&mut self.m.sched.threads[me].timed_out) {
                 return Ok(ProtStep::Other);
             }
-            if std::mem::take(&mut self.sched.threads[me].granted) {
-                self.sched.threads[me].proxied = true;
+            if std::mem::take(&mut self.m.sched.threads[me].granted) {
+                self.m.sched.threads[me].proxied = true;
                 return Ok(ProtStep::Body);
             }
         }
         let obj = self.m.stack[self.sl(ec.target)].clone();
         let pid = Self::prot_id(&obj);
         let queued = self
+            .m
             .sched
             .prots
             .get(pid)
@@ -1468,9 +1514,9 @@ impl<'a> Run<'a> {
             return Ok(ProtStep::Other);
         }
         self.tasking_on();
-        let me = self.sched.cur;
-        self.sched.prots[pid].queues[ec.entry as usize].push_back(me);
-        self.sched.block(
+        let me = self.m.sched.cur;
+        self.m.sched.prots[pid].queues[ec.entry as usize].push_back(me);
+        self.m.sched.block(
             tasking::Wait::Prot {
                 obj: pid,
                 entry: ec.entry,
@@ -1486,37 +1532,37 @@ impl<'a> Run<'a> {
     /// barrier is now open runs its body next (before any other task), and
     /// the task that ran an entry body for another gives way.
     fn serve(&mut self, obj: Var, bargs: &[Arg], span: Span) -> R<()> {
-        if !self.sched.active() {
+        if !self.m.sched.active() {
             return Ok(());
         }
-        let me = self.sched.cur;
-        let proxied = std::mem::take(&mut self.sched.threads[me].proxied);
+        let me = self.m.sched.cur;
+        let proxied = std::mem::take(&mut self.m.sched.threads[me].proxied);
         let v = self.m.stack[self.sl(obj)].clone();
         let pid = Self::prot_id(&v);
-        let k = self.sched.prots[pid].ptype;
-        let n = self.sched.prots[pid].queues.len();
+        let k = self.m.sched.prots[pid].ptype;
+        let n = self.m.sched.prots[pid].queues.len();
         let mut grant = None;
         for e in 0..n {
-            if self.sched.prots[pid].queues[e].is_empty() {
+            if self.m.sched.prots[pid].queues[e].is_empty() {
                 continue;
             }
             if self.barrier_open(k, e as u32, bargs, span)? {
-                grant = self.sched.prots[pid].queues[e].pop_front();
+                grant = self.m.sched.prots[pid].queues[e].pop_front();
                 break;
             }
         }
         match grant {
             Some(w) => {
-                self.sched.threads[w].granted = true;
+                self.m.sched.threads[w].granted = true;
                 if proxied {
-                    self.sched.make_ready(me);
+                    self.m.sched.make_ready(me);
                 } else {
-                    self.sched.make_first(me);
+                    self.m.sched.make_first(me);
                 }
-                self.sched.make_first(w);
-                self.sched.switch = true;
+                self.m.sched.make_first(w);
+                self.m.sched.switch = true;
             }
-            None if proxied => self.sched.yield_now(),
+            None if proxied => self.m.sched.yield_now(),
             None => {}
         }
         Ok(())
@@ -1524,9 +1570,9 @@ impl<'a> Run<'a> {
 
     /// A selective accept: Some(target) when an alternative is taken now.
     fn op_select(&mut self, sel: &SelectOp<'a>) -> R<Option<u32>> {
-        let me = self.sched.cur;
+        let me = self.m.sched.cur;
         let again = self.rerun();
-        if std::mem::take(&mut self.sched.threads[me].timed_out)
+        if std::mem::take(&mut self.m.sched.threads[me].timed_out)
             && let Some((.., t)) = sel.delay
         {
             return Ok(Some(t));
@@ -1534,7 +1580,7 @@ impl<'a> Run<'a> {
         let open = |this: &Self, g: Option<Var>| g.is_none_or(|g| this.int_at(g) != 0);
         for (g, entry, params, target) in &sel.alts {
             if open(self, *g)
-                && let Some(c) = self.sched.threads[me].entries[*entry as usize].pop_front()
+                && let Some(c) = self.m.sched.threads[me].entries[*entry as usize].pop_front()
             {
                 self.begin_rendezvous(c, params);
                 return Ok(Some(*target));
@@ -1562,10 +1608,10 @@ impl<'a> Run<'a> {
             ));
         }
         let deadline = if again {
-            self.sched.threads[me].deadline
+            self.m.sched.threads[me].deadline
         } else {
             let d = delay.and_then(|(_, x, until, _)| self.deadline(Some((x, until))));
-            self.sched.threads[me].deadline = d;
+            self.m.sched.threads[me].deadline = d;
             d
         };
         if let (Some(d), Some((.., t))) = (deadline, delay)
@@ -1573,7 +1619,7 @@ impl<'a> Run<'a> {
         {
             return Ok(Some(t));
         }
-        self.sched.block(
+        self.m.sched.block(
             tasking::Wait::Accept {
                 entries,
                 deadline,
@@ -1587,7 +1633,7 @@ impl<'a> Run<'a> {
 
     /// Exchanges the machine's per-thread registers with thread `t`'s.
     fn swap_registers(&mut self, t: tasking::Tid) {
-        let th = &mut self.sched.threads[t];
+        let th = &mut self.m.sched.threads[t];
         std::mem::swap(&mut self.m.display, &mut th.display);
         std::mem::swap(&mut self.m.current, &mut th.current);
         std::mem::swap(&mut self.m.depth, &mut th.depth);
@@ -1596,70 +1642,110 @@ impl<'a> Run<'a> {
 
     /// Makes `t` the running thread: its saved registers, or its body's
     /// first frame when it starts.
-    fn resume(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>, t: tasking::Tid) -> R<Regs<'a>> {
-        if self.m.trace.is_some() && self.sched.cur != t {
+    fn resume(
+        &mut self,
+        cache: &mut Vec<Option<Rc<Code<'a>>>>,
+        level0: &Rc<Code<'a>>,
+        t: tasking::Tid,
+    ) -> R<Live<'a>> {
+        if self.m.trace.is_some() && self.m.sched.cur != t {
             let (from, to) = (
-                self.sched.threads[self.sched.cur].name.clone(),
-                self.sched.threads[t].name.clone(),
+                self.m.sched.threads[self.m.sched.cur].name.clone(),
+                self.m.sched.threads[t].name.clone(),
             );
             let now = self.m.clock.now();
             self.trace_line(now, &format!("{from} -> {to}"));
         }
-        self.sched.cur = t;
-        self.sched.switches += 1;
-        self.sched.threads[t].wait = tasking::Wait::Running;
-        if let Some(r) = self.sched.threads[t].regs.take() {
+        self.m.sched.cur = t;
+        self.m.sched.switches += 1;
+        self.m.sched.threads[t].wait = tasking::Wait::Running;
+        if let Some(r) = self.m.sched.threads[t].regs.take() {
             self.swap_registers(t);
-            return Ok(r);
+            return Ok(self.load_regs(cache, level0, r));
         }
-        let (body, mut display) = self.sched.threads[t].start.take().expect("a task to start");
+        let (body, mut display) = self.m.sched.threads[t]
+            .start
+            .take()
+            .expect("a task to start");
         let code = self.code_of(cache, body);
         let sub = &self.c.funcs[body as usize];
         let level = sub.level as usize;
         let own = (sub.nslots as usize).max(sub.params.len());
-        let base = self.m.stack.len();
+        let base = self.m.stack.len().max(self.m.sched.floor);
         let top = base + own + code.temps as usize;
         self.m.stack.resize(top, Value::Undef);
         display.resize(level + 1, 0);
         display[level] = base;
-        let th = &mut self.sched.threads[t];
+        let th = &mut self.m.sched.threads[t];
         th.display = display;
         th.current = Vec::new();
         th.depth = 0;
         th.calls = Vec::new();
         self.swap_registers(t);
-        Ok(Regs {
-            frames: Vec::new(),
-            cur: code,
-            pc: 0,
-            current_base: 0,
-            pending: None,
-            root: Some((base, top)),
-        })
+        Ok((Vec::new(), code, 0, 0, None, Some((base, top))))
+    }
+
+    /// Live registers from saved ones: each frame's code compiled (or
+    /// taken from this run's cache) again.
+    fn load_regs(
+        &mut self,
+        cache: &mut Vec<Option<Rc<Code<'a>>>>,
+        level0: &Rc<Code<'a>>,
+        r: Regs,
+    ) -> Live<'a> {
+        let mut fetch = |this: &mut Self, func: Option<FuncId>| match func {
+            Some(f) => this.code_of(cache, f),
+            None => level0.clone(),
+        };
+        let mut frames = Vec::with_capacity(r.frames.len());
+        for sf in r.frames {
+            let code = fetch(self, sf.func);
+            let call = sf.call.map(|(f, dst, base, top, level, saved)| CallInfo {
+                f,
+                args: call_args(&code, sf.pc),
+                dst,
+                base,
+                top,
+                level,
+                saved,
+            });
+            frames.push(Frame {
+                code,
+                pc: sf.pc,
+                call,
+                current: sf.current,
+            });
+        }
+        let cur = fetch(self, r.cur);
+        (frames, cur, r.pc, r.current_base, r.pending, r.root)
     }
 
     /// The running task's body has ended (`failed`: by an exception).
     fn task_ends(&mut self, root: Option<(usize, usize)>, failed: bool) {
-        let me = self.sched.cur;
+        let me = self.m.sched.cur;
         if let Some((b, t)) = root {
             self.free_frame(b, t);
         }
-        let during_activation = failed && self.sched.threads[me].activator.is_some();
+        let during_activation = failed && self.m.sched.threads[me].activator.is_some();
         self.end_thread(me, during_activation);
         self.swap_registers(me);
     }
 
     /// Switches to the next ready thread after the running one ended.
-    fn next_thread(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>) -> R<Regs<'a>> {
+    fn next_thread(
+        &mut self,
+        cache: &mut Vec<Option<Rc<Code<'a>>>>,
+        level0: &Rc<Code<'a>>,
+    ) -> R<Live<'a>> {
         let next = loop {
-            if let Some(n) = self.sched.pick() {
+            if let Some(n) = self.m.sched.pick() {
                 break n;
             }
             if !self.idle() {
                 return Err(self.deadlock());
             }
         };
-        self.resume(cache, next)
+        self.resume(cache, level0, next)
     }
 
     #[inline(always)]
@@ -1708,6 +1794,7 @@ impl<'a> Run<'a> {
             self.m.stack.resize(need, Value::Undef);
         }
         let mut frames: Vec<Frame<'a>> = Vec::new();
+        let level0 = code.clone();
         let mut cur = code;
         let mut pc: u32 = 0;
         let mut current_base = self.m.current.len();
@@ -1947,12 +2034,12 @@ impl<'a> Run<'a> {
                 // A motion service while another task's motion runs waits
                 // for it (the services are a monitor).
                 Op::CallWalker(f, _, _, span) | Op::CallWalkerOwned(f, _, _, span)
-                    if self.sched.active()
-                        && self.m.clock.now() < self.sched.robot_free_at
+                    if self.m.sched.active()
+                        && self.m.clock.now() < self.m.sched.robot_free_at
                         && self.is_service(*f) =>
                 {
-                    let until = self.sched.robot_free_at;
-                    self.sched.block(tasking::Wait::Delay(until), true, *span);
+                    let until = self.m.sched.robot_free_at;
+                    self.m.sched.block(tasking::Wait::Delay(until), true, *span);
                     Ok(())
                 }
                 Op::CallWalker(f, args, d, span) => {
@@ -2018,37 +2105,47 @@ impl<'a> Run<'a> {
                 Op::Activate(span) => self.op_activate(*span),
                 Op::MasterEnter => {
                     self.tasking_on();
-                    self.sched.me().masters.push(Vec::new());
+                    self.m.sched.me().masters.push(Vec::new());
                     Ok(())
                 }
                 Op::MasterLeave(span) => {
                     if self.dependents_done(false, *span) {
-                        self.sched.me().masters.pop();
+                        self.m.sched.me().masters.pop();
                     }
                     Ok(())
                 }
                 Op::MasterUnwind(span) => {
                     if self.dependents_done(false, *span) {
-                        self.sched.me().masters.pop();
+                        self.m.sched.me().masters.pop();
                         Err(Flow::Raise(pending.take().expect("an occurrence")))
                     } else {
                         Ok(())
                     }
+                }
+                Op::Settle => {
+                    self.rerun();
+                    if !self.m.sched.ready.is_empty() {
+                        let me = self.m.sched.cur;
+                        self.m.sched.make_ready(me);
+                        self.m.sched.threads[me].reexec = true;
+                        self.m.sched.switch = true;
+                    }
+                    Ok(())
                 }
                 Op::AwaitAll => {
                     self.dependents_done(true, crate::diag::span(0, 0, 0));
                     Ok(())
                 }
                 Op::Accept(entry, params, span) => {
-                    let me = self.sched.cur;
-                    self.sched.threads[me].rerun = false;
-                    match self.sched.threads[me].entries[*entry as usize].pop_front() {
+                    let me = self.m.sched.cur;
+                    self.m.sched.threads[me].rerun = false;
+                    match self.m.sched.threads[me].entries[*entry as usize].pop_front() {
                         Some(c) => {
                             self.begin_rendezvous(c, params);
                             Ok(())
                         }
                         None => {
-                            self.sched.block(
+                            self.m.sched.block(
                                 tasking::Wait::Accept {
                                     entries: vec![*entry],
                                     deadline: None,
@@ -2109,9 +2206,9 @@ impl<'a> Run<'a> {
                     Err(e) => Err(e),
                 },
                 Op::AllocTask(d, e) => {
-                    self.sched.alloc_activates = false;
+                    self.m.sched.alloc_activates = false;
                     let r = self.eval(e);
-                    self.sched.alloc_activates = true;
+                    self.m.sched.alloc_activates = true;
                     r.map(|v| self.put(*d, v))
                 }
                 Op::Abort(ts) => {
@@ -2122,44 +2219,36 @@ impl<'a> Run<'a> {
                     Ok(())
                 }
             };
-            if self.sched.switch {
+            if self.m.sched.switch {
                 // The running thread blocked (or ended): save it, run the
                 // next ready one.
-                self.sched.switch = false;
-                let th = &mut self.sched.threads[self.sched.cur];
+                self.m.sched.switch = false;
+                let th = &mut self.m.sched.threads[self.m.sched.cur];
                 if std::mem::take(&mut th.reexec) {
                     pc -= 1;
                     th.rerun = true;
                 }
-                let me = self.sched.cur;
-                let regs = Regs {
-                    frames: std::mem::take(&mut frames),
-                    cur: cur.clone(),
-                    pc,
-                    current_base,
-                    pending: pending.take(),
-                    root,
-                };
-                if self.sched.threads[me].wait == tasking::Wait::Terminated && me != 0 {
+                let me = self.m.sched.cur;
+                let regs = save_regs(&mut frames, &cur, pc, current_base, pending.take(), root);
+                if self.m.sched.threads[me].wait == tasking::Wait::Terminated && me != 0 {
                     for (b, t) in regs.regions() {
                         self.free_frame(b, t);
                     }
                     self.end_thread(me, false);
                 } else {
-                    self.sched.threads[me].regs = Some(regs);
+                    self.m.sched.threads[me].regs = Some(regs);
                 }
                 self.swap_registers(me);
                 let next = loop {
-                    if let Some(n) = self.sched.pick() {
+                    if let Some(n) = self.m.sched.pick() {
                         break n;
                     }
                     if !self.idle() {
                         return Err(self.deadlock());
                     }
                 };
-                let r = self.resume(cache, next)?;
                 (frames, cur, pc, current_base, pending, root) =
-                    (r.frames, r.cur, r.pc, r.current_base, r.pending, r.root);
+                    self.resume(cache, &level0, next)?;
                 continue;
             }
             if let Some((code, info)) = enter.take() {
@@ -2206,9 +2295,8 @@ impl<'a> Run<'a> {
                             }
                             // The end of a task body.
                             self.task_ends(root, false);
-                            let r = self.next_thread(cache)?;
                             (frames, cur, pc, current_base, pending, root) =
-                                (r.frames, r.cur, r.pc, r.current_base, r.pending, r.root);
+                                self.next_thread(cache, &level0)?;
                             break;
                         };
                         let info = frame.call.as_ref().expect("a called frame");
@@ -2263,9 +2351,8 @@ impl<'a> Run<'a> {
                             }
                             // An exception ends a task silently.
                             self.task_ends(root, true);
-                            let r = self.next_thread(cache)?;
                             (frames, cur, pc, current_base, pending, root) =
-                                (r.frames, r.cur, r.pc, r.current_base, r.pending, r.root);
+                                self.next_thread(cache, &level0)?;
                             break;
                         };
                         self.pop_frame(&frame, current_base);
@@ -2290,6 +2377,45 @@ impl<'a> Run<'a> {
             self.m.calls.pop();
         }
         self.m.current.truncate(entry);
+    }
+}
+
+/// Saves the running thread's registers (see [`Regs`]).
+fn save_regs(
+    frames: &mut Vec<Frame<'_>>,
+    cur: &Rc<Code<'_>>,
+    pc: u32,
+    current_base: usize,
+    pending: Option<Box<Occurrence>>,
+    root: Option<(usize, usize)>,
+) -> Regs {
+    Regs {
+        frames: frames
+            .drain(..)
+            .map(|f| SavedFrame {
+                func: f.code.func,
+                pc: f.pc,
+                call: f
+                    .call
+                    .map(|c| (c.f, c.dst, c.base, c.top, c.level, c.saved)),
+                current: f.current,
+            })
+            .collect(),
+        cur: cur.func,
+        pc,
+        current_base,
+        pending,
+        root,
+    }
+}
+
+/// The arguments of the call instruction before `pc` (a frame's resume
+/// point).
+fn call_args<'a>(code: &Code<'a>, pc: u32) -> &'a [Arg] {
+    match code.ops.get(pc as usize - 1) {
+        Some(Op::Call(_, args, ..)) => args,
+        Some(Op::ProtEntry(e)) => e.args,
+        _ => &[],
     }
 }
 

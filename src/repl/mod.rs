@@ -124,6 +124,8 @@ impl Repl {
         };
         r.install_robot();
         r.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+        // Tasks live on from one entry to the next.
+        r.session.machine.keep_tasks = true;
         r.script_uses();
         r
     }
@@ -450,10 +452,19 @@ impl Repl {
                         None => Err("no devices".into()),
                     };
                     match r {
-                        Ok(Some(_)) => ok(format!(
-                            "interrupt {} raised (no task outlives an entry: nobody accepts it now)\n",
-                            crate::devices::ada_address(a as u32)
-                        )),
+                        Ok(Some(i)) => {
+                            // Delivered to its entry; the tasks run until
+                            // they block again.
+                            self.session.machine.pending_irqs.push((i.address, i.time));
+                            let mut reply = self.entry("delay 0.0;");
+                            if !reply.failed {
+                                reply.text = format!(
+                                    "interrupt {} raised\n",
+                                    crate::devices::ada_address(a as u32)
+                                );
+                            }
+                            reply
+                        }
                         Ok(None) => ok(format!(
                             "interrupt {} dropped: its device has interrupts disabled\n",
                             crate::devices::ada_address(a as u32)
@@ -473,30 +484,43 @@ impl Repl {
                         None => Err("no devices".into()),
                     };
                     match r {
-                        Ok(_) => ok(format!(
-                            "{} := {}\n",
-                            crate::devices::ada_address(a as u32),
-                            crate::devices::ada_word(v as u16)
-                        )),
+                        Ok(irq) => {
+                            let text = format!(
+                                "{} := {}\n",
+                                crate::devices::ada_address(a as u32),
+                                crate::devices::ada_word(v as u16)
+                            );
+                            // A light barrier's rising edge interrupts: its
+                            // task runs now.
+                            let Some(i) = irq else { return ok(text) };
+                            self.session.machine.pending_irqs.push((i.address, i.time));
+                            let mut reply = self.entry("delay 0.0;");
+                            if !reply.failed {
+                                reply.text = text;
+                            }
+                            reply
+                        }
                         Err(e) => fail(format!(":set: {e}\n")),
                     }
                 }
                 _ => fail(":set ADDR VALUE (a 16-bit value: 16#00FF#, 0xFF or 255)\n".into()),
             },
             "tasks" => {
-                let t = &self.session.machine.last_tasks;
+                let t = self
+                    .session
+                    .machine
+                    .describe_tasks(self.session.checker.program());
+                let t: Vec<&String> = t.iter().skip(1).collect();
                 if t.is_empty() {
-                    ok("no tasks: an entry that declares tasks waits for them at its end\n".into())
+                    ok("no tasks\n".into())
                 } else {
-                    ok(format!(
-                        "the tasks of the last entry (tasks do not outlive their entry):\n{}",
-                        t.iter().map(|l| format!("  {l}\n")).collect::<String>()
-                    ))
+                    ok(t.iter().map(|l| format!("{l}\n")).collect())
                 }
             }
             "reset" => {
                 self.session = Session::new((self.make_out)());
                 self.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
+                self.session.machine.keep_tasks = true;
                 if let Some(d) = self.devices.clone() {
                     self.session.set_devices(d);
                 }
