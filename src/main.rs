@@ -22,7 +22,7 @@ struct Cli {
     #[arg(long, global = true, value_name = "SIZE", default_value = "4G",
           value_parser = adair::interp::memory::parse_size)]
     max_memory: usize,
-    /// The simulated devices (tasks.md): a TOML device file. Without it, the
+    /// The simulated devices: a TOML device file (see docs/tasks.md). Without it, the
     /// appendix C parallel port at 8#340#.
     #[arg(long, global = true, value_name = "FILE.toml")]
     devices: Option<PathBuf>,
