@@ -1222,8 +1222,14 @@ impl Checker {
                 self.devices.source()
             ),
         );
+        let default = *self.devices == crate::devices::Devices::default_set();
         d = if known.is_empty() {
             d.with_hint("the device file declares no devices: give one with `--devices FILE.toml`")
+        } else if default {
+            d.with_hint(format!(
+                "the addresses there: {}; a program for other devices runs with their file: `adair run --devices FILE.toml ...`",
+                known.join(", ")
+            ))
         } else {
             d.with_hint(format!("the addresses there: {}", known.join(", ")))
         };
