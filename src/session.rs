@@ -7,10 +7,42 @@ use crate::diag::{Diagnostic, Phase, Sources, Span};
 use crate::interp::{Machine, Occurrence, builtins};
 use std::io::Write;
 
+/// One file of the predefined library and the packages it declares.
+pub struct StdUnit {
+    pub name: &'static str,
+    pub text: &'static str,
+    pub provides: &'static [&'static str],
+}
+
 /// The predefined library, embedded so the binary needs no files beside it.
-pub const STDLIB: &[(&str, &str)] = &[
-    ("stdlib/ada.air", include_str!("../stdlib/ada.air")),
-    ("stdlib/adair.air", include_str!("../stdlib/adair.air")),
+/// The first file is checked when a session starts; the others when a
+/// program names one of their packages in a `with` clause, or is a script
+/// (which may name any package without `with`): an Ada main program that
+/// needs neither the clock nor the robot does not pay for checking them.
+pub const STDLIB: &[StdUnit] = &[
+    StdUnit {
+        name: "stdlib/ada.air",
+        text: include_str!("../stdlib/ada.air"),
+        provides: &[
+            "Ada",
+            "Ada.Text_IO",
+            "Ada.Integer_Text_IO",
+            "Ada.Float_Text_IO",
+            "Ada.Numerics",
+            "Ada.Numerics.Elementary_Functions",
+            "Ada.Exceptions",
+        ],
+    },
+    StdUnit {
+        name: "stdlib/calendar.air",
+        text: include_str!("../stdlib/calendar.air"),
+        provides: &["Ada.Calendar", "Ada.Real_Time"],
+    },
+    StdUnit {
+        name: "stdlib/adair.air",
+        text: include_str!("../stdlib/adair.air"),
+        provides: &["AdaIR", "SERIAL_IO"],
+    },
 ];
 
 /// Packages visible without `with` in script mode and the REPL.
@@ -65,6 +97,10 @@ pub struct Session {
     /// (None until one is chosen: a service call then raises
     /// `Program_Error`, never drives a default robot).
     pub robot: Option<crate::services::RobotState>,
+    /// Which stdlib files are checked (see [`STDLIB`]).
+    loaded: Vec<bool>,
+    /// A stdlib file is being checked.
+    in_stdlib: bool,
 }
 
 /// How a run ended.
@@ -97,25 +133,66 @@ impl Session {
             strict: false,
             warnings_to: None,
             robot: None,
+            loaded: Vec::new(),
+            in_stdlib: false,
         };
         s.machine.resolver = resolve;
         s.checker
             .set_import_profiles(crate::services::import_profile);
-        for (name, text) in STDLIB {
-            let (stmts, _) = s
-                .check_source(name, &stdlib_text(text), false)
-                .unwrap_or_else(|d| {
-                    // The embedded library is tested; a failure here is a bug in adair.
-                    panic!("stdlib does not check: {d:?}")
-                });
-            let _ = s.machine.run(s.checker.program(), &stmts, None, None);
+        s.load_unit(0);
+        s
+    }
+
+    /// Checks and elaborates the stdlib file `i` (once).
+    fn load_unit(&mut self, i: usize) {
+        if self.loaded.len() <= i {
+            self.loaded.resize(STDLIB.len(), false);
         }
-        for pkg in ["AdaIR", "Ada.Text_IO"] {
-            for e in ["Name_Error", "Use_Error", "Data_Error", "End_Error"] {
-                s.checker.export(pkg, e, "Ada.IO_Exceptions");
+        if self.loaded[i] {
+            return;
+        }
+        self.loaded[i] = true;
+        let u = &STDLIB[i];
+        let outer = std::mem::replace(&mut self.in_stdlib, true);
+        let checked = self.check_source(u.name, &stdlib_text(u.text), false);
+        self.in_stdlib = outer;
+        let (stmts, _) = checked.unwrap_or_else(|d| {
+            // The embedded library is tested; a failure here is a bug in adair.
+            panic!("stdlib does not check: {d:?}")
+        });
+        let _ = self.machine.run(self.checker.program(), &stmts, None, None);
+        for pkg in u.provides {
+            if matches!(*pkg, "AdaIR" | "Ada.Text_IO") {
+                for e in ["Name_Error", "Use_Error", "Data_Error", "End_Error"] {
+                    self.checker.export(pkg, e, "Ada.IO_Exceptions");
+                }
             }
         }
-        s
+        // The robot's exceptions are the AdaIR package's.
+        if u.provides.contains(&"AdaIR")
+            && let Some(st) = &mut self.robot
+            && let Ok(ids) = crate::services::ExcIds::bind(&self.checker)
+        {
+            st.excs = ids;
+        }
+    }
+
+    /// Makes the package `name` of the stdlib visible to later checks
+    /// (nothing when no stdlib file declares it).
+    pub fn need_package(&mut self, name: &str) {
+        if let Some(i) = STDLIB
+            .iter()
+            .position(|u| u.provides.iter().any(|p| p.eq_ignore_ascii_case(name)))
+        {
+            self.load_unit(i);
+        }
+    }
+
+    /// Checks every stdlib file (the language server offers all of them).
+    pub fn load_stdlib(&mut self) {
+        for i in 0..STDLIB.len() {
+            self.load_unit(i);
+        }
     }
 
     /// Chooses the simulated devices (`--devices FILE.toml`; the default is
@@ -147,8 +224,10 @@ impl Session {
         trace: Option<Box<dyn Write>>,
         realtime: bool,
     ) {
+        // Bound again when the AdaIR package is checked (`load_unit`): a
+        // program without it calls no service.
         let excs = crate::services::ExcIds::bind(&self.checker)
-            .unwrap_or_else(|e| panic!("stdlib does not declare {e}"));
+            .unwrap_or_else(|_| crate::services::ExcIds::unbound());
         if driver.real_time() {
             self.machine.clock = Box::new(crate::services::WallClock::default());
         }
@@ -269,14 +348,43 @@ impl Session {
         let withs = unit.items.iter().any(|i| matches!(i, TopItem::With(..)));
         let is_script = script
             || unit.items.iter().any(|i| matches!(i, TopItem::Stmt(_)))
-            || (!withs && !main_candidate);
+            || (!withs && !main_candidate && !self.in_stdlib);
+        // The stdlib files this unit names.
+        for item in &unit.items {
+            if let TopItem::With(names, _) = item {
+                for n in names {
+                    self.need_package(&crate::syntax::parser::expr_text(n));
+                }
+            }
+        }
         if is_script {
+            // A script names any stdlib package without `with`.
+            self.load_stdlib();
             for p in SCRIPT_USES {
                 self.checker.use_everywhere(p);
             }
         }
         let (stmts, main) = self.checker.check_unit(&unit);
         diags.extend(self.checker.take_diags());
+        // A name from a stdlib package that was not checked (no `with`):
+        // check the rest of the stdlib to say where it is declared.
+        let undeclared = |d: &Diagnostic| {
+            d.message
+                .strip_prefix('`')
+                .and_then(|m| m.strip_suffix("` is not declared"))
+                .filter(|_| d.hint.is_none())
+                .map(str::to_string)
+        };
+        if !self.in_stdlib && diags.iter().any(|d| undeclared(d).is_some()) {
+            self.load_stdlib();
+            for d in diags.iter_mut() {
+                if let Some(n) = undeclared(d)
+                    && let Some(h) = self.checker.with_hint(&n)
+                {
+                    d.hint = Some(h);
+                }
+            }
+        }
         diags.sort_by_key(|d| (d.span.context, d.span.start));
         // With errors, only the errors: a warning is often their echo (a
         // variable "never read" because its use did not check).

@@ -45,7 +45,8 @@ fn a_teach_box_jog_is_limited_clocked_and_traced_like_a_motion() {
 
 #[test]
 fn the_adair_package_declares_every_service_of_the_table() {
-    let s = Session::new(Box::new(std::io::sink()));
+    let mut s = Session::new(Box::new(std::io::sink()));
+    s.need_package("AdaIR");
     for svc in adair::services::SERVICES {
         let n = s
             .checker

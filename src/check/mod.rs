@@ -506,6 +506,16 @@ impl Checker {
 
     /// The first (predefined, then user) package that declares `key`
     /// visibly: the usual cause of an undeclared `Put_Line` is a missing `with`.
+    /// The hint for a name that is not declared but is declared in a
+    /// package the program did not `with` (the session checks the rest of
+    /// the stdlib first when a check fails with such a name).
+    pub fn with_hint(&self, name: &str) -> Option<String> {
+        let pkg = self.package_declaring(&name.to_lowercase())?;
+        Some(format!(
+            "`{name}` is declared in `{pkg}`: add `with {pkg}; use {pkg};` at the top of the file"
+        ))
+    }
+
     fn package_declaring(&self, key: &str) -> Option<String> {
         self.packages
             .iter()

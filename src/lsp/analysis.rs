@@ -24,13 +24,14 @@ impl Base {
     /// texts (as checked: with the service declarations generated from the
     /// table) are written for the editor; `None` writes nothing.
     pub fn new(stdlib_dir: Option<&Path>) -> Base {
-        let session = crate::session::Session::new(Box::new(std::io::sink()));
+        let mut session = crate::session::Session::new(Box::new(std::io::sink()));
+        session.load_stdlib();
         let mut stdlib_files = Vec::new();
-        for (id, (name, text)) in crate::session::STDLIB.iter().enumerate() {
+        for (id, u) in crate::session::STDLIB.iter().enumerate() {
             let Some(dir) = stdlib_dir else { break };
-            let file = Path::new(name).file_name().unwrap_or_default();
+            let file = Path::new(u.name).file_name().unwrap_or_default();
             let path = dir.join(file);
-            let text = crate::session::stdlib_text(text);
+            let text = crate::session::stdlib_text(u.text);
             // Written only when it changed: an editor may have it open.
             let same = std::fs::read_to_string(&path).is_ok_and(|t| t == text);
             let ok = same

@@ -132,6 +132,8 @@ impl Repl {
 
     /// Entries are script mode: the standard packages and AdaIR are visible.
     fn script_uses(&mut self) {
+        // Entries may name any package of the stdlib without `with`.
+        self.session.load_stdlib();
         for p in crate::session::SCRIPT_USES {
             self.session.checker.use_everywhere(p);
         }
@@ -737,8 +739,8 @@ fn stdlib_doc(name: &str) -> String {
 fn adair_lines() -> Vec<&'static str> {
     crate::session::STDLIB
         .iter()
-        .find(|(n, _)| n.ends_with("adair.air"))
-        .map_or("", |(_, t)| *t)
+        .find(|u| u.name.ends_with("adair.air"))
+        .map_or("", |u| u.text)
         .lines()
         .collect()
 }
