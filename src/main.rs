@@ -332,6 +332,8 @@ fn real_main(
                 }
             };
             let mut s = Session::new(Box::new(std::io::LineWriter::new(std::io::stdout())));
+            // No tool reads the uses and types of this run.
+            s.checker.index.uses = false;
             s.strict = strict;
             s.warnings_to = Some((Box::new(std::io::stderr()), color));
             if let Some(d) = &devices {
@@ -493,6 +495,7 @@ fn real_main(
                     continue;
                 };
                 let mut s = Session::new(Box::new(std::io::sink()));
+                s.checker.index.uses = false;
                 s.strict = strict;
                 if let Some(d) = &devices {
                     s.set_devices(d.clone());

@@ -935,7 +935,7 @@ impl Checker {
 
     fn expr_inner(&mut self, e: &ast::Expr, want: Option<TypeId>) -> Ex {
         let r = self.expr_kind(e, want);
-        if r.ty != ERROR {
+        if r.ty != ERROR && self.index.uses {
             self.index.types.push((e.span, r.ty));
         }
         r

@@ -76,6 +76,10 @@ enum Key {
 
 #[derive(Clone, Debug, Default)]
 pub struct Index {
+    /// Uses and expression types are recorded (for tools: the language
+    /// server, the REPL); off for `adair run`/`check`/`test`, where they
+    /// would only cost memory (about 16 bytes per byte of source).
+    pub uses: bool,
     pub defs: Vec<Def>,
     pub refs: Vec<Ref>,
     /// The type of each expression the checker checked (not errors), by
@@ -88,6 +92,14 @@ pub struct Index {
 }
 
 impl Index {
+    /// An index that records uses and types too.
+    pub fn recording() -> Index {
+        Index {
+            uses: true,
+            ..Index::default()
+        }
+    }
+
     /// The declaration a use at `offset` of source `file` refers to, or the
     /// declaration whose name is there.
     pub fn def_at(&self, file: u32, offset: usize) -> Option<u32> {
@@ -274,7 +286,9 @@ impl Checker {
             return;
         };
         if let Some(&def) = self.index.by_key.get(&Key::Param(f, i as u32)) {
-            self.index.refs.push(Ref { span: id.span, def });
+            if self.index.uses {
+                self.index.refs.push(Ref { span: id.span, def });
+            }
         }
     }
 
@@ -284,7 +298,9 @@ impl Checker {
             Some(k) => self.index.by_key.get(&k),
             None => self.index.by_name.get(key),
         };
-        if let Some(&def) = def {
+        if let Some(&def) = def
+            && self.index.uses
+        {
             self.index.refs.push(Ref { span, def });
         }
     }
@@ -297,7 +313,9 @@ impl Checker {
             .by_key
             .get(&k)
             .or_else(|| self.index.by_key.get(&Key::Field(self.types.base(rec), i)));
-        if let Some(&def) = def {
+        if let Some(&def) = def
+            && self.index.uses
+        {
             self.index.refs.push(Ref { span, def });
         }
     }

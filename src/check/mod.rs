@@ -212,7 +212,7 @@ impl Checker {
             missing_units: Vec::new(),
             spelling: HashMap::new(),
             memo: None,
-            index: index::Index::default(),
+            index: index::Index::recording(),
             cur_decl: None,
             tasks: Vec::new(),
             prots: Vec::new(),
