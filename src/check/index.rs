@@ -285,10 +285,10 @@ impl Checker {
         }) else {
             return;
         };
-        if let Some(&def) = self.index.by_key.get(&Key::Param(f, i as u32)) {
-            if self.index.uses {
-                self.index.refs.push(Ref { span: id.span, def });
-            }
+        if let Some(&def) = self.index.by_key.get(&Key::Param(f, i as u32))
+            && self.index.uses
+        {
+            self.index.refs.push(Ref { span: id.span, def });
         }
     }
 
