@@ -814,11 +814,7 @@ impl Checker {
             .params
             .iter()
             .map(|p| {
-                let mode = match p.mode {
-                    ast::Mode::In => "",
-                    ast::Mode::Out => "out ",
-                    ast::Mode::InOut => "in out ",
-                };
+                let mode = mode_text(p.mode);
                 format!(
                     "{} : {mode}{}{}",
                     p.name,
@@ -2970,5 +2966,14 @@ impl Checker {
                 );
             }
         }
+    }
+}
+
+/// A parameter mode as a profile writes it (`in` left out).
+pub(super) fn mode_text(m: ast::Mode) -> &'static str {
+    match m {
+        ast::Mode::In => "",
+        ast::Mode::Out => "out ",
+        ast::Mode::InOut => "in out ",
     }
 }

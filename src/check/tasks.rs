@@ -4,6 +4,7 @@
 //! type is a record of components reached through a hidden last parameter
 //! of every operation.
 
+use super::expr::mode_text;
 use super::*;
 
 /// What kind of body [`Checker::check_body`] checks.
@@ -625,6 +626,27 @@ impl Checker {
         sp: Span,
     ) -> Ex {
         let obj = self.prot_obj(obj);
+        match self.prot_subprogram(k, obj, id, args, false, sp) {
+            Some((real, a)) => {
+                let r = self.funcs[real as usize].ret.unwrap_or(ERROR);
+                self.mk(ExKind::Call(real, a), r, sp)
+            }
+            None => self.err_ex(sp),
+        }
+    }
+
+    /// A call of protected subprogram `id` of object `obj` (of protected
+    /// type `k`) from outside: the subprogram and the arguments, the object
+    /// last.
+    fn prot_subprogram(
+        &mut self,
+        k: u32,
+        obj: Ex,
+        id: &ast::Ident,
+        args: &[ast::Arg],
+        procedure: bool,
+        sp: Span,
+    ) -> Option<(FuncId, Vec<Arg>)> {
         let fs: Vec<FuncId> = self.prot_members[k as usize]
             .iter()
             .filter(|(n, ..)| *n == id.key)
@@ -634,25 +656,27 @@ impl Checker {
             self.err(Diagnostic::name(
                 id.span,
                 format!(
-                    "`{}` is not a function of protected `{}`",
-                    id.name, self.prots[k as usize].name
+                    "`{}` is not a {} of protected `{}`",
+                    id.name,
+                    if procedure {
+                        "procedure or entry"
+                    } else {
+                        "function"
+                    },
+                    self.prots[k as usize].name
                 ),
             ));
-            return self.err_ex(sp);
+            return None;
         }
+        // Not an internal call, even inside a protected body.
         let outer = std::mem::take(&mut self.prot_ctx);
-        let r = self.call(&fs, args, None, false, sp, &id.name);
+        let r = self.call(&fs, args, None, procedure, sp, &id.name);
         self.prot_ctx = outer;
-        let Some((f, mut a)) = r else {
-            return self.err_ex(sp);
-        };
-        let Some(&(real, _)) = self.prot_real.get(&f) else {
-            return self.err_ex(sp);
-        };
+        let (f, mut a) = r?;
+        let real = self.prot_real.get(&f)?.0;
         self.index_ref(id.span, &id.key, &Entity::Func(f));
         a.push(self.obj_arg(k, obj));
-        let r = self.funcs[real as usize].ret.unwrap_or(ERROR);
-        self.mk(ExKind::Call(real, a), r, sp)
+        Some((real, a))
     }
 
     /// A task value: a task object, or an access to one.
@@ -792,28 +816,7 @@ impl Checker {
                         args: a,
                     })));
                 }
-                let fs: Vec<FuncId> = self.prot_members[k as usize]
-                    .iter()
-                    .filter(|(n, ..)| *n == id.key)
-                    .map(|(_, p, _, _)| *p)
-                    .collect();
-                if fs.is_empty() {
-                    self.err(Diagnostic::name(
-                        id.span,
-                        format!(
-                            "`{}` is not declared in protected `{}`",
-                            id.name, self.prots[k as usize].name
-                        ),
-                    ));
-                    return None;
-                }
-                let outer = std::mem::take(&mut self.prot_ctx);
-                let r = self.call(&fs, args, None, true, span, &id.name);
-                self.prot_ctx = outer;
-                let (f, mut a) = r?;
-                let real = self.prot_real.get(&f)?.0;
-                self.index_ref(id.span, &id.key, &Entity::Func(f));
-                a.push(self.obj_arg(k, obj));
+                let (real, a) = self.prot_subprogram(k, obj, id, args, true, span)?;
                 Some(StmtKind::ProtCall(real, a))
             }
             _ => None,
@@ -874,12 +877,12 @@ impl Checker {
                 .params
                 .iter()
                 .map(|p| {
-                    let mode = match p.mode {
-                        ast::Mode::In => "",
-                        ast::Mode::Out => "out ",
-                        ast::Mode::InOut => "in out ",
-                    };
-                    format!("{} : {mode}{}", p.name, self.types.name(p.ty))
+                    format!(
+                        "{} : {}{}",
+                        p.name,
+                        mode_text(p.mode),
+                        self.types.name(p.ty)
+                    )
                 })
                 .collect();
             let decl = self.declared_at(def.entries[i].profile);
