@@ -267,6 +267,8 @@ fn plane_helpers() {
         let v = Vector3::new(a.cos(), a.sin(), 0.0);
         assert!(close(out_of_plane(&v, &on_x), a));
         assert!(close(out_of_plane(&-v, &on_x), a));
+        // Any length: the angle, not the component.
+        assert!(close(out_of_plane(&(v * 3.0), &on_x), a));
         // Off the x axis: the plane through (1, 1, 0).
         let c = Vector3::new(200.0, 200.0, 0.0);
         let w = nalgebra::Rotation3::from_axis_angle(&Vector3::z_axis(), FRAC_PI_2 / 2.0) * v;
