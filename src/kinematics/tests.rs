@@ -7,8 +7,9 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use nalgebra::Vector3;
 
-use super::error::{LimitViolation, decimals_for};
+use super::error::{AdaException, KinError, LimitViolation, decimals_for};
 use super::ik::wrap;
+use super::ik::{Arm, Elbow};
 use super::valid::{into_plane, out_of_plane};
 use super::{Joints, Kinematics, RobotDescription, joints_from_deg, tolerance};
 
@@ -267,6 +268,8 @@ fn plane_helpers() {
         let v = Vector3::new(a.cos(), a.sin(), 0.0);
         assert!(close(out_of_plane(&v, &on_x), a));
         assert!(close(out_of_plane(&-v, &on_x), a));
+        // Any length: the angle, not the component.
+        assert!(close(out_of_plane(&(v * 3.0), &on_x), a));
         // Off the x axis: the plane through (1, 1, 0).
         let c = Vector3::new(200.0, 200.0, 0.0);
         let w = nalgebra::Rotation3::from_axis_angle(&Vector3::z_axis(), FRAC_PI_2 / 2.0) * v;
@@ -297,4 +300,92 @@ fn plane_helpers() {
         nalgebra::Matrix3::identity()
     );
     assert_eq!(into_plane(&x, &on_x), nalgebra::Matrix3::identity());
+}
+
+#[test]
+fn exception_names() {
+    for (e, name) in [
+        (AdaException::FrameInvalid, "FrameInvalid"),
+        (AdaException::OutOfReach, "OutOfReach"),
+        (AdaException::TimeInvalid, "TimeInvalid"),
+        (AdaException::ConstraintError, "Constraint_Error"),
+    ] {
+        assert_eq!(e.name(), name);
+        assert_eq!(e.to_string(), name);
+    }
+}
+
+/// Positions in messages: one decimal, rounded half away from zero, never
+/// "-0.0".
+#[test]
+fn positions_in_messages() {
+    let e = KinError::WristTooFar {
+        distance: 500.0,
+        reach: 410.0,
+        goal: Vector3::new(-0.04, 12.36, -7.0),
+        nearest: Vector3::new(-0.0, 399.94, 0.25),
+    };
+    assert_eq!(
+        e.to_string(),
+        "goal (0.0, 12.4, -7.0) mm out of reach: wrist point 500.0 mm from shoulder, reach 410.0 mm; nearest within the arm's length with this orientation (0.0, 399.9, 0.3) mm"
+    );
+}
+
+/// The inverse kinematics solve for the flange and name the TCP: `shifted`
+/// moves the positions of a reach error, also inside a blocked line.
+#[test]
+fn shifted_moves_the_named_positions() {
+    let by = Vector3::new(1.0, 2.0, 3.0);
+    let far = KinError::WristTooFar {
+        distance: 500.0,
+        reach: 410.0,
+        goal: Vector3::new(10.0, 0.0, 0.0),
+        nearest: Vector3::new(5.0, 0.0, 0.0),
+    };
+    let moved = KinError::WristTooFar {
+        distance: 500.0,
+        reach: 410.0,
+        goal: Vector3::new(11.0, 2.0, 3.0),
+        nearest: Vector3::new(6.0, 2.0, 3.0),
+    };
+    assert_eq!(far.clone().shifted(by), moved);
+    let line = |cause: KinError| KinError::LineBlocked {
+        at: 4.0,
+        length: 9.0,
+        cause: Box::new(cause),
+    };
+    assert_eq!(line(far.clone()).shifted(by), line(moved));
+    let other = KinError::TimeInvalid {
+        requested: 1.0,
+        minimum: 2.0,
+    };
+    assert_eq!(other.clone().shifted(by), other);
+}
+
+#[test]
+fn every_branch_listed_with_separators() {
+    let v = LimitViolation {
+        joint: 1,
+        target: 3.0,
+        min: -2.0,
+        max: 2.0,
+        other_way: None,
+    };
+    let e = KinError::NoBranchWithinLimits {
+        branches: vec![
+            (Arm::Forward, Elbow::Above, v),
+            (Arm::Backward, Elbow::Below, v),
+        ],
+    };
+    let one = v.to_string();
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "every arm configuration breaks a joint limit: {}/{}: {one}; {}/{}: {one}",
+            Arm::Forward,
+            Elbow::Above,
+            Arm::Backward,
+            Elbow::Below
+        )
+    );
 }
