@@ -576,7 +576,17 @@ impl Run<'_> {
 
     /// Frees a frame's slots `base .. top`: truncates when they are on top
     /// of the stack, else leaves a hole.
+    #[inline(always)]
     pub(crate) fn free_frame(&mut self, base: usize, top: usize) {
+        if self.m.sched.holes.is_empty() && top >= self.m.stack.len() {
+            // The common case (and the only one without tasks).
+            self.m.stack.truncate(base);
+            return;
+        }
+        self.free_frame_among_tasks(base, top);
+    }
+
+    fn free_frame_among_tasks(&mut self, base: usize, top: usize) {
         if !self.m.sched.active() || top >= self.m.stack.len() {
             self.m.stack.truncate(base);
             while let Some(b) = self.m.sched.holes.remove(&self.m.stack.len()) {

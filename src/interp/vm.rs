@@ -1171,6 +1171,7 @@ impl<'a> Run<'a> {
     }
 
     /// Pushes the frame of a call of `f` whose arguments are in `ops`.
+    #[inline(always)]
     fn push_call(
         &mut self,
         cache: &mut Vec<Option<Rc<Code<'a>>>>,
