@@ -161,10 +161,7 @@ impl Session {
             // The embedded library is tested: it checks in a fresh session.
             // Checked later in a session whose program clashes with it, it
             // may not; the program then meets the missing names.
-            Err(d) if i > 0 => {
-                let _ = d;
-                return;
-            }
+            Err(_) if i > 0 => return,
             Err(d) => panic!("stdlib does not check: {d:?}"),
         };
         let _ = self.machine.run(self.checker.program(), &stmts, None, None);
@@ -295,11 +292,11 @@ impl Session {
         let robot = std::mem::replace(&mut self.robot, stand_in);
         // The tasks of earlier entries and the devices are rehearsed on
         // copies too.
-        let tasks = self.machine.save_tasks();
+        let tasks = self.machine.sched.clone();
         let world = self.machine.world.clone();
         let result = f(self);
         self.machine.world = world;
-        self.machine.restore_tasks(tasks);
+        self.machine.sched = tasks;
         self.robot = robot;
         self.machine.col = col;
         self.machine.clock = clock;

@@ -331,6 +331,8 @@ pub struct ProtDef {
     pub name: String,
     /// The record of the components (hidden number first).
     pub rec: TypeId,
+    /// The access to it: the type of every operation's object parameter.
+    pub access: TypeId,
     pub entries: Vec<ProtEntry>,
     pub span: Span,
 }

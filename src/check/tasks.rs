@@ -277,6 +277,7 @@ impl Checker {
         self.prots.push(ProtDef {
             name: name.clone(),
             rec,
+            access,
             entries,
             span: p.span,
         });
@@ -289,11 +290,7 @@ impl Checker {
 
     /// The access type of a protected type's object parameter.
     fn prot_access(&self, k: u32) -> TypeId {
-        let rec = self.prots[k as usize].rec;
-        (0..self.types.list.len() as TypeId)
-            .rev()
-            .find(|t| matches!(self.types.get(*t).kind, TypeKind::Access(d) if d == rec))
-            .unwrap_or(ERROR)
+        self.prots[k as usize].access
     }
 
     pub(super) fn protected_body(&mut self, b: &ast::ProtectedBody) {
@@ -593,17 +590,24 @@ impl Checker {
         }
     }
 
-    fn prot_obj(&mut self, obj: Ex) -> Ex {
-        match self.types.designated(obj.ty) {
-            Some(d) if matches!(self.types.kind(d), TypeKind::Protected(_)) => {
-                let sp = obj.span;
+    /// A task or protected object named through an access value: the
+    /// object itself (`P.E` for `P.all.E`).
+    fn through_access(&self, x: Ex) -> Ex {
+        match self.types.designated(x.ty) {
+            Some(d)
+                if matches!(
+                    self.types.kind(d),
+                    TypeKind::Task(_) | TypeKind::Protected(_)
+                ) =>
+            {
+                let sp = x.span;
                 Ex {
-                    kind: ExKind::Deref(Box::new(obj)),
+                    kind: ExKind::Deref(Box::new(x)),
                     ty: d,
                     span: sp,
                 }
             }
-            _ => obj,
+            _ => x,
         }
     }
 
@@ -625,7 +629,7 @@ impl Checker {
         args: &[ast::Arg],
         sp: Span,
     ) -> Ex {
-        let obj = self.prot_obj(obj);
+        let obj = self.through_access(obj);
         match self.prot_subprogram(k, obj, id, args, false, sp) {
             Some((real, a)) => {
                 let r = self.funcs[real as usize].ret.unwrap_or(ERROR);
@@ -682,17 +686,7 @@ impl Checker {
     /// A task value: a task object, or an access to one.
     pub(super) fn task_value(&mut self, e: &ast::Expr) -> Option<Ex> {
         let x = self.expr(e, None);
-        let x = match self.types.designated(x.ty) {
-            Some(d) if matches!(self.types.kind(d), TypeKind::Task(_)) => {
-                let sp = x.span;
-                Ex {
-                    kind: ExKind::Deref(Box::new(x)),
-                    ty: d,
-                    span: sp,
-                }
-            }
-            _ => x,
-        };
+        let x = self.through_access(x);
         match self.types.kind(x.ty) {
             TypeKind::Task(_) => Some(x),
             TypeKind::Error => None,
@@ -756,17 +750,7 @@ impl Checker {
         args: &[ast::Arg],
         span: Span,
     ) -> Option<StmtKind> {
-        let obj = match self.types.designated(obj.ty) {
-            Some(d) => {
-                let sp = obj.span;
-                Ex {
-                    kind: ExKind::Deref(Box::new(obj)),
-                    ty: d,
-                    span: sp,
-                }
-            }
-            None => obj,
-        };
+        let obj = self.through_access(obj);
         match self.types.kind(obj.ty).clone() {
             TypeKind::Task(k) => {
                 let def = &self.tasks[k as usize];

@@ -183,15 +183,16 @@ impl Types {
     /// Whether an object of type `t` holds a task (so that its declaration
     /// creates one and its scope is the task's master).
     pub fn has_task(&self, t: TypeId) -> bool {
-        match &self.list[t as usize].kind {
+        // A constrained array subtype keeps its own kind (its bounds).
+        let kind = match &self.list[t as usize].kind {
+            k @ TypeKind::Array { .. } => k,
+            _ => self.kind(t),
+        };
+        match kind {
             TypeKind::Task(_) => true,
             TypeKind::Array { elem, .. } => self.has_task(*elem),
             TypeKind::Record(fs) => fs.iter().any(|f| self.has_task(f.ty)),
-            _ => match self.kind(t) {
-                TypeKind::Task(_) => true,
-                TypeKind::Array { elem, .. } => self.has_task(*elem),
-                _ => false,
-            },
+            _ => false,
         }
     }
     /// Whether a default value of `t` must be built once per component

@@ -325,15 +325,6 @@ impl Machine {
         pace(&mut *self.clock, self.interrupted.as_deref(), seconds)
     }
 
-    /// A copy of the tasks' state (a rehearsal runs on it).
-    pub(crate) fn save_tasks(&self) -> tasking::Sched {
-        self.sched.clone()
-    }
-
-    pub(crate) fn restore_tasks(&mut self, s: tasking::Sched) {
-        self.sched = s;
-    }
-
     /// `:tasks`: every task and what it waits for.
     pub fn describe_tasks(&self, chk: ProgramRef<'_>) -> Vec<String> {
         self.sched

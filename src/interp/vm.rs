@@ -1288,51 +1288,26 @@ impl<'a> Run<'a> {
         }
         self.rerun();
         let me = self.m.sched.cur;
-        let deps: &[tasking::Tid] = if all {
-            &self.m.sched.library
+        let sc = &self.m.sched;
+        let deps: Vec<tasking::Tid> = if all {
+            sc.library.clone()
         } else {
-            self.m.sched.threads[me]
-                .masters
-                .last()
-                .map_or(&[], |m| &m[..])
+            sc.threads[me].masters.last().cloned().unwrap_or_default()
         };
+        // Tasks created but never activated (an exception before the
+        // `begin`) are not waited for: they end now.
+        for &t in &deps {
+            if self.m.sched.threads[t].wait == tasking::Wait::Unactivated {
+                self.end_thread(t, false);
+            }
+        }
         let done = deps
             .iter()
             .all(|d| self.m.sched.threads[*d].wait == tasking::Wait::Terminated);
         if !done {
-            // Tasks created but never activated (an exception before the
-            // `begin`) are not waited for: they end now.
-            let never: Vec<tasking::Tid> = deps
-                .iter()
-                .copied()
-                .filter(|d| self.m.sched.threads[*d].wait == tasking::Wait::Unactivated)
-                .collect();
-            for t in never {
-                self.end_thread(t, false);
-            }
-            let done = self.m.sched.threads[me]
-                .masters
-                .last()
-                .filter(|_| !all)
-                .map_or_else(
-                    || {
-                        self.m
-                            .sched
-                            .library
-                            .iter()
-                            .all(|d| self.m.sched.threads[*d].wait == tasking::Wait::Terminated)
-                    },
-                    |m| {
-                        m.iter()
-                            .all(|d| self.m.sched.threads[*d].wait == tasking::Wait::Terminated)
-                    },
-                );
-            if !done {
-                self.m.sched.block(tasking::Wait::Dependents, true, span);
-            }
-            return done;
+            self.m.sched.block(tasking::Wait::Dependents, true, span);
         }
-        true
+        done
     }
 
     /// Starts the rendezvous with caller `c`: its arguments into the
