@@ -200,7 +200,7 @@ impl Checker {
                 }
                 let id = self.new_loop();
                 self.loops.push((label.as_ref().map(|l| l.key.clone()), id));
-                let k = match scheme {
+                let k = match &**scheme {
                     ast::LoopScheme::Plain => {
                         let body = self.scoped_stmts(body);
                         StmtKind::Loop { id, body }
@@ -403,7 +403,7 @@ impl Checker {
                 entry,
                 params,
                 body,
-            } => match self.accept(entry, params, body.as_ref(), sp) {
+            } => match self.accept(entry, params, body.as_deref(), sp) {
                 Some(a) => StmtKind::Accept(Box::new(a)),
                 None => return,
             },

@@ -462,7 +462,7 @@ impl Checker {
         );
         let ret_stmt = ast::Block {
             stmts: vec![ast::Stmt {
-                kind: ast::StmtKind::Return(Some(b.barrier.clone())),
+                kind: ast::StmtKind::Return(Some(Box::new(b.barrier.clone()))),
                 span: b.barrier.span,
             }],
             handlers: Vec::new(),
@@ -998,7 +998,7 @@ impl Checker {
                     else {
                         continue;
                     };
-                    let Some(x) = self.accept(entry, params, body.as_ref(), acc.span) else {
+                    let Some(x) = self.accept(entry, params, body.as_deref(), acc.span) else {
                         continue;
                     };
                     let then = self.scoped(then);

@@ -32,7 +32,7 @@ pub struct CompilationUnit {
 pub enum TopItem {
     With(Vec<Name>, Span),
     Use(Vec<Name>, Span),
-    Decl(Decl),
+    Decl(Box<Decl>),
     Stmt(Stmt),
 }
 
@@ -323,45 +323,45 @@ pub struct Stmt {
 #[derive(Clone, Debug, PartialEq)]
 pub enum StmtKind {
     Null,
-    Assign(Expr, Expr),
+    Assign(Box<Expr>, Box<Expr>),
     /// A procedure call or entry call (a name, possibly with arguments).
-    Call(Expr),
+    Call(Box<Expr>),
     If {
         arms: Vec<(Expr, Vec<Stmt>)>,
         els: Option<Vec<Stmt>>,
     },
     Case {
-        subject: Expr,
+        subject: Box<Expr>,
         arms: Vec<CaseArm<Vec<Stmt>>>,
     },
     Loop {
-        label: Option<Ident>,
-        scheme: LoopScheme,
+        label: Option<Box<Ident>>,
+        scheme: Box<LoopScheme>,
         body: Vec<Stmt>,
-        end_label: Option<Ident>,
+        end_label: Option<Box<Ident>>,
     },
     Exit {
-        label: Option<Ident>,
-        cond: Option<Expr>,
+        label: Option<Box<Ident>>,
+        cond: Option<Box<Expr>>,
     },
-    Return(Option<Expr>),
+    Return(Option<Box<Expr>>),
     Block {
-        label: Option<Ident>,
+        label: Option<Box<Ident>>,
         decls: Vec<Decl>,
-        body: Block,
+        body: Box<Block>,
     },
     Raise {
-        name: Option<Name>,
-        message: Option<Expr>,
+        name: Option<Box<Name>>,
+        message: Option<Box<Expr>>,
     },
     /// `delay D;` or `delay until T;` (true).
-    Delay(bool, Expr),
+    Delay(bool, Box<Expr>),
     /// `abort T1, T2;`
     Abort(Vec<Expr>),
     Accept {
-        entry: Ident,
+        entry: Box<Ident>,
         params: Vec<Param>,
-        body: Option<Block>,
+        body: Option<Box<Block>>,
     },
     Select(Vec<SelectAlt>),
     /// A declaration among statements (script mode only).

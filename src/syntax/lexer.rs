@@ -225,6 +225,8 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
         }
         break;
     }
+    // The parser holds every token at once: no growth slack on a big file.
+    toks.shrink_to_fit();
     (toks, diags)
 }
 

@@ -889,7 +889,10 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         )
         .then(closing(Kw::Case, empty()).map(|((), missing)| missing))
         .validate(unclosed!("case"))
-        .map(|(subject, arms)| StmtKind::Case { subject, arms });
+        .map(|(subject, arms)| StmtKind::Case {
+            subject: Box::new(subject),
+            arms,
+        });
     let scheme = choice((
         kw!(While).ignore_then(expr.clone()).map(LoopScheme::While),
         kw!(For)
@@ -924,10 +927,10 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .map(|(x, (end_label, missing))| ((x, end_label), missing))
         .validate(unclosed!("loop"))
         .map(|(((label, scheme), body), end_label)| StmtKind::Loop {
-            label,
-            scheme,
+            label: label.map(Box::new),
+            scheme: Box::new(scheme),
             body,
-            end_label,
+            end_label: end_label.map(Box::new),
         });
     // A `declare` block whose `end` never comes (the text ends first) is
     // reported once, as unclosed, and taken as ended: trying it again as
@@ -979,33 +982,48 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .then(declare_block.or(plain_block))
         .map(|(label, (decls, body))| ((label, decls), body))
         .map(|((label, decls), body)| StmtKind::Block {
-            label,
+            label: label.map(Box::new),
             decls: decls.unwrap_or_default(),
-            body,
+            body: Box::new(body),
         })
         // An unclosed block statement is tried again after the recovery of
         // the statement around it; remembering each attempt by its position
         // keeps nested unclosed blocks from taking exponential time.
         .memoized();
+    // Only where a block can start: a memo entry at every statement of a
+    // long program would cost more memory than the statements.
+    let block_stmt = choice((
+        kw!(Declare).ignored(),
+        kw!(Begin).ignored(),
+        label.clone().ignored(),
+    ))
+    .rewind()
+    .ignore_then(block_stmt);
     let exit_stmt = kw!(Exit)
         .ignore_then(ident().or_not())
         .then(kw!(When).ignore_then(expr.clone()).or_not())
         .then_ignore(semi())
-        .map(|(label, cond)| StmtKind::Exit { label, cond });
+        .map(|(label, cond)| StmtKind::Exit {
+            label: label.map(Box::new),
+            cond: cond.map(Box::new),
+        });
     let return_stmt = kw!(Return)
         .ignore_then(expr.clone().or_not())
         .then_ignore(semi())
-        .map(StmtKind::Return);
+        .map(|e: Option<Expr>| StmtKind::Return(e.map(Box::new)));
     let raise_stmt = kw!(Raise)
         .ignore_then(name().or_not())
         .then(kw!(With).ignore_then(expr.clone()).or_not())
         .then_ignore(semi())
-        .map(|(name, message)| StmtKind::Raise { name, message });
+        .map(|(name, message)| StmtKind::Raise {
+            name: name.map(Box::new),
+            message: message.map(Box::new),
+        });
     let delay_stmt = kw!(Delay)
         .ignore_then(kw!(Until).or_not())
         .then(expr.clone())
         .then_ignore(semi())
-        .map(|(until, d)| StmtKind::Delay(until.is_some(), d));
+        .map(|(until, d)| StmtKind::Delay(until.is_some(), Box::new(d)));
     let abort_stmt = kw!(Abort)
         .ignore_then(
             expr.clone()
@@ -1038,9 +1056,9 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .then_ignore(semi())
         .map_with(|((entry, params), body), e| Stmt {
             kind: StmtKind::Accept {
-                entry,
+                entry: Box::new(entry),
                 params,
-                body,
+                body: body.map(Box::new),
             },
             span: e.span(),
         })
@@ -1106,7 +1124,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .then(just(Token::Assign).ignore_then(expr.clone()).or_not())
         .then_ignore(soft_semi())
         .validate(|(target, value), _, emitter| match (target, value) {
-            (t, Some(v)) => StmtKind::Assign(t, v),
+            (t, Some(v)) => StmtKind::Assign(Box::new(t), Box::new(v)),
             // `X = 5;` as a statement: a beginner's assignment. Say so, and
             // go on as if it were one, so that this is the only error.
             (
@@ -1120,9 +1138,9 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                     span,
                     "`=` compares; an assignment is written `:=` (`X := 5;`)",
                 ));
-                StmtKind::Assign(*l, *r)
+                StmtKind::Assign(l, r)
             }
-            (t, None) => StmtKind::Call(t),
+            (t, None) => StmtKind::Call(Box::new(t)),
         });
 
     // A declaration in statement position (script mode): `X : T := ...;` etc.
@@ -1437,7 +1455,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 .map(|x: Expr| {
                     let span = x.span;
                     let ret = Stmt {
-                        kind: StmtKind::Return(Some(x)),
+                        kind: StmtKind::Return(Some(Box::new(x))),
                         span,
                     };
                     SubTail::Body(
@@ -1799,7 +1817,7 @@ fn compilation<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, CompilationUnit, Ex<'t>> 
     let item = choice((
         with,
         p.stmt.clone().map(|s| match s.kind {
-            StmtKind::Decl(d) => TopItem::Decl(*d),
+            StmtKind::Decl(d) => TopItem::Decl(d),
             _ => TopItem::Stmt(s),
         }),
     ));
