@@ -31,9 +31,10 @@ impl SharedBuf {
     }
 }
 
-/// Options a script asks for in a first-lines comment `-- adair: --robot rm-501 --trace`.
-fn directives(text: &str) -> (String, bool) {
-    let mut robot = "rv-m1".to_string();
+/// Options a script asks for in a first-lines comment `-- adair: --robot rm-501 --trace`
+/// (the robot is `default_robot` when the script names none).
+fn directives(text: &str, default_robot: &str) -> (String, bool) {
+    let mut robot = default_robot.to_string();
     let mut trace = false;
     for line in text.lines().take_while(|l| l.starts_with("--")) {
         if let Some(rest) = line.strip_prefix("-- adair:") {
@@ -81,6 +82,10 @@ pub struct Target {
     pub engine: Option<crate::interp::vm::Engine>,
     /// The simulated devices (a script's `--devices` directive).
     pub devices: Option<crate::devices::Devices>,
+    /// The robot of scripts that name none (`adair test --robot`; None: rv-m1).
+    pub robot: Option<String>,
+    /// Every script's motion trace in its output (`adair test --trace`).
+    pub trace: bool,
 }
 
 /// [`run_case`] on `target`.
@@ -90,7 +95,8 @@ pub fn run_case_on(path: &Path, target: &Target) -> String {
         Ok(t) => t,
         Err(e) => return format!("-- stderr --\nerror: cannot read {name}: {e}\n-- exit: 2\n"),
     };
-    let (robot, trace) = directives(&text);
+    let (robot, trace) = directives(&text, target.robot.as_deref().unwrap_or("rv-m1"));
+    let trace = trace || target.trace;
     let devices = match devices_directive(&text) {
         None => None,
         Some(f) => {

@@ -11,7 +11,8 @@ use std::process::ExitCode;
 #[command(
     name = "adair",
     version,
-    about = "AdaIR: Ada for industrial robots. Check, run and test robot programs."
+    about = "AdaIR: Ada for industrial robots. Check, run and test robot programs.",
+    after_help = "`adair FILE.air [OPTIONS]` is short for `adair run FILE.air [OPTIONS]`."
 )]
 struct Cli {
     /// Colours in diagnostics: auto (only on a terminal, and not with NO_COLOR), always, never.
@@ -176,6 +177,13 @@ enum Command {
         /// Write the actual output into the .out files (with --port: what the arm did).
         #[arg(long)]
         bless: bool,
+        /// The simulated robot of scripts that name none in a `-- adair: --robot R` first
+        /// line: rv-m1 (default) or rm-501.
+        #[arg(long, value_parser = ["rv-m1", "rm-501"])]
+        robot: Option<String>,
+        /// Every script's motion trace in its output (also in what --bless writes).
+        #[arg(long)]
+        trace: bool,
         #[command(flatten)]
         serial: SerialOpts,
         /// With --port: rehearse each script on the simulator from the arm's
@@ -200,8 +208,30 @@ fn read(path: &PathBuf) -> Result<String, ExitCode> {
     })
 }
 
+/// The arguments with `adair FILE.air ...` read as `adair run FILE.air ...`:
+/// a first argument (after the global options) naming a program file.
+fn with_shorthand(mut args: Vec<std::ffi::OsString>) -> Vec<std::ffi::OsString> {
+    // Global options that take a value in the next argument.
+    const VALUED: [&str; 3] = ["--color", "--max-memory", "--devices"];
+    let mut i = 1;
+    while i < args.len() {
+        let a = args[i].to_string_lossy();
+        if VALUED.contains(&a.as_ref()) {
+            i += 2;
+        } else if a.starts_with('-') {
+            i += 1;
+        } else {
+            if a.ends_with(".air") || a.ends_with(".adb") {
+                args.insert(i, "run".into());
+            }
+            break;
+        }
+    }
+    args
+}
+
 fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
+    let cli = match Cli::try_parse_from(with_shorthand(std::env::args_os().collect())) {
         Ok(c) => c,
         Err(e) => {
             if !e.use_stderr() {
@@ -513,6 +543,8 @@ fn real_main(
         Some(Command::Test {
             paths,
             bless,
+            robot,
+            trace,
             serial,
             rehearse,
         }) => {
@@ -521,6 +553,8 @@ fn real_main(
                 rehearse,
                 engine: None,
                 devices: devices.clone(),
+                robot,
+                trace,
             };
             let paths = if paths.is_empty() {
                 vec![PathBuf::from(".")]

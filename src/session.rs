@@ -101,6 +101,10 @@ pub struct Session {
     loaded: Vec<bool>,
     /// A stdlib file is being checked.
     in_stdlib: bool,
+    /// Files of packages named by `with` that are loaded (or being loaded).
+    with_files: Vec<std::path::PathBuf>,
+    /// Their elaboration, to run before the program that names them.
+    elaboration: Vec<Stmt>,
 }
 
 /// How a run ended.
@@ -133,6 +137,8 @@ impl Session {
             strict: false,
             warnings_to: None,
             robot: None,
+            with_files: Vec::new(),
+            elaboration: Vec::new(),
             loaded: Vec::new(),
             in_stdlib: false,
         };
@@ -353,11 +359,22 @@ impl Session {
         let is_script = script
             || unit.items.iter().any(|i| matches!(i, TopItem::Stmt(_)))
             || (!withs && !main_candidate && !self.in_stdlib);
-        // The stdlib files this unit names.
+        // The stdlib files this unit names, and the files of the other
+        // packages it names (beside it, unless the unit declares them).
         for item in &unit.items {
             if let TopItem::With(names, _) = item {
                 for n in names {
-                    self.need_package(&crate::syntax::parser::expr_text(n));
+                    let pkg = crate::syntax::parser::expr_text(n);
+                    self.need_package(&pkg);
+                    if !self.in_stdlib
+                        && !STDLIB
+                            .iter()
+                            .any(|u| u.provides.iter().any(|p| p.eq_ignore_ascii_case(&pkg)))
+                        && !declares_package(&unit, &pkg)
+                        && let Err(d) = self.load_with_file(name, &pkg, n.span)
+                    {
+                        diags.extend(d);
+                    }
                 }
             }
         }
@@ -396,17 +413,68 @@ impl Session {
             }
         }
         diags.sort_by_key(|d| (d.span.context, d.span.start));
-        // With errors, only the errors: a warning is often their echo (a
-        // variable "never read" because its use did not check).
+        // With errors, every diagnostic but a variable "never read": that
+        // one is often their echo (its use did not check).
         if diags.iter().any(|d| !d.is_warning()) {
-            diags.retain(|d| !d.is_warning());
+            diags.retain(|d| !d.is_warning() || !d.message.ends_with(" is never read"));
             return Err(diags);
         }
         if self.strict && !diags.is_empty() {
             return Err(diags);
         }
         self.warnings = diags;
-        Ok((stmts, if is_script { None } else { main }))
+        // The packages this unit names elaborate first.
+        // (A stdlib file elaborates when loaded: not theirs.)
+        let mut all = if self.in_stdlib {
+            Vec::new()
+        } else {
+            std::mem::take(&mut self.elaboration)
+        };
+        all.extend(stmts);
+        Ok((all, if is_script { None } else { main }))
+    }
+
+    /// Checks the file of package `pkg` named by `with` in the program
+    /// `program`: `pkg.air` beside it (lower case, `-` for `.` as GNAT
+    /// names files), else GNAT's `pkg.ads` and `pkg.adb`. Its elaboration
+    /// joins [`Session::elaboration`]. No file: nothing (the checker says
+    /// that no such unit exists).
+    fn load_with_file(
+        &mut self,
+        program: &str,
+        pkg: &str,
+        at: Span,
+    ) -> Result<(), Vec<Diagnostic>> {
+        let dir = std::path::Path::new(program)
+            .parent()
+            .unwrap_or(std::path::Path::new(""));
+        let stem = pkg.to_lowercase().replace('.', "-");
+        let air = dir.join(format!("{stem}.air"));
+        let files: Vec<std::path::PathBuf> = if air.is_file() {
+            vec![air]
+        } else {
+            ["ads", "adb"]
+                .iter()
+                .map(|e| dir.join(format!("{stem}.{e}")))
+                .filter(|p| p.is_file())
+                .collect()
+        };
+        for f in files {
+            if self.with_files.contains(&f) {
+                continue;
+            }
+            self.with_files.push(f.clone());
+            let shown = f.to_string_lossy().replace('\\', "/");
+            let text = std::fs::read_to_string(&f).map_err(|e| {
+                vec![Diagnostic::syntax(
+                    at,
+                    format!("cannot read {shown} (the file of package {pkg}): {e}"),
+                )]
+            })?;
+            let (stmts, _) = self.check_source(&shown, &text, false)?;
+            self.elaboration = stmts;
+        }
+        Ok(())
     }
 
     /// The warnings of the last successful check, taken.
@@ -538,3 +606,17 @@ pub fn rehearse(
 
 /// What `adair run --rehearse` says on stderr before it moves the arm.
 pub const REHEARSED: &str = "adair: the rehearsal on the simulator ended without an unhandled exception; moving the arm now (a rehearsal cannot cover branches that depend on input)";
+
+/// Whether `unit` declares the package `name` itself.
+fn declares_package(unit: &crate::syntax::ast::CompilationUnit, name: &str) -> bool {
+    use crate::syntax::ast::{DeclKind, TopItem};
+    unit.items.iter().any(|i| match i {
+        TopItem::Decl(d) => match &d.kind {
+            DeclKind::PackageSpec(p) => {
+                crate::syntax::parser::expr_text(&p.name).eq_ignore_ascii_case(name)
+            }
+            _ => false,
+        },
+        _ => false,
+    })
+}

@@ -398,3 +398,61 @@ fn the_repl_takes_robot_and_refuses_rehearse_without_a_port() {
     assert_eq!(code, 2);
     assert!(err.contains("--port"), "{err}");
 }
+
+#[test]
+fn a_first_argument_naming_a_program_is_short_for_run() {
+    let f = temp_file(
+        "short.air",
+        "Put_Line (\"short\");\nInitRobot;\nMoveAxesAbsolute ((0.0, 0.0, 0.0, 0.0, 0.0));\n",
+    );
+    let (code, out, err) = adair(&[&f]);
+    assert_eq!((code, out.as_str()), (0, "short\n"), "{err}");
+    // Options after the file are `run`'s; global options may come first.
+    let (code, out, err) = adair(&["--color", "never", &f, "--trace", "--robot", "rm-501"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out, "short\n");
+    // The trace (on stderr) of the RM-501, whose zero pose is not the
+    // RV-M1's (0, 0, 889.0).
+    assert!(err.contains("MoveAxesAbsolute at"), "{err}");
+    assert!(!err.contains("889.0"), "{err}");
+    // Anything else is still a usage error.
+    let (code, _, err) = adair(&["short.txt"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("unrecognized subcommand"), "{err}");
+    let (_, help, _) = adair(&["--help"]);
+    assert!(help.contains("adair FILE.air"), "{help}");
+}
+
+#[test]
+fn test_takes_the_default_robot_and_the_trace() {
+    // J3 at 100 degrees is inside the RV-M1's limits (0 .. 110) and outside
+    // the RM-501's (0 .. 90): the same script passes on one robot only.
+    let script = "InitRobot;\nMoveAxesAbsolute ((0.0, 0.0, Rad (100.0), 0.0, 0.0));\nPut_Line (\"moved\");\n";
+    let f = temp_file("robot_default.air", script);
+    let out_file = f.replace(".air", ".out");
+    std::fs::write(&out_file, "moved\n").expect("write");
+    let (code, out, err) = adair(&["test", &f]);
+    assert_eq!(code, 0, "{out}{err}");
+    let (code, out, err) = adair(&["test", "--robot", "rm-501", &f]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(
+        out.contains("OutOfReach") || out.contains("OUTOFREACH"),
+        "{out}{err}"
+    );
+    // A script's own `-- adair: --robot` line wins over the default.
+    std::fs::write(&f, format!("-- adair: --robot rv-m1\n{script}")).expect("write");
+    let (code, out, err) = adair(&["test", "--robot", "rm-501", &f]);
+    assert_eq!(code, 0, "{out}{err}");
+    // --trace puts the motion into the output: the recorded one lacks it.
+    let (code, out, err) = adair(&["test", "--trace", &f]);
+    assert_eq!(code, 1, "{out}{err}");
+    let (code, _, err) = adair(&["test", "--trace", "--bless", &f]);
+    assert_eq!(code, 0, "{err}");
+    let blessed = std::fs::read_to_string(&out_file).expect("read");
+    assert!(
+        blessed.contains("moved\n") && blessed.lines().count() > 1,
+        "{blessed}"
+    );
+    let (code, _, err) = adair(&["test", "--robot", "ur5", &f]);
+    assert_eq!(code, 2, "{err}");
+}

@@ -288,10 +288,6 @@ impl Checker {
         self.packages[cal]
             .names
             .insert("duration".into(), vec![Entity::Type(DURATION)]);
-        let dur = self.types.list.get_mut(DURATION as usize);
-        if let Some(d) = dur {
-            d.static_frange = Some((-86400.0 * 365.0 * 100.0, 86400.0 * 365.0 * 100.0));
-        }
     }
 
     /// Registers the text of a source so that hints can quote it.
@@ -645,7 +641,16 @@ impl Checker {
                 ast::TopItem::Stmt(s) => self.stmt(s, &mut out),
             }
         }
-        self.activate_library_tasks(&mut out);
+        // At the end of the unit: where the text ends.
+        let end = unit.items.last().map_or(crate::diag::span(0, 0, 0), |i| {
+            let sp = match i {
+                ast::TopItem::With(_, sp) | ast::TopItem::Use(_, sp) => *sp,
+                ast::TopItem::Decl(d) => d.span,
+                ast::TopItem::Stmt(s) => s.span,
+            };
+            crate::diag::span(sp.context, sp.end, sp.end)
+        });
+        self.activate_library_tasks(&mut out, end);
         (out, main)
     }
 
@@ -653,11 +658,11 @@ impl Checker {
     /// next statement that is no declaration, or at the end of the unit
     /// (before the main program runs), so that they can call each other
     /// whatever their order of declaration.
-    pub(super) fn activate_library_tasks(&mut self, out: &mut Vec<Stmt>) {
+    pub(super) fn activate_library_tasks(&mut self, out: &mut Vec<Stmt>, at: Span) {
         if std::mem::take(&mut self.library_tasks) {
             out.push(Stmt {
                 kind: StmtKind::Activate,
-                span: crate::diag::span(0, 0, 0),
+                span: crate::diag::span(at.context, at.start, at.start),
             });
         }
     }

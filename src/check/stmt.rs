@@ -94,7 +94,7 @@ impl Checker {
     pub(super) fn stmt(&mut self, s: &ast::Stmt, out: &mut Vec<Stmt>) {
         let sp = s.span;
         if self.masters.is_empty() && !matches!(s.kind, S::Decl(_) | S::Null | S::Error) {
-            self.activate_library_tasks(out);
+            self.activate_library_tasks(out, sp);
         }
         let kind = match &s.kind {
             S::Null | S::Error => return,

@@ -283,7 +283,10 @@ impl Types {
                 bounds: None,
             },
         );
-        t.add("Duration", TypeKind::Float);
+        let d = t.add("Duration", TypeKind::Float);
+        // GNAT's Duration: 64-bit fixed point, Duration'Small = 1 ns.
+        t.list[d as usize].static_frange =
+            Some((-9_223_372_036.854_775_808, 9_223_372_036.854_775_807));
         t.add("Exception_Occurrence", TypeKind::Occurrence);
         t.add("Time", TypeKind::Time);
         t

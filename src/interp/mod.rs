@@ -1023,12 +1023,13 @@ impl Run<'_> {
                     _ => Err(self.check_failed("access check failed", e.span)),
                 }
             }
-            ExKind::FloatBin(op, a, b) if *op != FloatOp::PowI && *op != FloatOp::Div => {
+            ExKind::FloatBin(op, a, b) if *op != FloatOp::PowI => {
                 let x = self.eval_real(a)?;
                 let y = self.eval_real(b)?;
                 Ok(match op {
                     FloatOp::Add => x + y,
                     FloatOp::Sub => x - y,
+                    FloatOp::Div => x / y,
                     _ => x * y,
                 })
             }
@@ -1125,19 +1126,10 @@ impl Run<'_> {
                     FloatOp::Sub => x - yv.real(),
                     FloatOp::Mul => x * yv.real(),
                     FloatOp::Div => {
-                        let y = yv.real();
-                        if y == 0.0 {
-                            return Err(self.check_failed("divide by zero", e.span));
-                        }
-                        x / y
+                        // IEEE as in GNAT (Float'Machine_Overflows is False).
+                        x / yv.real()
                     }
-                    FloatOp::PowI => {
-                        let n = yv.int();
-                        if n < 0 && x == 0.0 {
-                            return Err(self.check_failed("divide by zero", e.span));
-                        }
-                        x.powi(n as i32)
-                    }
+                    FloatOp::PowI => x.powi(yv.int() as i32),
                 })
             }
             ExKind::Cmp(op, a, b) => {
@@ -1688,14 +1680,7 @@ impl Run<'_> {
             }
             AttrOp::ImageInt => Value::str(&value::image_int(a0.int())),
             AttrOp::ImageFloat => Value::str(&value::image_float(a0.real())),
-            AttrOp::ImageDuration => {
-                let s = value::put_float(a0.real(), 1, 9, 0);
-                Value::str(&if s.starts_with('-') {
-                    s
-                } else {
-                    format!(" {s}")
-                })
-            }
+            AttrOp::ImageDuration => Value::str(&value::image_duration(a0.real())),
             AttrOp::ImageChar => {
                 let c = char::from_u32(a0.int() as u32).unwrap_or('?');
                 Value::str(&crate::check::types::char_image(c))
@@ -1731,8 +1716,15 @@ impl Run<'_> {
                     None => return Err(self.bad_value(&a0, sp)),
                 }
             }
-            AttrOp::Succ => Value::Int(a0.int() + 1),
-            AttrOp::Pred => Value::Int(a0.int() - 1),
+            AttrOp::Succ | AttrOp::Pred => {
+                let v = a0.int() + if op == AttrOp::Succ { 1 } else { -1 };
+                // Past the base type's bounds: GNAT's overflow check.
+                let (lo, hi) = self.type_bounds(e.ty)?;
+                if v < lo.int() || v > hi.int() {
+                    return Err(self.check_failed("overflow check failed", sp));
+                }
+                Value::Int(v)
+            }
             AttrOp::Pos | AttrOp::Val => a0,
             AttrOp::Min | AttrOp::Max | AttrOp::FloatMin | AttrOp::FloatMax => {
                 let b = self.eval(&args[1])?;

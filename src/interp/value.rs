@@ -210,12 +210,15 @@ fn round_digits(x: f64, frac: usize, sci: bool) -> (Vec<u8>, i32) {
 pub fn put_float(x: f64, fore: usize, aft: usize, exp: usize) -> String {
     let aft = aft.max(1);
     let neg = x.is_sign_negative() && !x.is_nan();
-    if x.is_nan() {
-        return pad_left("NaN", fore + aft + 1);
-    }
-    if x.is_infinite() {
-        let s = if neg { "-Inf" } else { "+Inf" };
-        return pad_left(s, fore + aft + 1 + if exp > 0 { exp + 1 } else { 0 });
+    // GNAT: the text at the left of the whole field, the rest `*`.
+    if !x.is_finite() {
+        let s = match (x.is_nan(), neg) {
+            (true, _) => "NaN",
+            (false, true) => "-Inf",
+            (false, false) => "+Inf",
+        };
+        let width = fore + aft + 1 + if exp > 0 { exp + 1 } else { 0 };
+        return format!("{s:*<width$}");
     }
     let mut body = String::new();
     if exp > 0 {
@@ -262,11 +265,23 @@ pub fn put_float(x: f64, fore: usize, aft: usize, exp: usize) -> String {
 /// `Float'Image` (GNAT, Float'Digits = 6): `" 8.30600E+02"`.
 pub fn image_float(x: f64) -> String {
     let s = put_float(x, 1, 5, 3);
-    if s.starts_with('-') {
+    // GNAT: `+Inf*******`, `NaN********` without the blank of a sign.
+    if s.starts_with('-') || !x.is_finite() {
         s
     } else {
         format!(" {s}")
     }
+}
+
+/// `Duration'Image`: GNAT's Duration is a 64-bit count of nanoseconds
+/// (`Duration'Small` = 1 ns), so the value is rounded to whole nanoseconds
+/// within that range: `" 11.000000000"`, `" 9223372036.854775807"`.
+pub fn image_duration(x: f64) -> String {
+    // `as` saturates at i64's bounds (and takes NaN to 0).
+    let ns = (x * 1e9).round() as i64;
+    let sign = if ns < 0 { '-' } else { ' ' };
+    let a = ns.unsigned_abs();
+    format!("{sign}{}.{:09}", a / 1_000_000_000, a % 1_000_000_000)
 }
 
 pub fn pad_left(s: &str, width: usize) -> String {

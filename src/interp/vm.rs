@@ -49,7 +49,7 @@ enum Op<'p> {
     /// `IntBin` with an integer literal on the right.
     IntBinK(IntOp, Var, Var, i64, Span),
     IntNeg(Var, Var, Span),
-    FloatBin(FloatOp, Var, Var, Var, Span),
+    FloatBin(FloatOp, Var, Var, Var),
     ToReal(Var, Var),
     Cmp(CmpOp, Var, Var, Var),
     /// `Cmp` of an integer with an integer literal.
@@ -359,7 +359,7 @@ impl<'p> Compiler<'p, '_> {
             ExKind::FloatBin(op, a, b) => {
                 let x = self.left(a, b);
                 let y = self.expr(b);
-                self.ops.push(Op::FloatBin(*op, dst, x, y, span));
+                self.ops.push(Op::FloatBin(*op, dst, x, y));
             }
             ExKind::IntToFloat(a) => {
                 let x = self.expr(a);
@@ -1149,7 +1149,10 @@ impl<'a> Run<'a> {
         }
         // The environment waits for the library-level tasks, also after an
         // exception (which then ends the run).
-        if self.m.sched.active() && !matches!(r, Err(Flow::Exit(_))) {
+        // (Not after a deadlock: that diagnostic already names every task.)
+        let deadlocked =
+            matches!(&r, Err(Flow::Raise(o)) if o.message.starts_with(tasking::DEADLOCK));
+        if self.m.sched.active() && !deadlocked && !matches!(r, Err(Flow::Exit(_))) {
             // The REPL keeps its tasks: the entry ends when no task is ready.
             let last = if self.m.keep_tasks {
                 Op::Settle
@@ -1818,29 +1821,16 @@ impl<'a> Run<'a> {
                     self.int_op(IntOp::Sub, 0, x, *span)
                         .map(|v| self.put(*d, Value::Int(v)))
                 }
-                Op::FloatBin(o, d, a, b, span) => {
+                Op::FloatBin(o, d, a, b) => {
                     let x = self.m.stack[self.sl(*a)].real();
                     let yv = &self.m.stack[self.sl(*b)];
                     let r = match o {
                         FloatOp::Add => Ok(x + yv.real()),
                         FloatOp::Sub => Ok(x - yv.real()),
                         FloatOp::Mul => Ok(x * yv.real()),
-                        FloatOp::Div => {
-                            let y = yv.real();
-                            if y == 0.0 {
-                                Err(self.check_failed("divide by zero", *span))
-                            } else {
-                                Ok(x / y)
-                            }
-                        }
-                        FloatOp::PowI => {
-                            let n = yv.int();
-                            if n < 0 && x == 0.0 {
-                                Err(self.check_failed("divide by zero", *span))
-                            } else {
-                                Ok(x.powi(n as i32))
-                            }
-                        }
+                        // IEEE as in GNAT (Float'Machine_Overflows is False).
+                        FloatOp::Div => Ok(x / yv.real()),
+                        FloatOp::PowI => Ok(x.powi(yv.int() as i32)),
                     };
                     r.map(|v| self.put(*d, Value::Real(v)))
                 }

@@ -231,10 +231,31 @@ pub fn expr<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, Expr, Ex<'t>> {
             kw!(Or).to(BinOp::Or),
             kw!(Xor).to(BinOp::Xor),
         ));
+        // Ada: a chain of one logical operator only (`A and B or C` needs
+        // parentheses).
         relation
             .clone()
-            .foldl_with(logop.then(relation).repeated(), |a, (op, b), e| {
-                mk(ExprKind::Binary(op, Box::new(a), Box::new(b)), e.span())
+            .then(
+                logop
+                    .map_with(|op, e| (op, e.span()))
+                    .then(relation)
+                    .repeated()
+                    .collect::<Vec<_>>(),
+            )
+            .validate(|(first, rest), _, emitter| {
+                if let Some(w) = rest.windows(2).find(|w| w[0].0.0 != w[1].0.0) {
+                    let (a, b) = (w[0].0.0.symbol(), w[1].0.0.symbol());
+                    emitter.emit(Rich::custom(
+                        w[1].0.1,
+                        format!(
+                            "`{a}` and `{b}` mixed without parentheses: write `(X {a} Y) {b} Z`"
+                        ),
+                    ));
+                }
+                rest.into_iter().fold(first, |a, ((op, _), b)| {
+                    let sp = join(a.span, b.span);
+                    mk(ExprKind::Binary(op, Box::new(a), Box::new(b)), sp)
+                })
             })
             .labelled("expression")
             .boxed()
@@ -594,9 +615,52 @@ fn simple_expr<'t, I: TokIn<'t>>(
                     |a: Expr, op, b: Expr, e| mk(ExprKind::Binary(op, Box::new(a), Box::new(b)), e.span()),
                 ),
             ))
+            .validate(|x, _, emitter| {
+                unary_sign_first(&x, true, &mut |sp| {
+                    emitter.emit(Rich::custom(
+                        sp,
+                        "a unary `-` or `+` only begins an expression: put this operand in parentheses (`2 * (-3)`)",
+                    ))
+                });
+                x
+            })
             .boxed()
     })
     .boxed()
+}
+
+/// Ada's simple expression: a unary `+`/`-` only at its start (`-A * B`,
+/// `-A + B`), never after another operator (`2 * -3`, `A + -B`, `abs -3`,
+/// `2 ** -1`). Walks the operators of one simple expression; parentheses,
+/// calls and other primaries were checked as their own expressions.
+fn unary_sign_first(e: &Expr, first: bool, bad: &mut impl FnMut(Span)) {
+    // An operator called by its symbol (`"abs" (-4)`) is a primary: its
+    // operands end before its closing parenthesis.
+    let last = match &e.kind {
+        ExprKind::Unary(_, a) | ExprKind::Binary(_, _, a) => a.span.end,
+        _ => return,
+    };
+    if last != e.span.end {
+        return;
+    }
+    match &e.kind {
+        ExprKind::Unary(UnOp::Neg | UnOp::Plus, a) => {
+            if !first {
+                bad(e.span);
+            }
+            unary_sign_first(a, false, bad);
+        }
+        ExprKind::Unary(_, a) => unary_sign_first(a, false, bad),
+        ExprKind::Binary(BinOp::Add | BinOp::Sub | BinOp::Cat, l, r) => {
+            unary_sign_first(l, first, bad);
+            unary_sign_first(r, false, bad);
+        }
+        ExprKind::Binary(BinOp::Mul | BinOp::Div | BinOp::Mod | BinOp::Rem | BinOp::Pow, l, r) => {
+            unary_sign_first(l, false, bad);
+            unary_sign_first(r, false, bad);
+        }
+        _ => {}
+    }
 }
 
 /// A bare name (for `with`, `use`, subtype marks, exception choices).
@@ -1301,8 +1365,19 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
             .ignore_then(st_ind.clone())
             .map(TypeDef::Access),
     ));
+    // `type R (N : Integer) is ...`, `task type T (Id : Integer) is ...`:
+    // said once, and the rest of the declaration is read as without them.
+    let discriminants = params(expr.clone()).validate(|ps, e, emitter| {
+        if !ps.is_empty() {
+            emitter.emit(Rich::custom(
+                e.span(),
+                "discriminants are not supported by AdaIR (see docs/differences.md)",
+            ));
+        }
+    });
     let type_decl = kw!(Type)
         .ignore_then(ident())
+        .then_ignore(discriminants.clone())
         .then(kw!(Is).ignore_then(type_def).or_not())
         .then_ignore(semi())
         .map(|(name, def)| DeclKind::Type {
@@ -1636,6 +1711,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         kw!(Type)
             .or_not()
             .then(ident())
+            .then_ignore(discriminants.clone())
             .then(
                 kw!(Is)
                     .ignore_then(
@@ -1712,6 +1788,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         kw!(Type)
             .or_not()
             .then(ident())
+            .then_ignore(discriminants.clone())
             .then_ignore(kw!(Is))
             .then(prot_op.repeated().collect::<Vec<_>>())
             .then(kw!(Private).ignore_then(decls.clone()).or_not())
