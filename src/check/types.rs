@@ -285,8 +285,7 @@ impl Types {
         );
         let d = t.add("Duration", TypeKind::Float);
         // GNAT's Duration: 64-bit fixed point, Duration'Small = 1 ns.
-        t.list[d as usize].static_frange =
-            Some((-9_223_372_036.854_775_808, 9_223_372_036.854_775_807));
+        t.list[d as usize].static_frange = Some((i64::MIN as f64 / 1e9, i64::MAX as f64 / 1e9));
         t.add("Exception_Occurrence", TypeKind::Occurrence);
         t.add("Time", TypeKind::Time);
         t
