@@ -348,17 +348,8 @@ impl Session {
         self.checker.add_text(id, text);
         let (unit, mut diags) = crate::syntax::parse_source(text, id);
         let Some(unit) = unit else { return Err(diags) };
-        use crate::syntax::ast::{DeclKind, TopItem};
-        // A script: statements at the top, or only declarations without a
-        // `with` and without a main procedure (tasks that do the work).
-        let main_candidate = unit.items.iter().any(|i| {
-            matches!(i, TopItem::Decl(d) if matches!(&d.kind,
-                DeclKind::SubprogramBody(b) if b.spec.params.is_empty() && b.spec.ret.is_none()))
-        });
-        let withs = unit.items.iter().any(|i| matches!(i, TopItem::With(..)));
-        let is_script = script
-            || unit.items.iter().any(|i| matches!(i, TopItem::Stmt(_)))
-            || (!withs && !main_candidate && !self.in_stdlib);
+        use crate::syntax::ast::TopItem;
+        let is_script = script || is_script_unit(&unit, self.in_stdlib);
         // The stdlib files this unit names, and the files of the other
         // packages it names (beside it, unless the unit declares them).
         for item in &unit.items {
@@ -619,4 +610,18 @@ fn declares_package(unit: &crate::syntax::ast::CompilationUnit, name: &str) -> b
         },
         _ => false,
     })
+}
+
+/// Whether `unit` is a script: statements at the top, or (outside the
+/// stdlib) only declarations without a `with` and without a main procedure
+/// (tasks that do the work).
+pub fn is_script_unit(unit: &crate::syntax::ast::CompilationUnit, in_stdlib: bool) -> bool {
+    use crate::syntax::ast::{DeclKind, TopItem};
+    let main_candidate = unit.items.iter().any(|i| {
+        matches!(i, TopItem::Decl(d) if matches!(&d.kind,
+            DeclKind::SubprogramBody(b) if b.spec.params.is_empty() && b.spec.ret.is_none()))
+    });
+    let withs = unit.items.iter().any(|i| matches!(i, TopItem::With(..)));
+    unit.items.iter().any(|i| matches!(i, TopItem::Stmt(_)))
+        || (!withs && !main_candidate && !in_stdlib)
 }

@@ -1105,3 +1105,55 @@ fn hover_on_an_exception_and_a_package_type() {
     );
     c.finish();
 }
+
+#[test]
+fn text_ending_in_a_half_typed_line_keeps_its_names() {
+    // The whole text does not parse (it ends inside a declaration): what
+    // comes before still gives hover, definition, symbols and completion.
+    let mut c = Client::start();
+    let text = "X : Integer := 3;\nT : ToolDescriptor;\nY : Integer := X + 1;\nZ : Float := T.";
+    c.open("t.air", text);
+    let (d, _) = c.diagnostics("t.air");
+    assert_eq!(d.len(), 1, "only the syntax error: {d:?}");
+    let v = c.result(
+        R::HoverRequest::METHOD,
+        at("t.air", pos(text, "X + 1", 0, 0)),
+    );
+    let h: lsp_types::Hover = serde_json::from_value(v).expect("a hover on X");
+    let lsp_types::HoverContents::Markup(m) = h.contents else {
+        panic!()
+    };
+    assert!(m.value.contains("X : Integer"), "{}", m.value);
+    let v = c.result(
+        R::GotoDefinition::METHOD,
+        at("t.air", pos(text, "X + 1", 0, 0)),
+    );
+    let l = match serde_json::from_value::<lsp_types::GotoDefinitionResponse>(v)
+        .expect("a definition")
+    {
+        lsp_types::GotoDefinitionResponse::Scalar(l) => l,
+        r => panic!("{r:?}"),
+    };
+    assert_eq!(l.range.start.line, 0);
+    let items = completion_at(&mut c, "t.air", pos(text, "T.", 0, 2));
+    assert!(
+        labels(&items)
+            .iter()
+            .any(|l| l.eq_ignore_ascii_case("CurrForce")),
+        "the fields of ToolDescriptor: {:?}",
+        labels(&items)
+    );
+    c.finish();
+}
+
+#[test]
+fn a_script_of_declarations_sees_the_adair_package_as_adair_check_does() {
+    let mut c = Client::start();
+    c.open(
+        "s.air",
+        "T : ToolDescriptor;\nF : Frame := Trans (0.0, 0.0, 1.0);\n",
+    );
+    let (d, _) = c.diagnostics("s.air");
+    assert!(d.is_empty(), "{d:?}");
+    c.finish();
+}

@@ -658,6 +658,24 @@ impl Checker {
     /// next statement that is no declaration, or at the end of the unit
     /// (before the main program runs), so that they can call each other
     /// whatever their order of declaration.
+    /// `T.E` in task T's own body, E not declared there: not an expanded
+    /// name but T's entry E (T the task object, declared outside its body).
+    pub(super) fn own_task_entry(&self, task: &ast::Ident, sel: &ast::Ident) -> bool {
+        let Some(scope) = self
+            .scopes
+            .iter()
+            .rev()
+            .find(|s| s.name.as_deref() == Some(task.key.as_str()))
+        else {
+            return false;
+        };
+        !scope.names.contains_key(&sel.key)
+            && self.lookup(&task.key).iter().any(|e| {
+                matches!(e, Entity::Var { ty, .. }
+                    if matches!(self.types.kind(*ty), types::TypeKind::Task(_)))
+            })
+    }
+
     pub(super) fn activate_library_tasks(&mut self, out: &mut Vec<Stmt>, at: Span) {
         if std::mem::take(&mut self.library_tasks) {
             out.push(Stmt {
@@ -753,6 +771,7 @@ impl Checker {
                         .iter()
                         .rev()
                         .find(|s| s.name.as_deref() == Some(pn.key.as_str()))
+                    && !self.own_task_entry(pn, id)
                 {
                     let es = scope.names.get(&id.key).cloned().unwrap_or_default();
                     if report {

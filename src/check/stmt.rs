@@ -434,6 +434,25 @@ impl Checker {
             ast::ExprKind::Name(_) | ast::ExprKind::Select(..) => self.denote(prefix, true),
             _ => Vec::new(),
         };
+        // `V.F;` with V an object: a component, nothing to call (the
+        // denotation reports only unknown names and package members).
+        if es.is_empty()
+            && let ast::ExprKind::Select(q, _) = &prefix.kind
+            && self
+                .denote(q, false)
+                .first()
+                .is_some_and(|x| !matches!(x, Entity::Package(_)))
+        {
+            let t = crate::syntax::parser::expr_text(prefix);
+            self.err(
+                Diagnostic::ty(e.span, format!("`{t}` is not a procedure or entry"))
+                    .with_hint("a statement is an assignment `X := ...;` or a procedure call"),
+            );
+            for a in args {
+                self.expr(&a.value, None);
+            }
+            return None;
+        }
         let fs: Vec<FuncId> = es
             .iter()
             .filter_map(|x| {

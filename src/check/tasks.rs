@@ -714,7 +714,8 @@ impl Checker {
         let ast::ExprKind::Select(q, id) = &prefix.kind else {
             return None;
         };
-        if self.expanded_prefix(q) {
+        let own = matches!(&q.kind, ast::ExprKind::Name(n) if self.own_task_entry(n, id));
+        if !own && self.expanded_prefix(q) {
             return None;
         }
         let is_conc = |this: &mut Self, t: TypeId| {

@@ -70,7 +70,7 @@ pub struct Analysis {
     pub sources: Sources,
     pub checker: Checker,
     pub unit: Option<ast::CompilationUnit>,
-    /// As `adair check` would show them: with errors, only the errors.
+    /// As `adair check` would show them.
     pub diags: Vec<Diagnostic>,
     pub lines: LineIndex,
     /// Whether the checker panicked (a bug; reported as a diagnostic).
@@ -86,19 +86,23 @@ impl Analysis {
         let file = sources.add(name, text);
         checker.add_text(file, text);
         let checked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            let (unit, mut diags) = crate::syntax::parse_source(text, file);
+            let (parsed, mut diags) = crate::syntax::parse_source(text, file);
+            // Text that does not parse as a whole (typing at its end): the
+            // names come from what parses before the first error.
+            let partial = parsed.is_none();
+            let unit = parsed.or_else(|| parse_what_parses(text, file, &diags));
             if let Some(unit) = &unit {
-                let script = unit
-                    .items
-                    .iter()
-                    .any(|i| matches!(i, ast::TopItem::Stmt(_)));
-                if script {
+                if crate::session::is_script_unit(unit, false) {
                     for p in crate::session::SCRIPT_USES {
                         checker.use_everywhere(p);
                     }
                 }
                 checker.check_unit(unit);
-                diags.extend(checker.take_diags());
+                let checked = checker.take_diags();
+                // The check of a cut text has errors of the cut, not the user's.
+                if !partial {
+                    diags.extend(checked);
+                }
             }
             (unit, diags)
         }));
@@ -114,9 +118,9 @@ impl Analysis {
             }
         };
         diags.sort_by_key(|d| (d.span.context, d.span.start));
-        // As the command line: a warning beside errors is often their echo.
+        // As the command line: beside errors, no "never read" (often their echo).
         if diags.iter().any(|d| !d.is_warning()) {
-            diags.retain(|d| !d.is_warning());
+            diags.retain(|d| !d.is_warning() || !d.message.ends_with(" is never read"));
         }
         Analysis {
             text: text.to_string(),
@@ -137,6 +141,45 @@ impl Analysis {
             .get(s.start..s.end)
             .unwrap_or("")
     }
+}
+
+/// The unit of the longest text before the first syntax error that parses:
+/// cut after one of the last `;` before it and, if the cut leaves a body
+/// open, closed by a few words (`begin null; end;`, `end;`). Only its names
+/// are used (hover, completion, definition); None when no cut parses.
+fn parse_what_parses(
+    text: &str,
+    file: FileId,
+    diags: &[Diagnostic],
+) -> Option<ast::CompilationUnit> {
+    use crate::syntax::token::Token;
+    let first = diags
+        .iter()
+        .filter(|d| !d.is_warning())
+        .map(|d| d.span.start)
+        .min()?;
+    let (tokens, _) = crate::syntax::lexer::lex(text, file);
+    let cuts: Vec<usize> = tokens
+        .iter()
+        .filter(|(t, s)| *t == Token::Semi && s.end <= first)
+        .map(|(_, s)| s.end)
+        .collect();
+    const CLOSERS: [&str; 5] = [
+        "",
+        "\nbegin null; end;",
+        "\nnull; end;",
+        "\nend;",
+        "\nnull; end; end;",
+    ];
+    for &cut in cuts.iter().rev().take(4) {
+        for closer in CLOSERS {
+            let t = format!("{}{closer}", &text[..cut]);
+            if let (Some(u), _) = crate::syntax::parse_source(&t, file) {
+                return Some(u);
+            }
+        }
+    }
+    None
 }
 
 /// Byte offsets <-> LSP positions (line, UTF-16 code units).
