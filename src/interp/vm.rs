@@ -1779,6 +1779,8 @@ impl<'a> Run<'a> {
         let mut current_base = self.m.current.len();
         let mut pending: Option<Box<Occurrence>> = None;
         let mut enter: Option<(Rc<Code<'a>>, CallInfo<'a>)> = None;
+        // A `return` (its value) to leave the frame by the short way.
+        let mut ret: Option<Option<Value>> = None;
         // A task's own frame (None: the main program's code).
         let mut root: Option<(usize, usize)> = None;
         loop {
@@ -2036,8 +2038,8 @@ impl<'a> Run<'a> {
                 Op::Return(x) => {
                     // Cloned, not taken: the value may be a variable of an
                     // enclosing frame.
-                    let v = x.map(|x| self.m.stack[self.sl(x)].clone());
-                    Err(Flow::Return(v))
+                    ret = Some(x.map(|x| self.m.stack[self.sl(x)].clone()));
+                    Ok(())
                 }
                 Op::FallOff => Err(Flow::Exit(FALL_OFF)),
                 Op::Dispatch(handlers, targets, depth) => {
@@ -2228,6 +2230,29 @@ impl<'a> Run<'a> {
                 pc = 0;
                 continue;
             }
+            // A return from a call without `out` parameters: the frame goes,
+            // the value lands (everything else takes the long way below).
+            let r = match ret.take() {
+                None => r,
+                Some(value) => {
+                    if let Some(frame) = frames.pop_if(|f| {
+                        f.call
+                            .as_ref()
+                            .is_some_and(|i| i.args.iter().all(|a| a.mode == Mode::In))
+                    }) {
+                        let dst = frame.call.as_ref().and_then(|i| i.dst);
+                        self.pop_frame(&frame, current_base);
+                        cur = frame.code;
+                        pc = frame.pc;
+                        current_base = frame.current;
+                        if let Some(d) = dst {
+                            self.put(d, value.unwrap_or_default());
+                        }
+                        continue;
+                    }
+                    Err(Flow::Return(value))
+                }
+            };
             let Err(flow) = r else { continue };
             // Something other than the next instruction: a return, an exit
             // a statement run by the walker gave back, or an exception.
