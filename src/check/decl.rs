@@ -592,7 +592,8 @@ impl Checker {
             TypeDef::Incomplete => self.types.add(&name.name, TypeKind::Incomplete),
             TypeDef::Unsupported(what) => {
                 self.err(Diagnostic::unsupported(span, what));
-                self.types.add(&name.name, TypeKind::Error)
+                // The error type itself: what uses the name says nothing more.
+                ERROR
             }
         }
     }

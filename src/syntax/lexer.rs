@@ -137,6 +137,21 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                 }
                 Ok(Raw::Str) => Token::Str(text[1..text.len() - 1].replace("\"\"", "\"")),
                 Ok(Raw::UnterminatedStr) => {
+                    // As GNAT: the string ends before a `)`/`;` that closes
+                    // the line (`Put_Line ("end);`), which are lexed again.
+                    let body = text.trim_end();
+                    let cut = [");", ";", ")"]
+                        .iter()
+                        .find_map(|t| body.strip_suffix(t))
+                        .filter(|k| k.len() > 1);
+                    if let Some(keep) = cut {
+                        let end = s + keep.len();
+                        let sp = span(file, s, end);
+                        diags.push(Diagnostic::unterminated_string(sp));
+                        toks.push((Token::Str(keep[1..].replace("\"\"", "\"")), sp));
+                        base = end;
+                        continue 'restart;
+                    }
                     diags.push(Diagnostic::unterminated_string(sp));
                     Token::Str(text[1..].replace("\"\"", "\""))
                 }

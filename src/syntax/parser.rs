@@ -742,6 +742,33 @@ fn discrete_range<'t, I: TokIn<'t>>(
         .boxed()
 }
 
+/// The recovery of a statement or declaration that does not parse: the
+/// tokens up to and with its `;`, or up to (without) a word that ends a
+/// statement sequence or a declarative part.
+fn skip_to_semi<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
+    any()
+        .filter(|t: &Token| {
+            !matches!(
+                t,
+                Token::Semi
+                    | Token::Kw(
+                        Kw::End
+                            | Kw::Begin
+                            | Kw::Private
+                            | Kw::Elsif
+                            | Kw::Else
+                            | Kw::When
+                            | Kw::Exception
+                            | Kw::Or
+                    )
+            )
+        })
+        .repeated()
+        .at_least(1)
+        .then(just(Token::Semi).or_not())
+        .ignored()
+}
+
 /// Tokens that end a statement sequence (never the start of a statement).
 fn seq_end<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
     select! {
@@ -1247,14 +1274,17 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 kind,
                 span: e.span(),
             })
-            .recover_with(skip_until(any().ignored(), semi().ignored(), || Stmt {
+            // A statement that does not parse: skipped to its `;`, but not
+            // past a word that ends the sequence around it (`end`, `else`,
+            // ...), which then closes its construct as written.
+            .recover_with(via_parser(skip_to_semi().map(|_| Stmt {
                 kind: StmtKind::Error,
                 span: Span {
                     start: 0,
                     end: 0,
                     context: 0,
                 },
-            }))
+            })))
             .boxed(),
     );
 
@@ -1333,6 +1363,18 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                     .or_not(),
             )
             .map(|(digits, range)| TypeDef::Float { digits, range }),
+        // `new Shape with record ... end record` (or `with null record`,
+        // `with private`): an extension of a tagged type.
+        kw!(New)
+            .then(st_ind.clone())
+            .then(kw!(With))
+            .then(choice((
+                record_body.clone().ignored(),
+                kw!(Private).ignored(),
+            )))
+            .to(TypeDef::Unsupported(
+                "a type extension (`new T with record`)",
+            )),
         kw!(New).ignore_then(st_ind.clone()).map(TypeDef::Derived),
         array_def.clone(),
         record_body.clone().map(TypeDef::Record),
@@ -1846,14 +1888,16 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
             span: e.span(),
         })
         .labelled("declaration")
-        .recover_with(skip_until(any().ignored(), semi().ignored(), || Decl {
+        // Likewise a declaration, not past the `begin`, `end` or `private`
+        // that ends the declarative part.
+        .recover_with(via_parser(skip_to_semi().map(|_| Decl {
             kind: DeclKind::Unsupported("<error>"),
             span: Span {
                 start: 0,
                 end: 0,
                 context: 0,
             },
-        }))
+        })))
         .boxed(),
     );
 
