@@ -237,6 +237,37 @@ fn error_mode_two_is_out_of_reach_and_reset() {
     assert!(out.contains("moved again"), "{out}");
 }
 
+/// The unit refuses the first motion, from the zero pose where `WH` cannot
+/// tell J1 (the tool on the waist axis): the program must still see the J1
+/// the arm has, 0, not the refused target; the next relative motion then
+/// ends where the program thinks.
+fn a_refused_motion_leaves_the_joints_where_the_arm_is() {
+    let Some(c) = controller("rv-m1", &["--refuse", "12:1"]) else {
+        return;
+    };
+    let script = "
+InitRobot;
+begin
+   MoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0));
+exception
+   when E : others => Put_Line (Ada.Exceptions.Exception_Name (E));
+end;
+A : AxesVector := ValueAxes;
+Put_Line (Integer'Image (Integer (Deg (A (1)))));
+MoveAxesRelative ((Rad (5.0), Rad (30.0), 0.0, 0.0, 0.0));
+";
+    let (o, out, q) = run("rv-m1", Some(&c.path), script);
+    assert!(matches!(o, Outcome::Ok), "{o:?}\n{out}");
+    assert_eq!(out, "ADAIR.COMMANDNOTSUPPORTED\n 0\n");
+    assert!(
+        (q[0] - 5.0).abs() < 0.05 && (q[1] - 30.0).abs() < 0.05,
+        "{q:?}"
+    );
+    // What the arm was told: J1 by +5 in all, not +10 then +5.
+    let log = std::fs::read_to_string(&c.log).unwrap_or_default();
+    assert!(log.contains("MJ +5.0"), "{log}");
+}
+
 fn a_hang_up_is_fatal_then_no_connection() {
     let Some(out) = fault(&["--hangup-after", "12"]) else {
         return;
@@ -680,6 +711,10 @@ fn main() {
         (
             "error_mode_two_is_out_of_reach_and_reset",
             error_mode_two_is_out_of_reach_and_reset,
+        ),
+        (
+            "a_refused_motion_leaves_the_joints_where_the_arm_is",
+            a_refused_motion_leaves_the_joints_where_the_arm_is,
         ),
         (
             "a_hang_up_is_fatal_then_no_connection",

@@ -137,6 +137,10 @@ pub struct Serial {
     /// A started motion not yet waited for: its expected duration and the
     /// last line sent (for messages).
     pending: Option<(f64, String)>,
+    /// The joints before the motion under way: where the arm is when the
+    /// unit refuses it (the hint for `WH`, which cannot say J1 with the
+    /// tool on the waist axis).
+    before: Option<Joints>,
 }
 
 impl Serial {
@@ -179,6 +183,7 @@ impl Serial {
             speed: None,
             interrupt,
             pending: None,
+            before: None,
         }
     }
 
@@ -263,8 +268,11 @@ impl Serial {
     /// After a fault: the joints from the arm, when the link is still up
     /// (after a user's stop the driver sends nothing more).
     fn resync(&mut self, e: DriverError) -> DriverError {
+        let near = self.before.take().unwrap_or(self.joints);
         if self.unit == Unit::RvM1 && self.link.is_some() && e != DriverError::Interrupted {
-            let near = self.joints;
+            // A refused motion did not move the arm: without an answer for
+            // J1, the one it had.
+            self.joints = near;
             let _ = self.where_is(near);
         }
         e
@@ -288,6 +296,7 @@ impl Serial {
     /// Sends the lines of a motion; its end is checked by `finish`.
     fn motion(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError> {
         let desc = self.kin.description().clone();
+        self.before = Some(self.joints);
         let mut last = String::new();
         for p in points {
             let target = desc.to_controller_deg(p);
@@ -332,12 +341,16 @@ impl Serial {
         let Some((duration, last)) = self.pending.take() else {
             return Ok(());
         };
-        match self.unit {
+        let r = match self.unit {
             // The reply to ER comes when the motion has ended.
             Unit::RvM1 => self.error_status(duration, &last),
             // The RM-501 never answers: time the move ourselves.
             Unit::Rm501 => self.sleep_interruptible(duration),
+        };
+        if r.is_ok() {
+            self.before = None;
         }
+        r
     }
 }
 
