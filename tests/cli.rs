@@ -456,3 +456,34 @@ fn test_takes_the_default_robot_and_the_trace() {
     let (code, _, err) = adair(&["test", "--robot", "ur5", &f]);
     assert_eq!(code, 2, "{err}");
 }
+
+#[test]
+fn get_line_into_a_string_keeps_the_rest_of_a_longer_line_as_gnat_does() {
+    // The expected text is what the same program compiled by GNAT prints
+    // on this input: a longer line's rest is the next read; a line that
+    // fills the string exactly leaves an empty line behind.
+    let prog = temp_file(
+        "get_line_rest.adb",
+        "with Ada.Text_IO; use Ada.Text_IO;
+procedure Get_Line_Rest is
+   S : String (1 .. 10);
+   L : Natural;
+begin
+   for I in 1 .. 3 loop
+      Get_Line (S, L);
+      Put_Line (\"[\" & S (1 .. L) & \"]\" & Integer'Image (L));
+   end loop;
+   Put_Line (\"<\" & Get_Line & \">\");
+   Put_Line (\"<\" & Get_Line & \">\");
+   Get_Line (S, L);
+   Put_Line (\"[\" & S (1 .. L) & \"]\" & Integer'Image (L));
+end Get_Line_Rest;
+",
+    );
+    let (code, out, err) = adair_stdin(&["run", &prog], b"abcdefghijklmno\nabcdefghij\nxyz\nq\n");
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        out,
+        "[abcdefghij] 10\n[klmno] 5\n[abcdefghij] 10\n<>\n<xyz>\n[q] 1\n"
+    );
+}

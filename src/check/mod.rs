@@ -426,6 +426,18 @@ impl Checker {
                 }
                 found.extend(es.iter().rev().cloned());
             }
+            // A package body sees its spec's private part too.
+            if let Some((p, true)) = s.package
+                && let Some(es) = self.packages[p].private.get(key)
+            {
+                let overloadable = es
+                    .iter()
+                    .all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));
+                if !overloadable && found.is_empty() {
+                    return vec![es.last().cloned().expect("nonempty")];
+                }
+                found.extend(es.iter().rev().cloned());
+            }
         }
         if !found.is_empty() {
             return found;

@@ -180,6 +180,9 @@ fn new_line(r: &mut Run, a: &mut [Value], _: Span) -> R<Option<Value>> {
 pub fn read_line(r: &mut Run, span: Span) -> R<String> {
     let _ = r.m.out.flush();
     r.m.col = 0;
+    if let Some(rest) = r.m.line_rest.take() {
+        return Ok(rest);
+    }
     let mut line = String::new();
     match r.m.input.read_line(&mut line) {
         Ok(0) | Err(_) => Err(r.raise(check::END_ERROR, "end of file", span)),
@@ -198,7 +201,9 @@ fn get_line_fn(r: &mut Run, _: &mut [Value], span: Span) -> R<Option<Value>> {
 }
 
 /// `Get_Line (Item, Last)`: fills Item from its first index, Last is the last
-/// index written.
+/// index written. As in Ada (RM A.10.7): a longer line leaves its rest for
+/// the next read; a line that fills Item exactly leaves its terminator, so
+/// the next `Get_Line` gives an empty line.
 pub fn get_line(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let l = read_line(r, span)?;
     let Value::Arr(arr) = &mut a[0] else {
@@ -206,13 +211,14 @@ pub fn get_line(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     };
     let arr = std::rc::Rc::make_mut(arr);
     let first = arr.bounds[0].0;
-    let mut n = 0;
-    for (i, c) in l.chars().enumerate() {
-        if i >= arr.data.len() {
-            break;
-        }
-        arr.data[i] = Value::Int(c as i64);
-        n = i + 1;
+    let room = arr.data.len();
+    let chars: Vec<char> = l.chars().collect();
+    let n = chars.len().min(room);
+    for (slot, c) in arr.data.iter_mut().zip(&chars[..n]) {
+        *slot = Value::Int(*c as i64);
+    }
+    if chars.len() >= room {
+        r.m.line_rest = Some(chars[n..].iter().collect());
     }
     a[1] = Value::Int(first + n as i64 - 1);
     Ok(None)

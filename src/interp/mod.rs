@@ -175,6 +175,10 @@ pub struct Machine {
     /// Line starts of each source, for GNAT-style exception messages.
     files: Vec<(String, Vec<usize>)>,
     pub input: Box<dyn std::io::BufRead>,
+    /// What `Get_Line (Item, Last)` left of a line longer than Item (its
+    /// terminator still to read): the next read starts with it. An empty
+    /// rest is a line that filled Item exactly.
+    pub line_rest: Option<String>,
     pub interrupted: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
     /// Occurrences being handled (innermost last), for `raise;`.
     current: Vec<Rc<Occurrence>>,
@@ -214,6 +218,7 @@ impl Machine {
             calls: Vec::new(),
             files: Vec::new(),
             input: Box::new(std::io::BufReader::new(std::io::stdin())),
+            line_rest: None,
             interrupted: None,
             current: Vec::new(),
             resolver: |n| builtins::lookup(n).map(Binding::Native),
