@@ -144,6 +144,9 @@ pub enum Happening {
         device: String,
         address: Address,
         delivered: bool,
+        /// How many of this address's interrupts were dropped so far
+        /// (this one included, when it is dropped).
+        dropped: u64,
     },
     Picked {
         object: String,
@@ -190,11 +193,12 @@ impl fmt::Display for Happening {
                 device,
                 address,
                 delivered,
+                dropped,
             } => {
                 let s = if *delivered {
-                    "delivered"
+                    "delivered".to_string()
                 } else {
-                    "dropped (interrupts disabled)"
+                    format!("dropped (interrupts disabled; {dropped} dropped so far)")
                 };
                 write!(f, "{device}: interrupt {} {s}", ada_address(*address))
             }

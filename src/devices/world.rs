@@ -366,6 +366,7 @@ impl World {
             &mut self.dropped
         };
         *counter.entry(address).or_insert(0) += 1;
+        let dropped = self.dropped.get(&address).copied().unwrap_or(0);
         let name = self.name(device);
         self.note(
             self.now,
@@ -373,6 +374,7 @@ impl World {
                 device: name,
                 address,
                 delivered: enabled,
+                dropped,
             },
         );
         enabled.then_some(Interrupt {

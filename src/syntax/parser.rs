@@ -481,10 +481,15 @@ fn name_with<'t, I: TokIn<'t>>(
         just(Token::Tick)
             .ignore_then(attr_name())
             .then(
-                expr.clone()
-                    .separated_by(just(Token::Comma))
-                    .at_least(1)
-                    .collect::<Vec<_>>()
+                // `T'Image (if X then 1 else 2)`: as for a call, an `if`/`case`
+                // expression as the sole argument shares the parentheses.
+                cond.clone()
+                    .map(|c| vec![c])
+                    .or(expr
+                        .clone()
+                        .separated_by(just(Token::Comma))
+                        .at_least(1)
+                        .collect::<Vec<_>>())
                     .delimited_by(just(Token::LParen), just(Token::RParen))
                     .or_not(),
             )
