@@ -456,13 +456,23 @@ impl Checker {
             }
             TypeDef::Float { digits, range } => {
                 let d = self.expr(digits, Some(UNIV_INT));
-                if self.static_value(&d).is_none() {
-                    self.err(Diagnostic::ty(
-                        digits.span,
-                        "`digits` needs a static integer",
-                    ));
-                }
+                let n = match self.static_value(&d) {
+                    Some(Static::Int(v)) => u32::try_from(v).ok(),
+                    Some(_) => None,
+                    None => {
+                        self.err(Diagnostic::ty(
+                            digits.span,
+                            "`digits` needs a static integer",
+                        ));
+                        None
+                    }
+                };
                 let t = self.types.add(&name.name, TypeKind::Float);
+                // GNAT: single precision up to 6 digits, else double.
+                let n = n.filter(|n| (1..=15).contains(n)).unwrap_or(15);
+                self.types.list[t as usize].digits = Some(n);
+                let max = if n <= 6 { f32::MAX as f64 } else { f64::MAX };
+                self.types.list[t as usize].static_frange = Some((-max, max));
                 if let Some((lo, hi)) = range {
                     let l = self.expr(lo, Some(UNIV_REAL));
                     let h = self.expr(hi, Some(UNIV_REAL));

@@ -2726,11 +2726,7 @@ impl Checker {
                     return self.mk(ExKind::Attr(op, vec![x]), base, sp);
                 }
                 "digits" if self.types.is_float(t) => {
-                    return self.mk(
-                        ExKind::Int(if base == FLOAT { 6 } else { 15 }),
-                        UNIV_INT,
-                        sp,
-                    );
+                    return self.mk(ExKind::Int(self.types.digits(t) as i64), UNIV_INT, sp);
                 }
                 "range" => {
                     self.err(Diagnostic::ty(sp, "`'Range` can only be used as a range (in `for` loops, memberships and constraints)"));
@@ -2822,7 +2818,7 @@ impl Checker {
         let op = if self.types.base(t) == DURATION {
             AttrOp::ImageDuration
         } else if self.types.is_float(t) {
-            AttrOp::ImageFloat
+            AttrOp::ImageFloat(self.types.digits(t) as u8)
         } else if self.types.is_integer(t) {
             AttrOp::ImageInt
         } else if self.types.base(t) == CHARACTER {

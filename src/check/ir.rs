@@ -88,7 +88,8 @@ pub enum AttrOp {
     ArrLength(u8),
     /// `T'Image (X)` for the given scalar type kind.
     ImageInt,
-    ImageFloat,
+    /// `T'Image` of a floating point type of this many digits.
+    ImageFloat(u8),
     /// `Duration'Image`: fixed point with 9 decimals, as GNAT.
     ImageDuration,
     ImageEnum(TypeId),

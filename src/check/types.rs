@@ -67,6 +67,8 @@ pub struct TypeInfo {
     /// static range checks.
     pub static_range: Option<(i128, i128)>,
     pub static_frange: Option<(f64, f64)>,
+    /// A floating point type's decimal digits (`digits N`; Float's 6).
+    pub digits: Option<u32>,
     /// For an access type's designated incomplete type, completed later.
     pub full_name: String,
 }
@@ -117,6 +119,7 @@ impl Types {
             range: None,
             static_range: None,
             static_frange: None,
+            digits: None,
             full_name: name.to_string(),
         });
         id
@@ -129,6 +132,14 @@ impl Types {
         info.base = self.base(of);
         self.list.push(info);
         id
+    }
+    /// The decimal digits of a floating point type: its `digits N`, Float's
+    /// 6, else those of a 64-bit double (15).
+    pub fn digits(&self, t: TypeId) -> u32 {
+        self.list[t as usize]
+            .digits
+            .or(self.list[self.base(t) as usize].digits)
+            .unwrap_or(15)
     }
     pub fn is_integer(&self, t: TypeId) -> bool {
         matches!(self.kind(t), TypeKind::Integer | TypeKind::UnivInt)
@@ -275,6 +286,7 @@ impl Types {
         t.list[pos as usize].static_range = Some((1, INT_LAST));
         let f = t.add("Float", TypeKind::Float);
         t.list[f as usize].static_frange = Some((-f32::MAX as f64, f32::MAX as f64));
+        t.list[f as usize].digits = Some(6);
         t.add(
             "String",
             TypeKind::Array {

@@ -1684,7 +1684,7 @@ impl Run<'_> {
                 }
             }
             AttrOp::ImageInt => Value::str(&value::image_int(a0.int())),
-            AttrOp::ImageFloat => Value::str(&value::image_float(a0.real())),
+            AttrOp::ImageFloat(d) => Value::str(&value::image_float_digits(a0.real(), d as u32)),
             AttrOp::ImageDuration => Value::str(&value::image_duration(a0.real())),
             AttrOp::ImageChar => {
                 let c = char::from_u32(a0.int() as u32).unwrap_or('?');

@@ -264,7 +264,13 @@ pub fn put_float(x: f64, fore: usize, aft: usize, exp: usize) -> String {
 
 /// `Float'Image` (GNAT, Float'Digits = 6): `" 8.30600E+02"`.
 pub fn image_float(x: f64) -> String {
-    let s = put_float(x, 1, 5, 3);
+    image_float_digits(x, 6)
+}
+
+/// `T'Image` of a floating point type of `digits` decimal digits: that
+/// many significant digits (`digits 3`: `" 3.14E+00"`).
+pub fn image_float_digits(x: f64, digits: u32) -> String {
+    let s = put_float(x, 1, digits.max(1) as usize - 1, 3);
     // GNAT: `+Inf*******`, `NaN********` without the blank of a sign.
     if s.starts_with('-') || !x.is_finite() {
         s
