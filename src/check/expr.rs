@@ -413,9 +413,16 @@ impl Checker {
                 BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge => {
                     vec![BOOLEAN]
                 }
-                BinOp::And | BinOp::Or | BinOp::Xor | BinOp::AndThen | BinOp::OrElse => {
-                    vec![BOOLEAN]
+                BinOp::And | BinOp::Or | BinOp::Xor => {
+                    let mut v = vec![BOOLEAN];
+                    for t in self.interps(a).into_iter().chain(self.interps(b)) {
+                        if self.types.is_bool_array(t) && !v.contains(&t) {
+                            v.push(t);
+                        }
+                    }
+                    v
                 }
+                BinOp::AndThen | BinOp::OrElse => vec![BOOLEAN],
                 BinOp::Cat => {
                     let mut v: Vec<TypeId> = self
                         .interps(a)
@@ -458,7 +465,15 @@ impl Checker {
                     out
                 }
             },
-            ExprKind::Unary(UnOp::Not, _) => vec![BOOLEAN],
+            ExprKind::Unary(UnOp::Not, a) => {
+                let mut v = vec![BOOLEAN];
+                v.extend(
+                    self.interps(a)
+                        .into_iter()
+                        .filter(|t| self.types.is_bool_array(*t)),
+                );
+                v
+            }
             ExprKind::Unary(op, a) => {
                 let mut out: Vec<TypeId> = self
                     .interps(a)
@@ -1628,6 +1643,21 @@ impl Checker {
         want: Option<TypeId>,
         sp: Span,
     ) -> Ex {
+        let lop = match op {
+            BinOp::And => Some(LogicOp::And),
+            BinOp::Or => Some(LogicOp::Or),
+            BinOp::Xor => Some(LogicOp::Xor),
+            _ => None,
+        };
+        if let Some(lop) = lop
+            && let Some(t) = self.bool_array_operands(a, b, want)
+        {
+            let x = self.expr(a, Some(t));
+            let x = self.coerce(x, t);
+            let y = self.expr(b, Some(t));
+            let y = self.coerce(y, t);
+            return self.mk(ExKind::ArrLogic(lop, bx(x), bx(y)), self.types.base(t), sp);
+        }
         match op {
             BinOp::And | BinOp::Or | BinOp::Xor | BinOp::AndThen | BinOp::OrElse => {
                 let x = self.expr(a, Some(BOOLEAN));
@@ -2112,7 +2142,38 @@ impl Checker {
         }
     }
 
+    /// The Boolean array type of a logical operator's operands: the one
+    /// wanted, or one an operand can have; None for Boolean operands.
+    fn bool_array_operands(
+        &mut self,
+        a: &ast::Expr,
+        b: &ast::Expr,
+        want: Option<TypeId>,
+    ) -> Option<TypeId> {
+        if let Some(w) = want {
+            return self.types.is_bool_array(w).then_some(w);
+        }
+        let mut cands = self.interps(a);
+        cands.extend(self.interps(b));
+        cands.into_iter().find(|t| self.types.is_bool_array(*t))
+    }
+
     fn unary(&mut self, op: UnOp, a: &ast::Expr, want: Option<TypeId>, sp: Span) -> Ex {
+        if op == UnOp::Not
+            && let Some(t) = want.filter(|w| self.types.is_bool_array(*w)).or_else(|| {
+                want.is_none()
+                    .then(|| {
+                        self.interps(a)
+                            .into_iter()
+                            .find(|t| self.types.is_bool_array(*t))
+                    })
+                    .flatten()
+            })
+        {
+            let x = self.expr(a, Some(t));
+            let x = self.coerce(x, t);
+            return self.mk(ExKind::ArrNot(bx(x)), self.types.base(t), sp);
+        }
         if op == UnOp::Not {
             let x = self.expr(a, Some(BOOLEAN));
             let x = self.coerce(x, BOOLEAN);

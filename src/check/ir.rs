@@ -145,6 +145,11 @@ pub enum ExKind {
     Eq(bool, Box<Ex>, Box<Ex>),
     Logic(LogicOp, Box<Ex>, Box<Ex>),
     Not(Box<Ex>),
+    /// `and`, `or`, `xor` of two one-dimensional Boolean arrays, component
+    /// by component (the left operand's bounds; lengths must agree).
+    ArrLogic(LogicOp, Box<Ex>, Box<Ex>),
+    /// `not` of a one-dimensional Boolean array.
+    ArrNot(Box<Ex>),
     IntNeg(Box<Ex>),
     FloatNeg(Box<Ex>),
     IntAbs(Box<Ex>),

@@ -1178,6 +1178,46 @@ impl Run<'_> {
                 Value::Int(r as i64)
             }
             ExKind::Not(a) => Value::Int((self.eval(a)?.int() == 0) as i64),
+            ExKind::ArrLogic(op, a, b) => {
+                let (x, y) = (self.eval(a)?, self.eval(b)?);
+                let (Value::Arr(x), Value::Arr(y)) = (&x, &y) else {
+                    return Err(self.check_failed("access check failed", e.span));
+                };
+                if x.data.len() != y.data.len() {
+                    return Err(self.check_failed("length check failed", e.span));
+                }
+                let data = x
+                    .data
+                    .iter()
+                    .zip(&y.data)
+                    .map(|(p, q)| {
+                        let (p, q) = (p.int() != 0, q.int() != 0);
+                        Value::Int(match op {
+                            LogicOp::Or | LogicOp::OrElse => p || q,
+                            LogicOp::Xor => p ^ q,
+                            LogicOp::And | LogicOp::AndThen => p && q,
+                        } as i64)
+                    })
+                    .collect();
+                Value::Arr(std::rc::Rc::new(value::Array {
+                    bounds: x.bounds.clone(),
+                    data,
+                }))
+            }
+            ExKind::ArrNot(a) => {
+                let Value::Arr(x) = self.eval(a)? else {
+                    return Err(self.check_failed("access check failed", e.span));
+                };
+                let data = x
+                    .data
+                    .iter()
+                    .map(|p| Value::Int((p.int() == 0) as i64))
+                    .collect();
+                Value::Arr(std::rc::Rc::new(value::Array {
+                    bounds: x.bounds.clone(),
+                    data,
+                }))
+            }
             ExKind::IntNeg(a) => {
                 let x = self.eval(a)?.int();
                 Value::Int(self.int_op(IntOp::Sub, 0, x, e.span)?)

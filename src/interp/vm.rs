@@ -482,7 +482,8 @@ impl<'p> Compiler<'p, '_> {
     fn strict_copy(&mut self, e: &'p Ex) -> Option<Ex> {
         let kids: Vec<&'p Ex> = match &e.kind {
             ExKind::Attr(_, args) => args.iter().collect(),
-            ExKind::Concat(a, b, ..) => vec![a, b],
+            ExKind::Concat(a, b, ..) | ExKind::ArrLogic(_, a, b) => vec![a, b],
+            ExKind::ArrNot(a) => vec![a],
             ExKind::FloatNeg(a)
             | ExKind::IntAbs(a)
             | ExKind::FloatAbs(a)
@@ -513,6 +514,8 @@ impl<'p> Compiler<'p, '_> {
         let kind = match &e.kind {
             ExKind::Attr(op, args) => ExKind::Attr(*op, args.iter().map(|_| *next()).collect()),
             ExKind::Concat(_, _, x, y) => ExKind::Concat(next(), next(), *x, *y),
+            ExKind::ArrLogic(op, ..) => ExKind::ArrLogic(*op, next(), next()),
+            ExKind::ArrNot(_) => ExKind::ArrNot(next()),
             ExKind::FloatNeg(_) => ExKind::FloatNeg(next()),
             ExKind::IntAbs(_) => ExKind::IntAbs(next()),
             ExKind::FloatAbs(_) => ExKind::FloatAbs(next()),
