@@ -424,7 +424,7 @@ impl Checker {
                             self.declare_checked(id, Entity::EnumLit(t, i as i64))
                         }
                         ast::EnumLit::Char(c, _) => {
-                            self.declare(&format!("'{c}'"), Entity::EnumLit(t, i as i64))
+                            self.declare(&char_lit_key(*c), Entity::EnumLit(t, i as i64))
                         }
                     }
                 }

@@ -312,7 +312,7 @@ impl Checker {
             ExprKind::Real(_) => vec![UNIV_REAL],
             ExprKind::Char(c) => {
                 let mut v = vec![CHARACTER];
-                for ent in self.lookup(&format!("'{c}'")) {
+                for ent in self.lookup(&char_lit_key(*c)) {
                     if let Entity::EnumLit(t, _) = ent {
                         v.push(t);
                     }
@@ -967,7 +967,7 @@ impl Checker {
                 if let Some(w) = want
                     && self.types.base(w) != CHARACTER
                 {
-                    for ent in self.lookup(&format!("'{c}'")) {
+                    for ent in self.lookup(&char_lit_key(*c)) {
                         if let Entity::EnumLit(t, pos) = ent
                             && self.types.compatible(t, w)
                         {

@@ -1059,3 +1059,10 @@ impl Checker {
         }
     }
 }
+
+/// The name under which a character literal of an enumeration type is
+/// declared: case kept (`'B'` is not `'b'`) through the lower-casing of
+/// names, as its code in hex.
+pub(crate) fn char_lit_key(c: char) -> String {
+    format!("'{:x}'", c as u32)
+}
