@@ -415,14 +415,13 @@ impl Session {
         }
         self.warnings = diags;
         // The packages this unit names elaborate first.
-        // (A stdlib file elaborates when loaded: not theirs.)
-        let mut all = if self.in_stdlib {
-            Vec::new()
-        } else {
-            std::mem::take(&mut self.elaboration)
-        };
-        all.extend(stmts);
-        Ok((all, if is_script { None } else { main }))
+        // (A stdlib file elaborates when loaded: not theirs.) In place: the
+        // program's statements may be many, theirs are few.
+        let mut stmts = stmts;
+        if !self.in_stdlib && !self.elaboration.is_empty() {
+            stmts.splice(0..0, std::mem::take(&mut self.elaboration));
+        }
+        Ok((stmts, if is_script { None } else { main }))
     }
 
     /// Checks the file of package `pkg` named by `with` in the program
