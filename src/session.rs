@@ -105,6 +105,8 @@ pub struct Session {
     with_files: Vec<std::path::PathBuf>,
     /// Their elaboration, to run before the program that names them.
     elaboration: Vec<Stmt>,
+    /// Such a file is being checked (a library unit: never a script).
+    in_with_file: bool,
 }
 
 /// How a run ended.
@@ -139,6 +141,7 @@ impl Session {
             robot: None,
             with_files: Vec::new(),
             elaboration: Vec::new(),
+            in_with_file: false,
             loaded: Vec::new(),
             in_stdlib: false,
         };
@@ -349,7 +352,7 @@ impl Session {
         let (unit, mut diags) = crate::syntax::parse_source(text, id);
         let Some(unit) = unit else { return Err(diags) };
         use crate::syntax::ast::TopItem;
-        let is_script = script || is_script_unit(&unit, self.in_stdlib);
+        let is_script = script || is_script_unit(&unit, self.in_stdlib || self.in_with_file);
         // The stdlib files this unit names, and the files of the other
         // packages it names (beside it, unless the unit declares them).
         for item in &unit.items {
@@ -461,7 +464,10 @@ impl Session {
                     format!("cannot read {shown} (the file of package {pkg}): {e}"),
                 )]
             })?;
-            let (stmts, _) = self.check_source(&shown, &text, false)?;
+            let outer = std::mem::replace(&mut self.in_with_file, true);
+            let checked = self.check_source(&shown, &text, false);
+            self.in_with_file = outer;
+            let (stmts, _) = checked?;
             self.elaboration = stmts;
         }
         Ok(())
@@ -611,10 +617,11 @@ fn declares_package(unit: &crate::syntax::ast::CompilationUnit, name: &str) -> b
     })
 }
 
-/// Whether `unit` is a script: statements at the top, or (outside the
-/// stdlib) only declarations without a `with` and without a main procedure
-/// (tasks that do the work).
-pub fn is_script_unit(unit: &crate::syntax::ast::CompilationUnit, in_stdlib: bool) -> bool {
+/// Whether `unit` is a script: statements at the top, or (unless it is a
+/// `library` unit: the stdlib, a package file named by `with`) only
+/// declarations without a `with` and without a main procedure (tasks that
+/// do the work).
+pub fn is_script_unit(unit: &crate::syntax::ast::CompilationUnit, library: bool) -> bool {
     use crate::syntax::ast::{DeclKind, TopItem};
     let main_candidate = unit.items.iter().any(|i| {
         matches!(i, TopItem::Decl(d) if matches!(&d.kind,
@@ -622,5 +629,5 @@ pub fn is_script_unit(unit: &crate::syntax::ast::CompilationUnit, in_stdlib: boo
     });
     let withs = unit.items.iter().any(|i| matches!(i, TopItem::With(..)));
     unit.items.iter().any(|i| matches!(i, TopItem::Stmt(_)))
-        || (!withs && !main_candidate && !in_stdlib)
+        || (!withs && !main_candidate && !library)
 }

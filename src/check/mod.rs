@@ -414,29 +414,22 @@ impl Checker {
                     found.push(e.clone());
                 }
             }
-            if let Some((p, is_body)) = s.package
-                && (is_body || !s.names.contains_key(key))
-                && let Some(es) = self.packages[p].names.get(key)
-            {
-                let overloadable = es
-                    .iter()
-                    .all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));
-                if !overloadable && found.is_empty() {
-                    return vec![es.last().cloned().expect("nonempty")];
+            if let Some((p, is_body)) = s.package {
+                let pk = &self.packages[p];
+                let spec = (is_body || !s.names.contains_key(key))
+                    .then(|| pk.names.get(key))
+                    .flatten();
+                // A package body sees its spec's private part too.
+                let private = is_body.then(|| pk.private.get(key)).flatten();
+                for es in [spec, private].into_iter().flatten() {
+                    let overloadable = es
+                        .iter()
+                        .all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));
+                    if !overloadable && found.is_empty() {
+                        return vec![es.last().cloned().expect("nonempty")];
+                    }
+                    found.extend(es.iter().rev().cloned());
                 }
-                found.extend(es.iter().rev().cloned());
-            }
-            // A package body sees its spec's private part too.
-            if let Some((p, true)) = s.package
-                && let Some(es) = self.packages[p].private.get(key)
-            {
-                let overloadable = es
-                    .iter()
-                    .all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));
-                if !overloadable && found.is_empty() {
-                    return vec![es.last().cloned().expect("nonempty")];
-                }
-                found.extend(es.iter().rev().cloned());
             }
         }
         if !found.is_empty() {

@@ -551,3 +551,23 @@ pub struct Arg {
     pub value: Expr,
     pub span: Span,
 }
+
+#[cfg(test)]
+mod tests {
+    /// Statement lists hold their statements inline: a big variant inline
+    /// made every statement of a long program cost 576 bytes (issue 14).
+    #[test]
+    fn statements_stay_small() {
+        use std::mem::size_of;
+        assert!(
+            size_of::<super::Stmt>() <= 80,
+            "{}",
+            size_of::<super::Stmt>()
+        );
+        assert!(
+            size_of::<super::TopItem>() <= 96,
+            "{}",
+            size_of::<super::TopItem>()
+        );
+    }
+}
