@@ -362,10 +362,22 @@ impl Checker {
                         let fs: Vec<FuncId> = funcs_of(&pes);
                         let mut out = Vec::new();
                         for f in fs {
-                            if let Some(r) = self.funcs[f as usize].ret
-                                && self.args_fit(f, args)
-                            {
+                            let Some(r) = self.funcs[f as usize].ret else {
+                                continue;
+                            };
+                            if self.args_fit(f, args) {
                                 out.push(r);
+                            } else if self.funcs[f as usize].params.is_empty()
+                                && let Some((idx, el, _)) = self.types.array(r)
+                            {
+                                // `ValueAxes (1)`: a component of the result of
+                                // a call without parameters.
+                                let slice = args.len() == 1 && is_range_arg(&args[0].value);
+                                out.push(if slice || idx.len() != args.len() {
+                                    r
+                                } else {
+                                    el
+                                });
                             }
                         }
                         out
