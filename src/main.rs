@@ -208,11 +208,13 @@ fn read(path: &PathBuf) -> Result<String, ExitCode> {
     })
 }
 
+/// Global options that take a value in the next argument (kept equal to
+/// `Cli`'s by a test; read without building the parser twice at start-up).
+const VALUED: [&str; 3] = ["--color", "--max-memory", "--devices"];
+
 /// The arguments with `adair FILE.air ...` read as `adair run FILE.air ...`:
 /// a first argument (after the global options) naming a program file.
 fn with_shorthand(mut args: Vec<std::ffi::OsString>) -> Vec<std::ffi::OsString> {
-    // Global options that take a value in the next argument.
-    const VALUED: [&str; 3] = ["--color", "--max-memory", "--devices"];
     let mut i = 1;
     while i < args.len() {
         let a = args[i].to_string_lossy();
@@ -649,4 +651,21 @@ fn write_run(p: &std::path::Path, s: &Session, file: &std::path::Path) -> Result
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
     adair::plot::write_run(p, st, &title).map(|_| ())
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_shorthand_knows_every_global_option_with_a_value() {
+        use clap::CommandFactory;
+        let mut valued: Vec<String> = super::Cli::command()
+            .get_arguments()
+            .filter(|a| a.is_global_set() && a.get_action().takes_values())
+            .filter_map(|a| a.get_long().map(|l| format!("--{l}")))
+            .collect();
+        valued.sort();
+        let mut ours: Vec<String> = super::VALUED.iter().map(|s| s.to_string()).collect();
+        ours.sort();
+        assert_eq!(valued, ours);
+    }
 }

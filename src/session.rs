@@ -191,14 +191,16 @@ impl Session {
     }
 
     /// Makes the package `name` of the stdlib visible to later checks
-    /// (nothing when no stdlib file declares it).
-    pub fn need_package(&mut self, name: &str) {
-        if let Some(i) = STDLIB
+    /// (nothing when no stdlib file declares it); whether one does.
+    pub fn need_package(&mut self, name: &str) -> bool {
+        let Some(i) = STDLIB
             .iter()
             .position(|u| u.provides.iter().any(|p| p.eq_ignore_ascii_case(name)))
-        {
-            self.load_unit(i);
-        }
+        else {
+            return false;
+        };
+        self.load_unit(i);
+        true
     }
 
     /// Checks every stdlib file (the language server offers all of them).
@@ -359,11 +361,8 @@ impl Session {
             if let TopItem::With(names, _) = item {
                 for n in names {
                     let pkg = crate::syntax::parser::expr_text(n);
-                    self.need_package(&pkg);
-                    if !self.in_stdlib
-                        && !STDLIB
-                            .iter()
-                            .any(|u| u.provides.iter().any(|p| p.eq_ignore_ascii_case(&pkg)))
+                    if !self.need_package(&pkg)
+                        && !self.in_stdlib
                         && !declares_package(&unit, &pkg)
                         && let Err(d) = self.load_with_file(name, &pkg, n.span)
                     {

@@ -1662,7 +1662,7 @@ impl Checker {
             _ => None,
         };
         if let Some(lop) = lop
-            && let Some(t) = self.bool_array_operands(a, b, want)
+            && let Some(t) = self.bool_array_operands(&[a, b], want)
         {
             let x = self.expr(a, Some(t));
             let x = self.coerce(x, t);
@@ -2156,31 +2156,17 @@ impl Checker {
 
     /// The Boolean array type of a logical operator's operands: the one
     /// wanted, or one an operand can have; None for Boolean operands.
-    fn bool_array_operands(
-        &mut self,
-        a: &ast::Expr,
-        b: &ast::Expr,
-        want: Option<TypeId>,
-    ) -> Option<TypeId> {
+    fn bool_array_operands(&mut self, ops: &[&ast::Expr], want: Option<TypeId>) -> Option<TypeId> {
         if let Some(w) = want {
             return self.types.is_bool_array(w).then_some(w);
         }
-        let mut cands = self.interps(a);
-        cands.extend(self.interps(b));
+        let cands: Vec<TypeId> = ops.iter().flat_map(|e| self.interps(e)).collect();
         cands.into_iter().find(|t| self.types.is_bool_array(*t))
     }
 
     fn unary(&mut self, op: UnOp, a: &ast::Expr, want: Option<TypeId>, sp: Span) -> Ex {
         if op == UnOp::Not
-            && let Some(t) = want.filter(|w| self.types.is_bool_array(*w)).or_else(|| {
-                want.is_none()
-                    .then(|| {
-                        self.interps(a)
-                            .into_iter()
-                            .find(|t| self.types.is_bool_array(*t))
-                    })
-                    .flatten()
-            })
+            && let Some(t) = self.bool_array_operands(&[a], want)
         {
             let x = self.expr(a, Some(t));
             let x = self.coerce(x, t);

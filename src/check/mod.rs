@@ -659,10 +659,6 @@ impl Checker {
         (out, main)
     }
 
-    /// Library-level (and script) tasks are activated together before the
-    /// next statement that is no declaration, or at the end of the unit
-    /// (before the main program runs), so that they can call each other
-    /// whatever their order of declaration.
     /// `T.E` in task T's own body, E not declared there: not an expanded
     /// name but T's entry E (T the task object, declared outside its body).
     pub(super) fn own_task_entry(&self, task: &ast::Ident, sel: &ast::Ident) -> bool {
@@ -681,6 +677,10 @@ impl Checker {
             })
     }
 
+    /// Library-level (and script) tasks are activated together before the
+    /// next statement that is no declaration, or at the end of the unit
+    /// (before the main program runs), so that they can call each other
+    /// whatever their order of declaration.
     pub(super) fn activate_library_tasks(&mut self, out: &mut Vec<Stmt>, at: Span) {
         if std::mem::take(&mut self.library_tasks) {
             out.push(Stmt {

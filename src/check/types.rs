@@ -168,13 +168,13 @@ impl Types {
     pub fn is_access(&self, t: TypeId) -> bool {
         matches!(self.kind(t), TypeKind::Access(_))
     }
-    /// Array information of `t` (which may be a constrained subtype).
     /// A one-dimensional array of Boolean (`and`, `or`, `xor`, `not` apply).
     pub fn is_bool_array(&self, t: TypeId) -> bool {
         self.array(self.base(t))
             .or_else(|| self.array(t))
             .is_some_and(|(idx, elem, _)| idx.len() == 1 && self.base(elem) == BOOLEAN)
     }
+    /// Array information of `t` (which may be a constrained subtype).
     pub fn array(&self, t: TypeId) -> Option<ArrayInfo<'_>> {
         match &self.list[t as usize].kind {
             TypeKind::Array {

@@ -1186,37 +1186,23 @@ impl Run<'_> {
                 if x.data.len() != y.data.len() {
                     return Err(self.check_failed("length check failed", e.span));
                 }
-                let data = x
-                    .data
-                    .iter()
-                    .zip(&y.data)
-                    .map(|(p, q)| {
+                bool_array(
+                    x,
+                    x.data.iter().zip(&y.data).map(|(p, q)| {
                         let (p, q) = (p.int() != 0, q.int() != 0);
-                        Value::Int(match op {
+                        match op {
                             LogicOp::Or | LogicOp::OrElse => p || q,
                             LogicOp::Xor => p ^ q,
                             LogicOp::And | LogicOp::AndThen => p && q,
-                        } as i64)
-                    })
-                    .collect();
-                Value::Arr(std::rc::Rc::new(value::Array {
-                    bounds: x.bounds.clone(),
-                    data,
-                }))
+                        }
+                    }),
+                )
             }
             ExKind::ArrNot(a) => {
                 let Value::Arr(x) = self.eval(a)? else {
                     return Err(self.check_failed("access check failed", e.span));
                 };
-                let data = x
-                    .data
-                    .iter()
-                    .map(|p| Value::Int((p.int() == 0) as i64))
-                    .collect();
-                Value::Arr(std::rc::Rc::new(value::Array {
-                    bounds: x.bounds.clone(),
-                    data,
-                }))
+                bool_array(&x, x.data.iter().map(|p| p.int() == 0))
             }
             ExKind::IntNeg(a) => {
                 let x = self.eval(a)?.int();
@@ -1860,4 +1846,12 @@ fn write_path(root: &mut Value, steps: &[Step], val: Value) -> Result<(), (&'sta
             Ok(())
         }
     }
+}
+
+/// A Boolean array with the bounds of `like` and the components `bits`.
+fn bool_array(like: &value::Array, bits: impl Iterator<Item = bool>) -> Value {
+    Value::Arr(Rc::new(value::Array {
+        bounds: like.bounds.clone(),
+        data: bits.map(|b| Value::Int(b as i64)).collect(),
+    }))
 }

@@ -95,7 +95,7 @@ mod tests {
     #[test]
     fn every_exception_is_bound_to_its_own_identity() {
         let mut s = crate::session::Session::new(Box::new(std::io::sink()));
-        s.need_package("AdaIR");
+        assert!(s.need_package("AdaIR"));
         let ids = ExcIds::bind(&s.checker).expect("stdlib declares them all");
         for (i, a) in Exc::ALL.iter().enumerate() {
             assert_eq!(s.checker.excs[ids.id(*a) as usize].name, a.full_name());

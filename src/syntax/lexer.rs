@@ -144,16 +144,16 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                         .iter()
                         .find_map(|t| body.strip_suffix(t))
                         .filter(|k| k.len() > 1);
-                    if let Some(keep) = cut {
-                        let end = s + keep.len();
-                        let sp = span(file, s, end);
-                        diags.push(Diagnostic::unterminated_string(sp));
-                        toks.push((Token::Str(keep[1..].replace("\"\"", "\"")), sp));
-                        base = end;
+                    let keep = cut.unwrap_or(text);
+                    let sp = span(file, s, s + keep.len());
+                    diags.push(Diagnostic::unterminated_string(sp));
+                    let tok = Token::Str(keep[1..].replace("\"\"", "\""));
+                    if cut.is_some() {
+                        toks.push((tok, sp));
+                        base = sp.end;
                         continue 'restart;
                     }
-                    diags.push(Diagnostic::unterminated_string(sp));
-                    Token::Str(text[1..].replace("\"\"", "\""))
+                    tok
                 }
                 Ok(Raw::Tick) => {
                     let attribute_mark = matches!(

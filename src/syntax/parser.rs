@@ -752,22 +752,7 @@ fn discrete_range<'t, I: TokIn<'t>>(
 /// statement sequence or a declarative part.
 fn skip_to_semi<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
     any()
-        .filter(|t: &Token| {
-            !matches!(
-                t,
-                Token::Semi
-                    | Token::Kw(
-                        Kw::End
-                            | Kw::Begin
-                            | Kw::Private
-                            | Kw::Elsif
-                            | Kw::Else
-                            | Kw::When
-                            | Kw::Exception
-                            | Kw::Or
-                    )
-            )
-        })
+        .and_is(choice((just(Token::Semi).ignored(), seq_end(), decls_end())).not())
         .repeated()
         .at_least(1)
         .then(just(Token::Semi).or_not())
