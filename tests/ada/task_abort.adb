@@ -103,6 +103,9 @@ begin
       delay 0.001;
    end loop;
    Put_Line ("Caller saw: " & Flag.Noted);
-   abort Victim;                    --  aborting a dead task does nothing
+   abort Victim;                    --  aborting it again does nothing
+   while not Victim'Terminated loop  --  GNAT may still be ending it
+      delay 0.001;
+   end loop;
    Put_Line ("Victim terminated: " & Boolean'Image (Victim'Terminated));
 end Task_Abort;
