@@ -8,6 +8,8 @@ pub mod record;
 pub mod table;
 
 mod exc;
+#[cfg(test)]
+mod tests;
 
 use crate::driver::{Robot, sim::Simulator};
 pub use crate::interp::STOP_LABEL;

@@ -1,6 +1,6 @@
 //! FK -> IK -> FK round trips over random joint vectors inside the limits.
 
-use adair::kinematics::{Joints, Kinematics, Pose, RobotDescription};
+use crate::kinematics::{Joints, Kinematics, Pose, RobotDescription};
 use proptest::prelude::*;
 
 /// SplitMix64: a seeded generator, so failures reproduce.

@@ -1,6 +1,6 @@
 //! Synchronous point-to-point joint motion profiles.
 
-use adair::kinematics::{AdaException, KinError, MotionProfile, RobotDescription, joints_from_deg};
+use crate::kinematics::{AdaException, KinError, MotionProfile, RobotDescription, joints_from_deg};
 
 fn rv_m1() -> RobotDescription {
     RobotDescription::builtin("rv-m1").unwrap()

@@ -1,7 +1,7 @@
 //! Forward and inverse kinematics: spec test vectors, branches, error
 //! classes, joint targets.
 
-use adair::kinematics::{
+use crate::kinematics::{
     AdaException, Arm, Elbow, Joints, KinError, Kinematics, Pose, RobotDescription, Solution,
     joints_from_deg,
 };

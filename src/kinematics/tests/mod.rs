@@ -1,7 +1,20 @@
-//! Unit tests of the branch and representation helpers: `wrap` at its
-//! boundaries, every case of `fit_limits`, `nearest_representation`, the
-//! branch metric, the refusal message's precision and the ValidFrame plane
-//! helpers.
+//! Tests of the kinematics. This file: the branch and representation
+//! helpers (`wrap` at its boundaries, every case of `fit_limits`,
+//! `nearest_representation`, the branch metric), the refusal message's
+//! precision and the ValidFrame plane helpers. The submodules test through
+//! the public API: robot descriptions, FK/IK spec vectors and branches,
+//! straight lines, the motion rules (proptest), speed profiles, seeded
+//! round trips and ValidFrame. They are unit tests of the library, not
+//! integration tests, so that `cargo test --lib` covers `src/kinematics/`
+//! and a mutation run (`scripts/mutants.sh`) builds one test binary.
+
+mod description;
+mod fk_ik;
+mod line;
+mod motion_rules;
+mod profile;
+mod roundtrip;
+mod valid_frame;
 
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 

@@ -1,6 +1,6 @@
 //! Straight-line interpolation: continuity, refusals with a distance.
 
-use adair::kinematics::{
+use crate::kinematics::{
     AdaException, KinError, Kinematics, Pose, RobotDescription, continuity, joints_from_deg,
 };
 use nalgebra::Vector3;

@@ -2,7 +2,7 @@
 
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
-use adair::kinematics::{AdaException, KinError, Kinematics, Pose, RobotDescription};
+use crate::kinematics::{AdaException, KinError, Kinematics, Pose, RobotDescription};
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 struct Rng(u64);

@@ -20,7 +20,7 @@
 
 use std::f64::consts::{PI, TAU};
 
-use adair::kinematics::{
+use crate::kinematics::{
     Arm, Elbow, Joints, KinError, Kinematics, Pose, RobotDescription, Solution, continuity,
     joints_from_deg,
 };
@@ -274,7 +274,7 @@ proptest! {
         // Reachable: in the plane, and solvable when the goal's position is
         // (the same position as a reachable pose).
         prop_assert!(v.approach().dot(&m).abs() < 1e-9);
-        prop_assert!(k.classify(&v, &tool, &[0.0; 5]).map_err(|e| e.exception()) != Err(adair::kinematics::AdaException::FrameInvalid));
+        prop_assert!(k.classify(&v, &tool, &[0.0; 5]).map_err(|e| e.exception()) != Err(crate::kinematics::AdaException::FrameInvalid));
         // Nearest: turned by exactly the approach's angle to the plane.
         let plane_angle = goal.approach().dot(&m).abs().clamp(0.0, 1.0).asin();
         prop_assert!((goal.rotation_angle_to(&v) - plane_angle).abs() < 1e-9, "{} vs {}", goal.rotation_angle_to(&v), plane_angle);

@@ -1,6 +1,6 @@
 //! Robot description files: built-ins, a third robot, loading errors.
 
-use adair::kinematics::{Kinematics, RobotDescription, joints_from_deg, joints_to_deg};
+use crate::kinematics::{Kinematics, RobotDescription, joints_from_deg, joints_to_deg};
 
 #[test]
 fn builtins() {

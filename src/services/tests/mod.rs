@@ -1,0 +1,11 @@
+//! Tests of the services: the service core, gripper and ValidFrame
+//! scripts, every float argument refused, random service calls, saves that
+//! keep the old file. Unit tests of the library (not integration tests) so
+//! that `cargo test --lib` covers `src/services/`, which keeps a mutation run
+//! (`scripts/mutants.sh`) to one test binary.
+
+mod bad_floats;
+mod gripper;
+mod props;
+mod save_keeps_file;
+mod service_core;
