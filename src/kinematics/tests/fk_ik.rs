@@ -627,17 +627,43 @@ fn two_pi_representation_nearest_current() {
 #[test]
 fn out_of_reach_names_goal_and_a_reachable_nearest_point() {
     let k = rv_m1();
+    let l = *k.description().links();
+    let tool = k.standard_tool();
+    // Tool up, the flange a wrist length above the shoulder: the wrist
+    // point is on the shoulder, where it has no direction to move in.
+    let mut up = Pose::identity();
+    up.translation = Vector3::new(0.0, 0.0, l.l1 + l.l4 + tool.translation.z);
     for goal in [
         down_at(800.0, 100.0, 200.0),
+        down_at(-300.0, -500.0, 600.0),
         down_at(30.0, 0.0, 300.0 + 30.0 - 179.0),
+        down_at(20.0, 25.0, 300.0 + 30.0 - 179.0),
+        up,
     ] {
         let e = err(&k, &goal);
-        let (g, nearest) = match &e {
-            KinError::WristTooFar { goal, nearest, .. }
-            | KinError::WristTooClose { goal, nearest, .. } => (*goal, *nearest),
+        let (g, nearest, distance, to) = match &e {
+            KinError::WristTooFar {
+                goal,
+                nearest,
+                distance,
+                reach,
+            } => (*goal, *nearest, *distance, reach - 0.05),
+            KinError::WristTooClose {
+                goal,
+                nearest,
+                distance,
+                min_reach,
+            } => (*goal, *nearest, *distance, min_reach + 0.05),
             _ => panic!("{e:?}"),
         };
         assert!((g - goal.translation).norm() < 1e-9, "{e}");
+        // The nearest point is the goal moved straight towards (or away
+        // from) the shoulder until the wrist point is inside the reach.
+        assert!(
+            ((nearest - g).norm() - (distance - to).abs()).abs() < 1e-9,
+            "{e}: moved {} mm",
+            (nearest - g).norm()
+        );
         let mut near = goal;
         near.translation = nearest;
         if let Err(e2) = k.ik_all(&near, &k.standard_tool(), &[0.0; 5]) {
