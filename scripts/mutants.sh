@@ -13,7 +13,7 @@
 # (`--iterate`) gives the mutants the first pass missed or cut to the whole
 # suite (golden scripts, CLI, serial): MUTANTS_PASSES=1 skips it. Set
 # MUTANTS_TEST_ARGS to run other `cargo test` arguments in the second pass.
-# Results go to mutants.out/FILE/mutants.out/ (caught.txt, missed.txt,
+# Results go to mutants.out/DIR-FILE/mutants.out/ (caught.txt, missed.txt,
 # timeout.txt, unviable.txt; the second pass's lists replace the first's
 # for the mutants it re-ran). MUTANTS_ARGS adds cargo-mutants options (for
 # example `--in-place`, which reuses ./target instead of building a copy of
@@ -31,13 +31,32 @@ files=("$@")
 if [ ${#files[@]} -eq 0 ]; then
     files=(src/kinematics/*.rs src/services/*.rs)
 fi
+# One line per file: caught (a test failed, or it hung: timeout) of the
+# viable mutants (those that build).
+summarize() {
+    local f=$1 d=$2/mutants.out
+    local caught missed timeout unviable viable
+    caught=$(cat "$d/caught.txt" "$d/previously_caught.txt" 2>/dev/null | sort -u \
+        | comm -23 - "$2/unviable-all.txt" | wc -l)
+    missed=$(wc -l <"$d/missed.txt")
+    timeout=$(wc -l <"$d/timeout.txt")
+    unviable=$(wc -l <"$2/unviable-all.txt")
+    viable=$((caught + missed + timeout))
+    echo "$f: $((caught + timeout)) of $viable viable caught" \
+        "($((viable ? 100 * (caught + timeout) / viable : 100)) %;" \
+        "$timeout by timeout), $missed missed, $unviable unviable"
+}
+summary=()
 status=0
 for f in "${files[@]}"; do
     test_args=()
     if [ -n "${MUTANTS_TEST_ARGS:-}" ]; then
         read -r -a test_args <<<"$MUTANTS_TEST_ARGS"
     fi
-    out="mutants.out/$(basename "$f" .rs)"
+    # src/kinematics/mod.rs -> mutants.out/kinematics-mod
+    out=${f#src/}
+    out="mutants.out/${out//\//-}"
+    out=${out%.rs}
     mkdir -p "$out"
     read -r -a extra <<<"${MUTANTS_ARGS:-}"
     jobs=(-j 1)
@@ -51,12 +70,23 @@ for f in "${files[@]}"; do
     fi
     for pass in "${passes[@]}"; do
         read -r -a cmd <<<"$pass"
+        # Nothing left for the whole suite to catch: skip its pass.
+        if [[ "$pass" == *--iterate* ]] && ! [ -s "$out/mutants.out/missed.txt" ] \
+            && ! [ -s "$out/mutants.out/timeout.txt" ]; then
+            continue
+        fi
         echo "== $f: ${cmd[*]}" >&2
         if [ -e "$lock" ]; then
             flock "$lock" "${cmd[@]}" || status=$?
         else
             "${cmd[@]}" || status=$?
         fi
+        # --iterate files earlier unviable mutants under previously_caught:
+        # keep every pass's unviable ones to tell them apart.
+        cat "$out/mutants.out/unviable.txt" >>"$out/unviable-all.txt" 2>/dev/null || true
+        sort -u -o "$out/unviable-all.txt" "$out/unviable-all.txt"
     done
+    summary+=("$(summarize "$f" "$out")")
 done
+printf '%s\n' "${summary[@]}" >&2
 exit "$status"

@@ -172,6 +172,69 @@ fn ik_on_axis_takes_j1_from_approach() {
     }
 }
 
+/// Every solution of `goal` (flange = goal: identity tool) reaches it.
+fn all_reach(k: &Kinematics, goal: &Pose, current: &Joints) -> Vec<Solution> {
+    let tool = Pose::identity();
+    let sols = k
+        .ik_all(goal, &tool, current)
+        .unwrap_or_else(|e| panic!("{goal:?}: {e}"));
+    assert!(!sols.is_empty());
+    for s in &sols {
+        let back = k.fk_tcp(&s.joints, &tool);
+        assert_close(back.translation, goal.translation, 1e-9);
+        assert!(
+            (back.rotation - goal.rotation).amax() < 1e-12,
+            "{:?} -> {:?}",
+            goal.rotation,
+            s.joints
+        );
+    }
+    sols
+}
+
+#[test]
+fn ik_behind_the_waist_axis_with_a_vertical_approach() {
+    // Behind the base and close to the x axis, pointing down: J1 comes from
+    // the position (about 178 deg or its mirror, -2 deg with the arm
+    // leaning back), whatever the current J1.
+    let k = wide();
+    for (x, y) in [(-300.0, 10.0), (-300.0, -10.0), (-250.0, 0.5), (10.0, -300.0)] {
+        for current in [[0.0; 5], joints_from_deg([-120.0, 0.0, 0.0, 0.0, 0.0])] {
+            let sols = all_reach(&k, &down_at(x, y, 300.0), &current);
+            let theta = f64::atan2(y, x);
+            for s in &sols {
+                let d = (s.joints[0] - theta).rem_euclid(std::f64::consts::PI);
+                assert!(d < 1e-9 || d > std::f64::consts::PI - 1e-9, "{s:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn ik_on_axis_with_an_approach_along_an_axis_of_the_base() {
+    // The flange on the waist axis, the approach exactly along +y, -x or
+    // +x (components exactly 0): J1 comes from the approach.
+    let k = wide();
+    let approaches = [
+        (Vector3::y(), Vector3::x()),
+        (-Vector3::x(), Vector3::y()),
+        (Vector3::x(), Vector3::z()),
+    ];
+    for (a, n) in approaches {
+        let o = a.cross(&n);
+        let mut goal = Pose::new(Matrix3::from_columns(&[n, o, a]), Vector3::zeros());
+        goal.translation = Vector3::new(0.0, 0.0, 400.0);
+        for current in [[0.0; 5], joints_from_deg([40.0, 0.0, 0.0, 0.0, 0.0])] {
+            let sols = all_reach(&k, &goal, &current);
+            let theta = a.y.atan2(a.x);
+            for s in &sols {
+                let d = (s.joints[0] - theta).rem_euclid(std::f64::consts::PI);
+                assert!(d < 1e-9 || d > std::f64::consts::PI - 1e-9, "{s:?}");
+            }
+        }
+    }
+}
+
 /// The index of the solution nearest `current` by the documented metric
 /// (time of the slowest joint at full speed, then summed squares), computed
 /// here independently of the library.
