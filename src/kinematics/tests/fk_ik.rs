@@ -235,6 +235,41 @@ fn ik_on_axis_with_an_approach_along_an_axis_of_the_base() {
     }
 }
 
+#[test]
+fn folded_arm_with_equal_links_keeps_the_current_shoulder() {
+    // L2 = L3 and the wrist point on the shoulder: the folded arm can point
+    // the upper arm anywhere; J2 stays where it is (and J1, the flange
+    // being on the waist axis with a vertical approach).
+    let text = RobotDescription::builtin_text("rv-m1")
+        .unwrap()
+        .replace("l3 = 160.0", "l3 = 250.0")
+        .replace("min_deg = -150.0", "min_deg = -180.0")
+        .replace("max_deg = 150.0", "max_deg = 180.0")
+        .replace("min_deg = -30.0", "min_deg = -180.0")
+        .replace("max_deg = 100.0", "max_deg = 180.0")
+        .replace("min_deg = 0.0", "min_deg = -180.0")
+        .replace("max_deg = 110.0", "max_deg = 180.0")
+        .replace("min_deg = -90.0", "min_deg = -180.0")
+        .replace("max_deg = 90.0", "max_deg = 180.0");
+    let k = Kinematics::new(RobotDescription::from_toml_str(&text).unwrap());
+    let l = *k.description().links();
+    assert_eq!(l.l2, l.l3);
+    let mut goal = Pose::identity();
+    goal.translation = Vector3::new(0.0, 0.0, l.l1 + l.l4);
+    for current in [
+        joints_from_deg([20.0, 30.0, 0.0, 0.0, 0.0]),
+        joints_from_deg([-70.0, -45.0, 0.0, 0.0, 0.0]),
+    ] {
+        let sols = all_reach(&k, &goal, &current);
+        assert!(
+            sols.iter()
+                .any(|s| (s.joints[0] - current[0]).abs() < 1e-9
+                    && (s.joints[1] - current[1]).abs() < 1e-9),
+            "{sols:?}"
+        );
+    }
+}
+
 /// The index of the solution nearest `current` by the documented metric
 /// (time of the slowest joint at full speed, then summed squares), computed
 /// here independently of the library.
