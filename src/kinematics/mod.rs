@@ -46,9 +46,11 @@ pub mod tolerance {
     /// Largest allowed sine of the angle between the approach vector and the
     /// vertical plane through the waist axis and the flange.
     pub const PLANE: f64 = 1e-6;
-    /// A point closer than this (mm) to the waist axis is "on the axis".
+    /// A point no farther than this (mm) from the waist axis is "on the
+    /// axis".
     pub const AXIS: f64 = 1e-6;
-    /// A horizontal component of a unit vector below this is "vertical".
+    /// A unit vector whose horizontal component is no longer than this is
+    /// "vertical".
     pub const VERTICAL: f64 = 1e-9;
     /// Slack (mm) on the arm's reach before a wrist point is out of reach.
     pub const REACH: f64 = 1e-9;

@@ -3,7 +3,7 @@
 
 use crate::kinematics::{
     AdaException, Arm, Elbow, Joints, KinError, Kinematics, Pose, RobotDescription, Solution,
-    joints_from_deg,
+    joints_from_deg, tolerance,
 };
 use nalgebra::{Matrix3, Vector3};
 
@@ -198,7 +198,12 @@ fn ik_behind_the_waist_axis_with_a_vertical_approach() {
     // the position (about 178 deg or its mirror, -2 deg with the arm
     // leaning back), whatever the current J1.
     let k = wide();
-    for (x, y) in [(-300.0, 10.0), (-300.0, -10.0), (-250.0, 0.5), (10.0, -300.0)] {
+    for (x, y) in [
+        (-300.0, 10.0),
+        (-300.0, -10.0),
+        (-250.0, 0.5),
+        (10.0, -300.0),
+    ] {
         for current in [[0.0; 5], joints_from_deg([-120.0, 0.0, 0.0, 0.0, 0.0])] {
             let sols = all_reach(&k, &down_at(x, y, 300.0), &current);
             let theta = f64::atan2(y, x);
@@ -262,12 +267,46 @@ fn folded_arm_with_equal_links_keeps_the_current_shoulder() {
     ] {
         let sols = all_reach(&k, &goal, &current);
         assert!(
-            sols.iter()
-                .any(|s| (s.joints[0] - current[0]).abs() < 1e-9
-                    && (s.joints[1] - current[1]).abs() < 1e-9),
+            sols.iter().any(|s| (s.joints[0] - current[0]).abs() < 1e-9
+                && (s.joints[1] - current[1]).abs() < 1e-9),
             "{sols:?}"
         );
     }
+}
+
+#[test]
+fn on_axis_and_vertical_include_their_tolerance() {
+    // A flange exactly `AXIS` from the waist axis is on it, and an approach
+    // whose horizontal part is exactly `VERTICAL` is vertical: J1 stays.
+    let k = wide();
+    let current = joints_from_deg([30.0, 0.0, 0.0, 0.0, 0.0]);
+    let keeps_j1 = |goal: &Pose| {
+        let tool = Pose::identity();
+        let sols = k.ik_all(goal, &tool, &current).unwrap();
+        for s in &sols {
+            // Within the tolerance: the flange is taken as on the axis.
+            let back = k.fk_tcp(&s.joints, &tool);
+            assert_close(back.translation, goal.translation, 2.0 * tolerance::AXIS);
+        }
+        assert!(
+            sols.iter()
+                .any(|s| (s.joints[0] - current[0]).abs() < 1e-12),
+            "{sols:?}"
+        );
+    };
+    assert_eq!((tolerance::AXIS * tolerance::AXIS).sqrt(), tolerance::AXIS);
+    let mut goal = down_at(tolerance::AXIS, 0.0, 100.0);
+    keeps_j1(&goal);
+    // Approach (VERTICAL, 0, -1): n = o x a with o = y.
+    let v = tolerance::VERTICAL;
+    assert_eq!((v * v).sqrt(), v);
+    let a = Vector3::new(v, 0.0, -1.0);
+    let o = Vector3::y();
+    goal = Pose::new(
+        Matrix3::from_columns(&[o.cross(&a), o, a]),
+        Vector3::new(0.0, 0.0, 100.0),
+    );
+    keeps_j1(&goal);
 }
 
 /// The index of the solution nearest `current` by the documented metric
