@@ -309,6 +309,31 @@ fn on_axis_and_vertical_include_their_tolerance() {
     keeps_j1(&goal);
 }
 
+#[test]
+fn wrist_on_the_waist_axis_the_turned_waist_is_backward() {
+    // Arm straight up: the wrist point is on the waist axis. Of the two
+    // waist angles, the one the current J1 (or the approach) gives is the
+    // forward arm, the one turned by 180 deg the backward arm; a preference
+    // chooses between them.
+    let k = wide();
+    let tool = k.standard_tool();
+    for j1 in [0.0, 50.0, -100.0] {
+        let current = joints_from_deg([j1, 0.0, 0.0, 0.0, 0.0]);
+        let goal = k.fk_tcp(&current, &tool);
+        let forward = k
+            .ik_choose(&goal, &tool, &current, Arm::Forward, Elbow::None)
+            .unwrap();
+        assert_eq!(forward.arm, Arm::Forward);
+        assert!((forward.joints[0] - current[0]).abs() < 1e-9, "{forward:?}");
+        let backward = k
+            .ik_choose(&goal, &tool, &current, Arm::Backward, Elbow::None)
+            .unwrap();
+        assert_eq!(backward.arm, Arm::Backward);
+        let turned = (backward.joints[0] - current[0]).abs().to_degrees();
+        assert!((turned - 180.0).abs() < 1e-6, "{backward:?}");
+    }
+}
+
 /// The index of the solution nearest `current` by the documented metric
 /// (time of the slowest joint at full speed, then summed squares), computed
 /// here independently of the library.
