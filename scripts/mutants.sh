@@ -36,6 +36,8 @@ fi
 summarize() {
     local f=$1 d=$2/mutants.out
     local caught missed timeout unviable viable
+    mkdir -p "$d"
+    touch "$d/caught.txt" "$d/missed.txt" "$d/timeout.txt" "$2/unviable-all.txt"
     caught=$(cat "$d/caught.txt" "$d/previously_caught.txt" 2>/dev/null | sort -u \
         | comm -23 - "$2/unviable-all.txt" | wc -l)
     missed=$(wc -l <"$d/missed.txt")
