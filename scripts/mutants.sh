@@ -70,10 +70,10 @@ for f in "${files[@]}"; do
     if [ "${MUTANTS_PASSES:-2}" != 1 ]; then
         passes+=("${base[*]} --iterate -- ${test_args[*]}")
     fi
-    for pass in "${passes[@]}"; do
-        read -r -a cmd <<<"$pass"
+    for i in "${!passes[@]}"; do
+        read -r -a cmd <<<"${passes[$i]}"
         # Nothing left for the whole suite to catch: skip its pass.
-        if [[ "$pass" == *--iterate* ]] && ! [ -s "$out/mutants.out/missed.txt" ] \
+        if [ "$i" -gt 0 ] && ! [ -s "$out/mutants.out/missed.txt" ] \
             && ! [ -s "$out/mutants.out/timeout.txt" ]; then
             continue
         fi
