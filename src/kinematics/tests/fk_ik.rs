@@ -317,9 +317,12 @@ fn wrist_on_the_waist_axis_the_turned_waist_is_backward() {
     // chooses between them.
     let k = wide();
     let tool = k.standard_tool();
-    for j1 in [0.0, 50.0, -100.0] {
+    // Also a wrist point a hair (within the axis tolerance) behind the axis.
+    for (j1, behind) in [(0.0, 0.0), (50.0, 0.0), (-100.0, 0.0), (30.0, 5e-7)] {
         let current = joints_from_deg([j1, 0.0, 0.0, 0.0, 0.0]);
-        let goal = k.fk_tcp(&current, &tool);
+        let mut goal = k.fk_tcp(&current, &tool);
+        let (s1, c1) = current[0].sin_cos();
+        goal.translation -= Vector3::new(c1, s1, 0.0) * behind;
         let forward = k
             .ik_choose(&goal, &tool, &current, Arm::Forward, Elbow::None)
             .unwrap();
