@@ -244,17 +244,11 @@ impl Kinematics {
             let lo = ((spec.min - tolerance::LIMIT - q) / TAU).ceil();
             let hi = ((spec.max + tolerance::LIMIT - q) / TAU).floor();
             if lo.is_nan() || hi.is_nan() || lo > hi {
-                // No representation fits: report the one nearest the range.
+                // No representation fits, so the range is narrower than a
+                // turn: the one nearest the range is the one nearest its
+                // centre (within half a turn of it).
                 let centre = 0.5 * (spec.min + spec.max);
-                let k = ((centre - q) / TAU).round();
-                let best = [k - 1.0, k, k + 1.0]
-                    .map(|k| q + k * TAU)
-                    .into_iter()
-                    .min_by(|a, b| {
-                        LimitViolation::excess_of(*a, spec.min, spec.max)
-                            .total_cmp(&LimitViolation::excess_of(*b, spec.min, spec.max))
-                    })
-                    .unwrap_or(q);
+                let best = q + ((centre - q) / TAU).round() * TAU;
                 return Err(LimitViolation {
                     joint: i + 1,
                     target: best,

@@ -180,6 +180,46 @@ fn fit_limits_no_representation_reports_the_nearest() {
 }
 
 #[test]
+fn fit_limits_reports_the_representation_nearest_the_range() {
+    // Every joint of both robots, targets all round several turns: the
+    // reported target is the one of its representations (q + k 2 pi) that
+    // exceeds the range least.
+    for name in ["rv-m1", "rm-501"] {
+        let k = Kinematics::new(RobotDescription::builtin(name).unwrap());
+        for (j, spec) in k.description().joints().iter().enumerate() {
+            if spec.max - spec.min >= TAU {
+                continue;
+            }
+            for step in -200..=200 {
+                let mut q = [0.0; 5];
+                for (i, s) in k.description().joints().iter().enumerate() {
+                    q[i] = 0.5 * (s.min + s.max);
+                }
+                q[j] = (step as f64 * 3.7).to_radians();
+                let Err(v) = k.fit_limits(&q, &q) else {
+                    continue;
+                };
+                assert_eq!(v.joint, j + 1);
+                let nearest = (-4..=4)
+                    .map(|t| q[j] + t as f64 * TAU)
+                    .map(|c| LimitViolation::excess_of(c, spec.min, spec.max))
+                    .fold(f64::INFINITY, f64::min);
+                assert!(
+                    (v.excess() - nearest).abs() < 1e-12,
+                    "{name} J{}: {:.1} deg reported as {:.1} deg",
+                    j + 1,
+                    q[j].to_degrees(),
+                    v.target.to_degrees()
+                );
+                assert!(
+                    ((v.target - q[j]) / TAU - ((v.target - q[j]) / TAU).round()).abs() < 1e-12
+                );
+            }
+        }
+    }
+}
+
+#[test]
 fn nearest_representation_next_to_reference() {
     let raw: Joints = joints_from_deg([100.0, -100.0, 10.0, 179.0, 0.0]);
     let reference = joints_from_deg([300.0, -300.0, 10.0 + 720.0, -179.0, 180.0]);
