@@ -24,7 +24,7 @@ use super::error::{AdaException, KinError, LimitViolation, decimals_for};
 use super::ik::wrap;
 use super::ik::{Arm, Elbow};
 use super::valid::{into_plane, out_of_plane};
-use super::{Joints, Kinematics, RobotDescription, joints_from_deg, tolerance};
+use super::{Joints, Kinematics, Pose, RobotDescription, joints_from_deg, tolerance};
 
 fn rv_m1() -> Kinematics {
     Kinematics::new(RobotDescription::builtin("rv-m1").unwrap())
@@ -215,6 +215,23 @@ fn fit_limits_reports_the_representation_nearest_the_range() {
                     ((v.target - q[j]) / TAU - ((v.target - q[j]) / TAU).round()).abs() < 1e-12
                 );
             }
+        }
+    }
+}
+
+#[test]
+fn branches_report_how_far_the_approach_is_out_of_the_plane() {
+    // Flange at (300, 0, 300), approach tilted by 20 deg out of the x-z
+    // plane (towards +y or -y): refused with that angle.
+    let k = rv_m1();
+    for sign in [1.0, -1.0] {
+        let mut flange = Pose::rot_x(sign * 20f64.to_radians()) * Pose::rot_y(PI);
+        flange.translation = Vector3::new(300.0, 0.0, 300.0);
+        match k.branches(&flange, &[0.0; 5]) {
+            Err(KinError::OrientationUnreachable { angle }) => {
+                assert!((angle.to_degrees() - 20.0).abs() < 1e-9, "{angle}")
+            }
+            other => panic!("{other:?}"),
         }
     }
 }
