@@ -822,6 +822,10 @@ fn out_of_reach_names_goal_and_a_reachable_nearest_point() {
             _ => panic!("{e:?}"),
         };
         assert!((g - goal.translation).norm() < 1e-9, "{e}");
+        if distance == 0.0 {
+            // On the shoulder: up, away from the base.
+            assert!(nearest.z > g.z, "{e}");
+        }
         // The nearest point is the goal moved straight towards (or away
         // from) the shoulder until the wrist point is inside the reach.
         assert!(
