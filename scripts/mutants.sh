@@ -32,21 +32,27 @@ if [ ${#files[@]} -eq 0 ]; then
     files=(src/kinematics/*.rs src/services/*.rs)
 fi
 # One line per file: caught (a test failed, or it hung: timeout) of the
-# viable mutants (those that build).
+# viable mutants (those that build), counting only the mutants the file has
+# now (--iterate keeps the names of earlier runs, whose lines may have moved).
 summarize() {
     local f=$1 d=$2/mutants.out
-    local caught missed timeout unviable viable
+    local now caught missed timeout unviable viable
     mkdir -p "$d"
-    touch "$d/caught.txt" "$d/missed.txt" "$d/timeout.txt" "$2/unviable-all.txt"
-    caught=$(cat "$d/caught.txt" "$d/previously_caught.txt" 2>/dev/null | sort -u \
-        | comm -23 - "$2/unviable-all.txt" | wc -l)
-    missed=$(wc -l <"$d/missed.txt")
-    timeout=$(wc -l <"$d/timeout.txt")
-    unviable=$(wc -l <"$2/unviable-all.txt")
+    touch "$d/caught.txt" "$d/previously_caught.txt" "$d/missed.txt" "$d/timeout.txt" "$2/unviable-all.txt"
+    now=$(mktemp)
+    cargo mutants --list --file "$f" 2>/dev/null | sort -u >"$now"
+    count() { sort -u "$@" | comm -12 - "$now"; }
+    unviable=$(count "$2/unviable-all.txt" | wc -l)
+    caught=$(cat "$d/caught.txt" "$d/previously_caught.txt" | sort -u \
+        | comm -23 - <(sort -u "$2/unviable-all.txt") | comm -12 - "$now" | wc -l)
+    missed=$(count "$d/missed.txt" | wc -l)
+    timeout=$(count "$d/timeout.txt" | wc -l)
+    local untested=$(($(wc -l <"$now") - caught - missed - timeout - unviable))
+    rm -f "$now"
     viable=$((caught + missed + timeout))
     echo "$f: $((caught + timeout)) of $viable viable caught" \
         "($((viable ? 100 * (caught + timeout) / viable : 100)) %;" \
-        "$timeout by timeout), $missed missed, $unviable unviable"
+        "$timeout by timeout), $missed missed, $unviable unviable, $untested not run"
 }
 summary=()
 status=0
