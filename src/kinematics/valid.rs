@@ -105,8 +105,11 @@ impl Kinematics {
         // search, each trial turned back into reachability by the same
         // projection) while the angle to the goal shrinks.
         let mut best = settle(&(rotation * tool_rot.transpose()), &t, &p)?;
-        let angle_of = |flange: &Matrix3<f64>| angle_between(&rotation, &(flange * tool_rot));
-        let mut best_angle = angle_of(&best);
+        // The Frobenius distance between two rotations is 2 sqrt 2 sin(a / 2)
+        // for the angle a between them: it orders candidates as the angle
+        // does, exactly for small angles too (where the trace's acos is not).
+        let distance_of = |flange: &Matrix3<f64>| (rotation - flange * tool_rot).norm();
+        let mut best_distance = distance_of(&best);
         let mut step = 0.05;
         let mut rounds = 0;
         while step > 1e-9 && rounds < 2000 {
@@ -122,10 +125,10 @@ impl Kinematics {
             ] {
                 let nudge = nalgebra::Rotation3::from_scaled_axis(axis * step).into_inner();
                 if let Ok(candidate) = settle(&(nudge * best), &t, &p) {
-                    let a = angle_of(&candidate);
-                    if a < best_angle {
+                    let a = distance_of(&candidate);
+                    if a < best_distance {
                         best = candidate;
-                        best_angle = a;
+                        best_distance = a;
                         improved = true;
                     }
                 }
@@ -136,14 +139,6 @@ impl Kinematics {
         }
         Ok(Pose::new(best * tool_rot, p))
     }
-}
-
-/// Angle (rad) of the rotation between two rotation matrices, from the
-/// Frobenius norm of their difference (`2 sqrt 2 sin(angle / 2)`): exact
-/// for small angles too, where the trace formula's `acos` is not.
-fn angle_between(a: &Matrix3<f64>, b: &Matrix3<f64>) -> f64 {
-    let chord = (a - b).norm() / (2.0 * std::f64::consts::SQRT_2);
-    2.0 * chord.min(1.0).asin()
 }
 
 /// The flange orientation nearest `flange_rot` whose axis lies in the
