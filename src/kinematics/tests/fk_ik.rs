@@ -7,38 +7,10 @@ use crate::kinematics::{
 };
 use nalgebra::{Matrix3, Vector3};
 
-fn rv_m1() -> Kinematics {
-    Kinematics::new(RobotDescription::builtin("rv-m1").unwrap())
-}
-
-fn rm_501() -> Kinematics {
-    Kinematics::new(RobotDescription::builtin("rm-501").unwrap())
-}
-
-/// A robot of the same structure with (nearly) unlimited joints, so that all
-/// four branches exist.
-fn wide() -> Kinematics {
-    let text = RobotDescription::builtin_text("rv-m1")
-        .unwrap()
-        .replace("min_deg = -150.0", "min_deg = -180.0")
-        .replace("max_deg = 150.0", "max_deg = 180.0")
-        .replace("min_deg = -30.0", "min_deg = -180.0")
-        .replace("max_deg = 100.0", "max_deg = 180.0")
-        .replace("min_deg = 0.0", "min_deg = -180.0")
-        .replace("max_deg = 110.0", "max_deg = 180.0")
-        .replace("min_deg = -90.0", "min_deg = -180.0")
-        .replace("max_deg = 90.0", "max_deg = 180.0");
-    Kinematics::new(RobotDescription::from_toml_str(&text).unwrap())
-}
+use super::{down_at, rm_501, rv_m1, wide, wide_text};
 
 fn assert_close(a: Vector3<f64>, b: Vector3<f64>, tol: f64) {
     assert!((a - b).amax() < tol, "{a:?} != {b:?}");
-}
-
-fn down_at(x: f64, y: f64, z: f64) -> Pose {
-    let mut p = Pose::rot_y(std::f64::consts::PI);
-    p.translation = Vector3::new(x, y, z);
-    p
 }
 
 #[test]
@@ -245,17 +217,7 @@ fn folded_arm_with_equal_links_keeps_the_current_shoulder() {
     // L2 = L3 and the wrist point on the shoulder: the folded arm can point
     // the upper arm anywhere; J2 stays where it is (and J1, the flange
     // being on the waist axis with a vertical approach).
-    let text = RobotDescription::builtin_text("rv-m1")
-        .unwrap()
-        .replace("l3 = 160.0", "l3 = 250.0")
-        .replace("min_deg = -150.0", "min_deg = -180.0")
-        .replace("max_deg = 150.0", "max_deg = 180.0")
-        .replace("min_deg = -30.0", "min_deg = -180.0")
-        .replace("max_deg = 100.0", "max_deg = 180.0")
-        .replace("min_deg = 0.0", "min_deg = -180.0")
-        .replace("max_deg = 110.0", "max_deg = 180.0")
-        .replace("min_deg = -90.0", "min_deg = -180.0")
-        .replace("max_deg = 90.0", "max_deg = 180.0");
+    let text = wide_text().replace("l3 = 160.0", "l3 = 250.0");
     let k = Kinematics::new(RobotDescription::from_toml_str(&text).unwrap());
     let l = *k.description().links();
     assert_eq!(l.l2, l.l3);

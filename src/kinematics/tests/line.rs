@@ -1,33 +1,8 @@
 //! Straight-line interpolation: continuity, refusals with a distance.
 
-use crate::kinematics::{
-    AdaException, KinError, Kinematics, Pose, RobotDescription, continuity, joints_from_deg,
-};
-use nalgebra::Vector3;
+use crate::kinematics::{AdaException, KinError, Pose, continuity, joints_from_deg};
 
-fn rv_m1() -> Kinematics {
-    Kinematics::new(RobotDescription::builtin("rv-m1").unwrap())
-}
-
-fn wide() -> Kinematics {
-    let text = RobotDescription::builtin_text("rv-m1")
-        .unwrap()
-        .replace("min_deg = -150.0", "min_deg = -180.0")
-        .replace("max_deg = 150.0", "max_deg = 180.0")
-        .replace("min_deg = -30.0", "min_deg = -180.0")
-        .replace("max_deg = 100.0", "max_deg = 180.0")
-        .replace("min_deg = 0.0", "min_deg = -180.0")
-        .replace("max_deg = 110.0", "max_deg = 180.0")
-        .replace("min_deg = -90.0", "min_deg = -180.0")
-        .replace("max_deg = 90.0", "max_deg = 180.0");
-    Kinematics::new(RobotDescription::from_toml_str(&text).unwrap())
-}
-
-fn down_at(x: f64, y: f64, z: f64) -> Pose {
-    let mut p = Pose::rot_y(std::f64::consts::PI);
-    p.translation = Vector3::new(x, y, z);
-    p
-}
+use super::{down_at, rv_m1, wide};
 
 #[test]
 fn continuous_line_on_the_line() {

@@ -26,8 +26,54 @@ use super::ik::{Arm, Elbow};
 use super::valid::{into_plane, out_of_plane};
 use super::{Joints, Kinematics, Pose, RobotDescription, joints_from_deg, tolerance};
 
+// Fixtures shared by the test modules below.
+
 fn rv_m1() -> Kinematics {
     Kinematics::new(RobotDescription::builtin("rv-m1").unwrap())
+}
+
+fn rm_501() -> Kinematics {
+    Kinematics::new(RobotDescription::builtin("rm-501").unwrap())
+}
+
+/// The RV-M1's description with every joint over -180 .. 180 deg, so that
+/// all four branches exist (edit it further for other test robots).
+fn wide_text() -> String {
+    RobotDescription::builtin_text("rv-m1")
+        .unwrap()
+        .replace("min_deg = -150.0", "min_deg = -180.0")
+        .replace("max_deg = 150.0", "max_deg = 180.0")
+        .replace("min_deg = -30.0", "min_deg = -180.0")
+        .replace("max_deg = 100.0", "max_deg = 180.0")
+        .replace("min_deg = 0.0", "min_deg = -180.0")
+        .replace("max_deg = 110.0", "max_deg = 180.0")
+        .replace("min_deg = -90.0", "min_deg = -180.0")
+        .replace("max_deg = 90.0", "max_deg = 180.0")
+}
+
+fn wide() -> Kinematics {
+    Kinematics::new(RobotDescription::from_toml_str(&wide_text()).unwrap())
+}
+
+/// The TCP at (x, y, z), pointing straight down.
+fn down_at(x: f64, y: f64, z: f64) -> Pose {
+    let mut p = Pose::rot_y(PI);
+    p.translation = Vector3::new(x, y, z);
+    p
+}
+
+/// SplitMix64: a seeded generator, so failures reproduce.
+struct Rng(u64);
+
+impl Rng {
+    /// Uniform in [0, 1).
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
 }
 
 /// RV-M1 with J1 over -200 .. 200 deg and J5 over -500 .. 500 deg.

@@ -3,18 +3,9 @@
 use crate::kinematics::{Joints, Kinematics, Pose, RobotDescription};
 use proptest::prelude::*;
 
-/// SplitMix64: a seeded generator, so failures reproduce.
-struct Rng(u64);
+use super::Rng;
 
 impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-
     fn joints(&mut self, k: &Kinematics) -> Joints {
         let mut q = [0.0; 5];
         for (v, spec) in q.iter_mut().zip(k.description().joints()) {

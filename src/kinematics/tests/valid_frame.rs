@@ -2,20 +2,12 @@
 
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
-use crate::kinematics::{AdaException, KinError, Kinematics, Pose, RobotDescription};
+use crate::kinematics::{AdaException, KinError, Pose};
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
-struct Rng(u64);
+use super::{Rng, rv_m1};
 
 impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-
     fn rotation(&mut self) -> Matrix3<f64> {
         let axis = Vector3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5);
         UnitQuaternion::from_scaled_axis(axis.normalize() * (self.next() * PI))
@@ -24,11 +16,6 @@ impl Rng {
     }
 }
 
-fn rv_m1() -> Kinematics {
-    Kinematics::new(RobotDescription::builtin("rv-m1").unwrap())
-}
-
-/// Angle between the approach and the vertical plane through the axis and p.
 fn plane_angle(pose: &Pose) -> f64 {
     let p = pose.translation;
     let m = Vector3::new(-p.y, p.x, 0.0).normalize();
