@@ -115,3 +115,37 @@ fn a_stale_temporary_from_a_killed_save_is_gone_after_the_next_save() {
     assert_eq!(out, "loaded\n");
     assert_eq!(left, ["cell.paths", "cell.txt", "save.air"]);
 }
+
+/// A path file name that names no file, or a directory that does not exist,
+/// is `Name_Error` before anything is written; a missing file to load is
+/// `Name_Error` too (not `Use_Error`).
+#[test]
+fn file_names_refused_before_writing() {
+    let dir = std::env::temp_dir().join(format!("adair_path_names_{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let missing_dir = dir.join("no_such_dir").join("cell.paths");
+    let missing_file = dir.join("no_such_file.paths");
+    let mut script = String::from(
+        "procedure Try (Name : String; Load : Boolean) is\nbegin\n   \
+         if Load then LoadPathSystem (Name); else SavePathSystem (Name); end if;\n   \
+         Put_Line (\"done\");\nexception\n   \
+         when E : others => Put_Line (Ada.Exceptions.Exception_Name (E));\nend Try;\n\
+         InitRobot;\nCreatePath (1);\nInsertPosition (1, 1, Trans (300.0, 0.0, 200.0));\n",
+    );
+    for (name, load) in [
+        ("/".to_string(), false),
+        ("".to_string(), false),
+        (missing_dir.display().to_string(), false),
+        (missing_file.display().to_string(), true),
+    ] {
+        script.push_str(&format!(
+            "Try (\"{name}\", {});\n",
+            if load { "True" } else { "False" }
+        ));
+    }
+    let out = run(&dir, "names.air", &script);
+    assert_eq!(out, "ADA.IO_EXCEPTIONS.NAME_ERROR\n".repeat(4), "{script}");
+    assert!(!missing_dir.parent().unwrap().exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
