@@ -54,6 +54,29 @@ fn pure_rotation_and_zero_length() {
 }
 
 #[test]
+fn orientation_turns_evenly_along_the_line() {
+    // A pure turn of 80 deg about the tool axis: slerp turns it by the same
+    // angle at every support point (a normalised linear blend would turn
+    // faster in the middle).
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    let from = joints_from_deg([0.0, 20.0, 60.0, 10.0, -40.0]);
+    let start = k.fk_tcp(&from, &tool);
+    let mut goal = start * Pose::rot_z(80f64.to_radians());
+    goal.translation = start.translation;
+    let points = k.straight_line(&from, &goal, &tool, 1.0).unwrap();
+    assert!(points.len() >= 80, "{}", points.len());
+    let mut previous = start;
+    let step = 80f64.to_radians() / points.len() as f64;
+    for q in &points {
+        let pose = k.fk_tcp(q, &tool);
+        let turned = previous.rotation_angle_to(&pose);
+        assert!((turned - step).abs() < 1e-9, "{} vs {}", turned, step);
+        previous = pose;
+    }
+}
+
+#[test]
 fn blocked_where_it_leaves_the_workspace() {
     // Wide limits, so that the reach, not a limit, stops the line.
     let k = wide();
