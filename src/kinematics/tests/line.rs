@@ -2,6 +2,8 @@
 
 use crate::kinematics::{AdaException, KinError, Pose, continuity, joints_from_deg};
 
+use nalgebra::Vector3;
+
 use super::{down_at, rv_m1, wide};
 
 #[test]
@@ -73,6 +75,28 @@ fn orientation_turns_evenly_along_the_line() {
         let turned = previous.rotation_angle_to(&pose);
         assert!((turned - step).abs() < 1e-9, "{} vs {}", turned, step);
         previous = pose;
+    }
+}
+
+#[test]
+fn a_hair_of_rotation_ends_on_the_goal() {
+    // 20 mm with a turn of 5e-7 rad (under slerp's 1e-6 rad threshold,
+    // where it blends linearly): the last point is the goal, and every
+    // point lies between the two orientations.
+    let k = rv_m1();
+    let tool = k.standard_tool();
+    let from = joints_from_deg([0.0, 20.0, 60.0, 10.0, -40.0]);
+    let start = k.fk_tcp(&from, &tool);
+    let tiny = 5e-7;
+    let mut goal = start * Pose::rot_z(tiny);
+    goal.translation = start.translation + Vector3::new(0.0, 0.0, 20.0);
+    let points = k.straight_line(&from, &goal, &tool, 1.0).unwrap();
+    let end = k.fk_tcp(points.last().unwrap(), &tool);
+    assert!((end.rotation - goal.rotation).amax() < 1e-12);
+    for q in &points {
+        let pose = k.fk_tcp(q, &tool);
+        assert!(start.rotation_angle_to(&pose) <= tiny + 1e-12);
+        assert!(goal.rotation_angle_to(&pose) <= tiny + 1e-12);
     }
 }
 
