@@ -41,20 +41,18 @@ impl Kinematics {
         self.fk_flange(q) * *tool
     }
 
-    /// Position of the wrist-pitch axis in the arm plane: (r, z) with r
-    /// measured along the direction J1 points.
-    pub(crate) fn wrist_in_plane(&self, q: &Joints) -> (f64, f64) {
+    /// How far the wrist-pitch axis lies from the waist axis in the
+    /// direction J1 points (negative behind it), mm.
+    pub(crate) fn wrist_reach(&self, q: &Joints) -> f64 {
         let l = self.desc.links();
-        let r = l.l2 * q[1].sin() + l.l3 * (q[1] + q[2]).sin();
-        let z = l.l1 + l.l2 * q[1].cos() + l.l3 * (q[1] + q[2]).cos();
-        (r, z)
+        l.l2 * q[1].sin() + l.l3 * (q[1] + q[2]).sin()
     }
 
     /// The configuration (branch) of a joint vector: arm forward when the
     /// wrist point lies in front of the waist axis in the direction J1 points
     /// (r >= 0, on the axis counts as forward); elbow above when J3 >= 0 (J3 taken in -180 .. 180 deg).
     pub fn config_of(&self, q: &Joints) -> (Arm, Elbow) {
-        let (r, _) = self.wrist_in_plane(q);
+        let r = self.wrist_reach(q);
         let arm = if r >= 0.0 {
             Arm::Forward
         } else {
