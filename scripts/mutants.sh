@@ -54,6 +54,21 @@ summarize() {
         "($((viable ? 100 * (caught + timeout) / viable : 100)) %;" \
         "$timeout by timeout), $missed missed, $unviable unviable, $untested not run"
 }
+# Runs one cargo-mutants command (under the cargo lock when there is one)
+# and keeps its unviable mutants: --iterate files earlier unviable ones
+# under previously_caught, so every pass's are kept to tell them apart.
+run_pass() {
+    local out=$1
+    shift
+    echo "== $f: $*" >&2
+    if [ -e "$lock" ]; then
+        flock "$lock" "$@" || status=$?
+    else
+        "$@" || status=$?
+    fi
+    cat "$out/mutants.out/unviable.txt" >>"$out/unviable-all.txt" 2>/dev/null || true
+    sort -u -o "$out/unviable-all.txt" "$out/unviable-all.txt"
+}
 summary=()
 status=0
 for f in "${files[@]}"; do
@@ -72,28 +87,12 @@ for f in "${files[@]}"; do
     [[ " ${extra[*]} " == *" --in-place "* ]] && jobs=()
     base=(cargo mutants "${jobs[@]}" --timeout "$timeout" "${extra[@]}" --file "$f" --output "$out")
     # -C goes to the build as well as to the test run: one test binary.
-    passes=("${base[*]} -C --lib")
-    if [ "${MUTANTS_PASSES:-2}" != 1 ]; then
-        passes+=("${base[*]} --iterate -- ${test_args[*]}")
+    run_pass "$out" "${base[@]}" -C --lib
+    # The whole suite, for what the library tests left (if anything).
+    if [ "${MUTANTS_PASSES:-2}" != 1 ] && { [ -s "$out/mutants.out/missed.txt" ] \
+        || [ -s "$out/mutants.out/timeout.txt" ]; }; then
+        run_pass "$out" "${base[@]}" --iterate -- "${test_args[@]}"
     fi
-    for i in "${!passes[@]}"; do
-        read -r -a cmd <<<"${passes[$i]}"
-        # Nothing left for the whole suite to catch: skip its pass.
-        if [ "$i" -gt 0 ] && ! [ -s "$out/mutants.out/missed.txt" ] \
-            && ! [ -s "$out/mutants.out/timeout.txt" ]; then
-            continue
-        fi
-        echo "== $f: ${cmd[*]}" >&2
-        if [ -e "$lock" ]; then
-            flock "$lock" "${cmd[@]}" || status=$?
-        else
-            "${cmd[@]}" || status=$?
-        fi
-        # --iterate files earlier unviable mutants under previously_caught:
-        # keep every pass's unviable ones to tell them apart.
-        cat "$out/mutants.out/unviable.txt" >>"$out/unviable-all.txt" 2>/dev/null || true
-        sort -u -o "$out/unviable-all.txt" "$out/unviable-all.txt"
-    done
     summary+=("$(summarize "$f" "$out")")
 done
 printf '%s\n' "${summary[@]}" >&2

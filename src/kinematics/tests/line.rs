@@ -4,7 +4,7 @@ use crate::kinematics::{AdaException, KinError, Pose, continuity, joints_from_de
 
 use nalgebra::Vector3;
 
-use super::{down_at, rv_m1, wide};
+use super::{angle, down_at, rv_m1, wide};
 
 #[test]
 fn continuous_line_on_the_line() {
@@ -93,16 +93,14 @@ fn a_hair_of_rotation_ends_on_the_goal() {
     let points = k.straight_line(&from, &goal, &tool, 1.0).unwrap();
     let end = k.fk_tcp(points.last().unwrap(), &tool);
     assert!((end.rotation - goal.rotation).amax() < 1e-12);
-    // The angle between rotations from the Frobenius norm of their
-    // difference (exact for small angles, unlike the trace's acos).
-    let angle = |a: &Pose, b: &Pose| {
-        2.0 * ((a.rotation - b.rotation).norm() / (2.0 * std::f64::consts::SQRT_2)).asin()
-    };
     let n = points.len() as f64;
     for (i, q) in points.iter().enumerate() {
         let pose = k.fk_tcp(q, &tool);
         let expected = tiny * (i + 1) as f64 / n;
-        assert!((angle(&start, &pose) - expected).abs() < 1e-10, "point {i}");
+        assert!(
+            (angle(&start.rotation, &pose.rotation) - expected).abs() < 1e-10,
+            "point {i}"
+        );
     }
 }
 

@@ -62,6 +62,15 @@ fn down_at(x: f64, y: f64, z: f64) -> Pose {
     p
 }
 
+/// The angle (rad) between two rotations from the Frobenius norm of their
+/// difference (`2 sqrt 2 sin(angle / 2)`), exact for small angles too
+/// (unlike the trace's acos).
+fn angle(a: &nalgebra::Matrix3<f64>, b: &nalgebra::Matrix3<f64>) -> f64 {
+    2.0 * ((a - b).norm() / (2.0 * std::f64::consts::SQRT_2))
+        .min(1.0)
+        .asin()
+}
+
 /// SplitMix64: a seeded generator, so failures reproduce.
 struct Rng(u64);
 

@@ -5,7 +5,7 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 use crate::kinematics::{AdaException, KinError, Pose};
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
-use super::{Rng, rv_m1};
+use super::{Rng, angle, rv_m1};
 
 impl Rng {
     fn rotation(&mut self) -> Matrix3<f64> {
@@ -214,14 +214,6 @@ fn invalid_input() {
     let e = k.valid_frame(&bad, &tool).unwrap_err();
     assert!(matches!(e, KinError::NotOrthonormal { .. }));
     assert_eq!(e.exception(), AdaException::FrameInvalid);
-}
-
-/// Angle (rad) between two rotations, from the chord (exact for small
-/// angles too).
-fn angle(a: &Matrix3<f64>, b: &Matrix3<f64>) -> f64 {
-    2.0 * ((a - b).norm() / (2.0 * std::f64::consts::SQRT_2))
-        .min(1.0)
-        .asin()
 }
 
 /// The flange orientations the arm can take with its TCP at `p` and a tool
