@@ -146,12 +146,14 @@ impl Kinematics {
         // point is `to` mm from the shoulder (same orientation), 0.05 mm
         // inside so that the stretched or folded arm is not on its J3 limit.
         // A wrist point on the shoulder has no direction: it moves up.
-        let away = if d > 0.0 {
-            Vector3::new(c1 * rw, s1 * rw, zw) / d
-        } else {
-            Vector3::z()
+        let moved = |to: f64| {
+            if d > 0.0 {
+                let k = to / d - 1.0;
+                p + Vector3::new(c1 * rw * k, s1 * rw * k, zw * k)
+            } else {
+                p + Vector3::new(0.0, 0.0, to)
+            }
         };
-        let moved = |to: f64| p + away * (to - d);
         if d.is_nan() || d > reach + tolerance::REACH {
             return Err(KinError::WristTooFar {
                 distance: d,
