@@ -15,23 +15,31 @@ pub struct StdUnit {
 }
 
 /// The predefined library, embedded so the binary needs no files beside it.
-/// The first file is checked when a session starts; the others when a
-/// program names one of their packages in a `with` clause, or is a script
-/// (which may name any package without `with`): an Ada main program that
-/// needs neither the clock nor the robot does not pay for checking them.
+/// The first file (package Ada and Ada.Text_IO, which the others may name)
+/// is checked when a session starts; the others when a program names one
+/// of their packages in a `with` clause, or is a script (which may name any
+/// package without `with`): a program pays only for the packages it uses
+/// (issue 11: start-up).
 pub const STDLIB: &[StdUnit] = &[
     StdUnit {
         name: "stdlib/ada.air",
         text: include_str!("../stdlib/ada.air"),
-        provides: &[
-            "Ada",
-            "Ada.Text_IO",
-            "Ada.Integer_Text_IO",
-            "Ada.Float_Text_IO",
-            "Ada.Numerics",
-            "Ada.Numerics.Elementary_Functions",
-            "Ada.Exceptions",
-        ],
+        provides: &["Ada", "Ada.Text_IO"],
+    },
+    StdUnit {
+        name: "stdlib/text_io_numbers.air",
+        text: include_str!("../stdlib/text_io_numbers.air"),
+        provides: &["Ada.Integer_Text_IO", "Ada.Float_Text_IO"],
+    },
+    StdUnit {
+        name: "stdlib/numerics.air",
+        text: include_str!("../stdlib/numerics.air"),
+        provides: &["Ada.Numerics", "Ada.Numerics.Elementary_Functions"],
+    },
+    StdUnit {
+        name: "stdlib/exceptions.air",
+        text: include_str!("../stdlib/exceptions.air"),
+        provides: &["Ada.Exceptions"],
     },
     StdUnit {
         name: "stdlib/calendar.air",
@@ -382,12 +390,14 @@ impl Session {
         diags.extend(self.checker.take_diags());
         // A name from a stdlib package that was not checked (no `with`):
         // check the rest of the stdlib to say where it is declared.
+        // (`X` is not declared; `X` is not declared in `P`: name X, prefix P.)
         let undeclared = |d: &Diagnostic| {
-            d.message
-                .strip_prefix('`')
-                .and_then(|m| m.strip_suffix("` is not declared"))
-                .filter(|_| d.hint.is_none())
-                .map(str::to_string)
+            let m = d.message.strip_prefix('`').filter(|_| d.hint.is_none())?;
+            if let Some(n) = m.strip_suffix("` is not declared") {
+                return Some((n.to_string(), None));
+            }
+            let (n, p) = m.strip_suffix('`')?.split_once("` is not declared in `")?;
+            Some((n.to_string(), Some(p.to_string())))
         };
         if !self.in_stdlib
             && self.loaded.iter().any(|l| !l)
@@ -398,10 +408,13 @@ impl Session {
             let mut full = Session::new(Box::new(std::io::sink()));
             full.load_stdlib();
             for d in diags.iter_mut() {
-                if let Some(n) = undeclared(d)
-                    && let Some(h) = full.checker.with_hint(&n)
-                {
-                    d.hint = Some(h);
+                let hint = match undeclared(d) {
+                    Some((n, None)) => full.checker.with_hint(&n),
+                    Some((n, Some(p))) => full.checker.qualified_with_hint(&p, &n),
+                    None => None,
+                };
+                if hint.is_some() {
+                    d.hint = hint;
                 }
             }
         }

@@ -517,6 +517,32 @@ impl Checker {
         ))
     }
 
+    /// The hint for `prefix.name` refused as "`name` is not declared in
+    /// `prefix`" when a package the program did not `with` makes it legal:
+    /// the child package `prefix.name` itself, or `prefix` declaring `name`
+    /// (GNAT: `missing "with Ada.Numerics;"`).
+    pub fn qualified_with_hint(&self, prefix: &str, name: &str) -> Option<String> {
+        let full = format!("{prefix}.{name}");
+        let find = |n: &str| {
+            self.packages
+                .iter()
+                .find(|p| p.name.eq_ignore_ascii_case(n))
+        };
+        let (what, pkg) = match find(&full) {
+            Some(child) => ("is a package", child.name.clone()),
+            None => (
+                "is declared in a package",
+                find(prefix)
+                    .filter(|p| p.names.contains_key(&name.to_lowercase()))?
+                    .name
+                    .clone(),
+            ),
+        };
+        Some(format!(
+            "`{full}` {what} the program does not name: add `with {pkg};` at the top of the file"
+        ))
+    }
+
     fn package_declaring(&self, key: &str) -> Option<String> {
         self.packages
             .iter()
