@@ -330,3 +330,57 @@ fn in_the_repl_a_task_needs_its_body_in_the_same_entry() {
     assert!(all.contains("task `T` has no body"), "{all}");
     assert!(all.contains("in the same entry"), "{all}");
 }
+
+#[test]
+fn in_the_repl_an_entry_after_a_deadlock_runs_and_the_tasks_live_on() {
+    // The second entry deadlocks (nobody accepts B); the REPL reports it,
+    // and later entries run: the task still accepts A.
+    let input = "\
+task T is entry A; entry B; end T; task body T is begin loop accept A; Put_Line (\"A accepted\"); end loop; end T;
+T.B;
+Put_Line (\"after the deadlock\");
+T.A;
+:tasks
+";
+    let (code, out, err) = adair_env(&["repl"], &[], Some(input));
+    let all = format!("{out}{err}");
+    assert!(
+        !all.contains("panicked") && !all.contains("internal error"),
+        "{all}"
+    );
+    assert!(all.contains("deadlock"), "{all}");
+    assert!(out.contains("after the deadlock"), "{all}");
+    assert!(out.contains("A accepted"), "{all}");
+    assert!(out.contains("T waits to accept A"), "{all}");
+    assert_eq!(code, 0, "{all}");
+}
+
+#[test]
+fn in_the_repl_a_call_to_a_task_ended_in_an_earlier_entry_is_tasking_error() {
+    // Once every task has ended, the REPL keeps their table: a call of an
+    // ended task is Tasking_Error (not a task of a later entry, nor
+    // "not elaborated"), in a plain, a conditional and a timed call.
+    let input = "\
+task T is entry A; end T; task body T is begin accept A; end T;
+T.A;
+begin T.A; exception when Tasking_Error => Put_Line (\"TE plain\"); end;
+begin select T.A; else Put_Line (\"else\"); end select; exception when Tasking_Error => Put_Line (\"TE conditional\"); end;
+begin select T.A; or delay 1.0; Put_Line (\"timeout\"); end select; exception when Tasking_Error => Put_Line (\"TE timed\"); end;
+task U is entry A; end U; task body U is begin accept A; Put_Line (\"U accepted\"); end U;
+U.A;
+begin T.A; exception when Tasking_Error => Put_Line (\"TE again\"); end;
+";
+    let (code, out, err) = adair_env(&["repl", "--strict"], &[], Some(input));
+    let all = format!("{out}{err}");
+    for line in [
+        "TE plain",
+        "TE conditional",
+        "TE timed",
+        "U accepted",
+        "TE again",
+    ] {
+        assert!(out.contains(line), "{line}: {all}");
+    }
+    assert!(!all.contains("PROGRAM_ERROR"), "{all}");
+    assert_eq!(code, 0, "{all}");
+}

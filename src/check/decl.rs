@@ -78,6 +78,7 @@ impl Checker {
                 }
                 let t = self.type_def(name, def, d.span);
                 self.declare_checked(name, Entity::Type(t));
+                self.collection_master(t, d.span, out);
             }
             DeclKind::Subtype { name, ind } => {
                 let of = self.subtype_ind(ind);
@@ -606,6 +607,28 @@ impl Checker {
                 ERROR
             }
         }
+    }
+
+    /// An access type to a type holding tasks makes its declarative region
+    /// a master: the tasks its allocators create belong to that region,
+    /// which waits for them at its end, wherever the allocator runs.
+    fn collection_master(&mut self, t: TypeId, span: Span, out: &mut Vec<Stmt>) {
+        let designated = match self.types.kind(t) {
+            TypeKind::Access(d) => *d,
+            _ => return,
+        };
+        if !self.types.has_task(designated) {
+            return;
+        }
+        if let Some(m) = self.masters.last_mut() {
+            *m = true;
+        }
+        let v = self.new_slot();
+        self.types.list[t as usize].master = Some(v);
+        out.push(Stmt {
+            kind: StmtKind::NoteMaster(v),
+            span,
+        });
     }
 
     // ---- subprograms ----

@@ -254,6 +254,9 @@ pub enum StmtKind {
     /// A declarative region that may create tasks: its end waits for them
     /// (their master).
     Master(Box<Body>),
+    /// The declaration of an access type to tasks: the slot records the
+    /// master its allocators' tasks belong to (the enclosing region).
+    NoteMaster(Var),
     Accept(Box<Accept>),
     EntryCall(Box<EntryCall>),
     /// A protected procedure called from outside the object: the call, then

@@ -71,6 +71,10 @@ pub struct TypeInfo {
     pub digits: Option<u32>,
     /// For an access type's designated incomplete type, completed later.
     pub full_name: String,
+    /// An access type whose objects hold tasks: the slot that holds the
+    /// master of the tasks its allocators create (the region that declares
+    /// the type, RM 9.3(2)), stored when the declaration is elaborated.
+    pub master: Option<crate::check::ir::Var>,
 }
 
 pub const ERROR: TypeId = 0;
@@ -121,6 +125,7 @@ impl Types {
             static_frange: None,
             digits: None,
             full_name: name.to_string(),
+            master: None,
         });
         id
     }

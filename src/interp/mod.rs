@@ -264,7 +264,13 @@ impl Machine {
     ) -> Result<(), Box<Occurrence>> {
         let need = self.prepare(chk);
         let _cap = memory::HardCap::arm();
-        if self.keep_tasks && self.sched.alive() {
+        if self.keep_tasks && self.sched.active() && !self.sched.alive() {
+            // Every task of earlier entries has ended and its frames are
+            // gone: later tasks' frames start above this entry's slots.
+            self.sched.floor = need + tasking::KEPT_HEADROOM;
+            self.sched.holes.clear();
+            self.reset_main();
+        } else if self.keep_tasks && self.sched.alive() {
             // The REPL's tasks live on; the new entry's level-0 slots must
             // stay below their frames.
             if need + 1024 > self.sched.floor {
@@ -308,7 +314,12 @@ impl Machine {
         if !(run.m.keep_tasks && alive) {
             // Any frames left by an exception are dropped; level-0 slots stay.
             run.m.stack.truncate(need);
-            run.m.sched = tasking::Sched::default();
+            // The REPL keeps the table of its ended tasks and protected
+            // objects: an object of a later entry must not take an ended
+            // task's number, and a call of one raises Tasking_Error.
+            if !run.m.keep_tasks {
+                run.m.sched = tasking::Sched::default();
+            }
         }
         let _ = run.m.out.flush();
         match r {
@@ -357,6 +368,12 @@ impl Machine {
         }
         sc.ready.retain(|c| *c != 0);
         let main = &mut sc.threads[0];
+        // Registers the main program saved when it blocked are its old
+        // entry's: the next switch away from it must not bring them back.
+        main.display = Vec::new();
+        main.current = Vec::new();
+        main.depth = 0;
+        main.calls = Vec::new();
         main.wait = tasking::Wait::Running;
         main.masters.clear();
         main.reexec = false;
@@ -389,6 +406,13 @@ impl Machine {
         let need = chk.globals as usize;
         if self.stack.len() < need {
             self.stack.resize(need, Value::Undef);
+        }
+        if self.display.is_empty() {
+            // A REPL entry ended with every thread blocked (a deadlock):
+            // the machine holds the idle registers, and the main program
+            // starts afresh (`reset_main` drops its old frames).
+            self.display = vec![0; 4];
+            self.current.clear();
         }
         self.display[0] = 0;
         self.depth = 0;
@@ -717,7 +741,7 @@ impl Run<'_> {
             }
             // The walker runs no tasks: a program with tasks is refused at
             // the first task's creation; what is left has none.
-            StmtKind::Activate | StmtKind::Abort(_) => Ok(()),
+            StmtKind::Activate | StmtKind::Abort(_) | StmtKind::NoteMaster(_) => Ok(()),
             StmtKind::Master(b) => self.body(b),
             StmtKind::ProtCall(f, args) => self.call(*f, args, s.span).map(|_| ()),
             StmtKind::Accept(_)

@@ -179,7 +179,7 @@ impl Clock for DeferClock {
 }
 
 /// Level-0 slots later REPL entries may add while tasks live.
-const KEPT_HEADROOM: usize = 1 << 16;
+pub(crate) const KEPT_HEADROOM: usize = 1 << 16;
 
 /// GNAT's `System.Default_Priority`.
 pub(crate) const DEFAULT_PRIORITY: i64 = 15;
@@ -217,6 +217,9 @@ pub(crate) struct Sched {
     /// Where task frames start in the stack when tasks outlive a run (the
     /// REPL): above every level-0 slot of later entries.
     pub floor: usize,
+    /// While an allocator of an access type to tasks runs: the master of
+    /// its tasks (see [`Run::master_code`]).
+    pub alloc_master: Option<i64>,
 }
 
 impl Default for Sched {
@@ -234,6 +237,7 @@ impl Default for Sched {
             alloc_activates: true,
             robot_free_at: 0.0,
             floor: 0,
+            alloc_master: None,
         }
     }
 }
@@ -477,13 +481,30 @@ impl Run<'_> {
         let cur = self.m.sched.cur;
         t.parent = Some(cur);
         self.m.sched.threads.push(t);
-        let me = &mut self.m.sched.threads[cur];
-        match me.masters.last_mut() {
+        // The master: the region of the allocator's access type, else the
+        // innermost region of the creating thread.
+        let (th, idx) = match self.m.sched.alloc_master {
+            Some(code) if code >= 0 => ((code >> 32) as usize, Some((code & 0xFFFF_FFFF) as usize)),
+            Some(_) => (cur, None),
+            None => (cur, self.m.sched.threads[cur].masters.len().checked_sub(1)),
+        };
+        match idx.and_then(|i| self.m.sched.threads.get_mut(th)?.masters.get_mut(i)) {
             Some(m) => m.push(tid),
             None => self.m.sched.library.push(tid),
         }
         self.m.sched.threads[cur].unactivated.push(tid);
         Ok(Value::Int(tid as i64))
+    }
+
+    /// The running thread's innermost master, as an access type's
+    /// declaration records it: thread << 32 | index, or -1 for the library
+    /// level (the environment task's tasks).
+    pub(crate) fn master_code(&mut self) -> i64 {
+        let me = self.m.sched.cur;
+        match self.m.sched.threads.get(me).map(|t| t.masters.len()) {
+            Some(n) if n > 0 => ((me as i64) << 32) | (n as i64 - 1),
+            _ => -1,
+        }
     }
 
     /// Tasks created by an allocator are activated by it.

@@ -137,6 +137,8 @@ enum Op<'p> {
     /// An allocator of a task: the task is activated by the next
     /// instruction (`Activate`), not left to the walker.
     AllocTask(Var, &'p Ex),
+    /// An access type to tasks is declared: note its master.
+    NoteMaster(Var),
 }
 
 /// An entry call: the task (or object), entry, arguments and their
@@ -727,6 +729,7 @@ impl<'p> Compiler<'p, '_> {
                 self.ops.push(Op::Delay(x, *until, s.span));
             }
             StmtKind::Activate => self.ops.push(Op::Activate(s.span)),
+            StmtKind::NoteMaster(v) => self.ops.push(Op::NoteMaster(*v)),
             StmtKind::Master(b) => {
                 self.ops.push(Op::MasterEnter);
                 self.masters += 1;
@@ -2178,9 +2181,17 @@ impl<'a> Run<'a> {
                 },
                 Op::AllocTask(d, e) => {
                     self.m.sched.alloc_activates = false;
+                    self.m.sched.alloc_master =
+                        self.c.types.get(e.ty).master.map(|v| self.int_at(v));
                     let r = self.eval(e);
+                    self.m.sched.alloc_master = None;
                     self.m.sched.alloc_activates = true;
                     r.map(|v| self.put(*d, v))
+                }
+                Op::NoteMaster(v) => {
+                    let code = self.master_code();
+                    self.put(*v, Value::Int(code));
+                    Ok(())
                 }
                 Op::Abort(ts) => {
                     for t in ts.iter() {
