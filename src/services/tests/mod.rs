@@ -8,4 +8,5 @@ mod bad_floats;
 mod gripper;
 mod props;
 mod save_keeps_file;
+mod scripts;
 mod service_core;

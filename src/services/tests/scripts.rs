@@ -1,0 +1,40 @@
+//! The services' golden scripts (`tests/golden/services/`), run by the
+//! library's own tests as well: the mutation pass over `src/services/`
+//! (`scripts/mutants.sh`) runs `cargo test --lib`, and what most of the
+//! service core's code decides (options, timing, printed poses, faults) is
+//! pinned only by these scripts' expected output. `tests/golden.rs` runs
+//! them too, in both engines, with every other script.
+
+use crate::golden::{self, Verdict};
+use std::path::PathBuf;
+
+#[test]
+fn the_services_golden_scripts_print_their_out_files() {
+    // Relative paths, as the .out files name them: cargo runs a test
+    // binary in the package root.
+    let scripts =
+        golden::collect(&[PathBuf::from("tests/golden/services")]).expect("tests/golden/services");
+    assert!(scripts.len() > 50, "{} scripts", scripts.len());
+    // The runner's stack, as `adair` gives a program (main.rs).
+    let failed = std::thread::Builder::new()
+        .stack_size(256 << 20)
+        .spawn(move || {
+            let mut failed = Vec::new();
+            for s in &scripts {
+                match golden::check_case(s, false) {
+                    Verdict::Pass => {}
+                    Verdict::Differs { expected, actual } => failed.push(format!(
+                        "{}: (- expected, + actual)\n{}",
+                        s.display(),
+                        golden::diff(&expected, &actual)
+                    )),
+                    other => failed.push(format!("{}: {other:?}", s.display())),
+                }
+            }
+            failed
+        })
+        .expect("spawn")
+        .join()
+        .expect("the scripts ran");
+    assert!(failed.is_empty(), "{}", failed.join("\n"));
+}
