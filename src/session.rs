@@ -254,6 +254,8 @@ impl Session {
         if driver.real_time() {
             self.machine.clock = Box::new(crate::services::WallClock::default());
         }
+        // A wall clock takes its time already.
+        self.machine.realtime = realtime && !driver.real_time();
         let mut st = crate::services::RobotState::with_driver(desc, excs, driver);
         st.trace = trace;
         st.realtime = realtime;

@@ -384,3 +384,26 @@ begin T.A; exception when Tasking_Error => Put_Line (\"TE again\"); end;
     assert!(!all.contains("PROGRAM_ERROR"), "{all}");
     assert_eq!(code, 0, "{all}");
 }
+
+#[test]
+fn realtime_paces_delays_to_the_wall_clock_with_and_without_tasks() {
+    // tasks.md: `--realtime` paces the virtual clock to the wall clock: a
+    // delay takes its time, also while tasks wait on the clock. (A lower
+    // bound only: how much longer a loaded machine takes is not asserted.)
+    let plain = temp_file("rt_plain.air", "delay 0.4;\nPut_Line (\"done\");\n");
+    let tasks = temp_file(
+        "rt_tasks.air",
+        "task T; task body T is begin delay 0.4; Put_Line (\"T done\"); end T;\nPut_Line (\"main\");\n",
+    );
+    for (file, want) in [(&plain, "done"), (&tasks, "T done")] {
+        let start = std::time::Instant::now();
+        let (code, out, err) = adair(&["run", "--realtime", file]);
+        let took = start.elapsed().as_secs_f64();
+        assert_eq!(code, 0, "{out}{err}");
+        assert!(out.contains(want), "{out}");
+        assert!(
+            took >= 0.38,
+            "{file}: --realtime took {took:.3} s for a 0.4 s delay"
+        );
+    }
+}

@@ -196,6 +196,9 @@ pub struct Machine {
     /// entries.
     pub(crate) sched: tasking::Sched,
     pub keep_tasks: bool,
+    /// `--realtime`: a `delay` (and every wait of tasks on the clock) takes
+    /// its time on the wall clock too, as the motions do.
+    pub realtime: bool,
     /// Interrupts raised between runs (`:irq`), delivered when the next run
     /// starts.
     pub pending_irqs: Vec<(crate::devices::Address, f64)>,
@@ -229,6 +232,7 @@ impl Machine {
             trace: None,
             sched: tasking::Sched::default(),
             keep_tasks: false,
+            realtime: false,
             pending_irqs: Vec::new(),
         }
     }
@@ -736,7 +740,10 @@ impl Run<'_> {
                     return Err(self.check_failed("delay of a non-finite duration", s.span));
                 }
                 let secs = if *until { x - self.m.clock.now() } else { x };
-                self.m.clock.sleep(secs);
+                if secs > 0.0 {
+                    self.advance_clock(secs);
+                    self.world_sync();
+                }
                 Ok(())
             }
             // The walker runs no tasks: a program with tasks is refused at

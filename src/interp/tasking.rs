@@ -670,6 +670,27 @@ impl Run<'_> {
         }
     }
 
+    /// Moves the clock on by `secs` (a delay, a wait of every task): under
+    /// `--realtime` the wall clock takes that time too, in slices that end
+    /// early when the user stops the run (the flag stays set for the next
+    /// poll, which stops it).
+    pub(crate) fn advance_clock(&mut self, secs: f64) {
+        if self.m.realtime {
+            let stop = self.m.interrupted.clone();
+            let mut done = 0.0;
+            while done < secs
+                && stop
+                    .as_ref()
+                    .is_none_or(|f| !f.load(std::sync::atomic::Ordering::SeqCst))
+            {
+                let step = (secs - done).min(0.05);
+                self.m.clock.pace(step);
+                done += step;
+            }
+        }
+        self.m.clock.sleep(secs);
+    }
+
     /// When nothing is ready: tasks at `terminate` whose masters wait end;
     /// else the clock advances to the earliest wake-up. False: nothing can
     /// ever run again (deadlock).
@@ -710,7 +731,7 @@ impl Run<'_> {
             },
         };
         if t > now {
-            self.m.clock.sleep(t - now);
+            self.advance_clock(t - now);
         }
         let now = self.m.clock.now().max(t);
         self.world_sync();

@@ -1247,7 +1247,10 @@ impl<'a> Run<'a> {
         let now = self.m.clock.now();
         let t = if until { v } else { now + v };
         if !self.m.sched.active() {
-            self.m.clock.sleep(t - now);
+            // The devices live on while the program waits (their events
+            // and interrupts at their own times, in --trace too).
+            self.advance_clock(t - now);
+            self.world_sync();
         } else if t <= now {
             self.m.sched.yield_now();
         } else {
