@@ -1090,7 +1090,7 @@ impl Checker {
                     FloatOp::Mul => x * y,
                     FloatOp::Div if num_traits::Zero::is_zero(&y) => return None,
                     FloatOp::Div => x / y,
-                    FloatOp::PowI => return None,
+                    FloatOp::PowI | FloatOp::DurDiv => return None,
                 })
             }
             ExKind::IntToFloat(a) => match self.static_value(a)? {

@@ -1873,7 +1873,19 @@ impl Checker {
                 // Predefined arithmetic: both operands of one numeric type,
                 // except `**` (Integer exponent) and Duration * Integer.
                 let arith = self.arith_type(op, a, b, want);
+                // A user operator whose result the context wants wins over a
+                // predefined one whose result it does not (Ada.Real_Time's
+                // `/` of two spans is an Integer).
+                let unwanted = |this: &Self, t: TypeId| {
+                    let t = if t == DURATION + 1000 { DURATION } else { t };
+                    want.is_some_and(|w| {
+                        w != ERROR && !this.types.compatible(t, w) && !this.types.compatible(w, t)
+                    })
+                };
                 match arith {
+                    Some(t) if unwanted(self, t) && !user_fit.is_empty() => {
+                        user_call(self, user_fit[0])
+                    }
                     Some(t) => self.arith(op, a, b, t, sp),
                     None => {
                         if let Some(f) = user_fit.first() {
@@ -2027,7 +2039,7 @@ impl Checker {
             let fop = if op == BinOp::Mul {
                 FloatOp::Mul
             } else {
-                FloatOp::Div
+                FloatOp::DurDiv
             };
             return self.mk(ExKind::FloatBin(fop, bx(x), bx(y)), DURATION, sp);
         }

@@ -58,6 +58,9 @@ pub enum FloatOp {
     Div,
     /// Float ** Integer
     PowI,
+    /// Duration / Integer (the integer as a real): GNAT's fixed point
+    /// quotient, truncated toward zero to whole nanoseconds.
+    DurDiv,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -52,6 +52,9 @@ pub enum Entity {
 struct Scope {
     names: HashMap<String, Vec<Entity>>,
     uses: Vec<usize>,
+    /// Packages whose operators `use type` makes directly visible (those
+    /// of the package that declares the type).
+    op_uses: Vec<usize>,
     /// The name of the subprogram or block this scope belongs to (lower
     /// case), for expanded names like `Main.X`.
     name: Option<String>,
@@ -435,9 +438,16 @@ impl Checker {
         if !found.is_empty() {
             return found;
         }
-        // Use-visible declarations of packages.
+        // Use-visible declarations of packages (and, for an operator, of
+        // the packages of `use type` clauses).
+        let op = key.starts_with('"');
         for s in self.scopes.iter().rev() {
-            for &p in &s.uses {
+            let op_uses = if op { &s.op_uses[..] } else { &[] };
+            for &p in s
+                .uses
+                .iter()
+                .chain(op_uses.iter().filter(|p| !s.uses.contains(p)))
+            {
                 if let Some(es) = self.packages[p].names.get(key) {
                     found.extend(es.iter().cloned());
                 }
@@ -751,14 +761,32 @@ impl Checker {
                     }
                 }
                 None => {
-                    // `use type T;` and friends: accepted when T is a type.
+                    // `use type T;`: the operators of the package that
+                    // declares T become directly visible.
                     let es = self.denote(n, false);
-                    if !es.is_empty() && !matches!(es.first(), Some(Entity::Type(_))) {
-                        let text = crate::syntax::parser::expr_text(n);
-                        self.err(Diagnostic::name(
-                            n.span,
-                            format!("`{text}` is not a package"),
-                        ));
+                    match es.first() {
+                        Some(Entity::Type(t)) => {
+                            let t = *t;
+                            let declaring = self.packages.iter().position(|p| {
+                                p.names.values().any(|es| {
+                                    es.iter().any(|e| matches!(e, Entity::Type(x) if *x == t))
+                                })
+                            });
+                            if let Some(p) = declaring {
+                                let s = self.scopes.last_mut().expect("scope");
+                                if !s.op_uses.contains(&p) {
+                                    s.op_uses.push(p);
+                                }
+                            }
+                        }
+                        Some(_) => {
+                            let text = crate::syntax::parser::expr_text(n);
+                            self.err(Diagnostic::name(
+                                n.span,
+                                format!("`{text}` is not a package"),
+                            ));
+                        }
+                        None => {}
                     }
                 }
             }

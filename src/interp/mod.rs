@@ -1066,6 +1066,7 @@ impl Run<'_> {
                     FloatOp::Add => x + y,
                     FloatOp::Sub => x - y,
                     FloatOp::Div => x / y,
+                    FloatOp::DurDiv => value::duration_div(x, y),
                     _ => x * y,
                 })
             }
@@ -1166,6 +1167,7 @@ impl Run<'_> {
                         x / yv.real()
                     }
                     FloatOp::PowI => x.powi(yv.int() as i32),
+                    FloatOp::DurDiv => value::duration_div(x, yv.real()),
                 })
             }
             ExKind::Cmp(op, a, b) => {

@@ -1842,6 +1842,7 @@ impl<'a> Run<'a> {
                         // IEEE as in GNAT (Float'Machine_Overflows is False).
                         FloatOp::Div => Ok(x / yv.real()),
                         FloatOp::PowI => Ok(x.powi(yv.int() as i32)),
+                        FloatOp::DurDiv => Ok(value::duration_div(x, yv.real())),
                     };
                     r.map(|v| self.put(*d, Value::Real(v)))
                 }
