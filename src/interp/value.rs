@@ -329,6 +329,18 @@ pub fn value_float(s: &str) -> Option<f64> {
     }
 }
 
+/// `Duration / Integer` as GNAT computes it: Duration is fixed point with a
+/// small of one nanosecond, and the quotient is truncated toward zero to
+/// whole nanoseconds (10 ns / 4 = 2 ns). A zero divisor gives the infinity
+/// that the Duration check then refuses.
+pub fn duration_div(x: f64, y: f64) -> f64 {
+    if y == 0.0 || !x.is_finite() || !y.is_finite() {
+        return x / y;
+    }
+    let ns = (x * 1e9).round() as i128;
+    (ns / y as i128) as f64 / 1e9
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -358,16 +370,4 @@ mod tests {
         assert_eq!(value_int("- 5"), None);
         assert_eq!(value_int("1__0"), None);
     }
-}
-
-/// `Duration / Integer` as GNAT computes it: Duration is fixed point with a
-/// small of one nanosecond, and the quotient is truncated toward zero to
-/// whole nanoseconds (10 ns / 4 = 2 ns). A zero divisor gives the infinity
-/// that the Duration check then refuses.
-pub fn duration_div(x: f64, y: f64) -> f64 {
-    if y == 0.0 || !x.is_finite() || !y.is_finite() {
-        return x / y;
-    }
-    let ns = (x * 1e9).round() as i128;
-    (ns / y as i128) as f64 / 1e9
 }
