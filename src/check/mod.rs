@@ -150,6 +150,9 @@ pub struct Checker {
     pub prots: Vec<ProtDef>,
     /// The task types whose bodies are being checked (innermost last).
     task_ctx: Vec<u32>,
+    /// The entries whose accept bodies enclose the statement being checked
+    /// (an accept of one of them inside is illegal, RM 9.5.2(15)).
+    accepting: Vec<(u32, u32, Span)>,
     /// The protected bodies being checked: the type and the slot of the
     /// object parameter of the operation being checked.
     prot_ctx: Vec<(u32, Option<Var>)>,
@@ -220,6 +223,7 @@ impl Checker {
             tasks: Vec::new(),
             prots: Vec::new(),
             task_ctx: Vec::new(),
+            accepting: Vec::new(),
             prot_ctx: Vec::new(),
             prot_members: Vec::new(),
             prot_real: HashMap::new(),

@@ -855,6 +855,24 @@ impl Checker {
             );
             return None;
         };
+        if let Some(&(_, _, outer)) = self
+            .accepting
+            .iter()
+            .find(|(t, e, _)| *t == k && *e == i as u32)
+        {
+            self.err(
+                Diagnostic::syntax(
+                    sp,
+                    format!(
+                        "an accept statement for `{}` inside the body of an accept of the same entry",
+                        entry.name
+                    ),
+                )
+                .with_note(outer, "the enclosing accept")
+                .with_hint("Ada forbids it (RM 9.5.2(15)): the entry's caller is still in the rendezvous"),
+            );
+            return None;
+        }
         let profile = self.funcs[def.entries[i].profile as usize].clone();
         let ps = self.params(params);
         if !self.same_profile(&profile, &ps, None) {
@@ -907,7 +925,9 @@ impl Checker {
             self.declare(&id.name, e);
             slots.push((var, p.mode));
         }
+        self.accepting.push((k, i as u32, sp));
         let body = body.map(|b| self.block(b));
+        self.accepting.pop();
         self.pop_scope();
         Some(Accept {
             entry: i as u32,
