@@ -113,6 +113,9 @@ pub struct World {
     pub(super) dropped: BTreeMap<Address, u64>,
     pub(super) delivered: BTreeMap<Address, u64>,
     pub(super) log: Option<Vec<TimedHappening>>,
+    /// The gripper is closing on an object: it is picked when the jaws
+    /// close on it (time, name); see [`World::pick_at`].
+    pub(super) closing_on: Option<(f64, String)>,
 }
 
 impl World {
@@ -147,6 +150,7 @@ impl World {
             dropped: BTreeMap::new(),
             delivered: BTreeMap::new(),
             log: None,
+            closing_on: None,
         }
     }
 
@@ -192,6 +196,22 @@ impl World {
             return out;
         }
         loop {
+            // The jaws close on an object before whatever else happens at
+            // or after that moment.
+            if let Some((tc, _)) = &self.closing_on
+                && *tc <= t
+                && self.next_arrival().is_none_or(|(ta, _)| *tc <= ta)
+                && self
+                    .devs
+                    .events()
+                    .get(self.cursor)
+                    .is_none_or(|e| *tc <= e.at)
+            {
+                let (tc, name) = self.closing_on.take().expect("closing");
+                self.now = self.now.max(tc);
+                let _ = self.pick(&name);
+                continue;
+            }
             let arrival = self.next_arrival().filter(|&(ta, _)| ta <= t);
             let event = self
                 .devs
@@ -225,10 +245,11 @@ impl World {
     pub fn next_wakeup(&self, after: f64) -> Option<f64> {
         let event = self.devs.events().get(self.cursor).map(|e| e.at);
         let arrival = self.next_arrival().map(|(t, _)| t);
-        let t = match (event, arrival) {
-            (Some(a), Some(b)) => a.min(b),
-            (a, b) => a.or(b)?,
-        };
+        let closing = self.closing_on.as_ref().map(|c| c.0);
+        let t = [event, arrival, closing]
+            .into_iter()
+            .flatten()
+            .reduce(f64::min)?;
         Some(t.max(after))
     }
 
@@ -636,6 +657,27 @@ impl World {
             }
         }
         best.map(|(_, info)| info)
+    }
+
+    /// The gripper starts closing on an object and its jaws reach it at
+    /// `time` (tasks.md: picking it from the belt's end clears the beam at
+    /// the moment the jaws close on it): it is picked when the world is
+    /// advanced to that time, or now if that time has passed. Refused at
+    /// once for an object that does not exist or is held.
+    pub fn pick_at(&mut self, name: &str, time: f64) -> Result<(), DeviceError> {
+        let o = self
+            .objects
+            .iter()
+            .find(|o| o.name == name)
+            .ok_or_else(|| DeviceError::UnknownObject(name.to_string()))?;
+        if matches!(o.loc, Loc::Held) {
+            return Err(DeviceError::AlreadyHeld(name.to_string()));
+        }
+        if time <= self.now {
+            return self.pick(name).map(|_| ());
+        }
+        self.closing_on = Some((time, name.to_string()));
+        Ok(())
     }
 
     /// The gripper closes on an object now: it leaves its belt (the beam at

@@ -868,6 +868,10 @@ fn move_tool(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Valu
         grasp = Some(o.name);
     }
     let moved = st.robot.move_gripper(target, limit);
+    // The jaws move at 100 mm/s at full velocity.
+    let jaw_time = |g: &crate::driver::GripperState| {
+        (before.opening - g.opening).abs() / (100.0 * st.velocity / 100.0).max(1e-6)
+    };
     if let (Some(name), Ok(g)) = (&grasp, &moved)
         && let Some(w) = cx.world.as_deref_mut()
     {
@@ -876,7 +880,9 @@ fn move_tool(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Valu
             .iter()
             .find(|o| &o.name == name)
             .map(|o| o.width);
-        if width.is_some_and(|x| (g.opening - x).abs() < 1e-6) && w.pick(name).is_ok() {
+        let closed_at = cx.clock.now() + jaw_time(g);
+        if width.is_some_and(|x| (g.opening - x).abs() < 1e-6) && w.pick_at(name, closed_at).is_ok()
+        {
             st.held = Some(name.clone());
         }
     }
@@ -894,8 +900,7 @@ fn move_tool(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Valu
     }
     match moved {
         Ok(g2) => {
-            // The jaws move at 100 mm/s at full velocity.
-            let d = (before.opening - g2.opening).abs() / (100.0 * st.velocity / 100.0).max(1e-6);
+            let d = jaw_time(&g2);
             if !st.robot.real_time() {
                 cx.clock.sleep(d);
             }
