@@ -181,8 +181,12 @@ impl Clock for DeferClock {
 /// Level-0 slots later REPL entries may add while tasks live.
 pub(crate) const KEPT_HEADROOM: usize = 1 << 16;
 
-/// GNAT's `System.Default_Priority`.
-pub(crate) const DEFAULT_PRIORITY: i64 = 15;
+/// GNAT's `System.Default_Priority` (Linux): the main program's and that
+/// of tasks without `pragma Priority`.
+pub(crate) const DEFAULT_PRIORITY: i64 = 48;
+
+/// GNAT's `System.Priority` (Linux).
+pub(crate) const PRIORITY_RANGE: std::ops::RangeInclusive<i64> = 0..=97;
 
 /// The entry queues of one protected object.
 #[derive(Clone, Default)]
@@ -460,6 +464,18 @@ impl Run<'_> {
             Some(p) => self.eval(p)?.int(),
             None => DEFAULT_PRIORITY,
         };
+        if !PRIORITY_RANGE.contains(&priority) {
+            return Err(self.raise(
+                check::CONSTRAINT_ERROR,
+                format!(
+                    "priority {priority} of task `{}` is outside System.Priority ({} .. {})",
+                    def.name,
+                    PRIORITY_RANGE.start(),
+                    PRIORITY_RANGE.end()
+                ),
+                span,
+            ));
+        }
         let level = self.c.funcs[body as usize].level as usize;
         let display: Vec<usize> = self.m.display[..level.min(self.m.display.len())].to_vec();
         let tid = self.m.sched.threads.len();
