@@ -407,3 +407,32 @@ fn realtime_paces_delays_to_the_wall_clock_with_and_without_tasks() {
         );
     }
 }
+
+#[test]
+fn a_register_is_16_bits_and_its_value_is_checked_against_the_object_type() {
+    // tasks.md: an object mapped to a register is of an integer type or an
+    // array (0 .. 15) of Boolean; 8 bits is a check error.
+    let f = temp_file(
+        "bits8.air",
+        "type Bits is array (0 .. 7) of Boolean;\nB : Bits;\nfor B use at 8#342#;\n",
+    );
+    let (code, _, err) = adair(&["check", &f]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("array (0 .. 15) of Boolean"), "{err}");
+    // A value the register holds outside the object's range is
+    // Constraint_Error where it is read (the input is 255 after 0.5 s).
+    let f = temp_file(
+        "small.air",
+        "type Small is range 0 .. 10;\nS : Small;\nfor S use at 8#342#;\nPut_Line (Small'Image (S));\ndelay 1.0;\nbegin\n   Put_Line (Small'Image (S));\nexception\n   when Constraint_Error => Put_Line (\"Constraint_Error\");\nend;\n",
+    );
+    let (code, out, err) = adair(&["--devices", "examples/devices/parallel.toml", "run", &f]);
+    assert_eq!((code, out.as_str()), (0, " 0\nConstraint_Error\n"), "{err}");
+    // An address beyond 32 bits is named whole.
+    let f = temp_file(
+        "bigaddr.air",
+        "type Word is range 0 .. 16#FFFF#;\nX : Word;\nfor X use at 16#FF_FFFF_FFFF#;\n",
+    );
+    let (code, _, err) = adair(&["check", &f]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("8#17777777777777#"), "{err}");
+}

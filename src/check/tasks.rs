@@ -1178,10 +1178,16 @@ impl Checker {
             ));
             return;
         };
-        let bits = self
-            .types
-            .array(ty)
-            .is_some_and(|(ix, elem, _)| ix.len() == 1 && self.types.base(elem) == BOOLEAN);
+        // Bits 0 .. 15 of the register, as the handbook's `t_16_bit`.
+        let bits = self.types.array(ty).is_some_and(|(ix, elem, bounds)| {
+            let b = bounds.and_then(|b| b.first()).cloned();
+            ix.len() == 1 && self.types.base(elem) == BOOLEAN && b.is_some_and(|(lo, hi)| {
+                matches!(
+                    (self.static_value(&lo), self.static_value(&hi)),
+                    (Some(Static::Int(l)), Some(Static::Int(h))) if l == 0.into() && h == 15.into()
+                )
+            })
+        });
         if !self.types.is_integer(ty) && !bits {
             self.err(
                 Diagnostic::ty(
@@ -1206,8 +1212,9 @@ impl Checker {
 
     /// "no device at ADDR" naming the device file and its addresses.
     fn no_device(&self, sp: Span, addr: i64) -> Diagnostic {
+        // Written whole (an address beyond 32 bits is not cut).
         let here = if addr >= 0 {
-            crate::devices::ada_address(addr as u32)
+            format!("8#{addr:o}#")
         } else {
             addr.to_string()
         };

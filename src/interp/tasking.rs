@@ -934,7 +934,13 @@ impl Run<'_> {
                     data,
                 }))
             }
-            None => Value::Int(v as i64),
+            None => {
+                // The register's 16 bits read as a value of the object's
+                // type: one outside its range is Constraint_Error.
+                let x = Value::Int(v as i64);
+                self.range_check(&x, ty, span)?;
+                x
+            }
         })
     }
 
