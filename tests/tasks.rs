@@ -436,3 +436,27 @@ fn a_register_is_16_bits_and_its_value_is_checked_against_the_object_type() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("8#17777777777777#"), "{err}");
 }
+
+#[test]
+fn in_the_repl_an_interrupt_no_live_entry_takes_is_reported_lost() {
+    // As `run --trace` says: an interrupt with no task's entry bound to
+    // its address (none yet, or the handler has ended) is lost.
+    let input = "\
+type Bits is array (0 .. 15) of Boolean;
+Control : Bits; for Control use at 8#346#;
+Control (0) := True;
+:irq 8#340#
+task H is entry Interrupt; for Interrupt use at 8#340#; end H; task body H is begin accept Interrupt; Put_Line (\"handled\"); end H;
+:irq 8#340#
+:irq 8#340#
+";
+    let (code, out, err) = adair_env(&["repl", "--strict"], &[], Some(input));
+    assert_eq!(code, 0, "{out}{err}");
+    let lost = "interrupt 8#340# lost: no task has an entry bound to it";
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(
+        lines,
+        [lost, "handled", "interrupt 8#340# raised", lost],
+        "{out}{err}"
+    );
+}

@@ -196,6 +196,9 @@ pub struct Machine {
     /// entries.
     pub(crate) sched: tasking::Sched,
     pub keep_tasks: bool,
+    /// Interrupts that reached no entry (no live task has one bound to
+    /// their address), so far.
+    pub lost_interrupts: u64,
     /// `--realtime`: a `delay` (and every wait of tasks on the clock) takes
     /// its time on the wall clock too, as the motions do.
     pub realtime: bool,
@@ -232,6 +235,7 @@ impl Machine {
             trace: None,
             sched: tasking::Sched::default(),
             keep_tasks: false,
+            lost_interrupts: 0,
             realtime: false,
             pending_irqs: Vec::new(),
         }

@@ -895,10 +895,13 @@ impl Run<'_> {
                     self.m.sched.threads[t].name
                 )
             }
-            None => format!(
-                "interrupt {}: no task has an entry bound to it, lost",
-                crate::devices::ada_address(address)
-            ),
+            None => {
+                self.m.lost_interrupts += 1;
+                format!(
+                    "interrupt {}: no task has an entry bound to it, lost",
+                    crate::devices::ada_address(address)
+                )
+            }
         };
         self.trace_line(time, &line);
     }

@@ -458,12 +458,17 @@ impl Repl {
                             // Delivered to its entry; the tasks run until
                             // they block again.
                             self.session.machine.pending_irqs.push((i.address, i.time));
+                            let lost = self.session.machine.lost_interrupts;
                             let mut reply = self.entry("delay 0.0;");
                             if !reply.failed {
-                                reply.text = format!(
-                                    "interrupt {} raised\n",
-                                    crate::devices::ada_address(a as u32)
-                                );
+                                let at = crate::devices::ada_address(a as u32);
+                                reply.text = if self.session.machine.lost_interrupts > lost {
+                                    format!(
+                                        "interrupt {at} lost: no task has an entry bound to it\n"
+                                    )
+                                } else {
+                                    format!("interrupt {at} raised\n")
+                                };
                             }
                             reply
                         }
