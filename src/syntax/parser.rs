@@ -761,10 +761,17 @@ fn skip_to_semi<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
 
 /// Tokens that end a statement sequence (never the start of a statement).
 fn seq_end<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + Clone {
-    select! {
-        Token::Kw(Kw::End) => (), Token::Kw(Kw::Elsif) => (), Token::Kw(Kw::Else) => (),
-        Token::Kw(Kw::When) => (), Token::Kw(Kw::Exception) => (), Token::Kw(Kw::Or) => (),
-    }
+    choice((
+        select! {
+            Token::Kw(Kw::End) => (), Token::Kw(Kw::Elsif) => (), Token::Kw(Kw::Else) => (),
+            Token::Kw(Kw::When) => (), Token::Kw(Kw::Exception) => (), Token::Kw(Kw::Or) => (),
+        },
+        // `select ... then abort` (a lone `then` is a broken `if`'s: the
+        // statement's recovery skips it).
+        just(Token::Kw(Kw::Then))
+            .then(just(Token::Kw(Kw::Abort)))
+            .ignored(),
+    ))
 }
 
 /// Tokens that end a declarative part.
@@ -1114,8 +1121,16 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         )
         .then_ignore(semi())
         .map(StmtKind::Abort);
+    // `accept E (I) ...` of an entry family: its declaration is refused as
+    // unsupported; here the index is read and dropped (no cascade).
     let accept = kw!(Accept)
         .ignore_then(ident())
+        .then_ignore(
+            just(Token::LParen)
+                .then(expr.clone())
+                .then(just(Token::RParen))
+                .or_not(),
+        )
         .then(params(expr.clone()))
         .then(
             kw!(Do)
@@ -1190,12 +1205,31 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 })
                 .or_not(),
         )
+        // `select ... then abort ... end select;`: parsed whole, then
+        // refused as unsupported (no cascade of syntax errors).
+        .then(
+            kw!(Then)
+                .then(kw!(Abort))
+                .ignore_then(stmts.clone())
+                .or_not(),
+        )
         .then_ignore(kw!(End).then(kw!(Select)))
         .then_ignore(semi())
-        .map(|(mut alts, els)| {
+        .map_with(|((mut alts, els), abortable), e| {
+            if abortable.is_some() {
+                return StmtKind::Decl(Box::new(unsupported(
+                    e.span(),
+                    "an asynchronous select (`select ... then abort`)",
+                )));
+            }
             alts.extend(els);
             StmtKind::Select(alts)
         });
+    let requeue = kw!(Requeue)
+        .then(expr.clone())
+        .then(kw!(With).then(kw!(Abort)).or_not())
+        .then(semi())
+        .map_with(|_, e| StmtKind::Decl(Box::new(unsupported(e.span(), "`requeue`"))));
     let goto = kw!(Goto)
         .then(ident())
         .then(semi())
@@ -1246,6 +1280,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         abort_stmt,
         accept.clone().map(|s| s.kind),
         select_stmt,
+        requeue,
         goto,
         // Declarations that start with an identifier and a colon, or a keyword.
         ident()
@@ -1713,8 +1748,20 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
             name,
             args: args.unwrap_or_default(),
         });
+    // `entry E (1 .. 3) (...)`: an entry family, parsed and refused.
+    let family = just(Token::LParen)
+        .ignore_then(expr.clone())
+        .then_ignore(just(Token::DotDot).then(expr.clone()).or_not())
+        .then_ignore(just(Token::RParen))
+        .validate(|_, e, emitter| {
+            emitter.emit(Rich::custom(
+                e.span(),
+                "an entry family is not supported by AdaIR (see docs/differences.md)",
+            ))
+        });
     let entry_decl = kw!(Entry)
         .ignore_then(ident())
+        .then_ignore(family.or_not())
         .then(params(expr.clone()))
         .then_ignore(semi())
         .map_with(|(name, params), e| EntryDecl {
