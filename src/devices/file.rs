@@ -392,7 +392,7 @@ impl Cx<'_> {
         if x.is_finite() && ok(x) {
             Ok(x)
         } else {
-            Err(self.err(v.span(), format!("`{name}` = {x}: must be {want}")))
+            Err(self.err(v.span(), format!("`{name}` = {x:?}: must be {want}")))
         }
     }
 
@@ -483,8 +483,9 @@ fn positive(x: f64) -> bool {
     x > 0.0
 }
 
-fn not_negative(x: f64) -> bool {
-    x >= 0.0
+/// A time on the virtual clock: a `Duration` from the start.
+fn a_time(x: f64) -> bool {
+    (0.0..=9_223_372_036.854_775_807).contains(&x)
 }
 
 // ----------------------------------------------------------------- devices
@@ -660,8 +661,8 @@ fn parse_events(
         let at = cx.number(
             cx.required(&e.at, "at", &span, what)?,
             "at",
-            not_negative,
-            "a time in seconds >= 0",
+            a_time,
+            "a time in seconds from 0 to Duration'Last (9223372036.854775807)",
         )?;
         let dev_v = cx.required(&e.device, "device", &span, what)?;
         let dev_name = cx.string(dev_v, "device")?;

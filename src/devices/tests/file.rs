@@ -167,24 +167,31 @@ fn a_bad_file_is_one_error_at_its_line() {
                 "{belt}[[event]]\nat = -1.0\ndevice = \"belt\"\nobject = {{ name = \"b\", width = 3 }}\n"
             ),
             "9:6",
-            "`at` = -1: must be a time in seconds >= 0",
+            "`at` = -1.0: must be a time in seconds from 0 to Duration'Last",
         ),
         (
             format!(
                 "{belt}[[event]]\nat = nan\ndevice = \"belt\"\nobject = {{ name = \"b\", width = 3 }}\n"
             ),
             "9:6",
-            "`at` = NaN: must be a time in seconds >= 0",
+            "`at` = NaN: must be a time in seconds from 0 to Duration'Last",
+        ),
+        (
+            format!(
+                "{belt}[[event]]\nat = 1e10\ndevice = \"belt\"\nobject = {{ name = \"b\", width = 3 }}\n"
+            ),
+            "9:6",
+            "`at` = 10000000000.0: must be a time in seconds from 0 to Duration'Last (9223372036.854775807)",
         ),
         (
             format!("{conveyor}length = -500.0\nspeed = 100.0\nend = [1, 2, 3]\n"),
             "5:10",
-            "`length` = -500: must be a length in mm > 0",
+            "`length` = -500.0: must be a length in mm > 0",
         ),
         (
             format!("{conveyor}length = 500.0\nspeed = 0\nend = [1, 2, 3]\n"),
             "6:9",
-            "`speed` = 0: must be a speed in mm/s > 0",
+            "`speed` = 0.0: must be a speed in mm/s > 0",
         ),
         (
             format!("{conveyor}length = 500.0\nspeed = inf\nend = [1, 2, 3]\n"),
