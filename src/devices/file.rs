@@ -485,7 +485,7 @@ fn positive(x: f64) -> bool {
 
 /// A time on the virtual clock: a `Duration` from the start.
 fn a_time(x: f64) -> bool {
-    (0.0..=9_223_372_036.854_775_807).contains(&x)
+    (0.0..=9_223_372_036.854_776).contains(&x)
 }
 
 // ----------------------------------------------------------------- devices
