@@ -138,6 +138,10 @@ enum Command {
         /// first, and move the arm only if that rehearsal raises nothing.
         #[arg(long, requires = "port")]
         rehearse: bool,
+        /// Start with `:trace on`: every motion with its virtual time, task
+        /// switches, device events and interrupts.
+        #[arg(long)]
+        trace: bool,
     },
     /// A virtual RV-M1 (or RM-501) controller on a pseudo-terminal; prints the device path to give to --port.
     SimController {
@@ -302,6 +306,7 @@ fn real_main(
             robot,
             serial,
             rehearse,
+            trace,
         }) => {
             if let Err(e) = adair::kinematics::RobotDescription::builtin(&robot) {
                 eprintln!("adair: --robot: {}", e.problems.join("; "));
@@ -312,6 +317,7 @@ fn real_main(
                 port: serial.settings(),
                 rehearse,
                 devices: devices.clone(),
+                trace,
             };
             if std::io::stdin().is_terminal() {
                 adair::repl::term::interactive_on(color, drive) as u8

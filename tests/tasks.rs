@@ -460,3 +460,29 @@ task H is entry Interrupt; for Interrupt use at 8#340#; end H; task body H is be
         "{out}{err}"
     );
 }
+
+#[test]
+fn the_repl_traces_task_switches_and_device_events_with_trace_on() {
+    // `repl --trace` starts traced; `:trace on` traces what `run --trace`
+    // does: task switches, device events and interrupts, not only motions.
+    let input = "task T is entry E; end T; task body T is begin accept E; end T;\nT.E;\n";
+    let (code, out, err) = adair_env(&["repl", "--strict", "--trace"], &[], Some(input));
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains("tasks: main -> T"), "{out}{err}");
+    let input = ":trace on\ndelay 1.0;\n:trace off\n";
+    let (code, out, err) = adair_env(
+        &[
+            "--devices",
+            "examples/devices/parallel.toml",
+            "repl",
+            "--strict",
+        ],
+        &[],
+        Some(input),
+    );
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(
+        out.contains("[t=    0.500 s] devices: parallel: input 8#342# := 16#00FF#"),
+        "{out}{err}"
+    );
+}

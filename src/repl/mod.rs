@@ -39,6 +39,8 @@ pub struct Drive {
     pub rehearse: bool,
     /// The simulated devices (`--devices`); None keeps the default set.
     pub devices: Option<crate::devices::Devices>,
+    /// `--trace`: start with `:trace on`.
+    pub trace: bool,
 }
 
 pub struct Repl {
@@ -154,6 +156,10 @@ impl Repl {
             self.session.set_devices(devs);
         }
         self.install_robot();
+        if d.trace {
+            self.trace = true;
+            self.set_trace();
+        }
         Ok(())
     }
 
@@ -557,10 +563,16 @@ impl Repl {
         Ok(format!("wrote {} ({n} support points)\n", path.display()))
     }
 
+    /// `:trace on|off`: the motions, and as `run --trace` the task
+    /// switches, device events and interrupts.
     fn set_trace(&mut self) {
         let w = self.trace.then(|| (self.make_out)());
         if let Some(st) = self.session.robot_state_mut() {
             st.trace = w;
+        }
+        self.session.machine.trace = self.trace.then(|| (self.make_out)());
+        if let Some(w) = self.session.machine.world.as_mut() {
+            w.set_logging(self.trace);
         }
     }
 
