@@ -7,6 +7,7 @@
 mod bad_floats;
 mod gripper;
 mod props;
+mod realtime;
 mod save_keeps_file;
 mod scripts;
 mod service_core;

@@ -1,0 +1,150 @@
+//! Motions paced to the wall clock (`RealTime => True`, `--realtime`), the
+//! user's stop in the middle of one, the wall clock of a real arm, and the
+//! pieces of the service core they use (`opts`, `interpolate`,
+//! `import_profile`). The golden scripts run on virtual time and never
+//! reach this code. Wall-clock figures are lower bounds only.
+
+use crate::interp::Clock;
+use crate::interp::value::Value;
+use crate::kinematics::RobotDescription;
+use crate::session::{Outcome, Session};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::{Duration, Instant};
+
+fn session() -> Session {
+    let mut s = Session::new(Box::new(std::io::sink()));
+    s.set_robot(RobotDescription::builtin("rv-m1").unwrap(), None, false);
+    s
+}
+
+fn j1(s: &Session) -> f64 {
+    s.robot_state().expect("robot").robot.joints()[0]
+}
+
+#[test]
+fn a_realtime_motion_takes_its_time_on_the_wall_clock_and_ends_where_it_was_sent() {
+    // RealTime is the fourth argument (after Time and Control): a mix-up of
+    // the option indices leaves the motion unpaced.
+    let mut s = session();
+    let start = Instant::now();
+    let o = s.run_source(
+        "rt.air",
+        "InitRobot;\nMoveAxesRelative ((0.5, 0.0, 0.0, 0.0, 0.0), Time => 0.6, RealTime => True);\n",
+    );
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    assert!(
+        start.elapsed() >= Duration::from_millis(590),
+        "{:?}",
+        start.elapsed()
+    );
+    assert!((j1(&s) - 0.5).abs() < 1e-9);
+    // Control => True returns at once: it is not paced.
+    let mut s = session();
+    let start = Instant::now();
+    let o = s.run_source(
+        "rt.air",
+        "InitRobot;\nMoveAxesRelative ((0.5, 0.0, 0.0, 0.0, 0.0), Time => 2.0, Control => True, RealTime => True);\n",
+    );
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    assert!(
+        start.elapsed() < Duration::from_millis(1500),
+        "{:?}",
+        start.elapsed()
+    );
+}
+
+#[test]
+fn a_stop_during_a_realtime_motion_leaves_the_arm_where_it_had_got_to() {
+    let mut s = session();
+    let flag = Arc::new(AtomicBool::new(false));
+    s.machine.interrupted = Some(flag.clone());
+    let setter = std::thread::spawn(move || {
+        std::thread::sleep(Duration::from_millis(200));
+        flag.store(true, Ordering::SeqCst);
+    });
+    let o = s.run_source(
+        "rt.air",
+        "InitRobot;\nMoveAxesRelative ((0.5, 0.0, 0.0, 0.0, 0.0), Time => 1.0, RealTime => True);\n",
+    );
+    setter.join().unwrap();
+    // The run ends there (the caller reports where it stopped).
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    let stopped = s.take_stopped().expect("where the run stopped");
+    // "after T of 1.000 s": T is the fraction paced, and the joint, the
+    // virtual clock and the message agree on it.
+    let after: f64 = stopped
+        .split("(after ")
+        .nth(1)
+        .and_then(|r| r.split(' ').next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("{stopped}"));
+    assert!(stopped.contains("of 1.000 s"), "{stopped}");
+    assert!((0.15..0.95).contains(&after), "{stopped}");
+    let q = j1(&s);
+    assert!(
+        (q - 0.5 * after).abs() < 0.5 * 0.002,
+        "J1 {q} after {after} s"
+    );
+    let t = s.machine.clock.now();
+    assert!(
+        (t - after).abs() < 0.002,
+        "virtual clock {t} after {after} s"
+    );
+}
+
+#[test]
+fn interpolate_goes_evenly_through_the_support_points() {
+    let from = [0.0; 5];
+    let p1 = [1.0, 2.0, 0.0, 0.0, -1.0];
+    let p2 = [3.0, 2.0, 4.0, 0.0, -1.0];
+    let at = |f| crate::services::interpolate(&from, &[p1, p2], f);
+    assert_eq!(at(0.0), from);
+    assert_eq!(at(0.25), [0.5, 1.0, 0.0, 0.0, -0.5]);
+    assert_eq!(at(0.5), p1);
+    assert_eq!(at(0.75), [2.0, 2.0, 2.0, 0.0, -1.0]);
+    assert_eq!(at(1.0), p2);
+    assert_eq!(at(7.0), p2, "clamped");
+    assert_eq!(crate::services::interpolate(&p1, &[], 0.5), p1);
+}
+
+#[test]
+fn the_motion_options_are_read_from_their_own_positions() {
+    let args = [
+        Value::Int(0),
+        Value::Real(1.5),
+        Value::Int(0),
+        Value::Int(1),
+    ];
+    let o = crate::services::opts(&args, 1);
+    assert_eq!(
+        (o.time, o.time_arg, o.control, o.realtime),
+        (Some(1.5), 1.5, false, true)
+    );
+    let args = [Value::Real(0.0), Value::Int(1), Value::Int(0)];
+    let o = crate::services::opts(&args, 0);
+    assert_eq!((o.time, o.control, o.realtime), (None, true, false));
+}
+
+#[test]
+fn the_wall_clock_of_a_real_arm_counts_real_seconds() {
+    let mut c = crate::services::WallClock::default();
+    let t0 = c.now();
+    assert!((0.0..0.5).contains(&t0), "{t0}");
+    c.sleep(0.03);
+    let t1 = c.now();
+    assert!(t1 - t0 >= 0.03, "{t0} -> {t1}");
+    c.sleep(-5.0);
+    assert!(c.now() - t1 < 1.0, "a negative sleep does not wait");
+}
+
+#[test]
+fn every_service_gives_the_checker_its_import_profile() {
+    for svc in crate::services::SERVICES {
+        let p = crate::services::import_profile(svc.import)
+            .unwrap_or_else(|| panic!("{} has no import profile", svc.name));
+        assert_eq!(p.text, svc.import_profile().text, "{}", svc.name);
+        assert!(!p.text.is_empty(), "{}", svc.name);
+    }
+    assert!(crate::services::import_profile("NoSuchService").is_none());
+}
