@@ -8,6 +8,7 @@ mod bad_floats;
 mod gripper;
 mod props;
 mod realtime;
+mod record_table;
 mod save_keeps_file;
 mod scripts;
 mod service_core;

@@ -1,0 +1,102 @@
+//! What `--record` samples of a motion, and the service table's lookups
+//! (by import name, by Ada name, command codes, group titles): the CLI
+//! tests see these only through whole runs and `:help` text.
+
+use crate::kinematics::RobotDescription;
+use crate::services::table::{self, Group};
+use crate::session::{Outcome, Session};
+
+#[test]
+fn a_recorded_motion_is_sampled_every_20_ms_and_at_both_ends() {
+    let mut s = Session::new(Box::new(std::io::sink()));
+    s.set_robot(RobotDescription::builtin("rv-m1").unwrap(), None, false);
+    let o = s.run_source("rec.air", "InitRobot;\n");
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    s.start_recording();
+    let o = s.run_source(
+        "rec.air",
+        "MoveAxesRelative ((0.05, 0.0, 0.0, 0.0, 0.0), Time => 0.2);\n",
+    );
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    let rec = s.robot_state().unwrap().record.clone().unwrap();
+    let t0 = rec[0].t;
+    let times: Vec<f64> = rec.iter().map(|x| x.t - t0).collect();
+    let want: Vec<f64> = (0..=10).map(|k| k as f64 * 0.02).collect();
+    assert_eq!(times.len(), want.len(), "{times:?}");
+    for (i, (t, w)) in times.iter().zip(want.iter().copied()).enumerate() {
+        assert!(
+            (t - w).abs() < 1e-9,
+            "sample {i}: {t} s, want {w} s ({times:?})"
+        );
+        // The joint goes evenly from 0 to 0.05 rad over the motion.
+        let j1 = rec[i].joints[0];
+        assert!((j1 - 0.05 * w / 0.2).abs() < 1e-9, "sample {i}: J1 {j1}");
+    }
+    // The TCP follows the joints (J1 turns the arm about the base axis).
+    let last = rec.last().unwrap();
+    let fk = s.robot_state().unwrap().robot.joints();
+    assert_eq!(last.joints, fk);
+}
+
+#[test]
+fn the_table_finds_services_by_import_name_and_by_ada_name() {
+    let s = table::by_import("MoveAxesRelative").expect("by import");
+    assert_eq!(s.name, "MoveAxesRelative");
+    assert!(table::by_import("NoSuchImport").is_none());
+    // By Ada name: any case, services only (not the value functions).
+    assert_eq!(table::by_name("movetool").map(|s| s.name), Some("MoveTool"));
+    // ValueAxes is a procedure and a function: the procedure is the service.
+    assert_eq!(
+        table::by_name("ValueAxes").map(|s| s.import),
+        Some("ValueAxes")
+    );
+    assert!(table::by_name("NoSuchService").is_none());
+    assert_eq!(table::code_of("MoveAxesRelative"), 190);
+    assert_eq!(table::code_of("NoSuchService"), 0);
+}
+
+#[test]
+fn every_group_has_its_own_title() {
+    let mut titles: Vec<&str> = Group::ALL.iter().map(|g| g.title()).collect();
+    assert_eq!(Group::Motion.title(), "motion");
+    assert!(
+        titles
+            .iter()
+            .all(|t| !t.is_empty() && t.chars().all(|c| c.is_ascii_lowercase() || c == ' '))
+    );
+    titles.sort();
+    titles.dedup();
+    assert_eq!(titles.len(), Group::ALL.len());
+}
+
+#[test]
+fn a_recorded_straight_line_has_every_support_point_inside_the_motion() {
+    // Support points lie at even fractions of the line: each is recorded,
+    // in time order, none after the motion's end.
+    let mut s = Session::new(Box::new(std::io::sink()));
+    s.set_robot(RobotDescription::builtin("rv-m1").unwrap(), None, false);
+    let setup = "InitRobot;\nMoveFrameAbsolute (((-1.0, 0.0, 0.0, 250.0), (0.0, 1.0, 0.0, 0.0), (0.0, 0.0, -1.0, 200.0)));\nSetMoveMode (StraightLine);\nSetInterpolation (10.0);\n";
+    let o = s.run_source("line.air", setup);
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    s.start_recording();
+    let o = s.run_source(
+        "line.air",
+        "MoveFrameAbsolute (((-1.0, 0.0, 0.0, 250.0), (0.0, 1.0, 0.0, 50.0), (0.0, 0.0, -1.0, 200.0)));\n",
+    );
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    let rec = s.robot_state().unwrap().record.clone().unwrap();
+    let (t0, t1) = (rec[0].t, rec.last().unwrap().t);
+    assert!(rec.len() >= 6, "50 mm at 10 mm: {} samples", rec.len());
+    assert!(rec.windows(2).all(|w| w[0].t < w[1].t), "in time order");
+    // Every 10 mm support point is among the samples (y = 0, 10, ..., 50).
+    for k in 0..=5 {
+        let y = 10.0 * k as f64;
+        assert!(
+            rec.iter()
+                .any(|x| (x.tcp[1] - y).abs() < 1e-6 && (x.tcp[0] - 250.0).abs() < 1e-6),
+            "no sample at y = {y}: {:?}",
+            rec.iter().map(|x| x.tcp[1]).collect::<Vec<_>>()
+        );
+    }
+    assert!(t1 > t0);
+}
