@@ -148,3 +148,34 @@ fn every_service_gives_the_checker_its_import_profile() {
     }
     assert!(crate::services::import_profile("NoSuchService").is_none());
 }
+
+#[test]
+fn a_straight_line_may_be_given_exactly_its_fastest_time() {
+    // At full velocity a straight line takes its fastest time; the same
+    // line back with `Time =>` that time is accepted (a tolerance of 1 ns
+    // for the rounding of the clock), and a shorter one is TimeInvalid.
+    let mut s = session();
+    let text = "\
+InitRobot;
+SetVelocity (100.0);
+MoveFrameAbsolute (((-1.0, 0.0, 0.0, 250.0), (0.0, 1.0, 0.0, -50.0), (0.0, 0.0, -1.0, 200.0)));
+SetMoveMode (StraightLine);
+declare
+   T0 : constant Duration := Ada.Calendar.Seconds (Ada.Calendar.Clock);
+   D : Duration;
+begin
+   MoveFrameAbsolute (((-1.0, 0.0, 0.0, 250.0), (0.0, 1.0, 0.0, 50.0), (0.0, 0.0, -1.0, 200.0)));
+   D := Ada.Calendar.Seconds (Ada.Calendar.Clock) - T0;
+   MoveFrameAbsolute (((-1.0, 0.0, 0.0, 250.0), (0.0, 1.0, 0.0, -50.0), (0.0, 0.0, -1.0, 200.0)), Time => D);
+   Put_Line (\"exact time accepted\");
+   MoveFrameAbsolute (((-1.0, 0.0, 0.0, 250.0), (0.0, 1.0, 0.0, 50.0), (0.0, 0.0, -1.0, 200.0)), Time => D * 0.99);
+exception
+   when TimeInvalid => Put_Line (\"shorter refused\");
+end;
+";
+    let out = crate::golden::SharedBuf::default();
+    s.machine.out = Box::new(out.clone());
+    let o = s.run_source("fast.air", text);
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    assert_eq!(out.take(), "exact time accepted\nshorter refused\n");
+}
