@@ -383,12 +383,10 @@ fn real_main(
             // Ctrl-C stops the motion and ends the program (exit 130).
             let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
             let seen = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
-            {
-                let (f2, s2) = (flag.clone(), seen.clone());
-                let _ = ctrlc::set_handler(move || {
-                    f2.store(true, std::sync::atomic::Ordering::SeqCst);
-                    s2.store(true, std::sync::atomic::Ordering::SeqCst);
-                });
+            // A signal handler that sets the flags (no thread to start:
+            // start-up time counts for short scripts).
+            for f in [&flag, &seen] {
+                let _ = signal_hook::flag::register(signal_hook::consts::SIGINT, f.clone());
             }
             s.machine.interrupted = Some(flag.clone());
             match robot.serial.settings() {
