@@ -98,6 +98,12 @@ pub trait Services {
         cx: &mut ServiceCx<'_>,
         args: &mut [Value],
     ) -> Result<Option<Value>, ServiceFault>;
+    /// Until when (virtual time) a `Control => True` motion keeps the
+    /// robot busy: with tasks, a service call waits for it as for another
+    /// task's motion (the services are a monitor).
+    fn busy_until(&self) -> f64 {
+        0.0
+    }
 }
 
 /// The narrow part of a run that a service may use: the clock, the place

@@ -1619,6 +1619,13 @@ impl<'a> Run<'a> {
         Ok(None)
     }
 
+    /// Until when the robot is busy: another task's motion, or a
+    /// `Control => True` motion still running.
+    fn robot_free_at(&self) -> f64 {
+        let busy = self.svc.as_deref().map_or(0.0, |s| s.busy_until());
+        self.m.sched.robot_free_at.max(busy)
+    }
+
     /// Exchanges the machine's per-thread registers with thread `t`'s.
     fn swap_registers(&mut self, t: tasking::Tid) {
         let th = &mut self.m.sched.threads[t];
@@ -2013,10 +2020,10 @@ impl<'a> Run<'a> {
                 // for it (the services are a monitor).
                 Op::CallWalker(f, _, _, span) | Op::CallWalkerOwned(f, _, _, span)
                     if self.m.sched.active()
-                        && self.m.clock.now() < self.m.sched.robot_free_at
+                        && self.m.clock.now() < self.robot_free_at()
                         && self.is_service(*f) =>
                 {
-                    let until = self.m.sched.robot_free_at;
+                    let until = self.robot_free_at();
                     self.m.sched.block(tasking::Wait::Delay(until), true, *span);
                     Ok(())
                 }

@@ -73,6 +73,9 @@ impl Services for RobotState {
             )),
         }
     }
+    fn busy_until(&self) -> f64 {
+        self.busy_until
+    }
 }
 
 /// The screen teach pendant behind the `TeachBox` service. The terminal
