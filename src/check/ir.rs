@@ -37,6 +37,19 @@ impl Ex {
             },
         }
     }
+
+    pub fn real(v: f64) -> Ex {
+        Ex {
+            kind: ExKind::Real(v),
+            ..Ex::int(0)
+        }
+        .with_type(super::types::UNIV_REAL)
+    }
+
+    fn with_type(mut self, t: super::types::TypeId) -> Ex {
+        self.ty = t;
+        self
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -308,7 +308,11 @@ impl Types {
         );
         let d = t.add("Duration", TypeKind::Float);
         // GNAT's Duration: 64-bit fixed point, Duration'Small = 1 ns.
-        t.list[d as usize].static_frange = Some((i64::MIN as f64 / 1e9, i64::MAX as f64 / 1e9));
+        let (lo, hi) = (i64::MIN as f64 / 1e9, i64::MAX as f64 / 1e9);
+        t.list[d as usize].static_frange = Some((lo, hi));
+        // A value outside it is a check error when static, else
+        // Constraint_Error (GNAT's overflow check), never a saturated value.
+        t.list[d as usize].range = Some((Ex::real(lo), Ex::real(hi)));
         t.add("Exception_Occurrence", TypeKind::Occurrence);
         t.add("Time", TypeKind::Time);
         t
