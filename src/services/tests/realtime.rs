@@ -179,3 +179,87 @@ end;
     assert!(matches!(o, Outcome::Ok), "{o:?}");
     assert_eq!(out.take(), "exact time accepted\nshorter refused\n");
 }
+
+/// A stand-in for a real arm: the simulator's motions, but taking "wall
+/// clock" time in the driver (`real_time`), with the waits counted.
+struct FakeArm {
+    sim: crate::driver::sim::Simulator,
+    pending: bool,
+    waits: std::rc::Rc<std::cell::Cell<u32>>,
+}
+
+impl crate::driver::Robot for FakeArm {
+    fn description(&self) -> &RobotDescription {
+        self.sim.description()
+    }
+    fn joints(&self) -> crate::kinematics::Joints {
+        self.sim.joints()
+    }
+    fn read_joints(&self) -> crate::kinematics::Joints {
+        self.sim.read_joints()
+    }
+    fn real_time(&self) -> bool {
+        true
+    }
+    fn start_motion(
+        &mut self,
+        points: &[crate::kinematics::Joints],
+        duration: f64,
+    ) -> Result<(), crate::driver::DriverError> {
+        self.pending = true;
+        self.sim.start_motion(points, duration)
+    }
+    fn wait_motion(&mut self) -> Result<(), crate::driver::DriverError> {
+        if self.pending {
+            self.waits.set(self.waits.get() + 1);
+            self.pending = false;
+        }
+        Ok(())
+    }
+    fn motion_pending(&self) -> bool {
+        self.pending
+    }
+    fn calibrate(&mut self) -> Result<(), crate::driver::DriverError> {
+        self.sim.calibrate()
+    }
+    fn gripper(&self) -> crate::driver::GripperState {
+        self.sim.gripper()
+    }
+    fn move_gripper(
+        &mut self,
+        opening: f64,
+        force_limit: Option<f64>,
+    ) -> Result<crate::driver::GripperState, crate::driver::DriverError> {
+        self.sim.move_gripper(opening, force_limit)
+    }
+}
+
+#[test]
+fn on_a_real_arm_a_motion_waits_for_the_arm_unless_control_is_true() {
+    let desc = RobotDescription::builtin("rv-m1").unwrap();
+    let waits = std::rc::Rc::new(std::cell::Cell::new(0));
+    let arm = FakeArm {
+        sim: crate::driver::sim::Simulator::new(desc.clone()),
+        pending: false,
+        waits: waits.clone(),
+    };
+    let mut s = Session::new(Box::new(std::io::sink()));
+    s.set_driver(desc, Box::new(arm), None, false);
+    let run = |s: &mut Session, text: &str| {
+        let o = s.run_source("arm.air", text);
+        assert!(matches!(o, Outcome::Ok), "{text}: {o:?}");
+    };
+    run(&mut s, "InitRobot;\n");
+    let w0 = waits.get();
+    run(&mut s, "MoveAxesRelative ((0.1, 0.0, 0.0, 0.0, 0.0));\n");
+    assert_eq!(waits.get(), w0 + 1, "a motion waits for the arm's reply");
+    run(
+        &mut s,
+        "MoveAxesRelative ((0.1, 0.0, 0.0, 0.0, 0.0), Control => True);\n",
+    );
+    assert_eq!(waits.get(), w0 + 1, "Control => True returns at once");
+    // The next motion waits for that one first, then for its own end.
+    run(&mut s, "MoveAxesRelative ((-0.2, 0.0, 0.0, 0.0, 0.0));\n");
+    assert_eq!(waits.get(), w0 + 3);
+    assert!(j1(&s).abs() < 1e-9);
+}
