@@ -144,4 +144,18 @@ mod tests {
         assert!(j.contains("\"j2\": 90.0000"), "{j}");
         assert!(j.starts_with("[\n  {\"t\": 0.5000,"), "{j}");
     }
+
+    #[test]
+    fn a_negative_zero_is_written_as_zero() {
+        // -0.0 from a computation is written 0.0000, never -0.0000.
+        let s = Sample {
+            t: 0.0,
+            joints: [-0.0; 5],
+            tcp: [-0.0, -0.0, -0.0],
+            grip: 0.0,
+        };
+        let c = to_csv(&[s]);
+        assert!(!c.contains('-'), "{c}");
+        assert!(!to_json(&[s]).contains('-'));
+    }
 }

@@ -100,3 +100,18 @@ fn a_recorded_straight_line_has_every_support_point_inside_the_motion() {
     }
     assert!(t1 > t0);
 }
+
+#[test]
+fn a_recorded_gripper_motion_adds_the_pose_with_the_new_opening() {
+    let mut s = Session::new(Box::new(std::io::sink()));
+    s.set_robot(RobotDescription::builtin("rv-m1").unwrap(), None, false);
+    let o = s.run_source("grip.air", "InitRobot;\n");
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    s.start_recording();
+    let o = s.run_source("grip.air", "MoveTool (Distance => 30.0, Force => 0.0);\n");
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    let rec = s.robot_state().unwrap().record.clone().unwrap();
+    let last = rec.last().expect("the gripper motion is recorded");
+    assert!((last.grip - 30.0).abs() < 1e-9, "{last:?}");
+    assert!(last.t > 0.0, "at the end of the jaws' motion: {last:?}");
+}
