@@ -64,6 +64,19 @@ const TABLE: &[(&str, Native)] = &[
     ("time_diff", |_, a, _| {
         Ok(Some(Value::Real(a[0].real() - a[1].real())))
     }),
+    // Ada.Real_Time's `Span / Span`: whole nanoseconds divided, truncated
+    // toward zero (GNAT's fixed point: 300 ms / 100 ms = 3, not 2.999...).
+    ("span_quotient", |r, a, span| {
+        let ns = |v: &Value| (v.real() * 1e9).round() as i128;
+        let (x, y) = (ns(&a[0]), ns(&a[1]));
+        if y == 0 {
+            return Err(r.check_failed("divide by zero", span));
+        }
+        match i32::try_from(x / y) {
+            Ok(q) => Ok(Some(Value::Int(q as i64))),
+            Err(_) => Err(r.check_failed("overflow check failed", span)),
+        }
+    }),
     ("time_add", |_, a, _| {
         Ok(Some(Value::Real(a[0].real() + a[1].real())))
     }),

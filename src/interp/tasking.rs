@@ -99,8 +99,12 @@ pub(crate) struct Thread {
     pub unactivated: Vec<Tid>,
     /// Dependent tasks of each master region being executed.
     pub masters: Vec<Vec<Tid>>,
-    /// The thread whose master this task depends on.
+    /// The thread that created this task.
     pub parent: Option<Tid>,
+    /// The thread whose master region waits for this task (an allocator's
+    /// task may belong to another thread's region; the library level's
+    /// tasks to the environment thread, 0).
+    pub master_thread: Option<Tid>,
     /// The blocking instruction runs again when the thread resumes.
     pub reexec: bool,
     /// The instruction now running is such a second run.
@@ -144,6 +148,7 @@ impl Thread {
             unactivated: Vec::new(),
             masters: Vec::new(),
             parent: None,
+            master_thread: None,
             reexec: false,
             rerun: false,
             timed_out: false,
@@ -504,10 +509,17 @@ impl Run<'_> {
             Some(_) => (cur, None),
             None => (cur, self.m.sched.threads[cur].masters.len().checked_sub(1)),
         };
-        match idx.and_then(|i| self.m.sched.threads.get_mut(th)?.masters.get_mut(i)) {
-            Some(m) => m.push(tid),
-            None => self.m.sched.library.push(tid),
-        }
+        let holder = match idx.and_then(|i| self.m.sched.threads.get_mut(th)?.masters.get_mut(i)) {
+            Some(m) => {
+                m.push(tid);
+                th
+            }
+            None => {
+                self.m.sched.library.push(tid);
+                0
+            }
+        };
+        self.m.sched.threads[tid].master_thread = Some(holder);
         self.m.sched.threads[cur].unactivated.push(tid);
         Ok(Value::Int(tid as i64))
     }
@@ -646,7 +658,7 @@ impl Run<'_> {
         let queued: Vec<Tid> = th.entries.iter_mut().flat_map(|q| q.drain(..)).collect();
         let partners = std::mem::take(&mut th.rendezvous);
         let activator = th.activator.take();
-        let parent = th.parent;
+        let waiting = [th.parent, th.master_thread];
         let name = th.name.clone();
         for c in queued.into_iter().chain(partners) {
             if c == INTERRUPT {
@@ -669,10 +681,11 @@ impl Run<'_> {
         if let Some(a) = activator {
             self.activation_done(a, failed_activation);
         }
-        if let Some(p) = parent
-            && self.m.sched.threads[p].wait == Wait::Dependents
-        {
-            self.m.sched.make_ready(p);
+        // The thread whose master waits for it (and its creator) look again.
+        for p in waiting.into_iter().flatten() {
+            if self.m.sched.threads[p].wait == Wait::Dependents {
+                self.m.sched.make_ready(p);
+            }
         }
     }
 
@@ -731,6 +744,8 @@ impl Run<'_> {
                 for d in deps {
                     self.terminate_tree(d);
                 }
+                // The master looks again (never a spin with nothing ready).
+                self.m.sched.make_ready(m);
                 ended = true;
             }
         }

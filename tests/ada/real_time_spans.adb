@@ -27,4 +27,5 @@ begin
    Put_Line (Duration'Image (Ada.Real_Time.To_Duration (Ada.Real_Time.Nanoseconds (10) / 4)));
    Put_Line (Duration'Image (D / 4) & Duration'Image (-D / 4) & Duration'Image (Duration'(0.01) / 3));
    Put_Line (Boolean'Image (T0 + 1.0 > T0) & " " & Boolean'Image (T0 - T0 = 0.0));
+   Put_Line (Integer'Image (Ada.Real_Time.Milliseconds (300) / Ada.Real_Time.Milliseconds (100)));
 end Real_Time_Spans;

@@ -115,3 +115,43 @@ fn a_recorded_gripper_motion_adds_the_pose_with_the_new_opening() {
     assert!((last.grip - 30.0).abs() < 1e-9, "{last:?}");
     assert!(last.t > 0.0, "at the end of the jaws' motion: {last:?}");
 }
+
+#[test]
+fn set_robot_config_chooses_the_elbow_on_a_robot_whose_limits_allow_both() {
+    // The built-in arms limit J3 to 0 .. 110 deg, so ElbowBelow is never
+    // reachable there (robot_config_rm501.air); with J3 free, both elbows
+    // reach the same frame and the preference chooses.
+    let text = RobotDescription::builtin_text("rv-m1")
+        .unwrap()
+        .replace("min_deg = 0.0", "min_deg = -180.0")
+        .replace("max_deg = 110.0", "max_deg = 180.0");
+    let desc = RobotDescription::from_toml_str(&text).unwrap();
+    let mut s = Session::new(Box::new(std::io::sink()));
+    s.set_robot(desc, None, false);
+    let out = crate::golden::SharedBuf::default();
+    s.machine.out = Box::new(out.clone());
+    let script = "\
+Arm : ArmConfig; Elbow : ElbowConfig; Hand : HandConfig;
+F : Frame;
+InitRobot;
+MoveAxesAbsolute ((Rad (10.0), Rad (10.0), Rad (60.0), Rad (-20.0), 0.0));
+F := ValueFrameAbsolute;
+SetRobotConfig (NoArmConfig, ElbowBelow, NoHandConfig);
+MoveFrameAbsolute (F);
+ValueRobotConfig (Arm, Elbow, Hand);
+Put_Line (ElbowConfig'Image (Elbow));
+SetRobotConfig (NoArmConfig, NoElbowConfig, NoHandConfig);
+MoveFrameAbsolute (F);
+ValueRobotConfig (Arm, Elbow, Hand);
+Put_Line (ElbowConfig'Image (Elbow));
+SetRobotConfig (NoArmConfig, ElbowAbove, NoHandConfig);
+MoveFrameAbsolute (F);
+ValueRobotConfig (Arm, Elbow, Hand);
+Put_Line (ElbowConfig'Image (Elbow));
+";
+    let o = s.run_source("elbow.air", script);
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    // Below when asked; no preference stays on the nearest (below); Above
+    // when asked.
+    assert_eq!(out.take(), "ELBOWBELOW\nELBOWBELOW\nELBOWABOVE\n");
+}
