@@ -486,3 +486,20 @@ fn the_repl_traces_task_switches_and_device_events_with_trace_on() {
         "{out}{err}"
     );
 }
+
+#[test]
+fn in_the_repl_a_motion_after_every_task_has_ended_is_a_plain_call() {
+    // The REPL keeps the table of ended tasks; a motion in an expression
+    // entry then runs as without tasks (it reported a bogus deadlock).
+    let input = "\
+task T; task body T is begin null; end T;
+InitRobot;
+function G return Integer is begin MoveAxesRelative ((0.5, 0.0, 0.0, 0.0, 0.0), Time => 2.0); return 1; end G;
+G
+Put_Line (\"next\");
+";
+    let (code, out, err) = adair_env(&["repl", "--strict"], &[], Some(input));
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(!format!("{out}{err}").contains("deadlock"), "{out}{err}");
+    assert!(out.contains("next"), "{out}{err}");
+}

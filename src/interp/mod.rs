@@ -825,8 +825,10 @@ impl Run<'_> {
         };
         // With tasks, a motion blocks only its caller: the service runs on
         // a clock that keeps the time it takes, and the caller then waits
-        // that long on the virtual clock while the other tasks run.
-        let tasks = self.m.sched.active();
+        // that long on the virtual clock while the other tasks run. Once
+        // every task has ended (the REPL keeps their table), it is a plain
+        // call again.
+        let tasks = self.m.sched.alive();
         let mut deferred = tasking::DeferClock {
             base: self.m.clock.now(),
             spent: 0.0,
@@ -1335,7 +1337,12 @@ impl Run<'_> {
                 let v = match init {
                     Some(x) => self.eval(x)?,
                     None => {
-                        let v = self.default_value(*t, e.span)?;
+                        // Its tasks belong to the master of the access type.
+                        let outer = self.m.sched.alloc_master;
+                        self.m.sched.alloc_master = self.collection_master(e.ty);
+                        let v = self.default_value(*t, e.span);
+                        self.m.sched.alloc_master = outer;
+                        let v = v?;
                         self.activate_allocated();
                         v
                     }

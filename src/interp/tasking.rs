@@ -524,6 +524,18 @@ impl Run<'_> {
         Ok(Value::Int(tid as i64))
     }
 
+    /// The master an access type's declaration recorded (see
+    /// [`Run::master_code`]); None when it records none (not a type of
+    /// tasks, or its declaration has not run).
+    pub(crate) fn collection_master(&self, access: TypeId) -> Option<i64> {
+        let v = self.c.types.get(access).master?;
+        let i = self.m.display.get(v.level as usize)? + v.slot as usize;
+        match self.m.stack.get(i) {
+            Some(Value::Int(code)) => Some(*code),
+            _ => None,
+        }
+    }
+
     /// The running thread's innermost master, as an access type's
     /// declaration records it: thread << 32 | index, or -1 for the library
     /// level (the environment task's tasks).

@@ -1619,10 +1619,15 @@ impl<'a> Run<'a> {
         Ok(None)
     }
 
-    /// Until when the robot is busy: another task's motion, or a
-    /// `Control => True` motion still running.
-    fn robot_free_at(&self) -> f64 {
-        let busy = self.svc.as_deref().map_or(0.0, |s| s.busy_until());
+    /// Until when the robot is busy for service `f`: another task's
+    /// motion, or a `Control => True` motion still running (except for
+    /// `EndRobot`, which raises ControlCommandActive then, services.md).
+    fn robot_free_at(&self, f: FuncId) -> f64 {
+        let end_robot = self.c.imports[f as usize].as_deref() == Some("EndRobot");
+        let busy = match self.svc.as_deref() {
+            Some(s) if !end_robot => s.busy_until(),
+            _ => 0.0,
+        };
         self.m.sched.robot_free_at.max(busy)
     }
 
@@ -2020,10 +2025,10 @@ impl<'a> Run<'a> {
                 // for it (the services are a monitor).
                 Op::CallWalker(f, _, _, span) | Op::CallWalkerOwned(f, _, _, span)
                     if self.m.sched.active()
-                        && self.m.clock.now() < self.robot_free_at()
-                        && self.is_service(*f) =>
+                        && self.is_service(*f)
+                        && self.m.clock.now() < self.robot_free_at(*f) =>
                 {
-                    let until = self.robot_free_at();
+                    let until = self.robot_free_at(*f);
                     self.m.sched.block(tasking::Wait::Delay(until), true, *span);
                     Ok(())
                 }
@@ -2192,10 +2197,7 @@ impl<'a> Run<'a> {
                 },
                 Op::AllocTask(d, e) => {
                     self.m.sched.alloc_activates = false;
-                    self.m.sched.alloc_master =
-                        self.c.types.get(e.ty).master.map(|v| self.int_at(v));
                     let r = self.eval(e);
-                    self.m.sched.alloc_master = None;
                     self.m.sched.alloc_activates = true;
                     r.map(|v| self.put(*d, v))
                 }

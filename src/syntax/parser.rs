@@ -1121,14 +1121,20 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         )
         .then_ignore(semi())
         .map(StmtKind::Abort);
-    // `accept E (I) ...` of an entry family: its declaration is refused as
-    // unsupported; here the index is read and dropped (no cascade).
+    // `accept E (I) ...` of an entry family: refused as unsupported (once
+    // more if the declaration was), and the rest read on (no cascade).
     let accept = kw!(Accept)
         .ignore_then(ident())
         .then_ignore(
             just(Token::LParen)
                 .then(expr.clone())
                 .then(just(Token::RParen))
+                .validate(|_, e, emitter| {
+                    emitter.emit(Rich::custom(
+                        e.span(),
+                        "an entry family is not supported by AdaIR (see docs/differences.md)",
+                    ))
+                })
                 .or_not(),
         )
         .then(params(expr.clone()))
