@@ -69,6 +69,16 @@ impl Checker {
                     info.base = old;
                     self.types.list[old as usize] = info;
                     self.retarget_enum_lits(t, old);
+                    // Access types declared before the completion that now
+                    // designate tasks get their master here (same region).
+                    let before: Vec<TypeId> = (0..self.types.list.len() as TypeId)
+                        .filter(|&a| {
+                            matches!(self.types.kind(a), TypeKind::Access(d) if self.types.base(*d) == old)
+                        })
+                        .collect();
+                    for a in before {
+                        self.collection_master(a, d.span, out);
+                    }
                     return;
                 }
                 if matches!(def, TypeDef::Incomplete) {
@@ -617,7 +627,7 @@ impl Checker {
             TypeKind::Access(d) => *d,
             _ => return,
         };
-        if !self.types.has_task(designated) {
+        if !self.types.has_task(designated) || self.types.get(t).master.is_some() {
             return;
         }
         if let Some(m) = self.masters.last_mut() {
