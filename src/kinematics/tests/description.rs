@@ -147,6 +147,8 @@ fn controller_conversion_and_quantisation() {
         assert!((a - b).abs() < 1e-15);
     }
     let quant = joints_to_deg(&d.quantize(&joints_from_deg([10.01, 10.01, 10.01, 10.01, 10.04])));
+    // J1 with its offset and reversed direction: still the nearest step.
+    assert!((quant[0] - 10.0).abs() < 1e-9, "{quant:?}");
     assert!((quant[1] - 10.0).abs() < 1e-9);
     assert!((quant[3] - 9.975).abs() < 1e-9, "{quant:?}");
     assert!((quant[4] - 10.05).abs() < 1e-9, "{quant:?}");
