@@ -1,5 +1,6 @@
-//! The services' golden scripts (`tests/golden/services/`), run by the
-//! library's own tests as well: the mutation pass over `src/services/`
+//! The services' golden scripts (`tests/golden/services/`, and the task
+//! scenarios and examples, where the gripper picks parts from a belt), run
+//! by the library's own tests as well: the mutation pass over `src/services/`
 //! (`scripts/mutants.sh`) runs `cargo test --lib`, and what most of the
 //! service core's code decides (options, timing, printed poses, faults) is
 //! pinned only by these scripts' expected output. `tests/golden.rs` runs
@@ -9,12 +10,12 @@ use crate::golden::{self, Verdict};
 use std::path::PathBuf;
 
 #[test]
-fn the_services_golden_scripts_print_their_out_files() {
+fn the_services_and_task_golden_scripts_print_their_out_files() {
     // Relative paths, as the .out files name them: cargo runs a test
     // binary in the package root.
-    let scripts =
-        golden::collect(&[PathBuf::from("tests/golden/services")]).expect("tests/golden/services");
-    assert!(scripts.len() > 50, "{} scripts", scripts.len());
+    let dirs = ["tests/golden/services", "tests/golden/tasks", "examples"];
+    let scripts = golden::collect(&dirs.map(PathBuf::from)).expect("golden scripts");
+    assert!(scripts.len() > 80, "{} scripts", scripts.len());
     // The runner's stack, as `adair` gives a program (main.rs).
     let failed = std::thread::Builder::new()
         .stack_size(256 << 20)
