@@ -78,7 +78,8 @@ fn every_missing_and_invalid_field_named() {
         .replacen("speed_deg_s = 109.0", "", 1)
         .replacen("direction = 1", "direction = 2", 1)
         .replace("init_force_n = 10.0", "init_force_n = 31.0")
-        .replace("opening_mm = [0.0, 60.0]", "opening_mm = [60.0, 0.0]");
+        .replace("opening_mm = [0.0, 60.0]", "opening_mm = [60.0, 0.0]")
+        .replacen("resolution_deg = 0.025", "resolution_deg = 0.0", 1);
     let e = RobotDescription::from_toml_str(&text).unwrap_err();
     let all = e.to_string();
     for needle in [
@@ -89,10 +90,11 @@ fn every_missing_and_invalid_field_named() {
         "field `joint[1].direction` = 2: expected 1 or -1",
         "field `gripper.init_force_n` = 31: outside gripper.force_n 0 .. 30",
         "field `gripper.opening_mm` = [60, 0]",
+        "field `joint[1].resolution_deg` = 0: expected > 0 deg",
     ] {
         assert!(all.contains(needle), "`{needle}` not in:\n{all}");
     }
-    assert_eq!(e.problems.len(), 7, "{all}");
+    assert_eq!(e.problems.len(), 8, "{all}");
     assert!(all.starts_with("robot description <string>:"));
 }
 
