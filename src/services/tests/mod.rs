@@ -12,3 +12,14 @@ mod record_table;
 mod save_keeps_file;
 mod scripts;
 mod service_core;
+
+/// A session driving the simulated RV-M1.
+fn rv_m1_session() -> crate::session::Session {
+    let mut s = crate::session::Session::new(Box::new(std::io::sink()));
+    s.set_robot(
+        crate::kinematics::RobotDescription::builtin("rv-m1").unwrap(),
+        None,
+        false,
+    );
+    s
+}

@@ -12,12 +12,6 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
-fn session() -> Session {
-    let mut s = Session::new(Box::new(std::io::sink()));
-    s.set_robot(RobotDescription::builtin("rv-m1").unwrap(), None, false);
-    s
-}
-
 fn j1(s: &Session) -> f64 {
     s.robot_state().expect("robot").robot.joints()[0]
 }
@@ -26,7 +20,7 @@ fn j1(s: &Session) -> f64 {
 fn a_realtime_motion_takes_its_time_on_the_wall_clock_and_ends_where_it_was_sent() {
     // RealTime is the fourth argument (after Time and Control): a mix-up of
     // the option indices leaves the motion unpaced.
-    let mut s = session();
+    let mut s = super::rv_m1_session();
     let start = Instant::now();
     let o = s.run_source(
         "rt.air",
@@ -40,7 +34,7 @@ fn a_realtime_motion_takes_its_time_on_the_wall_clock_and_ends_where_it_was_sent
     );
     assert!((j1(&s) - 0.5).abs() < 1e-9);
     // Control => True returns at once: it is not paced.
-    let mut s = session();
+    let mut s = super::rv_m1_session();
     let start = Instant::now();
     let o = s.run_source(
         "rt.air",
@@ -56,7 +50,7 @@ fn a_realtime_motion_takes_its_time_on_the_wall_clock_and_ends_where_it_was_sent
 
 #[test]
 fn a_stop_during_a_realtime_motion_leaves_the_arm_where_it_had_got_to() {
-    let mut s = session();
+    let mut s = super::rv_m1_session();
     let flag = Arc::new(AtomicBool::new(false));
     s.machine.interrupted = Some(flag.clone());
     let setter = std::thread::spawn(move || {
@@ -154,7 +148,7 @@ fn a_straight_line_may_be_given_exactly_its_fastest_time() {
     // At full velocity a straight line takes its fastest time; the same
     // line back with `Time =>` that time is accepted (a tolerance of 1 ns
     // for the rounding of the clock), and a shorter one is TimeInvalid.
-    let mut s = session();
+    let mut s = super::rv_m1_session();
     let text = "\
 InitRobot;
 SetVelocity (100.0);

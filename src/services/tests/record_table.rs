@@ -6,16 +6,9 @@ use crate::kinematics::RobotDescription;
 use crate::services::table::{self, Group};
 use crate::session::{Outcome, Session};
 
-/// A session driving the simulated RV-M1.
-fn rv_m1_session() -> Session {
-    let mut s = Session::new(Box::new(std::io::sink()));
-    s.set_robot(RobotDescription::builtin("rv-m1").unwrap(), None, false);
-    s
-}
-
 #[test]
 fn a_recorded_motion_is_sampled_every_20_ms_and_at_both_ends() {
-    let mut s = rv_m1_session();
+    let mut s = super::rv_m1_session();
     let o = s.run_source("rec.air", "InitRobot;\n");
     assert!(matches!(o, Outcome::Ok), "{o:?}");
     s.start_recording();
@@ -79,7 +72,7 @@ fn every_group_has_its_own_title() {
 fn a_recorded_straight_line_has_every_support_point_inside_the_motion() {
     // Support points lie at even fractions of the line: each is recorded,
     // in time order, none after the motion's end.
-    let mut s = rv_m1_session();
+    let mut s = super::rv_m1_session();
     let setup = "InitRobot;\nMoveFrameAbsolute (((-1.0, 0.0, 0.0, 250.0), (0.0, 1.0, 0.0, 0.0), (0.0, 0.0, -1.0, 200.0)));\nSetMoveMode (StraightLine);\nSetInterpolation (10.0);\n";
     let o = s.run_source("line.air", setup);
     assert!(matches!(o, Outcome::Ok), "{o:?}");
@@ -108,7 +101,7 @@ fn a_recorded_straight_line_has_every_support_point_inside_the_motion() {
 
 #[test]
 fn a_recorded_gripper_motion_adds_the_pose_with_the_new_opening() {
-    let mut s = rv_m1_session();
+    let mut s = super::rv_m1_session();
     let o = s.run_source("grip.air", "InitRobot;\n");
     assert!(matches!(o, Outcome::Ok), "{o:?}");
     s.start_recording();
