@@ -119,19 +119,10 @@ impl MotionProfile {
         self.min_duration
     }
 
-    /// Index (0-based) of the leading joint, `None` without travel.
+    /// Index (0-based) of the leading joint, `None` without travel; of
+    /// joints that need equally long, the lowest-numbered.
     pub fn leading_joint(&self) -> Option<usize> {
         self.leading
-    }
-
-    /// Start joints.
-    pub fn from(&self) -> &Joints {
-        &self.from
-    }
-
-    /// Target joints.
-    pub fn to(&self) -> &Joints {
-        &self.to
     }
 
     /// Fraction of the way done at time `t` (clamped to 0 .. duration).

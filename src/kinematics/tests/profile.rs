@@ -130,3 +130,60 @@ fn rm_501_is_slower() {
     assert!((a.duration() - 1.0).abs() < 1e-12);
     assert!((b.duration() - (90.0 / 48.0 + 0.25)).abs() < 1e-12);
 }
+
+#[test]
+fn the_trapezoid_in_closed_form() {
+    // RV-M1 J1 from -30 to 90 deg at 100 %: 120 deg at 120 deg/s and
+    // 480 deg/s^2, so the normalised profile has cruise 1/s, acceleration
+    // 4/s^2, ramps of 0.25 s and lasts 1.25 s. J2 travels 36 deg the same way.
+    let d = rv_m1();
+    let from = joints_from_deg([-30.0, 10.0, 0.0, 0.0, 0.0]);
+    let to = joints_from_deg([90.0, 46.0, 0.0, 0.0, 0.0]);
+    let p = MotionProfile::plan(&from, &to, 100.0, &d, None).unwrap();
+    assert!((p.duration() - 1.25).abs() < 1e-12, "{}", p.duration());
+    assert_eq!(p.min_duration(), p.duration());
+    // (t, fraction s(t), normalised speed s'(t)) in each phase.
+    for (t, s, ds) in [(0.1, 0.02, 0.4), (0.5, 0.375, 1.0), (1.1, 0.955, 0.6)] {
+        assert!(
+            (p.fraction_at(t) - s).abs() < 1e-12,
+            "s({t}) = {}",
+            p.fraction_at(t)
+        );
+        let q = p.at(t);
+        let v = p.velocity_at(t);
+        for (j, travel) in [(0, 120.0), (1, 36.0)] {
+            let start = from[j].to_degrees();
+            assert!(
+                (q[j].to_degrees() - (start + travel * s)).abs() < 1e-9,
+                "q{j}({t})"
+            );
+            assert!((v[j].to_degrees() - travel * ds).abs() < 1e-9, "v{j}({t})");
+        }
+        assert_eq!(q[2], 0.0);
+    }
+    // Standing still before the start, after the end and at no time.
+    for t in [-1.0, 0.0, 1.25, 3.0, f64::NAN] {
+        assert_eq!(p.velocity_at(t), [0.0; 5], "v({t})");
+    }
+    assert_eq!(p.fraction_at(f64::NAN), 0.0);
+    assert_eq!(p.at(f64::NAN), from);
+    let still = MotionProfile::plan(&from, &from, 100.0, &d, Some(1.0)).unwrap();
+    assert_eq!(still.velocity_at(0.5), [0.0; 5]);
+    assert_eq!(still.fraction_at(0.5), 0.0);
+    // Given 2 s, the fastest time is still 1.25 s.
+    let slow = MotionProfile::plan(&from, &to, 100.0, &d, Some(2.0)).unwrap();
+    assert_eq!(slow.min_duration(), p.duration());
+    assert_eq!(slow.duration(), 2.0);
+}
+
+#[test]
+fn of_joints_that_need_equally_long_the_first_leads() {
+    // J1 120 deg at 120 deg/s and J2 72 deg at 72 deg/s: 1 s each.
+    let d = rv_m1();
+    let to = joints_from_deg([120.0, 72.0, 0.0, 0.0, 0.0]);
+    let p = MotionProfile::plan(&[0.0; 5], &to, 100.0, &d, None).unwrap();
+    assert_eq!(p.leading_joint(), Some(0));
+    let back = joints_from_deg([0.0, 72.0, 0.0, 0.0, 0.0]);
+    let p = MotionProfile::plan(&[0.0; 5], &back, 100.0, &d, None).unwrap();
+    assert_eq!(p.leading_joint(), Some(1));
+}

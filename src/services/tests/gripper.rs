@@ -59,3 +59,34 @@ fn trace_and_value_tool_agree() {
         r.output
     );
 }
+
+#[test]
+fn pressing_reads_the_force_the_jaws_press_with_not_the_setting() {
+    // A tool whose force range goes past what the RV-M1's jaws can do
+    // (30 N): asked for 80 N, they press on the part with 30 N, and that is
+    // what ValueTool reads while they press; once open again, the setting.
+    // A force exactly at the range's end is allowed.
+    let src = "procedure Show is\n   T : constant ToolDescriptor := ValueTool;\nbegin\n   \
+               Put_Line (\"value\" & Float'Image (T.CurrDist) & Float'Image (T.CurrForce));\nend Show;\n\
+               T : ToolDescriptor;\n\
+               InitRobot;\nT := ValueTool;\nT.ForceMax := 80.0;\nSetTool (T);\n\
+               PlaceObject (30.0);\n\
+               MoveTool (10.0, 80.0);\nShow;\n\
+               MoveTool (60.0, 25.0);\nShow;\n";
+    let r = crate::golden::run_text("press.air", src, "rv-m1", false);
+    assert_eq!(r.code, 0, "{}{}", r.output, r.diagnostics);
+    let values: Vec<&str> = r
+        .output
+        .lines()
+        .filter(|l| l.starts_with("value"))
+        .collect();
+    assert_eq!(
+        values,
+        [
+            "value 3.00000E+01 3.00000E+01",
+            "value 6.00000E+01 2.50000E+01"
+        ],
+        "{}",
+        r.output
+    );
+}

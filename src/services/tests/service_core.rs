@@ -182,3 +182,48 @@ fn a_rehearsal_leaves_robot_clock_output_and_data_as_they_were() {
         o => panic!("{o:?}"),
     }
 }
+
+/// The `TeachBox` service hands its text and both flags to the pendant, as
+/// the program gave them, and the pendant's refusal is `CommandNotSupported`.
+#[test]
+fn the_teach_box_service_passes_text_and_flags_to_the_pendant() {
+    use std::cell::RefCell;
+    use std::rc::Rc;
+    type Seen = Rc<RefCell<Vec<(String, bool, bool)>>>;
+    struct Fake(Seen);
+    impl crate::services::Pendant for Fake {
+        fn teach(
+            &mut self,
+            _: &mut crate::services::RobotState,
+            _: &mut dyn Clock,
+            text: &str,
+            refresh: bool,
+            clear: bool,
+        ) -> Result<(), String> {
+            self.0.borrow_mut().push((text.to_string(), refresh, clear));
+            if text == "no" {
+                Err("refused".into())
+            } else {
+                Ok(())
+            }
+        }
+    }
+    let seen: Seen = Rc::default();
+    let mut s = Session::new(Box::new(std::io::sink()));
+    s.set_robot(RobotDescription::builtin("rv-m1").unwrap(), None, false);
+    s.robot_state_mut().unwrap().pendant = Some(Box::new(Fake(seen.clone())));
+    let src = "InitRobot;\nTeachBox (\"one\", True, False);\nTeachBox (\"two\", False, True);\n\
+               TeachBox (\"no\", False, False);\n";
+    match s.run_source("t.air", src) {
+        Outcome::Raised(d) => assert!(d.message.contains("COMMANDNOTSUPPORTED"), "{}", d.message),
+        o => panic!("{o:?}"),
+    }
+    assert_eq!(
+        *seen.borrow(),
+        [
+            ("one".to_string(), true, false),
+            ("two".to_string(), false, true),
+            ("no".to_string(), false, false)
+        ]
+    );
+}
