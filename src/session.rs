@@ -388,7 +388,7 @@ impl Session {
                 self.checker.use_everywhere(p);
             }
         }
-        let (stmts, main) = self.checker.check_unit(&unit);
+        let (stmts, main) = self.checker.check_unit_consuming(&unit);
         diags.extend(self.checker.take_diags());
         // A name from a stdlib package that was not checked (no `with`):
         // check the rest of the stdlib to say where it is declared.

@@ -785,11 +785,7 @@ impl Checker {
         );
         let ret = self.funcs[f as usize].ret;
         // A statement the parser could not read may have been the return.
-        let unreadable = b
-            .body
-            .stmts
-            .iter()
-            .any(|s| matches!(s.kind, ast::StmtKind::Error));
+        let unreadable = self.unreadable;
         if ret.is_some() && !saw_return && !unreadable {
             self.err(
                 Diagnostic::ty(

@@ -100,6 +100,11 @@ pub type ImportProfileOf = fn(&str) -> Option<ImportProfile>;
 /// entry that does not check.
 #[derive(Clone)]
 pub struct Checker {
+    /// Whether the block `block` lowered last had a statement the parser
+    /// could not read (it may have been a function's `return`).
+    unreadable: bool,
+    /// In `check_unit_consuming`: blocks' statements are taken from the AST.
+    consume_ast: bool,
     pub types: Types,
     pub funcs: Vec<Subprogram>,
     /// Import name of each subprogram bound to a builtin.
@@ -189,6 +194,8 @@ pub const END_ERROR: ExcId = 7;
 impl Checker {
     pub fn new(known_builtin: KnownBuiltin) -> Checker {
         let mut c = Checker {
+            unreadable: false,
+            consume_ast: false,
             types: Types::standard(),
             funcs: Vec::new(),
             imports: Vec::new(),
@@ -654,6 +661,20 @@ impl Checker {
         r
     }
 
+    /// As `check_unit`, for a caller that drops the unit afterwards: the
+    /// statements of every block are taken out of the AST and dropped as
+    /// they are lowered (the AST of a long program and its checked form
+    /// are not held whole at once). The unit's blocks are empty afterwards.
+    pub fn check_unit_consuming(
+        &mut self,
+        unit: &ast::CompilationUnit,
+    ) -> (Vec<Stmt>, Option<FuncId>) {
+        self.consume_ast = true;
+        let r = self.check_unit(unit);
+        self.consume_ast = false;
+        r
+    }
+
     fn check_unit_items(&mut self, unit: &ast::CompilationUnit) -> (Vec<Stmt>, Option<FuncId>) {
         let mut out = Vec::new();
         let has_stmts = unit
@@ -1116,4 +1137,40 @@ impl Checker {
 /// names, as its code in hex.
 pub(crate) fn char_lit_key(c: char) -> String {
     format!("'{:x}'", c as u32)
+}
+
+#[cfg(test)]
+mod consume_tests {
+    use crate::syntax::ast::{CompilationUnit, DeclKind, TopItem};
+
+    fn body_len(unit: &CompilationUnit) -> usize {
+        match &unit.items[..] {
+            [TopItem::Decl(d)] => match &d.kind {
+                DeclKind::SubprogramBody(b) => b.body.stmts.borrow().len(),
+                k => panic!("{k:?}"),
+            },
+            i => panic!("{i:?}"),
+        }
+    }
+
+    /// `check_unit_consuming` drops each statement of a body once it is
+    /// lowered (a long program's AST and checked form are not held whole
+    /// together: issue 14); `check_unit` leaves the AST whole (the language
+    /// server reads it after the check). Both give the same program.
+    #[test]
+    fn the_consuming_check_empties_the_blocks_and_the_other_keeps_them() {
+        let text = "procedure P is\n   X : Integer := 0;\nbegin\n   X := X + 1;\n   \
+                    declare\n      Y : Integer := X;\n   begin\n      X := Y;\n   end;\nend P;\n";
+        let (unit, d) = crate::syntax::parse_source(text, 0);
+        assert!(d.is_empty(), "{d:?}");
+        let unit = unit.unwrap();
+        let mut c = super::Checker::new(|_| false);
+        let (kept, _) = c.check_unit(&unit);
+        assert_eq!(body_len(&unit), 2);
+        let mut c = super::Checker::new(|_| false);
+        let (consumed, _) = c.check_unit_consuming(&unit);
+        assert_eq!(body_len(&unit), 0);
+        assert_eq!(format!("{kept:?}"), format!("{consumed:?}"));
+        assert!(!c.consume_ast);
+    }
 }

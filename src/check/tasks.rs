@@ -464,7 +464,8 @@ impl Checker {
             stmts: vec![ast::Stmt {
                 kind: ast::StmtKind::Return(Some(Box::new(b.barrier.clone()))),
                 span: b.barrier.span,
-            }],
+            }]
+            .into(),
             handlers: Vec::new(),
             span: b.barrier.span,
         };

@@ -187,7 +187,7 @@ fn regions(unit: &ast::CompilationUnit) -> Vec<Span> {
         }
     }
     fn block(b: &ast::Block, out: &mut Vec<Span>) {
-        stmts(&b.stmts, out);
+        stmts(&b.stmts.borrow(), out);
         for h in &b.handlers {
             out.push(h.span);
             stmts(&h.stmts, out);

@@ -447,7 +447,7 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
             for x in &b.decls {
                 decl_symbols(a, x, &mut children);
             }
-            for s in &b.body.stmts {
+            for s in b.body.stmts.borrow().iter() {
                 stmt_symbols(a, s, &mut children);
             }
             out.push(subprogram_symbol(a, &b.spec, d.span, children));

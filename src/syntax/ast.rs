@@ -300,7 +300,10 @@ pub struct TaskBody {
 /// `begin stmts [exception handlers] end`
 #[derive(Clone, Debug, PartialEq)]
 pub struct Block {
-    pub stmts: Vec<Stmt>,
+    /// In a cell so that the checker can take the statements it has
+    /// lowered and drop them one by one (a long program's AST and its
+    /// checked form are then not both held whole; issue 14).
+    pub stmts: std::cell::RefCell<Vec<Stmt>>,
     pub handlers: Vec<Handler>,
     pub span: Span,
 }

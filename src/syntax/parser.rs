@@ -910,7 +910,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         )
         .then_ignore(kw!(End))
         .map_with(|(stmts, handlers), e| Block {
-            stmts,
+            stmts: stmts.into(),
             handlers: handlers.unwrap_or_default(),
             span: e.span(),
         })
@@ -1042,7 +1042,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .map_with(|((stmts, handlers), missing), e| {
             (
                 Block {
-                    stmts,
+                    stmts: stmts.into(),
                     handlers: handlers.unwrap_or_default(),
                     span: e.span(),
                 },
@@ -1149,7 +1149,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                 .then_ignore(kw!(End))
                 .then_ignore(ident().or_not())
                 .map_with(|(stmts, handlers), e| Block {
-                    stmts,
+                    stmts: stmts.into(),
                     handlers: handlers.unwrap_or_default(),
                     span: e.span(),
                 })
@@ -1609,7 +1609,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                     SubTail::Body(
                         Vec::new(),
                         Block {
-                            stmts: vec![ret],
+                            stmts: vec![ret].into(),
                             handlers: Vec::new(),
                             span,
                         },
@@ -1638,7 +1638,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                         .then(end().map_with(|_, e| e.span()))
                         .map_with(|((stmts, handlers), at), e| {
                             let b = Block {
-                                stmts,
+                                stmts: stmts.into(),
                                 handlers: handlers.unwrap_or_default(),
                                 span: e.span(),
                             };
@@ -1684,7 +1684,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                             .or_not(),
                     )
                     .map_with(|(stmts, handlers), e| Block {
-                        stmts,
+                        stmts: stmts.into(),
                         handlers: handlers.unwrap_or_default(),
                         span: e.span(),
                     })
