@@ -174,6 +174,40 @@ end;
     assert_eq!(out.take(), "exact time accepted\nshorter refused\n");
 }
 
+#[test]
+fn a_path_may_be_given_exactly_its_fastest_time() {
+    // As a straight line: MovePath at full velocity takes its fastest time;
+    // the same path from the same start with `Time =>` that time is
+    // accepted, a shorter one is TimeInvalid.
+    let mut s = super::rv_m1_session();
+    let text = "\
+InitRobot;
+SetVelocity (100.0);
+CreatePath (1);
+InsertPosition (1, 1, ((-1.0, 0.0, 0.0, 300.0), (0.0, 1.0, 0.0, 0.0), (0.0, 0.0, -1.0, 250.0)));
+InsertPosition (1, 2, ((-1.0, 0.0, 0.0, 250.0), (0.0, 1.0, 0.0, -50.0), (0.0, 0.0, -1.0, 100.0)));
+declare
+   T0 : constant Duration := Ada.Calendar.Seconds (Ada.Calendar.Clock);
+   D : Duration;
+begin
+   MovePath (1);
+   D := Ada.Calendar.Seconds (Ada.Calendar.Clock) - T0;
+   MoveAxesAbsolute ((0.0, 0.0, 0.0, 0.0, 0.0));
+   MovePath (1, Time => D);
+   Put_Line (\"exact time accepted\");
+   MoveAxesAbsolute ((0.0, 0.0, 0.0, 0.0, 0.0));
+   MovePath (1, Time => D * 0.99);
+exception
+   when TimeInvalid => Put_Line (\"shorter refused\");
+end;
+";
+    let out = crate::golden::SharedBuf::default();
+    s.machine.out = Box::new(out.clone());
+    let o = s.run_source("path.air", text);
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    assert_eq!(out.take(), "exact time accepted\nshorter refused\n");
+}
+
 /// A stand-in for a real arm: the simulator's motions, but taking "wall
 /// clock" time in the driver (`real_time`), with the waits counted.
 struct FakeArm {
