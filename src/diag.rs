@@ -138,14 +138,15 @@ impl Diagnostic {
 /// All source texts of one run, indexed by [`FileId`].
 #[derive(Default, Clone, Debug)]
 pub struct Sources {
-    files: Vec<(String, String)>,
+    /// Name and text; the text is shared with the checker (`shared`).
+    files: Vec<(String, std::rc::Rc<str>)>,
     /// The byte offset where each line of each file starts.
     line_starts: Vec<Vec<usize>>,
 }
 
 impl Sources {
-    pub fn add(&mut self, name: impl Into<String>, text: impl Into<String>) -> FileId {
-        let text = text.into();
+    pub fn add(&mut self, name: impl Into<String>, text: &str) -> FileId {
+        let text: std::rc::Rc<str> = text.into();
         let mut starts = vec![0];
         starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
         self.line_starts.push(starts);
@@ -159,10 +160,14 @@ impl Sources {
             .unwrap_or("?")
     }
     pub fn text(&self, id: FileId) -> &str {
+        self.files.get(id as usize).map(|f| &*f.1).unwrap_or("")
+    }
+    /// The text of a file, shared (the checker keeps it for its messages
+    /// without a copy of its own).
+    pub fn shared(&self, id: FileId) -> std::rc::Rc<str> {
         self.files
             .get(id as usize)
-            .map(|f| f.1.as_str())
-            .unwrap_or("")
+            .map_or_else(|| "".into(), |f| f.1.clone())
     }
     /// 1-based line and column (in characters) of a byte offset.
     pub fn line_col(&self, id: FileId, offset: usize) -> (usize, usize) {

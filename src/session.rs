@@ -360,7 +360,7 @@ impl Session {
     ) -> Result<(Vec<Stmt>, Option<FuncId>), Vec<Diagnostic>> {
         let id = self.sources.add(name, text);
         self.machine.add_source(id, name, text);
-        self.checker.add_text(id, text);
+        self.checker.add_text(id, self.sources.shared(id));
         let (unit, mut diags) = crate::syntax::parse_source(text, id);
         let Some(unit) = unit else { return Err(diags) };
         use crate::syntax::ast::TopItem;

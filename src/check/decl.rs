@@ -59,7 +59,7 @@ impl Checker {
                 let prev = self
                     .scopes
                     .last()
-                    .and_then(|s| s.names.get(&name.key))
+                    .and_then(|s| s.names.get(&*name.key))
                     .and_then(|es| es.last().cloned());
                 if let Some(Entity::Type(old)) = prev
                     && matches!(self.types.kind(old), TypeKind::Incomplete)
@@ -218,7 +218,7 @@ impl Checker {
                 && self.level > 0
                 && let Some(frame) = self.unread.get_mut(self.level as usize - 1)
             {
-                frame.insert(var, (n.name.clone(), n.span, false));
+                frame.insert(var, (n.name.to_string(), n.span, false));
             }
             self.declare_checked(
                 n,
@@ -496,7 +496,7 @@ impl Checker {
                 let parent = self.subtype_ind(ind);
                 let mut info = self.types.get(parent).clone();
                 let id = self.types.list.len() as TypeId;
-                info.name = name.name.clone();
+                info.name = name.name.to_string();
                 info.base = id;
                 if let TypeKind::Enum(_) = &info.kind {
                     // Derived enumeration types get their own literals.
@@ -584,15 +584,15 @@ impl Checker {
                         self.coerce(ex, t)
                     });
                     for n in &c.names {
-                        if fields.iter().any(|f| f.key == n.key) {
+                        if fields.iter().any(|f| *f.key == *n.key) {
                             self.err(Diagnostic::name(
                                 n.span,
                                 format!("component `{}` is declared twice", n.name),
                             ));
                         }
                         fields.push(Field {
-                            name: n.name.clone(),
-                            key: n.key.clone(),
+                            name: n.name.to_string(),
+                            key: n.key.to_string(),
                             ty: t,
                             default: default.clone(),
                         });
@@ -659,7 +659,7 @@ impl Checker {
             }
             for n in &p.names {
                 out.push(Param {
-                    name: n.name.clone(),
+                    name: n.name.to_string(),
                     mode: p.mode,
                     ty: t,
                     default: default.clone(),

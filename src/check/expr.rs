@@ -339,7 +339,7 @@ impl Checker {
                     if let Some(f) = self
                         .types
                         .fields(t)
-                        .and_then(|fs| fs.iter().find(|f| f.key == id.key))
+                        .and_then(|fs| fs.iter().find(|f| *f.key == *id.key))
                     {
                         out.push(f.ty);
                     }
@@ -404,7 +404,7 @@ impl Checker {
                     Some(t) => Some(t),
                     None => self.interps(p).first().copied(),
                 };
-                match a.key.as_str() {
+                match a.key.as_ref() {
                     "image" => vec![STRING],
                     "pos" | "length" | "digits" => vec![UNIV_INT],
                     "first" | "last" => match pt {
@@ -516,7 +516,7 @@ impl Checker {
                 if self
                     .scopes
                     .iter()
-                    .any(|s| s.name.as_deref() == Some(id.key.as_str())) =>
+                    .any(|s| s.name.as_deref() == Some(id.key.as_ref())) =>
             {
                 true
             }
@@ -1388,7 +1388,7 @@ impl Checker {
             return self.err_ex(sp);
         }
         match self.types.fields(pe.ty).map(|f| f.to_vec()) {
-            Some(fields) => match fields.iter().position(|f| f.key == id.key) {
+            Some(fields) => match fields.iter().position(|f| *f.key == *id.key) {
                 Some(i) => {
                     let t = fields[i].ty;
                     self.index_field_ref(id.span, pe.ty, i as u32);
@@ -2441,7 +2441,7 @@ impl Checker {
                         Choice::Expr(ast::Expr {
                             kind: ExprKind::Name(n),
                             ..
-                        }) => match fields.iter().position(|f| f.key == n.key) {
+                        }) => match fields.iter().position(|f| *f.key == *n.key) {
                             Some(i) => {
                                 self.index_field_ref(n.span, t, i as u32);
                                 vec![i]
@@ -2615,7 +2615,7 @@ impl Checker {
         want: Option<TypeId>,
         sp: Span,
     ) -> Ex {
-        let key = a.key.as_str();
+        let key = a.key.as_ref();
         if matches!(key, "count" | "callable" | "terminated")
             && let Some(x) = self.task_attribute(p, key, sp)
         {
@@ -2989,7 +2989,7 @@ pub(super) fn funcs_of(es: &[Entity]) -> Vec<FuncId> {
 
 /// `P'Range` or `P'Range (N)`: a range, not a value.
 fn is_range_attr(x: &ast::Expr) -> bool {
-    matches!(&x.kind, ExprKind::Attr(_, a, _) if a.key == "range")
+    matches!(&x.kind, ExprKind::Attr(_, a, _) if &*a.key == "range")
 }
 
 impl Checker {

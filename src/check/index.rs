@@ -223,7 +223,7 @@ impl Checker {
     ) {
         let n = self.index.defs.len() as u32;
         self.index.defs.push(Def {
-            name: id.name.clone(),
+            name: id.name.to_string(),
             kind: DefKind::Field,
             span: id.span,
             decl: id.span,
@@ -243,7 +243,7 @@ impl Checker {
     ) {
         let n = self.index.defs.len() as u32;
         self.index.defs.push(Def {
-            name: id.name.clone(),
+            name: id.name.to_string(),
             kind: DefKind::Parameter,
             span: id.span,
             decl: self.cur_decl.unwrap_or(id.span),

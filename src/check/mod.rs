@@ -305,8 +305,8 @@ impl Checker {
     }
 
     /// Registers the text of a source so that hints can quote it.
-    pub fn add_text(&mut self, file: u32, text: &str) {
-        self.texts.insert(file, Rc::from(text));
+    pub fn add_text(&mut self, file: u32, text: Rc<str>) {
+        self.texts.insert(file, text);
     }
 
     fn snippet(&self, s: Span) -> String {
@@ -392,7 +392,7 @@ impl Checker {
     /// same declarative region.
     fn declare_checked(&mut self, id: &ast::Ident, e: Entity) {
         let overloadable = matches!(e, Entity::Func(_) | Entity::EnumLit(..));
-        if let Some(prev) = self.scopes.last().and_then(|s| s.names.get(&id.key)) {
+        if let Some(prev) = self.scopes.last().and_then(|s| s.names.get(&*id.key)) {
             let clash = prev
                 .iter()
                 .any(|p| !(overloadable && matches!(p, Entity::Func(_) | Entity::EnumLit(..))));
@@ -727,11 +727,11 @@ impl Checker {
             .scopes
             .iter()
             .rev()
-            .find(|s| s.name.as_deref() == Some(task.key.as_str()))
+            .find(|s| s.name.as_deref() == Some(task.key.as_ref()))
         else {
             return false;
         };
-        !scope.names.contains_key(&sel.key)
+        !scope.names.contains_key(&*sel.key)
             && self.lookup(&task.key).iter().any(|e| {
                 matches!(e, Entity::Var { ty, .. }
                     if matches!(self.types.kind(*ty), types::TypeKind::Task(_)))
@@ -854,10 +854,10 @@ impl Checker {
                         .scopes
                         .iter()
                         .rev()
-                        .find(|s| s.name.as_deref() == Some(pn.key.as_str()))
+                        .find(|s| s.name.as_deref() == Some(pn.key.as_ref()))
                     && !self.own_task_entry(pn, id)
                 {
-                    let es = scope.names.get(&id.key).cloned().unwrap_or_default();
+                    let es = scope.names.get(&*id.key).cloned().unwrap_or_default();
                     if report {
                         self.index_use(id, &es);
                     }
@@ -875,7 +875,7 @@ impl Checker {
                         let pk = *pk;
                         let mut es = self.packages[pk]
                             .names
-                            .get(&id.key)
+                            .get(&*id.key)
                             .cloned()
                             .unwrap_or_default();
                         // Inside the package itself, its private names are visible too.
@@ -887,7 +887,7 @@ impl Checker {
                         {
                             es = self.packages[pk]
                                 .private
-                                .get(&id.key)
+                                .get(&*id.key)
                                 .cloned()
                                 .unwrap_or_default();
                         }

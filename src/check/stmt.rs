@@ -220,7 +220,8 @@ impl Checker {
                     ));
                 }
                 let id = self.new_loop();
-                self.loops.push((label.as_ref().map(|l| l.key.clone()), id));
+                self.loops
+                    .push((label.as_ref().map(|l| l.key.to_string()), id));
                 let k = match &**scheme {
                     ast::LoopScheme::Plain => {
                         let body = self.scoped_stmts(body);
@@ -296,7 +297,7 @@ impl Checker {
                             .loops
                             .iter()
                             .rev()
-                            .find(|x| x.0.as_deref() == Some(l.key.as_str()))
+                            .find(|x| x.0.as_deref() == Some(l.key.as_ref()))
                             .map(|x| x.1);
                         if f.is_none() {
                             self.err(Diagnostic::name(
@@ -355,7 +356,7 @@ impl Checker {
                     self.name_scope(&l.key);
                     // An exception declared in a named block is
                     // `UNIT.BLOCK.NAME` (as GNAT's Exception_Name).
-                    self.unit_path.push(l.name.clone());
+                    self.unit_path.push(l.name.to_string());
                 }
                 let mut elab = Vec::new();
                 self.masters.push(false);

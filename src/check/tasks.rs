@@ -75,7 +75,7 @@ impl Checker {
             let params = self.params(&e.params);
             let f = self.new_func(format!("{name}.{}", e.name.name), params, None, e.name.span);
             entries.push(EntryDef {
-                name: e.name.name.clone(),
+                name: e.name.name.to_string(),
                 profile: f,
                 interrupt: None,
             });
@@ -123,7 +123,7 @@ impl Checker {
             self.coerce(e, INTEGER)
         });
         self.tasks.push(TaskDef {
-            name: name.clone(),
+            name: name.to_string(),
             entries,
             body: None,
             priority,
@@ -171,7 +171,7 @@ impl Checker {
             ));
             return;
         }
-        let f = self.new_func(b.name.name.clone(), Vec::new(), None, span);
+        let f = self.new_func(b.name.name.to_string(), Vec::new(), None, span);
         self.tasks[k as usize].body = Some(f);
         self.task_ctx.push(k);
         self.check_body(
@@ -212,8 +212,8 @@ impl Checker {
                     });
                     for n in names {
                         fields.push(types::Field {
-                            name: n.name.clone(),
-                            key: n.key.clone(),
+                            name: n.name.to_string(),
+                            key: n.key.to_string(),
                             ty: t,
                             default: default.clone(),
                         });
@@ -264,7 +264,7 @@ impl Checker {
                     let profile =
                         self.new_func(format!("{name}.{}", e.name.name), params, None, e.span);
                     entries.push(ProtEntry {
-                        name: e.name.name.clone(),
+                        name: e.name.name.to_string(),
                         profile,
                         barrier: None,
                         body: None,
@@ -275,7 +275,7 @@ impl Checker {
         self.prot_members.resize(k as usize + 1, Vec::new());
         self.prot_members[k as usize] = members;
         self.prots.push(ProtDef {
-            name: name.clone(),
+            name: name.to_string(),
             rec,
             access,
             entries,
@@ -654,7 +654,7 @@ impl Checker {
     ) -> Option<(FuncId, Vec<Arg>)> {
         let fs: Vec<FuncId> = self.prot_members[k as usize]
             .iter()
-            .filter(|(n, ..)| *n == id.key)
+            .filter(|(n, ..)| **n == *id.key)
             .map(|(_, p, _, _)| *p)
             .collect();
         if fs.is_empty() {
@@ -1167,7 +1167,7 @@ impl Checker {
         let Some(Entity::Var { ty, var, .. }) = self
             .scopes
             .last()
-            .and_then(|s| s.names.get(&name.key))
+            .and_then(|s| s.names.get(&*name.key))
             .and_then(|es| es.last().cloned())
         else {
             self.err(Diagnostic::name(

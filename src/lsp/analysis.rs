@@ -84,7 +84,7 @@ impl Analysis {
         let mut sources = base.sources.clone();
         let mut checker = base.checker.clone();
         let file = sources.add(name, text);
-        checker.add_text(file, text);
+        checker.add_text(file, sources.shared(file));
         let checked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
             let (parsed, mut diags) = crate::syntax::parse_source(text, file);
             // Text that does not parse as a whole (typing at its end): the

@@ -364,7 +364,7 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
     let mark = |ind: &ast::SubtypeInd| a.span_text(ind.span).to_string();
     let mut leaf = |name: &ast::Ident, kind: K, detail: Option<String>| {
         out.push(Symbol {
-            name: name.name.clone(),
+            name: name.name.to_string(),
             detail,
             kind,
             span: d.span,
@@ -396,7 +396,7 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
                     cs.iter()
                         .flat_map(|c| {
                             c.names.iter().map(move |n| Symbol {
-                                name: n.name.clone(),
+                                name: n.name.to_string(),
                                 detail: Some(a.span_text(c.ty.span).to_string()),
                                 kind: K::FIELD,
                                 span: c.span,
@@ -411,7 +411,7 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
                     lits.iter()
                         .filter_map(|l| match l {
                             ast::EnumLit::Ident(i) => Some(Symbol {
-                                name: i.name.clone(),
+                                name: i.name.to_string(),
                                 detail: None,
                                 kind: K::ENUM_MEMBER,
                                 span: i.span,
@@ -425,7 +425,7 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
                 _ => (K::CLASS, Vec::new()),
             };
             out.push(Symbol {
-                name: name.name.clone(),
+                name: name.name.to_string(),
                 detail: Some("type".into()),
                 kind,
                 span: d.span,

@@ -269,7 +269,9 @@ impl Repl {
         let snapshot = self.session.checker.clone();
         let id = self.session.sources.add(name.clone(), text);
         self.session.machine.add_source(id, &name, text);
-        self.session.checker.add_text(id, text);
+        self.session
+            .checker
+            .add_text(id, self.session.sources.shared(id));
         let (tokens, lex_diags) = crate::syntax::lexer::lex(text, id);
         let expr = if lex_diags.is_empty() {
             crate::syntax::parser::parse_expr_entry(&tokens, id, text.len())

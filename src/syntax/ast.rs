@@ -2,24 +2,54 @@
 //! `F (X)` is still ambiguous (call, index, conversion); the checker decides.
 
 use crate::diag::Span;
+use std::rc::Rc;
 
+/// An identifier. Its two strings are shared by every occurrence of the
+/// same spelling (interned per thread), so that a long program's names
+/// cost no memory each (issue 14).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Ident {
     /// As written, for messages.
-    pub name: String,
+    pub name: Rc<str>,
     /// Lower case, for look-up.
-    pub key: String,
+    pub key: Rc<str>,
     pub span: Span,
+}
+
+thread_local! {
+    /// Spelling -> (spelling, lower case), shared by the idents of a thread.
+    static NAMES: std::cell::RefCell<std::collections::HashMap<Rc<str>, Rc<str>>> =
+        Default::default();
+}
+
+/// The shared spelling and lower-case key of a name.
+fn interned(name: &str) -> (Rc<str>, Rc<str>) {
+    NAMES.with_borrow_mut(|names| match names.get_key_value(name) {
+        Some((n, k)) => (n.clone(), k.clone()),
+        None => {
+            let n: Rc<str> = name.into();
+            // Ada identifiers are case-insensitive in every script.
+            let lower = name.to_lowercase();
+            let k: Rc<str> = match names.get_key_value(lower.as_str()) {
+                Some((k, _)) => k.clone(),
+                None if lower == name => n.clone(),
+                None => lower.into(),
+            };
+            names.insert(n.clone(), k.clone());
+            (n, k)
+        }
+    })
+}
+
+/// The shared spelling of a name (the lexer's identifier tokens).
+pub fn intern(name: &str) -> Rc<str> {
+    interned(name).0
 }
 
 impl Ident {
     pub fn new(name: &str, span: Span) -> Self {
-        Ident {
-            name: name.to_string(),
-            // Ada identifiers are case-insensitive in every script.
-            key: name.to_lowercase(),
-            span,
-        }
+        let (name, key) = interned(name);
+        Ident { name, key, span }
     }
 }
 
@@ -187,7 +217,7 @@ pub enum Designator {
 impl Designator {
     pub fn key(&self) -> String {
         match self {
-            Designator::Ident(i) => i.key.clone(),
+            Designator::Ident(i) => i.key.to_string(),
             Designator::Op(o, _) => format!("\"{}\"", o.to_ascii_lowercase()),
         }
     }
@@ -199,7 +229,7 @@ impl Designator {
     }
     pub fn display(&self) -> String {
         match self {
-            Designator::Ident(i) => i.name.clone(),
+            Designator::Ident(i) => i.name.to_string(),
             Designator::Op(o, _) => format!("\"{o}\""),
         }
     }

@@ -108,7 +108,7 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                     }
                     match Kw::from_lower(&lower) {
                         Some(k) => Token::Kw(k),
-                        None => Token::Ident(text.to_string()),
+                        None => Token::Ident(super::ast::intern(text)),
                     }
                 }
                 Ok(Raw::Decimal) => match decimal(text) {

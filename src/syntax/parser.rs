@@ -736,7 +736,7 @@ fn discrete_range<'t, I: TokIn<'t>>(
                 span: e.span(),
             }),
             _ => match &a.kind {
-                ExprKind::Attr(_, at, _) if at.key == "range" => DiscreteRange::Attr(a),
+                ExprKind::Attr(_, at, _) if &*at.key == "range" => DiscreteRange::Attr(a),
                 _ => DiscreteRange::Subtype(SubtypeInd {
                     mark: a,
                     constraint: None,
@@ -1540,7 +1540,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .map(|aspects: Vec<(Ident, Option<Expr>)>| {
             aspects
                 .into_iter()
-                .find_map(|(k, v)| match (k.key.as_str(), v) {
+                .find_map(|(k, v)| match (k.key.as_ref(), v) {
                     (
                         "external_name",
                         Some(Expr {
@@ -1828,7 +1828,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                             spec.addresses.push((entry, address))
                         }
                         TaskItem::Pragma(DeclKind::Pragma { name, mut args })
-                            if name.key == "priority" && args.len() == 1 =>
+                            if &*name.key == "priority" && args.len() == 1 =>
                         {
                             spec.priority = args.pop()
                         }
@@ -1957,7 +1957,7 @@ fn unsupported(span: Span, what: &'static str) -> Decl {
 /// The text of a (selected) name, for `end` names and messages.
 pub fn expr_text(e: &Expr) -> String {
     match &e.kind {
-        ExprKind::Name(i) => i.name.clone(),
+        ExprKind::Name(i) => i.name.to_string(),
         ExprKind::Select(p, i) => format!("{}.{}", expr_text(p), i.name),
         _ => String::from("?"),
     }

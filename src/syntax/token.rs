@@ -179,7 +179,7 @@ impl Kw {
 pub enum Token {
     Kw(Kw),
     /// An identifier as written (case kept for messages).
-    Ident(String),
+    Ident(std::rc::Rc<str>),
     Int(i128),
     Real(f64),
     Char(char),
