@@ -20,7 +20,7 @@ use crate::syntax::ast::Mode;
 use std::cell::RefCell;
 use std::io::Write;
 use std::rc::Rc;
-pub use value::{Array, Occurrence, Value};
+pub use value::{Array, Obj, Occurrence, Value};
 
 /// Why evaluation stopped early: an exception, a `return` or an `exit`.
 #[derive(Debug)]
@@ -507,10 +507,7 @@ impl Machine {
 
 /// A copy of `v` that shares no mutable object with it; `seen` maps each
 /// designated object already copied to its copy (aliasing and cycles kept).
-fn deep_copy(
-    v: &Value,
-    seen: &mut std::collections::HashMap<*const RefCell<Value>, Rc<RefCell<Value>>>,
-) -> Value {
+fn deep_copy(v: &Value, seen: &mut std::collections::HashMap<*const RefCell<Value>, Obj>) -> Value {
     match v {
         Value::Arr(a) => Value::Arr(Rc::new(Array {
             bounds: a.bounds.clone(),
@@ -521,7 +518,7 @@ fn deep_copy(
             if let Some(c) = seen.get(&Rc::as_ptr(p)) {
                 return Value::Ptr(Some(c.clone()));
             }
-            let c = Rc::new(RefCell::new(Value::Undef));
+            let c = Obj::new(Value::Undef);
             seen.insert(Rc::as_ptr(p), c.clone());
             let inner = deep_copy(&p.borrow(), seen);
             *c.borrow_mut() = inner;
@@ -1348,7 +1345,7 @@ impl Run<'_> {
                     }
                 };
                 self.reserve(4, e.span)?;
-                Value::Ptr(Some(Rc::new(RefCell::new(v))))
+                Value::Ptr(Some(Obj::new(v)))
             }
             ExKind::Default(t) => self.default_value(*t, e.span)?,
             ExKind::Error => {

@@ -577,7 +577,7 @@ impl Run<'_> {
             }
             other => other,
         };
-        Ok(Value::Ptr(Some(Rc::new(RefCell::new(v)))))
+        Ok(Value::Ptr(Some(Obj::new(v))))
     }
 
     /// The number of the protected object an object value designates.
