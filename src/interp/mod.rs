@@ -1304,7 +1304,7 @@ impl Run<'_> {
             }
             ExKind::ArrayAgg(agg) => self.array_agg(agg, e.span)?,
             ExKind::RecordAgg(fields) => {
-                let mut v = Vec::with_capacity(fields.len());
+                let mut v = value::Fields::with_capacity(fields.len());
                 for f in fields {
                     v.push(self.eval(f)?);
                 }
@@ -1481,7 +1481,7 @@ impl Run<'_> {
         Ok(match self.c.types.kind(t).clone() {
             TypeKind::Float => Value::Real(0.0),
             TypeKind::Record(fields) => {
-                let mut v = Vec::with_capacity(fields.len());
+                let mut v = value::Fields::with_capacity(fields.len());
                 for f in &fields {
                     v.push(match &f.default {
                         Some(d) => self.eval(d)?,

@@ -15,10 +15,14 @@ pub enum Value {
     Int(i64),
     Real(f64),
     Arr(Rc<Array>),
-    Rec(Rc<Vec<Value>>),
+    Rec(Rc<Fields>),
     Ptr(Option<Obj>),
     Occ(Rc<Occurrence>),
 }
+
+/// The components of a record value. Up to two are held in the record's
+/// own allocation (a list node is then two allocations, not three).
+pub type Fields = smallvec::SmallVec<[Value; 2]>;
 
 /// An object made by an allocator (`new`), which access values designate.
 ///
@@ -455,7 +459,7 @@ mod drop_tests {
             .spawn(|| {
                 let mut head = Value::Ptr(None);
                 for i in 0..300_000 {
-                    head = Value::Ptr(Some(Obj::new(Value::Rec(Rc::new(vec![
+                    head = Value::Ptr(Some(Obj::new(Value::Rec(Rc::new(smallvec::smallvec![
                         Value::Int(i),
                         head,
                     ])))));

@@ -787,7 +787,7 @@ pub fn grip_reading(st: &RobotState) -> crate::driver::GripperState {
 fn tool_value(st: &RobotState) -> Value {
     let g = grip_reading(st);
 
-    Value::Rec(Rc::new(vec![
+    Value::Rec(Rc::new(smallvec::smallvec![
         frame_value(&st.tool.trans),
         Value::Real(st.tool.force_min),
         Value::Real(st.tool.force_max),
