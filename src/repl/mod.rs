@@ -663,6 +663,13 @@ impl Repl {
     /// A value, readably: joints in radians and degrees, frames as matrices,
     /// records by field.
     pub fn show(&self, v: &Value, t: TypeId) -> String {
+        self.show_in(v, t, 0)
+    }
+
+    /// Objects `SHOWN_ACCESSES` accesses away are not shown (a long or
+    /// circular list would print without end, in a recursion without end).
+    fn show_in(&self, v: &Value, t: TypeId, accesses: usize) -> String {
+        const SHOWN_ACCESSES: usize = 3;
         let ty = &self.session.checker.types;
         let name = ty.name(t).to_ascii_lowercase();
         match (v, ty.kind(t)) {
@@ -707,13 +714,17 @@ impl Repl {
                         .collect();
                     return rows.join("\n");
                 }
-                let items: Vec<String> = a.data.iter().map(|x| self.show(x, *elem)).collect();
+                let items: Vec<String> = a
+                    .data
+                    .iter()
+                    .map(|x| self.show_in(x, *elem, accesses))
+                    .collect();
                 format!("({})", items.join(", "))
             }
             (Value::Rec(r), TypeKind::Record(fields)) => {
                 let mut s = String::new();
                 for (f, x) in fields.iter().zip(r.iter()) {
-                    let shown = self.show(x, f.ty);
+                    let shown = self.show_in(x, f.ty, accesses);
                     if shown.contains('\n') {
                         s.push_str(&format!("{}:\n  {}\n", f.name, shown.replace('\n', "\n  ")));
                     } else {
@@ -724,9 +735,13 @@ impl Repl {
                 s
             }
             (Value::Ptr(None), _) => "null".into(),
-            (Value::Ptr(Some(p)), TypeKind::Access(d)) => {
-                format!("access to {}", self.show(&p.borrow(), *d))
+            (Value::Ptr(Some(_)), TypeKind::Access(_)) if accesses == SHOWN_ACCESSES => {
+                "access to ...".into()
             }
+            (Value::Ptr(Some(p)), TypeKind::Access(d)) => {
+                format!("access to {}", self.show_in(&p.borrow(), *d, accesses + 1))
+            }
+            (Value::Ptr(Some(_)), _) => "access".into(),
             (Value::Occ(o), _) => self.session.checker.excs[o.exc as usize].name.clone(),
             (Value::Undef, _) => "(no value)".into(),
             _ => format!("{v:?}"),
