@@ -967,7 +967,7 @@ impl Checker {
     fn expr_kind(&mut self, e: &ast::Expr, want: Option<TypeId>) -> Ex {
         let sp = e.span;
         match &e.kind {
-            ExprKind::Int(v) => match i64::try_from(*v) {
+            ExprKind::Int(v) => match i64::try_from(v.get()) {
                 Ok(v) => self.mk(ExKind::Int(v), UNIV_INT, sp),
                 Err(_) => {
                     self.err(Diagnostic::ty(sp, "integer literal too large"));
@@ -3000,7 +3000,7 @@ impl Checker {
         fn literal(e: &ast::Expr) -> Option<f64> {
             match &e.kind {
                 ExprKind::Real(v) => Some(*v),
-                ExprKind::Int(v) => Some(*v as f64),
+                ExprKind::Int(v) => Some(v.get() as f64),
                 ExprKind::Unary(_, x) => literal(x).map(|v| -v),
                 ExprKind::Paren(x) => literal(x),
                 _ => None,

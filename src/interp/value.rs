@@ -381,7 +381,7 @@ pub fn value_int(s: &str) -> Option<i64> {
     };
     match crate::syntax::lexer::numeric_literal(body)? {
         crate::syntax::token::Token::Int(v) => {
-            let v = if neg { -v } else { v };
+            let v = if neg { -v.get() } else { v.get() };
             i64::try_from(v).ok()
         }
         _ => None,
@@ -396,7 +396,10 @@ pub fn value_float(s: &str) -> Option<f64> {
     };
     match crate::syntax::lexer::numeric_literal(body)? {
         crate::syntax::token::Token::Real(v) => Some(if neg { -v } else { v }),
-        crate::syntax::token::Token::Int(v) => Some(if neg { -(v as f64) } else { v as f64 }),
+        crate::syntax::token::Token::Int(v) => {
+            let v = v.get() as f64;
+            Some(if neg { -v } else { v })
+        }
         _ => None,
     }
 }

@@ -2,7 +2,7 @@
 //! ambiguity, evaluates literals and turns lexical errors into diagnostics
 //! while lexing goes on.
 
-use super::token::{Kw, Token};
+use super::token::{IntLit, Kw, Token};
 use crate::diag::{Diagnostic, FileId, Span, span};
 use logos::Logos;
 
@@ -135,7 +135,7 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                     );
                     Token::Error
                 }
-                Ok(Raw::Str) => Token::Str(text[1..text.len() - 1].replace("\"\"", "\"")),
+                Ok(Raw::Str) => Token::Str(text[1..text.len() - 1].replace("\"\"", "\"").into()),
                 Ok(Raw::UnterminatedStr) => {
                     // As GNAT: the string ends before a `)`/`;` that closes
                     // the line (`Put_Line ("end);`), which are lexed again.
@@ -147,7 +147,7 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                     let keep = cut.unwrap_or(text);
                     let sp = span(file, s, s + keep.len());
                     diags.push(Diagnostic::unterminated_string(sp));
-                    let tok = Token::Str(keep[1..].replace("\"\"", "\""));
+                    let tok = Token::Str(keep[1..].replace("\"\"", "\"").into());
                     if cut.is_some() {
                         toks.push((tok, sp));
                         base = sp.end;
@@ -185,7 +185,7 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                                         span(file, s, end),
                                         inner,
                                     ));
-                                    toks.push((Token::Str(inner.to_string()), span(file, s, end)));
+                                    toks.push((Token::Str(inner.into()), span(file, s, end)));
                                     base = end;
                                     continue 'restart;
                                 }
@@ -311,7 +311,7 @@ fn decimal(text: &str) -> Result<Token, String> {
                 .checked_mul(10)
                 .ok_or_else(|| format!("`{text}` is too large"))?;
         }
-        Ok(Token::Int(v))
+        Ok(Token::Int(IntLit::new(v)))
     }
 }
 
@@ -375,7 +375,7 @@ fn based(text: &str) -> Result<Token, String> {
                     .checked_mul(base as i128)
                     .ok_or_else(|| format!("`{text}` is too large"))?;
             }
-            Ok(Token::Int(v))
+            Ok(Token::Int(IntLit::new(v)))
         }
         Some(fp) => {
             let mut v = 0f64;
@@ -405,11 +405,11 @@ mod tests {
         assert_eq!(
             toks("16#FF# 8#340# 2#1010_0001# 1_000 2E3"),
             vec![
-                Token::Int(255),
-                Token::Int(224),
-                Token::Int(161),
-                Token::Int(1000),
-                Token::Int(2000)
+                Token::Int(IntLit::new(255)),
+                Token::Int(IntLit::new(224)),
+                Token::Int(IntLit::new(161)),
+                Token::Int(IntLit::new(1000)),
+                Token::Int(IntLit::new(2000))
             ]
         );
         assert_eq!(

@@ -542,7 +542,7 @@ fn simple_expr<'t, I: TokIn<'t>>(
             Token::Int(i) = e => mk(ExprKind::Int(i), e.span()),
             Token::Real(r) = e => mk(ExprKind::Real(r), e.span()),
             Token::Char(c) = e => mk(ExprKind::Char(c), e.span()),
-            Token::Str(s) = e => mk(ExprKind::Str(s), e.span()),
+            Token::Str(s) = e => mk(ExprKind::Str(s.to_string()), e.span()),
             Token::Kw(Kw::Null) = e => mk(ExprKind::Null, e.span()),
             Token::Error = e => mk(ExprKind::Error, e.span()),
         };
@@ -551,7 +551,7 @@ fn simple_expr<'t, I: TokIn<'t>>(
         // operators resolve alike. Only a string that names an operator and
         // is followed by `(` is taken (a string literal cannot be called).
         let op_call = select! { Token::Str(s) = e => (s, e.span()) }
-            .try_map(|(s, sp): (String, Span), _| {
+            .try_map(|(s, sp): (std::rc::Rc<str>, Span), _| {
                 operator_of(&s).map(|o| (o, sp)).ok_or_else(|| Rich::custom(sp, "not an operator symbol"))
             })
             .then(
@@ -829,7 +829,7 @@ fn subprogram_spec<'t, I: TokIn<'t>>(
 ) -> Boxed<'t, 't, I, SubprogramSpec, Ex<'t>> {
     let designator = ident()
         .map(Designator::Ident)
-        .or(select! { Token::Str(s) = e => Designator::Op(s, e.span()) });
+        .or(select! { Token::Str(s) = e => Designator::Op(s.to_string(), e.span()) });
     let proc = kw!(Procedure)
         .ignore_then(designator.clone())
         .then(params(expr.clone()))

@@ -175,15 +175,30 @@ impl Kw {
     }
 }
 
+/// The value of an integer literal: an `i128` kept in two 8-byte halves,
+/// so that it does not raise the alignment (and size) of every token and
+/// expression to 16 bytes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct IntLit([u64; 2]);
+
+impl IntLit {
+    pub fn new(v: i128) -> IntLit {
+        IntLit([v as u64, (v >> 64) as u64])
+    }
+    pub fn get(self) -> i128 {
+        (u128::from(self.0[0]) | (u128::from(self.0[1]) << 64)) as i128
+    }
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub enum Token {
     Kw(Kw),
     /// An identifier as written (case kept for messages).
     Ident(std::rc::Rc<str>),
-    Int(i128),
+    Int(IntLit),
     Real(f64),
     Char(char),
-    Str(String),
+    Str(std::rc::Rc<str>),
     /// `'` used as the attribute or qualification mark.
     Tick,
     LParen,
@@ -218,7 +233,7 @@ impl fmt::Display for Token {
         match self {
             Token::Kw(k) => write!(f, "`{}`", k.as_str()),
             Token::Ident(s) => write!(f, "identifier `{s}`"),
-            Token::Int(i) => write!(f, "number {i}"),
+            Token::Int(i) => write!(f, "number {}", i.get()),
             Token::Real(r) => write!(f, "number {r}"),
             Token::Char(c) => write!(f, "character '{c}'"),
             Token::Str(s) => write!(f, "string \"{s}\""),
