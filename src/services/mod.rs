@@ -39,6 +39,9 @@ pub struct RobotState {
     pub error_status: i64,
     /// Virtual time at which a `Control => True` motion ends.
     pub busy_until: f64,
+    /// That motion is paced to the wall clock (`RealTime`, `--realtime`):
+    /// waiting for it takes its rest on the wall clock.
+    pub busy_paced: bool,
     pub trace: Option<Box<dyn Write>>,
     /// The support points of every motion, when `--record`/`--plot` asked.
     pub record: Option<Vec<record::Sample>>,
@@ -126,6 +129,7 @@ impl RobotState {
             paths: BTreeMap::new(),
             error_status: 0,
             busy_until: 0.0,
+            busy_paced: false,
             trace: None,
             record: None,
             realtime: false,
@@ -219,8 +223,23 @@ fn require_init(cx: &mut Cx, st: &mut RobotState, service: &str) -> R<()> {
 /// time on the simulator; the arm's reply on a real one).
 fn wait_for_control(cx: &mut Cx, st: &mut RobotState, service: &str) -> R<()> {
     let now = cx.clock.now();
+    let paced = std::mem::take(&mut st.busy_paced);
     if st.busy_until > now {
-        cx.clock.sleep(st.busy_until - now);
+        let rest = st.busy_until - now;
+        if paced {
+            let done = cx.pace(rest);
+            if done < 1.0 {
+                cx.clock.sleep(rest * done);
+                st.busy_until = cx.clock.now();
+                return Err(stop(
+                    cx,
+                    st,
+                    service,
+                    "waiting for a Control => True motion",
+                ));
+            }
+        }
+        cx.clock.sleep(rest);
     }
     if st.robot.motion_pending() {
         match st.robot.wait_motion() {
@@ -383,6 +402,7 @@ fn perform(
         }
     } else if o.control {
         st.busy_until = start + duration;
+        st.busy_paced = o.realtime || st.realtime;
     } else {
         cx.clock.sleep(duration);
     }
@@ -582,6 +602,9 @@ fn move_frame(
 // ---- services ----
 
 fn init_robot(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R<Option<Value>> {
+    // InitRobot moves (to the zero pose): like every motion it waits for a
+    // `Control => True` motion still running.
+    wait_for_control(cx, st, "InitRobot")?;
     let o = MotionOpts {
         time: None,
         time_arg: 0.0,

@@ -49,6 +49,29 @@ fn a_realtime_motion_takes_its_time_on_the_wall_clock_and_ends_where_it_was_sent
 }
 
 #[test]
+fn waiting_for_a_paced_control_motion_takes_its_rest_on_the_wall_clock() {
+    // Control => True returns at once, but the motion is paced: the next
+    // service that waits for it (ValueAxes, a motion, InitRobot) waits on
+    // the wall clock too, with `RealTime => True` and with `--realtime`.
+    for (realtime, opt) in [(false, ", RealTime => True"), (true, "")] {
+        let mut s = super::rv_m1_session();
+        s.robot_state_mut().unwrap().realtime = realtime;
+        let start = Instant::now();
+        let text = format!(
+            "InitRobot;\nMoveAxesRelative ((0.5, 0.0, 0.0, 0.0, 0.0), Time => 0.5, Control => True{opt});\n\
+             Put (ValueAxes (1));\nMoveAxesRelative ((0.1, 0.0, 0.0, 0.0, 0.0), Control => True{opt});\nInitRobot;\n"
+        );
+        let o = s.run_source("rt.air", &text);
+        assert!(matches!(o, Outcome::Ok), "{o:?}");
+        assert!(
+            start.elapsed() >= Duration::from_millis(490),
+            "{realtime}: {:?}",
+            start.elapsed()
+        );
+    }
+}
+
+#[test]
 fn a_stop_during_a_realtime_motion_leaves_the_arm_where_it_had_got_to() {
     let mut s = super::rv_m1_session();
     let flag = Arc::new(AtomicBool::new(false));
