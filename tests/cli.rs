@@ -487,3 +487,72 @@ end Get_Line_Rest;
         "[abcdefghij] 10\n[klmno] 5\n[abcdefghij] 10\n<>\n<xyz>\n[q] 1\n"
     );
 }
+
+/// An expression chaining more operators than the limit is one error at the
+/// first operator past it (150,000 `+` overflowed the native stack and
+/// aborted); a chain at the limit checks and runs.
+#[test]
+fn an_operator_chain_past_the_limit_is_one_error_and_at_it_runs() {
+    let chain = |n: usize, op: &str, x: &str| vec![x; n + 1].join(op);
+    let long = format!(
+        "B : constant Boolean := {};\nPut_Line (Boolean'Image (B));\n",
+        chain(200_000, " and ", "True")
+    );
+    let f = temp_file("long_and.air", &long);
+    let (code, _, err) = adair(&["check", &f]);
+    assert_eq!(code, 2, "{}", &err[..err.len().min(400)]);
+    // The 50,001st ` and ` ends at column 24 + 50,001 * 9 - 4.
+    assert!(
+        err.contains(&format!(
+            ":1:{}: error: expression too long: more than 50000 operators in a row",
+            24 + 50_000 * 9 + 6
+        )),
+        "{}",
+        &err[..err.len().min(400)]
+    );
+    assert_eq!(err.matches("error:").count(), 1, "one error only");
+    let at = format!(
+        "X : Integer := ({});\nPut_Line (Integer'Image (X));\n",
+        chain(50_000, " + ", "1")
+    );
+    let f = temp_file("chain_at_limit.air", &at);
+    let (code, out, err) = adair(&["run", &f]);
+    assert_eq!(
+        (code, out.as_str()),
+        (0, " 50001\n"),
+        "{}",
+        &err[..err.len().min(400)]
+    );
+}
+
+/// A long `&` chain needs memory in proportion to its result, in the checker
+/// and in the engine, with a call among its operands or without: 10,000
+/// terms used about 900 MB before (each intermediate string was kept, and
+/// the checker listed one meaning per `&`), so 64 MiB did not do.
+#[test]
+fn a_long_concatenation_chain_needs_memory_in_proportion() {
+    let terms = |first: &str| {
+        let mut s = String::from(first);
+        for _ in 1..10_000 {
+            s.push_str(" & \"a\"");
+        }
+        s
+    };
+    let text = format!(
+        "function F (N : Integer) return String is begin return Integer'Image (N); end F;\n\
+         C : constant String := \"a\";\n\
+         S : constant String := {};\n\
+         T : constant String := {};\n\
+         Put_Line (Integer'Image (S'Length) & Integer'Image (T'Length));\n",
+        terms("C"),
+        terms("F (7)")
+    );
+    let f = temp_file("long_concat.air", &text);
+    let (code, out, err) = adair(&["run", "--max-memory", "64M", &f]);
+    assert_eq!(
+        (code, out.as_str()),
+        (0, " 10000 10001\n"),
+        "{}",
+        &err[..err.len().min(400)]
+    );
+}

@@ -436,12 +436,15 @@ impl Checker {
                 }
                 BinOp::AndThen | BinOp::OrElse => vec![BOOLEAN],
                 BinOp::Cat => {
-                    let mut v: Vec<TypeId> = self
-                        .interps(a)
-                        .into_iter()
-                        .chain(self.interps(b))
-                        .filter(|t| self.types.is_array(*t))
-                        .collect();
+                    // Each type once: a chain `S & S & ...` has as many
+                    // meanings as its first operand, not one per `&` (the
+                    // list grew with the chain: quadratic memory).
+                    let mut v: Vec<TypeId> = Vec::new();
+                    for t in self.interps(a).into_iter().chain(self.interps(b)) {
+                        if self.types.is_array(t) && !v.contains(&t) {
+                            v.push(t);
+                        }
+                    }
                     if v.is_empty() {
                         v.push(STRING);
                     }

@@ -66,8 +66,10 @@ enum Op<'p> {
     /// The walker evaluates an expression into a slot.
     Eval(Var, &'p Ex),
     /// The same for a copy of an expression whose operands were computed
-    /// here first (replaced by the temporaries holding them).
-    EvalOwned(Var, Box<Ex>),
+    /// here first (replaced by the temporaries holding them, which are
+    /// emptied once it is evaluated: a chain `F (X) & "a" & ...` would keep
+    /// every intermediate string alive until the frame ends).
+    EvalOwned(Var, Box<Ex>, Box<[Var]>),
     /// The walker assigns a slot's value to a target.
     Assign(&'p Ex, Var),
     /// The walker executes a statement.
@@ -283,6 +285,8 @@ fn effects(e: &Ex) -> bool {
         | ExKind::RangeCheck(a, _)
         | ExKind::Field(a, _) => effects(a),
         ExKind::Index(p, idx) => effects(p) || idx.iter().any(effects),
+        ExKind::Concat(a, b, ..) | ExKind::ArrLogic(_, a, b) => effects(a) || effects(b),
+        ExKind::ArrNot(a) => effects(a),
         _ => true,
     }
 }
@@ -471,7 +475,10 @@ impl<'p> Compiler<'p, '_> {
                 self.ops.push(Op::Move(dst, t));
             }
             _ => match self.strict_copy(e) {
-                Some(copy) => self.ops.push(Op::EvalOwned(dst, Box::new(copy))),
+                Some((copy, temps)) => {
+                    self.ops
+                        .push(Op::EvalOwned(dst, Box::new(copy), temps.into()))
+                }
                 None => self.ops.push(Op::Eval(dst, e)),
             },
         }
@@ -481,7 +488,7 @@ impl<'p> Compiler<'p, '_> {
     /// has a call among them: the operands computed here (so that the calls
     /// run compiled), and a copy of the node that reads them from their
     /// temporaries, for the walker. None: the walker takes the node whole.
-    fn strict_copy(&mut self, e: &'p Ex) -> Option<Ex> {
+    fn strict_copy(&mut self, e: &'p Ex) -> Option<(Ex, Vec<Var>)> {
         let kids: Vec<&'p Ex> = match &e.kind {
             ExKind::Attr(_, args) => args.iter().collect(),
             ExKind::Concat(a, b, ..) | ExKind::ArrLogic(_, a, b) => vec![a, b],
@@ -499,11 +506,13 @@ impl<'p> Compiler<'p, '_> {
         if !kids.iter().any(|k| effects(k)) {
             return None;
         }
+        let mut temps = Vec::with_capacity(kids.len());
         let vars: Vec<Ex> = kids
             .iter()
             .map(|k| {
                 let t = self.temp();
                 self.expr_into(k, t);
+                temps.push(t);
                 Ex {
                     kind: ExKind::Var(t),
                     ty: k.ty,
@@ -531,11 +540,14 @@ impl<'p> Compiler<'p, '_> {
             }
             _ => unreachable!("only the kinds above are copied"),
         };
-        Some(Ex {
-            kind,
-            ty: e.ty,
-            span: e.span,
-        })
+        Some((
+            Ex {
+                kind,
+                ty: e.ty,
+                span: e.span,
+            },
+            temps,
+        ))
     }
 
     fn call(&mut self, f: FuncId, args: &'p [Arg], dst: Option<Var>, span: Span) {
@@ -1957,7 +1969,14 @@ impl<'a> Run<'a> {
                     }
                 }
                 Op::Eval(d, e) => self.eval(e).map(|v| self.put(*d, v)),
-                Op::EvalOwned(d, e) => self.eval(e).map(|v| self.put(*d, v)),
+                Op::EvalOwned(d, e, temps) => {
+                    let r = self.eval(e).map(|v| self.put(*d, v));
+                    for t in temps.iter() {
+                        let i = self.sl(*t);
+                        self.m.stack[i] = Value::Undef;
+                    }
+                    r
+                }
                 Op::Assign(t, s) => {
                     let i = self.sl(*s);
                     let v = std::mem::take(&mut self.m.stack[i]);

@@ -2306,21 +2306,67 @@ fn operator_of(s: &str) -> Option<OpSym> {
 /// person writes comes close.
 pub const MAX_NESTING: usize = 10_000;
 
-/// A program nested deeper than [`MAX_NESTING`]: one error at the first
-/// token past the limit, found by counting before parsing (a million nested
+/// The most operators one expression may chain without parentheses
+/// (`1 + 1 + ...`). An operator chain is a tree as deep as it is long, which
+/// the checker and the engine walk recursively: 150,000 `+` overflowed the
+/// native stack.
+pub const MAX_CHAIN: usize = 50_000;
+
+/// A program nested deeper than [`MAX_NESTING`], or with an expression
+/// chaining more than [`MAX_CHAIN`] operators: one error at the first token
+/// past the limit, found by counting before parsing (a million nested
 /// parentheses used 11 GB of memory and 14 s before this check).
 fn too_deep(tokens: &[(Token, Span)]) -> Option<Diagnostic> {
     let (mut parens, mut blocks) = (0usize, 0usize);
     let mut after_end = false;
+    // Operators chained at each level of parentheses.
+    let mut chain: Vec<usize> = vec![0];
     for (t, sp) in tokens {
         let was_end = std::mem::replace(&mut after_end, false);
         let what = match t {
+            Token::Plus
+            | Token::Minus
+            | Token::Star
+            | Token::StarStar
+            | Token::Slash
+            | Token::Amp
+            | Token::Eq
+            | Token::Ne
+            | Token::Lt
+            | Token::Le
+            | Token::Gt
+            | Token::Ge
+            | Token::Kw(Kw::And | Kw::Or | Kw::Xor | Kw::Mod | Kw::Rem) => {
+                let n = chain.last_mut().expect("a level");
+                *n += 1;
+                if *n > MAX_CHAIN {
+                    return Some(
+                        Diagnostic::syntax(
+                            *sp,
+                            format!(
+                                "expression too long: more than {MAX_CHAIN} operators in a row"
+                            ),
+                        )
+                        .with_label("this operator is one too many")
+                        .with_hint("split the expression into several statements"),
+                    );
+                }
+                None
+            }
+            Token::Semi | Token::Comma | Token::Arrow | Token::Assign | Token::DotDot => {
+                *chain.last_mut().expect("a level") = 0;
+                None
+            }
             Token::LParen => {
                 parens += 1;
+                chain.push(0);
                 (parens > MAX_NESTING).then_some("parentheses")
             }
             Token::RParen => {
                 parens = parens.saturating_sub(1);
+                if chain.len() > 1 {
+                    chain.pop();
+                }
                 None
             }
             Token::Kw(Kw::End) => {
