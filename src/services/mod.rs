@@ -39,9 +39,11 @@ pub struct RobotState {
     pub error_status: i64,
     /// Virtual time at which a `Control => True` motion ends.
     pub busy_until: f64,
-    /// That motion is paced to the wall clock (`RealTime`, `--realtime`):
-    /// waiting for it takes its rest on the wall clock.
-    pub busy_paced: bool,
+    /// That motion when it is paced to the wall clock (`RealTime`,
+    /// `--realtime`): waiting for it takes its rest on the wall clock, and a
+    /// stop then leaves the arm where it had got to. Its start (virtual
+    /// time), duration, start joints and support points.
+    pub busy_paced: Option<(f64, f64, Joints, Vec<Joints>)>,
     pub trace: Option<Box<dyn Write>>,
     /// The support points of every motion, when `--record`/`--plot` asked.
     pub record: Option<Vec<record::Sample>>,
@@ -129,7 +131,7 @@ impl RobotState {
             paths: BTreeMap::new(),
             error_status: 0,
             busy_until: 0.0,
-            busy_paced: false,
+            busy_paced: None,
             trace: None,
             record: None,
             realtime: false,
@@ -223,14 +225,16 @@ fn require_init(cx: &mut Cx, st: &mut RobotState, service: &str) -> R<()> {
 /// time on the simulator; the arm's reply on a real one).
 fn wait_for_control(cx: &mut Cx, st: &mut RobotState, service: &str) -> R<()> {
     let now = cx.clock.now();
-    let paced = std::mem::take(&mut st.busy_paced);
+    let paced = st.busy_paced.take();
     if st.busy_until > now {
         let rest = st.busy_until - now;
-        if paced {
+        if let Some((start, duration, before, points)) = paced {
             let done = cx.pace(rest);
             if done < 1.0 {
                 cx.clock.sleep(rest * done);
                 st.busy_until = cx.clock.now();
+                let reached = interpolate(&before, &points, (st.busy_until - start) / duration);
+                let _ = st.robot.move_joints(&[reached], 0.0);
                 return Err(stop(
                     cx,
                     st,
@@ -402,7 +406,8 @@ fn perform(
         }
     } else if o.control {
         st.busy_until = start + duration;
-        st.busy_paced = o.realtime || st.realtime;
+        st.busy_paced =
+            (o.realtime || st.realtime).then(|| (start, duration, before, points.to_vec()));
     } else {
         cx.clock.sleep(duration);
     }

@@ -314,3 +314,32 @@ fn on_a_real_arm_a_motion_waits_for_the_arm_unless_control_is_true() {
     assert_eq!(waits.get(), w0 + 3);
     assert!(j1(&s).abs() < 1e-9);
 }
+
+#[test]
+fn a_stop_while_waiting_for_a_paced_control_motion_leaves_the_arm_where_it_had_got_to() {
+    let mut s = super::rv_m1_session();
+    let flag = Arc::new(AtomicBool::new(false));
+    s.machine.interrupted = Some(flag.clone());
+    let setter = std::thread::spawn(move || {
+        std::thread::sleep(Duration::from_millis(300));
+        flag.store(true, Ordering::SeqCst);
+    });
+    let o = s.run_source(
+        "rt.air",
+        "InitRobot;\nMoveAxesRelative ((0.5, 0.0, 0.0, 0.0, 0.0), Time => 1.0, Control => True, RealTime => True);\n\
+         Put (ValueAxes (1));\n",
+    );
+    setter.join().unwrap();
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    let stopped = s.take_stopped().expect("where the run stopped");
+    assert!(
+        stopped.contains("in ValueAxes (waiting for a Control => True motion)"),
+        "{stopped}"
+    );
+    // The virtual clock stopped with the wall clock, and the arm with it:
+    // J1 is the same fraction of its way.
+    let t = s.machine.clock.now();
+    assert!((0.2..0.95).contains(&t), "virtual clock {t}");
+    let q = j1(&s);
+    assert!((q - 0.5 * t).abs() < 0.5 * 0.002, "J1 {q} at {t} s");
+}
