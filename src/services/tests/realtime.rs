@@ -16,6 +16,17 @@ fn j1(s: &Session) -> f64 {
     s.robot_state().expect("robot").robot.joints()[0]
 }
 
+/// The user's stop (Ctrl-C) `ms` milliseconds from now, as the CLI's
+/// signal handler gives it.
+fn stop_after(s: &mut Session, ms: u64) -> std::thread::JoinHandle<()> {
+    let flag = Arc::new(AtomicBool::new(false));
+    s.machine.interrupted = Some(flag.clone());
+    std::thread::spawn(move || {
+        std::thread::sleep(Duration::from_millis(ms));
+        flag.store(true, Ordering::SeqCst);
+    })
+}
+
 #[test]
 fn a_realtime_motion_takes_its_time_on_the_wall_clock_and_ends_where_it_was_sent() {
     // RealTime is the fourth argument (after Time and Control): a mix-up of
@@ -75,12 +86,7 @@ fn waiting_for_a_paced_control_motion_takes_its_rest_on_the_wall_clock() {
 #[test]
 fn a_stop_during_a_realtime_motion_leaves_the_arm_where_it_had_got_to() {
     let mut s = super::rv_m1_session();
-    let flag = Arc::new(AtomicBool::new(false));
-    s.machine.interrupted = Some(flag.clone());
-    let setter = std::thread::spawn(move || {
-        std::thread::sleep(Duration::from_millis(200));
-        flag.store(true, Ordering::SeqCst);
-    });
+    let setter = stop_after(&mut s, 200);
     let o = s.run_source(
         "rt.air",
         "InitRobot;\nMoveAxesRelative ((0.5, 0.0, 0.0, 0.0, 0.0), Time => 1.0, RealTime => True);\n",
@@ -319,12 +325,7 @@ fn on_a_real_arm_a_motion_waits_for_the_arm_unless_control_is_true() {
 #[test]
 fn a_stop_while_waiting_for_a_paced_control_motion_leaves_the_arm_where_it_had_got_to() {
     let mut s = super::rv_m1_session();
-    let flag = Arc::new(AtomicBool::new(false));
-    s.machine.interrupted = Some(flag.clone());
-    let setter = std::thread::spawn(move || {
-        std::thread::sleep(Duration::from_millis(300));
-        flag.store(true, Ordering::SeqCst);
-    });
+    let setter = stop_after(&mut s, 300);
     // An unpaced motion of 0.4 s first: the paced one starts at 0.4 s of
     // virtual time and takes 1.5 s.
     let o = s.run_source(
