@@ -774,6 +774,14 @@ impl Checker {
             }
         }
         let written: Vec<&ast::Ident> = b.spec.params.iter().flat_map(|p| p.names.iter()).collect();
+        // A statement the parser could not read may have been the return
+        // (asked before the check, which may take the statements).
+        let unreadable = b
+            .body
+            .stmts
+            .borrow()
+            .iter()
+            .any(|s| matches!(s.kind, ast::StmtKind::Error));
         let saw_return = self.check_body(
             f,
             &b.spec.name.key(),
@@ -784,8 +792,6 @@ impl Checker {
             BodyKind::Subprogram,
         );
         let ret = self.funcs[f as usize].ret;
-        // A statement the parser could not read may have been the return.
-        let unreadable = self.unreadable;
         if ret.is_some() && !saw_return && !unreadable {
             self.err(
                 Diagnostic::ty(

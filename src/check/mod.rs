@@ -100,9 +100,6 @@ pub type ImportProfileOf = fn(&str) -> Option<ImportProfile>;
 /// entry that does not check.
 #[derive(Clone)]
 pub struct Checker {
-    /// Whether the block `block` lowered last had a statement the parser
-    /// could not read (it may have been a function's `return`).
-    unreadable: bool,
     /// In `check_unit_consuming`: blocks' statements are taken from the AST.
     consume_ast: bool,
     pub types: Types,
@@ -194,7 +191,6 @@ pub const END_ERROR: ExcId = 7;
 impl Checker {
     pub fn new(known_builtin: KnownBuiltin) -> Checker {
         let mut c = Checker {
-            unreadable: false,
             consume_ast: false,
             types: Types::standard(),
             funcs: Vec::new(),

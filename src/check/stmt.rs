@@ -15,28 +15,21 @@ impl Checker {
     /// A `begin ... exception ... end` block in its own scope. In
     /// `check_unit_consuming`, the block's statements are taken from the
     /// AST and each is dropped once it is lowered, so a long body's AST
-    /// shrinks as its checked form grows (`Checker::unreadable` keeps what
-    /// `subprogram_body` asks afterwards).
+    /// shrinks as its checked form grows.
     pub(super) fn block(&mut self, b: &ast::Block) -> Body {
-        let error = |s: &ast::Stmt| matches!(s.kind, ast::StmtKind::Error);
         let mut stmts = Vec::new();
-        let unreadable = if self.consume_ast {
+        if self.consume_ast {
             let ss = std::mem::take(&mut *b.stmts.borrow_mut());
-            let unreadable = ss.iter().any(error);
             for s in ss {
                 self.stmt(&s, &mut stmts);
             }
-            unreadable
         } else {
-            let ss = b.stmts.borrow();
-            for s in ss.iter() {
+            for s in b.stmts.borrow().iter() {
                 self.stmt(s, &mut stmts);
             }
-            ss.iter().any(error)
-        };
+        }
         stmts.shrink_to_fit();
         let handlers = self.handlers(&b.handlers);
-        self.unreadable = unreadable;
         Body { stmts, handlers }
     }
 
