@@ -8,6 +8,7 @@
 
 pub mod builtins;
 pub mod memory;
+mod stack;
 pub mod tasking;
 pub mod value;
 pub mod vm;
@@ -169,7 +170,7 @@ fn pace(
 }
 
 pub struct Machine {
-    stack: Vec<Value>,
+    stack: stack::Stack,
     display: Vec<usize>,
     pub out: Box<dyn Write>,
     /// Column of the output's current line (GNAT ends an unfinished line at exit).
@@ -220,7 +221,7 @@ const MAX_ELEMENTS: i64 = 50_000_000;
 impl Machine {
     pub fn new(out: Box<dyn Write>) -> Machine {
         Machine {
-            stack: Vec::new(),
+            stack: stack::Stack::default(),
             display: vec![0; 4],
             out,
             col: 0,
@@ -401,7 +402,7 @@ impl Machine {
         sc.cur = 0;
         let len = self.stack.len();
         for (b, t) in regions {
-            for v in &mut self.stack[b.min(len)..t.min(len)] {
+            for v in &mut self.stack.as_mut_slice()[b.min(len)..t.min(len)] {
                 *v = Value::Undef;
             }
         }
@@ -418,9 +419,7 @@ impl Machine {
             w.set_logging(true);
         }
         let need = chk.globals as usize;
-        if self.stack.len() < need {
-            self.stack.resize(need, Value::Undef);
-        }
+        self.stack.grow_to(need);
         if self.display.is_empty() {
             // A REPL entry ended with every thread blocked (a deadlock):
             // the machine holds the idle registers, and the main program
@@ -480,7 +479,7 @@ impl Machine {
     /// Puts `globals` in place of the level-0 data and returns what was
     /// there (a rehearsal runs on a copy, then the original comes back).
     pub fn swap_globals(&mut self, globals: Vec<Value>) -> Vec<Value> {
-        std::mem::replace(&mut self.stack, globals)
+        std::mem::replace(&mut self.stack, globals.into()).into_vec()
     }
 
     /// A deep copy of the level-0 data: arrays, records and the objects
@@ -491,6 +490,7 @@ impl Machine {
         let mut todo = Vec::new();
         let copy = self
             .stack
+            .as_slice()
             .iter()
             .map(|v| deep_copy(v, &mut seen, &mut todo))
             .collect();
@@ -790,7 +790,10 @@ impl Run<'_> {
 
     /// Checks for a user interrupt (Ctrl-C in the REPL) at loop heads.
     fn poll(&mut self, span: Span) -> R<()> {
+        // A plain load first: a swap on every loop step costs a locked
+        // instruction.
         if let Some(flag) = &self.m.interrupted
+            && flag.load(std::sync::atomic::Ordering::Relaxed)
             && flag.swap(false, std::sync::atomic::Ordering::SeqCst)
         {
             // With tasks, the user's stop ends the whole program (an
@@ -916,9 +919,7 @@ impl Run<'_> {
             let nslots = sub.nslots as usize;
             let base = self.m.stack.len();
             self.m.stack.extend(vals.iter().cloned());
-            self.m
-                .stack
-                .resize(base + nslots.max(vals.len()), Value::Undef);
+            self.m.stack.grow_to(base + nslots.max(vals.len()));
             if self.m.display.len() <= level {
                 self.m.display.resize(level + 1, 0);
             }
@@ -1954,7 +1955,7 @@ mod copy_tests {
                     Rc::make_mut(r)[1] = Value::Ptr(Some(h.clone()));
                 }
                 let mut m = Machine::new(Box::new(std::io::sink()));
-                m.stack = vec![head.clone(), last.clone()];
+                m.stack = vec![head.clone(), last.clone()].into();
                 let copy = m.copy_globals();
                 let next = |p: &Value| match p {
                     Value::Ptr(Some(o)) => match &*o.borrow() {

@@ -655,7 +655,7 @@ impl Run<'_> {
             }
             return;
         }
-        for v in &mut self.m.stack[base..top] {
+        for v in &mut self.m.stack.as_mut_slice()[base..top] {
             *v = Value::Undef;
         }
         self.m.sched.holes.insert(top, base);

@@ -20,6 +20,20 @@ pub enum Value {
     Occ(Rc<Occurrence>),
 }
 
+/// `*slot = v` without a call of the drop glue when the old value owns
+/// nothing (an `Undef`, `Int` or `Real`): the compiler calls the glue even
+/// after a match has shown the variant, and the engine writes slots in
+/// every instruction.
+#[inline(always)]
+pub fn overwrite(slot: &mut Value, v: Value) {
+    if matches!(slot, Value::Undef | Value::Int(_) | Value::Real(_)) {
+        // Forgetting a scalar leaks nothing.
+        std::mem::forget(std::mem::replace(slot, v));
+    } else {
+        *slot = v;
+    }
+}
+
 /// The components of a record value. Up to two are held in the record's
 /// own allocation (a list node is then two allocations, not three).
 pub type Fields = smallvec::SmallVec<[Value; 2]>;
@@ -104,7 +118,19 @@ impl Array {
         (h - l + 1).max(0)
     }
     /// Offset of an index tuple, or `None` when out of bounds.
+    #[inline]
     pub fn offset(&self, idx: &[i64]) -> Option<usize> {
+        // The two common shapes first, without the loop.
+        match (idx, &self.bounds[..]) {
+            (&[i], &[(l, h)]) => {
+                return (l <= i && i <= h).then_some((i - l) as usize);
+            }
+            (&[i, j], &[(l0, h0), (l1, h1)]) => {
+                return (l0 <= i && i <= h0 && l1 <= j && j <= h1)
+                    .then_some(((i - l0) * (h1 - l1 + 1) + (j - l1)) as usize);
+            }
+            _ => {}
+        }
         let mut off = 0i64;
         for (d, &i) in idx.iter().enumerate() {
             let (l, h) = *self.bounds.get(d)?;

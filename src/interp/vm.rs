@@ -235,6 +235,8 @@ struct Region {
 pub(crate) struct Code<'p> {
     /// The subprogram whose body this is (None: level-0 code).
     func: Option<FuncId>,
+    /// The static level of its frame (its own slots are `Var`s of it).
+    level: u16,
     ops: Vec<Op<'p>>,
     /// Slots beyond the subprogram's own: temporaries.
     temps: u32,
@@ -1054,6 +1056,7 @@ impl<'p> Compiler<'p, '_> {
         self.ops.push(Op::FallOff);
         Code {
             func,
+            level: self.level,
             ops: self.ops,
             temps: self.max_temp,
             regions: self.regions,
@@ -1084,6 +1087,8 @@ struct CallInfo<'p> {
     top: usize,
     level: usize,
     saved: usize,
+    /// Every parameter is `in` (nothing to copy back on return).
+    all_in: bool,
 }
 
 impl<'a> Run<'a> {
@@ -1179,6 +1184,7 @@ impl<'a> Run<'a> {
             };
             let code = Rc::new(Code {
                 func: None,
+                level: 0,
                 ops: vec![last, Op::FallOff],
                 temps: 0,
                 regions: Vec::new(),
@@ -1223,7 +1229,7 @@ impl<'a> Run<'a> {
         }
         let own = nslots.max(n).max(sub.params.len());
         let top = base + own + code.temps as usize;
-        self.m.stack.resize(top, Value::Undef);
+        self.m.stack.grow_to(top);
         if self.m.display.len() <= level {
             self.m.display.resize(level + 1, 0);
         }
@@ -1241,6 +1247,7 @@ impl<'a> Run<'a> {
                 top,
                 level,
                 saved,
+                all_in: args.iter().all(|a| a.mode == Mode::In),
             },
         ))
     }
@@ -1685,7 +1692,7 @@ impl<'a> Run<'a> {
         let own = (sub.nslots as usize).max(sub.params.len());
         let base = self.m.stack.len().max(self.m.sched.floor);
         let top = base + own + code.temps as usize;
-        self.m.stack.resize(top, Value::Undef);
+        self.m.stack.grow_to(top);
         display.resize(level + 1, 0);
         display[level] = base;
         let th = &mut self.m.sched.threads[t];
@@ -1712,14 +1719,18 @@ impl<'a> Run<'a> {
         let mut frames = Vec::with_capacity(r.frames.len());
         for sf in r.frames {
             let code = fetch(self, sf.func);
-            let call = sf.call.map(|(f, dst, base, top, level, saved)| CallInfo {
-                f,
-                args: call_args(&code, sf.pc),
-                dst,
-                base,
-                top,
-                level,
-                saved,
+            let call = sf.call.map(|(f, dst, base, top, level, saved)| {
+                let args = call_args(&code, sf.pc);
+                CallInfo {
+                    f,
+                    args,
+                    dst,
+                    base,
+                    top,
+                    level,
+                    saved,
+                    all_in: args.iter().all(|a| a.mode == Mode::In),
+                }
             });
             frames.push(Frame {
                 code,
@@ -1767,7 +1778,13 @@ impl<'a> Run<'a> {
 
     #[inline(always)]
     fn int_at(&self, v: Var) -> i64 {
-        match &self.m.stack[self.sl(v)] {
+        self.int_ix(self.sl(v))
+    }
+
+    /// The integer in stack slot `i`.
+    #[inline(always)]
+    fn int_ix(&self, i: usize) -> i64 {
+        match &self.m.stack[i] {
             Value::Int(i) => *i,
             other => other.int(),
         }
@@ -1776,7 +1793,7 @@ impl<'a> Run<'a> {
     /// `dst := x op y` for integers: addition and subtraction inline, the
     /// rest (and every overflow) through the walker's own checks.
     #[inline(always)]
-    fn int_arith(&mut self, o: IntOp, d: Var, x: i64, y: i64, span: Span) -> R<()> {
+    fn int_arith(&mut self, o: IntOp, d: usize, x: i64, y: i64, span: Span) -> R<()> {
         let quick = match o {
             IntOp::Add => Some(x + y),
             IntOp::Sub => Some(x - y),
@@ -1784,27 +1801,46 @@ impl<'a> Run<'a> {
         };
         match quick {
             Some(v) if (i32::MIN as i64..=i32::MAX as i64).contains(&v) => {
-                self.put(d, Value::Int(v));
+                self.put_int_ix(d, v);
                 Ok(())
             }
-            _ => self
-                .int_op(o, x, y, span)
-                .map(|v| self.put(d, Value::Int(v))),
+            _ => self.int_op(o, x, y, span).map(|v| self.put_int_ix(d, v)),
         }
     }
 
     #[inline(always)]
     fn put(&mut self, v: Var, x: Value) {
-        let i = self.sl(v);
-        self.m.stack[i] = x;
+        self.put_ix(self.sl(v), x);
+    }
+
+    #[inline(always)]
+    fn put_ix(&mut self, i: usize, x: Value) {
+        set(&mut self.m.stack[i], x);
+    }
+
+    /// `put_ix` of an integer: a slot that holds one already is written in
+    /// place (nothing to drop).
+    #[inline(always)]
+    fn put_int_ix(&mut self, i: usize, x: i64) {
+        match &mut self.m.stack[i] {
+            Value::Int(y) => *y = x,
+            s => value::overwrite(s, Value::Int(x)),
+        }
+    }
+
+    /// `put_ix` of a real, in place like [`Self::put_int`].
+    #[inline(always)]
+    fn put_real_ix(&mut self, i: usize, x: f64) {
+        match &mut self.m.stack[i] {
+            Value::Real(y) => *y = x,
+            s => value::overwrite(s, Value::Real(x)),
+        }
     }
 
     /// Runs level-0 code to its end.
     fn exec_code(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>, code: Rc<Code<'a>>) -> R<()> {
         let need = self.c.globals as usize + code.temps as usize;
-        if self.m.stack.len() < need {
-            self.m.stack.resize(need, Value::Undef);
-        }
+        self.m.stack.grow_to(need);
         let mut frames: Vec<Frame<'a>> = Vec::new();
         let level0 = code.clone();
         let mut cur = code;
@@ -1812,53 +1848,80 @@ impl<'a> Run<'a> {
         let mut current_base = self.m.current.len();
         let mut pending: Option<Box<Occurrence>> = None;
         let mut enter: Option<(Rc<Code<'a>>, CallInfo<'a>)> = None;
-        // A `return` (its value) to leave the frame by the short way.
-        let mut ret: Option<Option<Value>> = None;
         // A task's own frame (None: the main program's code).
         let mut root: Option<(usize, usize)> = None;
+        // The running code's level and where its frame begins: an operand
+        // of the code's own frame is found without the display.
+        let mut lvl = cur.level;
+        let mut fp = self.m.display[lvl as usize];
+        macro_rules! ix {
+            ($v:expr) => {{
+                let v: Var = $v;
+                if v.level == lvl {
+                    fp + v.slot as usize
+                } else {
+                    self.sl(v)
+                }
+            }};
+        }
+        macro_rules! reload {
+            () => {
+                lvl = cur.level;
+                fp = self.m.display.get(lvl as usize).copied().unwrap_or(0);
+            };
+        }
         loop {
             let op = &cur.ops[pc as usize];
             pc += 1;
             let r: R<()> = match op {
+                // The instructions that cannot block, call or return go on
+                // with the next one straight away (`continue`) when they
+                // succeed; only the others pass the checks after the match.
                 Op::Int(d, v) => {
-                    self.put(*d, Value::Int(*v));
-                    Ok(())
+                    self.put_int_ix(ix!(*d), *v);
+                    continue;
                 }
                 Op::Real(d, v) => {
-                    self.put(*d, Value::Real(*v));
-                    Ok(())
+                    self.put_real_ix(ix!(*d), *v);
+                    continue;
                 }
                 Op::Move(d, s) => {
-                    let v = self.m.stack[self.sl(*s)].clone();
-                    self.put(*d, v);
-                    Ok(())
+                    let v = self.m.stack[ix!(*s)].clone();
+                    self.put_ix(ix!(*d), v);
+                    continue;
                 }
                 Op::IntBin(o, d, a, b, span) => {
-                    let (x, y) = (self.int_at(*a), self.int_at(*b));
-                    self.int_arith(*o, *d, x, y, *span)
+                    let (x, y) = (self.int_ix(ix!(*a)), self.int_ix(ix!(*b)));
+                    match self.int_arith(*o, ix!(*d), x, y, *span) {
+                        Ok(()) => continue,
+                        r => r,
+                    }
                 }
                 Op::IntBinK(o, d, a, y, span) => {
-                    let x = self.int_at(*a);
-                    self.int_arith(*o, *d, x, *y, *span)
+                    let x = self.int_ix(ix!(*a));
+                    match self.int_arith(*o, ix!(*d), x, *y, *span) {
+                        Ok(()) => continue,
+                        r => r,
+                    }
                 }
                 Op::CmpK(o, d, a, k) => {
                     // As `Value::compare` orders them (an Int against an Int).
-                    let ord = match &self.m.stack[self.sl(*a)] {
+                    let ord = match &self.m.stack[ix!(*a)] {
                         Value::Int(x) => x.cmp(k),
                         other => other.compare(&Value::Int(*k)),
                     };
                     let r = holds(*o, ord);
-                    self.put(*d, Value::Int(r as i64));
-                    Ok(())
+                    self.put_int_ix(ix!(*d), r as i64);
+                    continue;
                 }
                 Op::IntNeg(d, a, span) => {
-                    let x = self.int_at(*a);
+                    let x = self.int_ix(ix!(*a));
                     self.int_op(IntOp::Sub, 0, x, *span)
-                        .map(|v| self.put(*d, Value::Int(v)))
+                        .map(|v| self.put_ix(ix!(*d), Value::Int(v)))
                 }
                 Op::FloatBin(o, d, a, b) => {
-                    let x = self.m.stack[self.sl(*a)].real();
-                    let yv = &self.m.stack[self.sl(*b)];
+                    let x = self.m.stack[ix!(*a)].real();
+                    let yv = &self.m.stack[ix!(*b)];
                     let r = match o {
                         FloatOp::Add => Ok(x + yv.real()),
                         FloatOp::Sub => Ok(x - yv.real()),
@@ -1868,66 +1931,84 @@ impl<'a> Run<'a> {
                         FloatOp::PowI => Ok(x.powi(yv.int() as i32)),
                         FloatOp::DurDiv => Ok(value::duration_div(x, yv.real())),
                     };
-                    r.map(|v| self.put(*d, Value::Real(v)))
+                    match r {
+                        Ok(v) => {
+                            self.put_real_ix(ix!(*d), v);
+                            continue;
+                        }
+                        Err(e) => Err(e),
+                    }
                 }
                 Op::ToReal(d, a) => {
-                    let x = self.m.stack[self.sl(*a)].real();
-                    self.put(*d, Value::Real(x));
-                    Ok(())
+                    let x = self.m.stack[ix!(*a)].real();
+                    self.put_real_ix(ix!(*d), x);
+                    continue;
                 }
                 Op::Cmp(o, d, a, b) => {
                     let ord = {
-                        let x = &self.m.stack[self.sl(*a)];
-                        let y = &self.m.stack[self.sl(*b)];
+                        let x = &self.m.stack[ix!(*a)];
+                        let y = &self.m.stack[ix!(*b)];
                         match (x, y) {
                             (Value::Int(p), Value::Int(q)) => p.cmp(q),
                             _ => x.compare(y),
                         }
                     };
                     let r = holds(*o, ord);
-                    self.put(*d, Value::Int(r as i64));
-                    Ok(())
+                    self.put_int_ix(ix!(*d), r as i64);
+                    continue;
                 }
                 Op::Eq(ne, d, a, b) => {
-                    let same = self.m.stack[self.sl(*a)] == self.m.stack[self.sl(*b)];
-                    self.put(*d, Value::Int((same != *ne) as i64));
-                    Ok(())
+                    let same = self.m.stack[ix!(*a)] == self.m.stack[ix!(*b)];
+                    self.put_int_ix(ix!(*d), (same != *ne) as i64);
+                    continue;
                 }
                 Op::Logic(o, d, a, b) => {
-                    let (x, y) = (self.int_at(*a) != 0, self.int_at(*b) != 0);
+                    let (x, y) = (self.int_ix(ix!(*a)) != 0, self.int_ix(ix!(*b)) != 0);
                     let r = match o {
                         LogicOp::And | LogicOp::AndThen => x && y,
                         LogicOp::Or | LogicOp::OrElse => x || y,
                         LogicOp::Xor => x ^ y,
                     };
-                    self.put(*d, Value::Int(r as i64));
-                    Ok(())
+                    self.put_int_ix(ix!(*d), r as i64);
+                    continue;
                 }
                 Op::Not(d, a) => {
-                    let x = self.int_at(*a) == 0;
-                    self.put(*d, Value::Int(x as i64));
-                    Ok(())
+                    let x = self.int_ix(ix!(*a)) == 0;
+                    self.put_int_ix(ix!(*d), x as i64);
+                    continue;
                 }
                 Op::RangeCheck(a, t, span) => {
-                    let v = self.m.stack[self.sl(*a)].clone();
-                    self.range_check(&v, *t, *span)
+                    let v = self.m.stack[ix!(*a)].clone();
+                    match self.range_check(&v, *t, *span) {
+                        Ok(()) => continue,
+                        r => r,
+                    }
                 }
                 Op::Index(d, arr, ix, span) => {
                     let mut idx = [0i64; 4];
                     for (k, v) in ix.iter().enumerate() {
-                        idx[k] = self.int_at(*v);
+                        idx[k] = self.int_ix(ix!(*v));
                     }
-                    let got = match &self.m.stack[self.sl(*arr)] {
+                    // Scalars are copied out as such: a `Value` moved through
+                    // the native stack costs a drop call and a store stall.
+                    let got = match &self.m.stack[ix!(*arr)] {
                         Value::Arr(a) => match a.offset(&idx[..ix.len()]) {
-                            Some(o) => Ok(a.data[o].clone()),
+                            Some(o) => match &a.data[o] {
+                                Value::Real(x) => Ok(Err(*x)),
+                                v => Ok(Ok(v.clone())),
+                            },
                             None => Err("index check failed"),
                         },
                         _ => Err("access check failed"),
                     };
                     match got {
-                        Ok(v) => {
-                            self.put(*d, v);
-                            Ok(())
+                        Ok(Err(x)) => {
+                            self.put_real_ix(ix!(*d), x);
+                            continue;
+                        }
+                        Ok(Ok(v)) => {
+                            self.put_ix(ix!(*d), v);
+                            continue;
                         }
                         Err(what) => Err(self.check_failed(what, *span)),
                     }
@@ -1935,17 +2016,20 @@ impl<'a> Run<'a> {
                 Op::StoreIndex(arr, ix, src, span) => {
                     let mut idx = [0i64; 4];
                     for (k, v) in ix.iter().enumerate() {
-                        idx[k] = self.int_at(*v);
+                        idx[k] = self.int_ix(ix!(*v));
                     }
-                    let i = self.sl(*src);
-                    let val = std::mem::take(&mut self.m.stack[i]);
-                    let slot = self.sl(*arr);
+                    let i = ix!(*src);
+                    let val = match &mut self.m.stack[i] {
+                        Value::Real(x) => Value::Real(*x),
+                        v => std::mem::take(v),
+                    };
+                    let slot = ix!(*arr);
                     let r = match &mut self.m.stack[slot] {
                         Value::Arr(a) => {
                             let a = Rc::make_mut(a);
                             match a.offset(&idx[..ix.len()]) {
                                 Some(o) => {
-                                    a.data[o] = val;
+                                    set(&mut a.data[o], val);
                                     Ok(())
                                 }
                                 None => Err("index check failed"),
@@ -1953,54 +2037,57 @@ impl<'a> Run<'a> {
                         }
                         _ => Err("access check failed"),
                     };
-                    r.map_err(|what| self.check_failed(what, *span))
+                    match r {
+                        Ok(()) => continue,
+                        Err(what) => Err(self.check_failed(what, *span)),
+                    }
                 }
                 Op::Field(d, a, i, span) => {
-                    let got = match &self.m.stack[self.sl(*a)] {
+                    let got = match &self.m.stack[ix!(*a)] {
                         Value::Rec(r) => Some(r[*i as usize].clone()),
                         _ => None,
                     };
                     match got {
                         Some(v) => {
-                            self.put(*d, v);
-                            Ok(())
+                            self.put_ix(ix!(*d), v);
+                            continue;
                         }
                         None => Err(self.check_failed("discriminant check failed", *span)),
                     }
                 }
-                Op::Eval(d, e) => self.eval(e).map(|v| self.put(*d, v)),
+                Op::Eval(d, e) => self.eval(e).map(|v| self.put_ix(ix!(*d), v)),
                 Op::EvalOwned(d, e, temps) => {
-                    let r = self.eval(e).map(|v| self.put(*d, v));
+                    let r = self.eval(e).map(|v| self.put_ix(ix!(*d), v));
                     for t in temps.iter() {
-                        let i = self.sl(*t);
+                        let i = ix!(*t);
                         self.m.stack[i] = Value::Undef;
                     }
                     r
                 }
                 Op::Assign(t, s) => {
-                    let i = self.sl(*s);
+                    let i = ix!(*s);
                     let v = std::mem::take(&mut self.m.stack[i]);
                     self.assign(t, v)
                 }
                 Op::Exec(s) => self.exec(s),
                 Op::Jump(t) => {
                     pc = *t;
-                    Ok(())
+                    continue;
                 }
                 Op::JumpIfNot(c, t) => {
-                    if self.int_at(*c) == 0 {
+                    if self.int_ix(ix!(*c)) == 0 {
                         pc = *t;
                     }
-                    Ok(())
+                    continue;
                 }
                 Op::JumpIf(c, t) => {
-                    if self.int_at(*c) != 0 {
+                    if self.int_ix(ix!(*c)) != 0 {
                         pc = *t;
                     }
-                    Ok(())
+                    continue;
                 }
                 Op::Case(x, table, others, span) => {
-                    let v = self.int_at(*x);
+                    let v = self.int_ix(ix!(*x));
                     match table.iter().find(|(l, h, _)| *l <= v && v <= *h) {
                         Some((_, _, t)) => {
                             pc = *t;
@@ -2016,27 +2103,29 @@ impl<'a> Run<'a> {
                     }
                 }
                 Op::ForStart(v, l, h, rev, exit) => {
-                    let (lo, hi) = (self.int_at(*l), self.int_at(*h));
+                    let (lo, hi) = (self.int_ix(ix!(*l)), self.int_ix(ix!(*h)));
                     if lo > hi {
                         pc = *exit;
                     } else {
-                        self.put(*v, Value::Int(if *rev { hi } else { lo }));
+                        self.put_int_ix(ix!(*v), if *rev { hi } else { lo });
                     }
-                    Ok(())
+                    continue;
                 }
                 Op::ForNext(v, l, h, rev, body, span) => {
-                    let i = self.int_at(*v);
+                    let i = self.int_ix(ix!(*v));
                     let last = if *rev {
-                        self.int_at(*l)
+                        self.int_ix(ix!(*l))
                     } else {
-                        self.int_at(*h)
+                        self.int_ix(ix!(*h))
                     };
                     if i == last {
-                        Ok(())
-                    } else {
-                        self.put(*v, Value::Int(if *rev { i - 1 } else { i + 1 }));
-                        pc = *body;
-                        self.poll(*span)
+                        continue;
+                    }
+                    self.put_int_ix(ix!(*v), if *rev { i - 1 } else { i + 1 });
+                    pc = *body;
+                    match self.poll(*span) {
+                        Ok(()) => continue,
+                        r => r,
                     }
                 }
                 Op::Poll(span) => self.poll(*span),
@@ -2055,7 +2144,7 @@ impl<'a> Run<'a> {
                     self.rerun();
                     self.call(*f, args, *span).map(|v| {
                         if let Some(d) = d {
-                            self.put(*d, v.unwrap_or_default());
+                            self.put_ix(ix!(*d), v.unwrap_or_default());
                         }
                     })
                 }
@@ -2063,15 +2152,23 @@ impl<'a> Run<'a> {
                     self.rerun();
                     self.call(*f, args, *span).map(|v| {
                         if let Some(d) = d {
-                            self.put(*d, v.unwrap_or_default());
+                            self.put_ix(ix!(*d), v.unwrap_or_default());
                         }
                     })
                 }
                 Op::Call(f, args, ops, d, span) => {
                     match self.push_call(cache, *f, args, ops, *d, *span) {
-                        Ok(e) => {
-                            enter = Some(e);
-                            Ok(())
+                        Ok((code, info)) => {
+                            frames.push(Frame {
+                                code: std::mem::replace(&mut cur, code),
+                                pc,
+                                call: Some(info),
+                                current: current_base,
+                            });
+                            current_base = self.m.current.len();
+                            pc = 0;
+                            reload!();
+                            continue;
                         }
                         Err(e) => Err(e),
                     }
@@ -2079,8 +2176,25 @@ impl<'a> Run<'a> {
                 Op::Return(x) => {
                     // Cloned, not taken: the value may be a variable of an
                     // enclosing frame.
-                    ret = Some(x.map(|x| self.m.stack[self.sl(x)].clone()));
-                    Ok(())
+                    let value = x.map(|x| self.m.stack[self.sl(x)].clone());
+                    // A return from a call without `out` parameters: the
+                    // frame goes, the value lands (everything else takes
+                    // the long way below).
+                    if let Some(frame) =
+                        frames.pop_if(|f| f.call.as_ref().is_some_and(|i| i.all_in))
+                    {
+                        let dst = frame.call.as_ref().and_then(|i| i.dst);
+                        self.pop_frame(&frame, current_base);
+                        cur = frame.code;
+                        pc = frame.pc;
+                        current_base = frame.current;
+                        reload!();
+                        if let Some(d) = dst {
+                            self.put_ix(ix!(d), value.unwrap_or_default());
+                        }
+                        continue;
+                    }
+                    Err(Flow::Return(value))
                 }
                 Op::FallOff => Err(Flow::Exit(FALL_OFF)),
                 Op::Dispatch(handlers, targets, depth) => {
@@ -2218,188 +2332,175 @@ impl<'a> Run<'a> {
                     self.m.sched.alloc_activates = false;
                     let r = self.eval(e);
                     self.m.sched.alloc_activates = true;
-                    r.map(|v| self.put(*d, v))
+                    r.map(|v| self.put_ix(ix!(*d), v))
                 }
                 Op::NoteMaster(v) => {
                     let code = self.master_code();
-                    self.put(*v, Value::Int(code));
+                    self.put_ix(ix!(*v), Value::Int(code));
                     Ok(())
                 }
                 Op::Abort(ts) => {
                     for t in ts.iter() {
-                        let t = self.int_at(*t) as usize;
+                        let t = self.int_ix(ix!(*t)) as usize;
                         self.abort_task(t);
                     }
                     Ok(())
                 }
             };
-            if self.m.sched.switch {
-                // The running thread blocked (or ended): save it, run the
-                // next ready one.
-                self.m.sched.switch = false;
-                let th = &mut self.m.sched.threads[self.m.sched.cur];
-                if std::mem::take(&mut th.reexec) {
-                    pc -= 1;
-                    th.rerun = true;
-                }
-                let me = self.m.sched.cur;
-                let regs = save_regs(&mut frames, &cur, pc, current_base, pending.take(), root);
-                if self.m.sched.threads[me].wait == tasking::Wait::Terminated && me != 0 {
-                    for (b, t) in regs.regions() {
-                        self.free_frame(b, t);
+            // The slow way: a thread switch, a frame to enter, a return,
+            // an exit or an exception. Then the running code may differ.
+            'slow: {
+                if self.m.sched.switch {
+                    // The running thread blocked (or ended): save it, run the
+                    // next ready one.
+                    self.m.sched.switch = false;
+                    let th = &mut self.m.sched.threads[self.m.sched.cur];
+                    if std::mem::take(&mut th.reexec) {
+                        pc -= 1;
+                        th.rerun = true;
                     }
-                    self.end_thread(me, false);
-                } else {
-                    self.m.sched.threads[me].regs = Some(regs);
-                }
-                self.swap_registers(me);
-                let next = loop {
-                    if let Some(n) = self.m.sched.pick() {
-                        break n;
-                    }
-                    if !self.idle() {
-                        return Err(self.deadlock());
-                    }
-                };
-                (frames, cur, pc, current_base, pending, root) =
-                    self.resume(cache, &level0, next)?;
-                continue;
-            }
-            if let Some((code, info)) = enter.take() {
-                frames.push(Frame {
-                    code: std::mem::replace(&mut cur, code),
-                    pc,
-                    call: Some(info),
-                    current: current_base,
-                });
-                current_base = self.m.current.len();
-                pc = 0;
-                continue;
-            }
-            // A return from a call without `out` parameters: the frame goes,
-            // the value lands (everything else takes the long way below).
-            let r = match ret.take() {
-                None => r,
-                Some(value) => {
-                    if let Some(frame) = frames.pop_if(|f| {
-                        f.call
-                            .as_ref()
-                            .is_some_and(|i| i.args.iter().all(|a| a.mode == Mode::In))
-                    }) {
-                        let dst = frame.call.as_ref().and_then(|i| i.dst);
-                        self.pop_frame(&frame, current_base);
-                        cur = frame.code;
-                        pc = frame.pc;
-                        current_base = frame.current;
-                        if let Some(d) = dst {
-                            self.put(d, value.unwrap_or_default());
+                    let me = self.m.sched.cur;
+                    let regs = save_regs(&mut frames, &cur, pc, current_base, pending.take(), root);
+                    if self.m.sched.threads[me].wait == tasking::Wait::Terminated && me != 0 {
+                        for (b, t) in regs.regions() {
+                            self.free_frame(b, t);
                         }
-                        continue;
+                        self.end_thread(me, false);
+                    } else {
+                        self.m.sched.threads[me].regs = Some(regs);
                     }
-                    Err(Flow::Return(value))
+                    self.swap_registers(me);
+                    let next = loop {
+                        if let Some(n) = self.m.sched.pick() {
+                            break n;
+                        }
+                        if !self.idle() {
+                            return Err(self.deadlock());
+                        }
+                    };
+                    (frames, cur, pc, current_base, pending, root) =
+                        self.resume(cache, &level0, next)?;
+                    break 'slow;
                 }
-            };
-            let Err(flow) = r else { continue };
-            // Something other than the next instruction: a return, an exit
-            // a statement run by the walker gave back, or an exception.
-            let mut flow = flow;
-            loop {
-                match flow {
-                    Flow::Exit(id) if id != FALL_OFF => {
-                        if let Some((_, t, depth)) = cur.exits.iter().find(|(l, ..)| *l == id) {
-                            self.m.current.truncate(current_base + *depth as usize);
-                            pc = *t;
-                            break;
-                        }
-                        // Not a loop of this code (the user's stop): leave
-                        // every frame.
-                        while let Some(f) = frames.pop() {
-                            self.pop_frame(&f, current_base);
-                            current_base = f.current;
-                        }
-                        return Err(Flow::Exit(id));
-                    }
-                    Flow::Exit(_) | Flow::Return(_) => {
-                        let (value, fell_off) = match flow {
-                            Flow::Return(v) => (v, false),
-                            _ => (None, true),
-                        };
-                        let Some(frame) = frames.pop() else {
-                            self.m.current.truncate(current_base);
-                            if root.is_none() {
-                                // The end of the level-0 code.
-                                return Ok(());
+                if let Some((code, info)) = enter.take() {
+                    frames.push(Frame {
+                        code: std::mem::replace(&mut cur, code),
+                        pc,
+                        call: Some(info),
+                        current: current_base,
+                    });
+                    current_base = self.m.current.len();
+                    pc = 0;
+                    break 'slow;
+                }
+                let Err(flow) = r else { break 'slow };
+                // Something other than the next instruction: a return, an exit
+                // a statement run by the walker gave back, or an exception.
+                let mut flow = flow;
+                loop {
+                    match flow {
+                        Flow::Exit(id) if id != FALL_OFF => {
+                            if let Some((_, t, depth)) = cur.exits.iter().find(|(l, ..)| *l == id) {
+                                self.m.current.truncate(current_base + *depth as usize);
+                                pc = *t;
+                                break;
                             }
-                            // The end of a task body.
-                            self.task_ends(root, false);
-                            (frames, cur, pc, current_base, pending, root) =
-                                self.next_thread(cache, &level0)?;
-                            break;
-                        };
-                        let info = frame.call.as_ref().expect("a called frame");
-                        // Copy-out values live in the frame.
-                        let mut outs = Vec::new();
-                        for (i, a) in info.args.iter().enumerate() {
-                            if a.mode != Mode::In {
-                                outs.push((a, std::mem::take(&mut self.m.stack[info.base + i])));
+                            // Not a loop of this code (the user's stop): leave
+                            // every frame.
+                            while let Some(f) = frames.pop() {
+                                self.pop_frame(&f, current_base);
+                                current_base = f.current;
                             }
+                            return Err(Flow::Exit(id));
                         }
-                        self.pop_frame(&frame, current_base);
-                        cur = frame.code;
-                        pc = frame.pc;
-                        current_base = frame.current;
-                        let sub = &self.c.funcs[info.f as usize];
-                        let r = if fell_off && sub.ret.is_some() {
-                            Err(self.raise(
-                                check::PROGRAM_ERROR,
-                                format!("{} missing return", self.m.location(sub.span)),
-                                sub.span,
-                            ))
-                        } else {
-                            (|| {
-                                for (a, v) in outs {
-                                    if let Some(t) = a.back_check {
-                                        self.range_check(&v, t, a.value.span)?;
+                        Flow::Exit(_) | Flow::Return(_) => {
+                            let (value, fell_off) = match flow {
+                                Flow::Return(v) => (v, false),
+                                _ => (None, true),
+                            };
+                            let Some(frame) = frames.pop() else {
+                                self.m.current.truncate(current_base);
+                                if root.is_none() {
+                                    // The end of the level-0 code.
+                                    return Ok(());
+                                }
+                                // The end of a task body.
+                                self.task_ends(root, false);
+                                (frames, cur, pc, current_base, pending, root) =
+                                    self.next_thread(cache, &level0)?;
+                                break;
+                            };
+                            let info = frame.call.as_ref().expect("a called frame");
+                            // Copy-out values live in the frame.
+                            let mut outs = Vec::new();
+                            for (i, a) in info.args.iter().enumerate() {
+                                if a.mode != Mode::In {
+                                    outs.push((
+                                        a,
+                                        std::mem::take(&mut self.m.stack[info.base + i]),
+                                    ));
+                                }
+                            }
+                            self.pop_frame(&frame, current_base);
+                            cur = frame.code;
+                            pc = frame.pc;
+                            current_base = frame.current;
+                            let sub = &self.c.funcs[info.f as usize];
+                            let r = if fell_off && sub.ret.is_some() {
+                                Err(self.raise(
+                                    check::PROGRAM_ERROR,
+                                    format!("{} missing return", self.m.location(sub.span)),
+                                    sub.span,
+                                ))
+                            } else {
+                                (|| {
+                                    for (a, v) in outs {
+                                        if let Some(t) = a.back_check {
+                                            self.range_check(&v, t, a.value.span)?;
+                                        }
+                                        self.assign(&a.value, v)?;
                                     }
-                                    self.assign(&a.value, v)?;
-                                }
-                                if let Some(d) = info.dst {
-                                    self.put(d, value.unwrap_or_default());
-                                }
-                                Ok(())
-                            })()
-                        };
-                        match r {
-                            Ok(()) => break,
-                            Err(e) => flow = e,
-                        }
-                    }
-                    Flow::Raise(occ) => {
-                        let at = pc - 1;
-                        if let Some(r) = cur.regions.iter().find(|r| r.start <= at && at < r.end) {
-                            pc = r.dispatch;
-                            pending = Some(occ);
-                            break;
-                        }
-                        let Some(frame) = frames.pop() else {
-                            self.m.current.truncate(current_base);
-                            if root.is_none() {
-                                return Err(Flow::Raise(occ));
+                                    if let Some(d) = info.dst {
+                                        self.put(d, value.unwrap_or_default());
+                                    }
+                                    Ok(())
+                                })()
+                            };
+                            match r {
+                                Ok(()) => break,
+                                Err(e) => flow = e,
                             }
-                            // An exception ends a task silently.
-                            self.task_ends(root, true);
-                            (frames, cur, pc, current_base, pending, root) =
-                                self.next_thread(cache, &level0)?;
-                            break;
-                        };
-                        self.pop_frame(&frame, current_base);
-                        cur = frame.code;
-                        pc = frame.pc;
-                        current_base = frame.current;
-                        flow = Flow::Raise(occ);
+                        }
+                        Flow::Raise(occ) => {
+                            let at = pc - 1;
+                            if let Some(r) =
+                                cur.regions.iter().find(|r| r.start <= at && at < r.end)
+                            {
+                                pc = r.dispatch;
+                                pending = Some(occ);
+                                break;
+                            }
+                            let Some(frame) = frames.pop() else {
+                                self.m.current.truncate(current_base);
+                                if root.is_none() {
+                                    return Err(Flow::Raise(occ));
+                                }
+                                // An exception ends a task silently.
+                                self.task_ends(root, true);
+                                (frames, cur, pc, current_base, pending, root) =
+                                    self.next_thread(cache, &level0)?;
+                                break;
+                            };
+                            self.pop_frame(&frame, current_base);
+                            cur = frame.code;
+                            pc = frame.pc;
+                            current_base = frame.current;
+                            flow = Flow::Raise(occ);
+                        }
                     }
                 }
             }
+            reload!();
         }
     }
 
@@ -2414,6 +2515,16 @@ impl<'a> Run<'a> {
             self.m.calls.pop();
         }
         self.m.current.truncate(entry);
+    }
+}
+
+/// `*slot = v`, a scalar over a scalar written in place (no drop call).
+#[inline(always)]
+fn set(slot: &mut Value, v: Value) {
+    match (slot, v) {
+        (Value::Int(y), Value::Int(x)) => *y = x,
+        (Value::Real(y), Value::Real(x)) => *y = x,
+        (s, v) => value::overwrite(s, v),
     }
 }
 

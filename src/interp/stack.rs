@@ -1,0 +1,152 @@
+//! The value stack: the slots of every frame, one after the other.
+//!
+//! A call pushes its frame's slots and a return takes them off, hundreds of
+//! thousands of times a second in a recursive program. A `Vec<Value>` made
+//! that cost a drop of every slot (a call through the drop glue per value)
+//! and a fill of every new one. Here the slots above the top stay allocated:
+//! taking a frame off drops only the values that own memory (arrays,
+//! records, accesses, occurrences) and leaves scalars where they are, and
+//! a new frame clears its slots to `Undef` in a loop that knows it writes
+//! over scalars only.
+//!
+//! Invariant: a slot at or above `len` holds `Undef`, an `Int` or a `Real`
+//! (written over without the drop glue, see [`overwrite`]).
+
+use super::value::{Value, overwrite};
+
+#[derive(Default, Debug)]
+pub struct Stack {
+    data: Vec<Value>,
+    len: usize,
+}
+
+/// Whether a value owns nothing that must be dropped.
+#[inline(always)]
+fn scalar(v: &Value) -> bool {
+    matches!(v, Value::Undef | Value::Int(_) | Value::Real(_))
+}
+
+impl Stack {
+    #[inline(always)]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Takes the slots from `n` up off the stack.
+    #[inline]
+    pub fn truncate(&mut self, n: usize) {
+        if n >= self.len {
+            return;
+        }
+        for v in &mut self.data[n..self.len] {
+            if !scalar(v) {
+                *v = Value::Undef;
+            }
+        }
+        self.len = n;
+    }
+
+    /// Grows the stack to `n` slots, the new ones `Undef`.
+    #[inline]
+    pub fn grow_to(&mut self, n: usize) {
+        if n <= self.len {
+            return;
+        }
+        let reuse = n.min(self.data.len());
+        for v in &mut self.data[self.len..reuse] {
+            overwrite(v, Value::Undef);
+        }
+        if n > self.data.len() {
+            self.data.resize(n, Value::Undef);
+        }
+        self.len = n;
+    }
+
+    #[inline]
+    pub fn push(&mut self, x: Value) {
+        if self.len < self.data.len() {
+            overwrite(&mut self.data[self.len], x);
+        } else {
+            self.data.push(x);
+        }
+        self.len += 1;
+    }
+
+    pub fn extend(&mut self, xs: impl IntoIterator<Item = Value>) {
+        for x in xs {
+            self.push(x);
+        }
+    }
+
+    pub fn get(&self, i: usize) -> Option<&Value> {
+        self.data[..self.len].get(i)
+    }
+
+    /// The live slots.
+    pub fn as_slice(&self) -> &[Value] {
+        &self.data[..self.len]
+    }
+
+    pub fn as_mut_slice(&mut self) -> &mut [Value] {
+        &mut self.data[..self.len]
+    }
+
+    /// The live slots as a vector.
+    pub fn into_vec(mut self) -> Vec<Value> {
+        self.data.truncate(self.len);
+        self.data
+    }
+}
+
+impl From<Vec<Value>> for Stack {
+    fn from(data: Vec<Value>) -> Stack {
+        Stack {
+            len: data.len(),
+            data,
+        }
+    }
+}
+
+impl std::ops::Index<usize> for Stack {
+    type Output = Value;
+    #[inline(always)]
+    fn index(&self, i: usize) -> &Value {
+        debug_assert!(i < self.len, "slot {i} above the stack's top {}", self.len);
+        &self.data[i]
+    }
+}
+
+impl std::ops::IndexMut<usize> for Stack {
+    #[inline(always)]
+    fn index_mut(&mut self, i: usize) -> &mut Value {
+        debug_assert!(i < self.len, "slot {i} above the stack's top {}", self.len);
+        &mut self.data[i]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::rc::Rc;
+
+    #[test]
+    fn a_frame_taken_off_drops_what_it_owns_and_a_new_one_is_undef() {
+        let shared = Rc::new(super::super::value::Array::string("ab"));
+        let mut s = Stack::default();
+        s.grow_to(1);
+        s.push(Value::Arr(shared.clone()));
+        s.push(Value::Int(7));
+        s.push(Value::Real(1.5));
+        assert_eq!(Rc::strong_count(&shared), 2);
+        s.truncate(1);
+        assert_eq!(s.len(), 1);
+        // The array went with its frame.
+        assert_eq!(Rc::strong_count(&shared), 1);
+        s.grow_to(4);
+        assert!(s.as_slice().iter().all(|v| matches!(v, Value::Undef)));
+        assert_eq!(s.get(4), None);
+        s.push(Value::Int(3));
+        assert_eq!(s.len(), 5);
+        assert_eq!(s[4], Value::Int(3));
+    }
+}
