@@ -1469,12 +1469,12 @@ impl Run<'_> {
 
     /// Bounds of a constrained array subtype.
     fn array_bounds(&mut self, t: TypeId) -> R<Option<Vec<(i64, i64)>>> {
-        let Some((_, _, Some(bs))) = self.c.types.array(t) else {
+        let types = self.c.types;
+        let Some((_, _, Some(bs))) = types.array(t) else {
             return Ok(None);
         };
-        let bs = bs.clone();
         let mut out = Vec::with_capacity(bs.len());
-        for (l, h) in &bs {
+        for (l, h) in bs {
             out.push((self.eval(l)?.int(), self.eval(h)?.int()));
         }
         Ok(Some(out))
@@ -1645,9 +1645,16 @@ impl Run<'_> {
                 if vals.len() > n || (vals.len() < n && others.is_none()) {
                     return Err(self.check_failed("length check failed", span));
                 }
-                if let Some(o) = others {
-                    while vals.len() < n {
-                        vals.push(self.eval(o)?);
+                if let Some(o) = others
+                    && vals.len() < n
+                {
+                    if self.repeatable(o) {
+                        let v = self.eval(o)?;
+                        vals.resize(n, v);
+                    } else {
+                        while vals.len() < n {
+                            vals.push(self.eval(o)?);
+                        }
                     }
                 }
                 self.rows_to_array(vals, (lo, hi), fixed, dims, span)
@@ -1695,17 +1702,62 @@ impl Run<'_> {
                     }
                 }
                 let mut out = Vec::with_capacity(n);
+                // `others` once when that is the same as once per component.
+                let mut other = None;
                 for v in vals {
                     match v {
                         Some(v) => out.push(v),
                         None => match others {
-                            Some(o) => out.push(self.eval(o)?),
+                            Some(o) => match &other {
+                                Some(x) => out.push(Value::clone(x)),
+                                None => {
+                                    let x = self.eval(o)?;
+                                    if self.repeatable(o) {
+                                        other = Some(x.clone());
+                                    }
+                                    out.push(x);
+                                }
+                            },
                             None => return Err(self.check_failed("length check failed", span)),
                         },
                     }
                 }
                 self.rows_to_array(out, (lo, hi), fixed, dims, span)
             }
+        }
+    }
+
+    /// Whether evaluating `e` again gives an equal value and does nothing
+    /// else (no call, no allocator): then an `others` that covers many
+    /// components is evaluated once, not once per component (RM 4.3.3(23)
+    /// asks for the latter, which only a call or an allocator could tell
+    /// apart; nothing else runs between the components' evaluations).
+    fn repeatable(&self, e: &Ex) -> bool {
+        match &e.kind {
+            ExKind::ArrayAgg(a) => {
+                let bounds_pure = match self.c.types.array(a.ty) {
+                    Some((_, _, Some(bs))) => bs
+                        .iter()
+                        .all(|(l, h)| self.repeatable(l) && self.repeatable(h)),
+                    _ => true,
+                };
+                bounds_pure
+                    && match &a.kind {
+                        ArrayAggKind::Positional(items, others) => {
+                            items.iter().all(|i| self.repeatable(i))
+                                && others.as_deref().is_none_or(|o| self.repeatable(o))
+                        }
+                        ArrayAggKind::Named(choices, others) => {
+                            choices.iter().all(|(rs, v)| {
+                                self.repeatable(v)
+                                    && rs
+                                        .iter()
+                                        .all(|(l, h)| self.repeatable(l) && self.repeatable(h))
+                            }) && others.as_deref().is_none_or(|o| self.repeatable(o))
+                        }
+                    }
+            }
+            _ => !vm::effects(e),
         }
     }
 

@@ -269,7 +269,7 @@ struct Compiler<'p, 'r> {
 
 /// True when evaluating `e` may run a call or other code with effects
 /// (so that an operand read before it must be copied first).
-fn effects(e: &Ex) -> bool {
+pub(crate) fn effects(e: &Ex) -> bool {
     match &e.kind {
         ExKind::Int(_) | ExKind::Real(_) | ExKind::Var(_) | ExKind::Str(_) | ExKind::Null => false,
         ExKind::IntBin(_, a, b)
@@ -2019,9 +2019,11 @@ impl<'a> Run<'a> {
                         idx[k] = self.int_ix(ix!(*v));
                     }
                     let i = ix!(*src);
+                    // A real goes as such (see `Index`), anything else is
+                    // taken from its temporary.
                     let val = match &mut self.m.stack[i] {
-                        Value::Real(x) => Value::Real(*x),
-                        v => std::mem::take(v),
+                        Value::Real(x) => Err(*x),
+                        v => Ok(std::mem::take(v)),
                     };
                     let slot = ix!(*arr);
                     let r = match &mut self.m.stack[slot] {
@@ -2029,7 +2031,11 @@ impl<'a> Run<'a> {
                             let a = Rc::make_mut(a);
                             match a.offset(&idx[..ix.len()]) {
                                 Some(o) => {
-                                    set(&mut a.data[o], val);
+                                    match (val, &mut a.data[o]) {
+                                        (Err(x), Value::Real(y)) => *y = x,
+                                        (Err(x), s) => value::overwrite(s, Value::Real(x)),
+                                        (Ok(v), s) => set(s, v),
+                                    }
                                     Ok(())
                                 }
                                 None => Err("index check failed"),
