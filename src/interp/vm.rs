@@ -240,6 +240,8 @@ pub(crate) struct Code<'p> {
     ops: Vec<Op<'p>>,
     /// Slots beyond the subprogram's own: temporaries.
     temps: u32,
+    /// The frame's size: the subprogram's own slots and the temporaries.
+    frame: u32,
     /// Handler regions, innermost first.
     regions: Vec<Region>,
     /// `exit` targets of this code's loops, for an `exit` that a statement
@@ -1059,6 +1061,7 @@ impl<'p> Compiler<'p, '_> {
             level: self.level,
             ops: self.ops,
             temps: self.max_temp,
+            frame: self.own + self.max_temp,
             regions: self.regions,
             exits: self.exits,
         }
@@ -1138,7 +1141,18 @@ impl<'a> Run<'a> {
     }
 
     /// The compiled body of `f`, compiled on its first call.
+    #[inline(always)]
     fn code_of(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>, f: FuncId) -> Rc<Code<'a>> {
+        match cache.get(f as usize) {
+            Some(Some(c)) => c.clone(),
+            _ => self.compile_first(cache, f),
+        }
+    }
+
+    /// [`Self::code_of`] the first time.
+    #[cold]
+    #[inline(never)]
+    fn compile_first(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>, f: FuncId) -> Rc<Code<'a>> {
         let i = f as usize;
         if cache.len() <= i {
             cache.resize(self.c.funcs.len().max(i + 1), None);
@@ -1187,6 +1201,7 @@ impl<'a> Run<'a> {
                 level: 0,
                 ops: vec![last, Op::FallOff],
                 temps: 0,
+                frame: 0,
                 regions: Vec::new(),
                 exits: Vec::new(),
             });
@@ -1216,19 +1231,18 @@ impl<'a> Run<'a> {
             ));
         }
         let code = self.code_of(cache, f);
-        let sub = &self.c.funcs[f as usize];
-        let level = sub.level as usize;
-        let nslots = sub.nslots as usize;
+        let level = code.level as usize;
         let base = self.m.stack.len();
-        let n = ops.len();
         // The arguments go straight into the new frame; the display is
         // still the caller's while they are read.
         for v in ops.iter() {
-            let x = self.m.stack[self.sl(*v)].clone();
+            let x = match &self.m.stack[self.sl(*v)] {
+                Value::Int(i) => Value::Int(*i),
+                other => other.clone(),
+            };
             self.m.stack.push(x);
         }
-        let own = nslots.max(n).max(sub.params.len());
-        let top = base + own + code.temps as usize;
+        let top = base + (code.frame as usize).max(ops.len());
         self.m.stack.grow_to(top);
         if self.m.display.len() <= level {
             self.m.display.resize(level + 1, 0);
@@ -2181,26 +2195,40 @@ impl<'a> Run<'a> {
                 }
                 Op::Return(x) => {
                     // Cloned, not taken: the value may be a variable of an
-                    // enclosing frame.
-                    let value = x.map(|x| self.m.stack[self.sl(x)].clone());
+                    // enclosing frame. An integer goes as such (see `Index`).
+                    let value = match x {
+                        Some(x) => match &self.m.stack[ix!(*x)] {
+                            Value::Int(n) => Ok(*n),
+                            v => Err(Some(v.clone())),
+                        },
+                        None => Err(None),
+                    };
                     // A return from a call without `out` parameters: the
                     // frame goes, the value lands (everything else takes
                     // the long way below).
-                    if let Some(frame) =
-                        frames.pop_if(|f| f.call.as_ref().is_some_and(|i| i.all_in))
-                    {
-                        let dst = frame.call.as_ref().and_then(|i| i.dst);
+                    if let Some(frame) = frames.pop_if(|f| matches!(&f.call, Some(i) if i.all_in)) {
+                        let dst = match &frame.call {
+                            Some(i) => i.dst,
+                            None => None,
+                        };
                         self.pop_frame(&frame, current_base);
                         cur = frame.code;
                         pc = frame.pc;
                         current_base = frame.current;
                         reload!();
                         if let Some(d) = dst {
-                            self.put_ix(ix!(d), value.unwrap_or_default());
+                            let i = ix!(d);
+                            match value {
+                                Ok(n) => self.put_int_ix(i, n),
+                                Err(v) => self.put_ix(i, v.unwrap_or_default()),
+                            }
                         }
                         continue;
                     }
-                    Err(Flow::Return(value))
+                    Err(Flow::Return(match value {
+                        Ok(n) => Some(Value::Int(n)),
+                        Err(v) => v,
+                    }))
                 }
                 Op::FallOff => Err(Flow::Exit(FALL_OFF)),
                 Op::Dispatch(handlers, targets, depth) => {
@@ -2513,6 +2541,7 @@ impl<'a> Run<'a> {
     /// Leaves a called frame: its slots, display entry, depth, call place,
     /// and the occurrences it made current (back to `entry`, their number
     /// when it was entered); no copy-out.
+    #[inline(always)]
     fn pop_frame(&mut self, f: &Frame<'a>, entry: usize) {
         if let Some(info) = &f.call {
             self.free_frame(info.base, info.top);
