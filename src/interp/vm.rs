@@ -63,6 +63,12 @@ enum Op<'p> {
     /// `arr (ix...) := src`.
     StoreIndex(Var, Box<[Var]>, Var, Span),
     Field(Var, Var, u32, Span),
+    /// `dst := ptr.all.field` (a component of the record an access
+    /// designates, not a copy of the record); where the access check and
+    /// where the discriminant check fails.
+    DerefField(Var, Var, u32, Span, Span),
+    /// `dst := null`.
+    Null(Var),
     /// The walker evaluates an expression into a slot.
     Eval(Var, &'p Ex),
     /// The same for a copy of an expression whose operands were computed
@@ -438,10 +444,17 @@ impl<'p> Compiler<'p, '_> {
                 }
                 self.ops.push(Op::Index(dst, arr, ix.into(), span));
             }
-            ExKind::Field(p, i) => {
-                let x = self.expr(p);
-                self.ops.push(Op::Field(dst, x, *i, span));
-            }
+            ExKind::Field(p, i) => match &p.kind {
+                ExKind::Deref(a) => {
+                    let x = self.expr(a);
+                    self.ops.push(Op::DerefField(dst, x, *i, p.span, span));
+                }
+                _ => {
+                    let x = self.expr(p);
+                    self.ops.push(Op::Field(dst, x, *i, span));
+                }
+            },
+            ExKind::Null => self.ops.push(Op::Null(dst)),
             ExKind::Call(f, args) => self.call(*f, args, Some(dst), span),
             ExKind::If(arms, els) => {
                 let t = self.temp();
@@ -2074,6 +2087,26 @@ impl<'a> Run<'a> {
                         }
                         None => Err(self.check_failed("discriminant check failed", *span)),
                     }
+                }
+                Op::DerefField(d, a, i, at_deref, at_field) => {
+                    let got = match &self.m.stack[ix!(*a)] {
+                        Value::Ptr(Some(o)) => match &*o.borrow() {
+                            Value::Rec(r) => Ok(r[*i as usize].clone()),
+                            _ => Err(("discriminant check failed", *at_field)),
+                        },
+                        _ => Err(("access check failed", *at_deref)),
+                    };
+                    match got {
+                        Ok(v) => {
+                            self.put_ix(ix!(*d), v);
+                            continue;
+                        }
+                        Err((what, span)) => Err(self.check_failed(what, span)),
+                    }
+                }
+                Op::Null(d) => {
+                    self.put_ix(ix!(*d), Value::Ptr(None));
+                    continue;
                 }
                 Op::Eval(d, e) => self.eval(e).map(|v| self.put_ix(ix!(*d), v)),
                 Op::EvalOwned(d, e, temps) => {
