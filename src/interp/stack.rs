@@ -75,6 +75,22 @@ impl Stack {
         self.len += 1;
     }
 
+    /// `push` of an integer, stored in place (a `Value` built first and
+    /// copied went through memory, a store-forwarding stall per argument).
+    #[inline]
+    pub fn push_int(&mut self, n: i64) {
+        if self.len < self.data.len() {
+            match &mut self.data[self.len] {
+                Value::Int(y) => *y = n,
+                // A scalar (the invariant): nothing to drop.
+                s => std::mem::forget(std::mem::replace(s, Value::Int(n))),
+            }
+        } else {
+            self.data.push(Value::Int(n));
+        }
+        self.len += 1;
+    }
+
     pub fn extend(&mut self, xs: impl IntoIterator<Item = Value>) {
         for x in xs {
             self.push(x);
@@ -151,5 +167,14 @@ mod tests {
         s.push(Value::Int(3));
         assert_eq!(s.len(), 5);
         assert_eq!(s[4], Value::Int(3));
+        // Over slots above the top, then past the end of the storage.
+        s.truncate(1);
+        s.push_int(9);
+        assert_eq!(s[1], Value::Int(9));
+        s.truncate(0);
+        for k in 0..7 {
+            s.push_int(k);
+        }
+        assert_eq!(s.as_slice(), (0..7).map(Value::Int).collect::<Vec<_>>());
     }
 }

@@ -82,6 +82,10 @@ enum Op<'p> {
     Exec(&'p Stmt),
     Jump(u32),
     JumpIfNot(Var, u32),
+    /// `JumpIfNot` of a `CmpK`, in one instruction (`if N < 2 then`).
+    CmpKJumpNot(CmpOp, Var, i64, u32),
+    /// `JumpIfNot` of a `Cmp`.
+    CmpJumpNot(CmpOp, Var, Var, u32),
     JumpIf(Var, u32),
     /// Case: the subject, (low, high, target) choices, the `others` target.
     Case(Var, Box<[(i64, i64, u32)]>, Option<u32>, Span),
@@ -322,11 +326,31 @@ impl<'p> Compiler<'p, '_> {
 
     fn patch(&mut self, at: usize, target: u32) {
         match &mut self.ops[at] {
-            Op::Jump(t) | Op::JumpIfNot(_, t) | Op::JumpIf(_, t) | Op::ForStart(.., t) => {
-                *t = target
-            }
+            Op::Jump(t)
+            | Op::JumpIfNot(_, t)
+            | Op::JumpIf(_, t)
+            | Op::ForStart(.., t)
+            | Op::CmpKJumpNot(.., t)
+            | Op::CmpJumpNot(.., t) => *t = target,
             _ => unreachable!("only jumps are patched"),
         }
+    }
+
+    /// A jump (to be patched) taken when the condition `c` is False: a
+    /// comparison jumps itself.
+    fn jump_unless(&mut self, c: &'p Ex) -> usize {
+        let op = match &c.kind {
+            ExKind::Cmp(op, a, b) => match b.kind {
+                ExKind::Int(k) => Op::CmpKJumpNot(*op, self.expr(a), k, 0),
+                _ => {
+                    let x = self.left(a, b);
+                    Op::CmpJumpNot(*op, x, self.expr(b), 0)
+                }
+            },
+            _ => Op::JumpIfNot(self.expr(c), 0),
+        };
+        self.ops.push(op);
+        self.ops.len() - 1
     }
 
     /// The operand holding `e`'s value: a variable itself, or a temporary.
@@ -660,10 +684,8 @@ impl<'p> Compiler<'p, '_> {
                 let mut ends = Vec::new();
                 for (c, body) in arms {
                     let mark = self.ntemp;
-                    let x = self.expr(c);
+                    let j = self.jump_unless(c);
                     self.ntemp = mark;
-                    let j = self.ops.len();
-                    self.ops.push(Op::JumpIfNot(x, 0));
                     self.stmts(body);
                     ends.push(self.ops.len());
                     self.ops.push(Op::Jump(0));
@@ -689,9 +711,7 @@ impl<'p> Compiler<'p, '_> {
             }
             StmtKind::While { id, cond, body } => {
                 let top = self.here();
-                let x = self.expr(cond);
-                let j = self.ops.len();
-                self.ops.push(Op::JumpIfNot(x, 0));
+                let j = self.jump_unless(cond);
                 self.ops.push(Op::Poll(s.span));
                 self.loop_body(*id, body);
                 self.ops.push(Op::Jump(top));
@@ -723,12 +743,7 @@ impl<'p> Compiler<'p, '_> {
                     self.ops.push(Op::Exec(s));
                     return;
                 };
-                let skip = cond.as_ref().map(|c| {
-                    let x = self.expr(c);
-                    let j = self.ops.len();
-                    self.ops.push(Op::JumpIfNot(x, 0));
-                    j
-                });
+                let skip = cond.as_ref().map(|c| self.jump_unless(c));
                 let depth = self.loops[k].2;
                 if depth < self.hdepth {
                     self.ops.push(Op::TruncCurrent(depth));
@@ -1249,11 +1264,16 @@ impl<'a> Run<'a> {
         // The arguments go straight into the new frame; the display is
         // still the caller's while they are read.
         for v in ops.iter() {
-            let x = match &self.m.stack[self.sl(*v)] {
-                Value::Int(i) => Value::Int(*i),
-                other => other.clone(),
-            };
-            self.m.stack.push(x);
+            match &self.m.stack[self.sl(*v)] {
+                Value::Int(i) => {
+                    let i = *i;
+                    self.m.stack.push_int(i);
+                }
+                other => {
+                    let x = other.clone();
+                    self.m.stack.push(x);
+                }
+            }
         }
         let top = base + (code.frame as usize).max(ops.len());
         self.m.stack.grow_to(top);
@@ -2129,6 +2149,32 @@ impl<'a> Run<'a> {
                 }
                 Op::JumpIfNot(c, t) => {
                     if self.int_ix(ix!(*c)) == 0 {
+                        pc = *t;
+                    }
+                    continue;
+                }
+                Op::CmpKJumpNot(o, a, k, t) => {
+                    // As `CmpK`.
+                    let ord = match &self.m.stack[ix!(*a)] {
+                        Value::Int(x) => x.cmp(k),
+                        other => other.compare(&Value::Int(*k)),
+                    };
+                    if !holds(*o, ord) {
+                        pc = *t;
+                    }
+                    continue;
+                }
+                Op::CmpJumpNot(o, a, b, t) => {
+                    // As `Cmp`.
+                    let ord = {
+                        let x = &self.m.stack[ix!(*a)];
+                        let y = &self.m.stack[ix!(*b)];
+                        match (x, y) {
+                            (Value::Int(p), Value::Int(q)) => p.cmp(q),
+                            _ => x.compare(y),
+                        }
+                    };
+                    if !holds(*o, ord) {
                         pc = *t;
                     }
                     continue;
