@@ -49,10 +49,18 @@ impl Stack {
     /// Grows the stack to `n` slots, the new ones `Undef`.
     #[inline]
     pub fn grow_to(&mut self, n: usize) {
+        self.grow_to_clearing(n, n);
+    }
+
+    /// Grows the stack to `n` slots, of which those below `clear` are
+    /// `Undef` and the others whatever scalar they held (a frame's
+    /// temporaries, which its code writes before it reads them).
+    #[inline]
+    pub fn grow_to_clearing(&mut self, clear: usize, n: usize) {
         if n <= self.len {
             return;
         }
-        let reuse = n.min(self.data.len());
+        let reuse = clear.min(self.data.len()).max(self.len);
         for v in &mut self.data[self.len..reuse] {
             // A scalar (the invariant): nothing to drop, so a plain store.
             // (Were the invariant broken, a value would leak, no more.)
@@ -176,5 +184,20 @@ mod tests {
             s.push_int(k);
         }
         assert_eq!(s.as_slice(), (0..7).map(Value::Int).collect::<Vec<_>>());
+        // A frame of two own slots and two temporaries: the own ones are
+        // cleared, the temporaries keep the scalars they held.
+        s.truncate(1);
+        s.grow_to_clearing(3, 5);
+        assert_eq!(s.len(), 5);
+        assert_eq!(
+            s.as_slice(),
+            [
+                Value::Int(0),
+                Value::Undef,
+                Value::Undef,
+                Value::Int(3),
+                Value::Int(4)
+            ]
+        );
     }
 }

@@ -1275,8 +1275,11 @@ impl<'a> Run<'a> {
                 }
             }
         }
+        let own = (code.frame - code.temps) as usize;
         let top = base + (code.frame as usize).max(ops.len());
-        self.m.stack.grow_to(top);
+        self.m
+            .stack
+            .grow_to_clearing(base + own.max(ops.len()), top);
         if self.m.display.len() <= level {
             self.m.display.resize(level + 1, 0);
         }
