@@ -1831,6 +1831,26 @@ impl<'a> Run<'a> {
         self.int_ix(self.sl(v))
     }
 
+    /// How the values in slots `a` and `b` compare (as `Value::compare`,
+    /// integers inline).
+    #[inline(always)]
+    fn order_ix(&self, a: usize, b: usize) -> std::cmp::Ordering {
+        let (x, y) = (&self.m.stack[a], &self.m.stack[b]);
+        match (x, y) {
+            (Value::Int(p), Value::Int(q)) => p.cmp(q),
+            _ => x.compare(y),
+        }
+    }
+
+    /// How the value in slot `a` compares with the integer `k`.
+    #[inline(always)]
+    fn order_k(&self, a: usize, k: i64) -> std::cmp::Ordering {
+        match &self.m.stack[a] {
+            Value::Int(x) => x.cmp(&k),
+            other => other.compare(&Value::Int(k)),
+        }
+    }
+
     /// The integer in stack slot `i`.
     #[inline(always)]
     fn int_ix(&self, i: usize) -> i64 {
@@ -1955,11 +1975,7 @@ impl<'a> Run<'a> {
                     }
                 }
                 Op::CmpK(o, d, a, k) => {
-                    // As `Value::compare` orders them (an Int against an Int).
-                    let ord = match &self.m.stack[ix!(*a)] {
-                        Value::Int(x) => x.cmp(k),
-                        other => other.compare(&Value::Int(*k)),
-                    };
+                    let ord = self.order_k(ix!(*a), *k);
                     let r = holds(*o, ord);
                     self.put_int_ix(ix!(*d), r as i64);
                     continue;
@@ -1995,14 +2011,7 @@ impl<'a> Run<'a> {
                     continue;
                 }
                 Op::Cmp(o, d, a, b) => {
-                    let ord = {
-                        let x = &self.m.stack[ix!(*a)];
-                        let y = &self.m.stack[ix!(*b)];
-                        match (x, y) {
-                            (Value::Int(p), Value::Int(q)) => p.cmp(q),
-                            _ => x.compare(y),
-                        }
-                    };
+                    let ord = self.order_ix(ix!(*a), ix!(*b));
                     let r = holds(*o, ord);
                     self.put_int_ix(ix!(*d), r as i64);
                     continue;
@@ -2157,26 +2166,14 @@ impl<'a> Run<'a> {
                     continue;
                 }
                 Op::CmpKJumpNot(o, a, k, t) => {
-                    // As `CmpK`.
-                    let ord = match &self.m.stack[ix!(*a)] {
-                        Value::Int(x) => x.cmp(k),
-                        other => other.compare(&Value::Int(*k)),
-                    };
+                    let ord = self.order_k(ix!(*a), *k);
                     if !holds(*o, ord) {
                         pc = *t;
                     }
                     continue;
                 }
                 Op::CmpJumpNot(o, a, b, t) => {
-                    // As `Cmp`.
-                    let ord = {
-                        let x = &self.m.stack[ix!(*a)];
-                        let y = &self.m.stack[ix!(*b)];
-                        match (x, y) {
-                            (Value::Int(p), Value::Int(q)) => p.cmp(q),
-                            _ => x.compare(y),
-                        }
-                    };
+                    let ord = self.order_ix(ix!(*a), ix!(*b));
                     if !holds(*o, ord) {
                         pc = *t;
                     }
