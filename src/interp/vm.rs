@@ -1923,7 +1923,7 @@ impl<'a> Run<'a> {
         // The running code's level and where its frame begins: an operand
         // of the code's own frame is found without the display.
         let mut lvl = cur.level;
-        let mut fp = self.m.display[lvl as usize];
+        let mut fp = self.m.display.get(lvl as usize).copied().unwrap_or(0);
         macro_rules! ix {
             ($v:expr) => {{
                 let v: Var = $v;
