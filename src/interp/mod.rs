@@ -1757,7 +1757,29 @@ impl Run<'_> {
                         }
                     }
             }
-            _ => !vm::effects(e),
+            ExKind::Int(_) | ExKind::Real(_) | ExKind::Str(_) | ExKind::Null | ExKind::Var(_) => {
+                true
+            }
+            ExKind::IntBin(_, a, b)
+            | ExKind::FloatBin(_, a, b)
+            | ExKind::Cmp(_, a, b)
+            | ExKind::Eq(_, a, b)
+            | ExKind::Logic(_, a, b) => self.repeatable(a) && self.repeatable(b),
+            ExKind::Not(a)
+            | ExKind::IntNeg(a)
+            | ExKind::FloatNeg(a)
+            | ExKind::IntAbs(a)
+            | ExKind::FloatAbs(a)
+            | ExKind::IntToFloat(a)
+            | ExKind::FloatToInt(a)
+            | ExKind::Field(a, _) => self.repeatable(a),
+            // A check against bounds that are not static evaluates them
+            // (they may call a function).
+            ExKind::RangeCheck(a, t) => {
+                let info = self.c.types.get(*t);
+                (info.static_range.is_some() || info.static_frange.is_some()) && self.repeatable(a)
+            }
+            _ => false,
         }
     }
 

@@ -281,7 +281,7 @@ struct Compiler<'p, 'r> {
 
 /// True when evaluating `e` may run a call or other code with effects
 /// (so that an operand read before it must be copied first).
-pub(crate) fn effects(e: &Ex) -> bool {
+fn effects(e: &Ex) -> bool {
     match &e.kind {
         ExKind::Int(_) | ExKind::Real(_) | ExKind::Var(_) | ExKind::Str(_) | ExKind::Null => false,
         ExKind::IntBin(_, a, b)
@@ -1415,6 +1415,12 @@ impl<'a> Run<'a> {
             return;
         };
         if c == tasking::INTERRUPT {
+            return;
+        }
+        if self.m.sched.threads[c].wait == tasking::Wait::Terminated {
+            // The caller was aborted during the rendezvous: its frames are
+            // gone (their slots may be above the stack's top), nothing to
+            // copy back or to wake.
             return;
         }
         for (i, (v, mode)) in params.iter().enumerate() {
