@@ -1940,6 +1940,20 @@ impl<'a> Run<'a> {
                 }
             }};
         }
+        // Enters a called frame: the running code is saved with its resume
+        // point, and the callee's code starts.
+        macro_rules! push_frame {
+            ($code:expr, $info:expr) => {
+                frames.push(Frame {
+                    code: std::mem::replace(&mut cur, $code),
+                    pc,
+                    call: Some($info),
+                    current: current_base,
+                });
+                current_base = self.m.current.len();
+                pc = 0;
+            };
+        }
         macro_rules! reload {
             () => {
                 lvl = cur.level;
@@ -2264,14 +2278,7 @@ impl<'a> Run<'a> {
                 Op::Call(f, args, ops, d, span) => {
                     match self.push_call(cache, *f, args, ops, *d, *span) {
                         Ok((code, info)) => {
-                            frames.push(Frame {
-                                code: std::mem::replace(&mut cur, code),
-                                pc,
-                                call: Some(info),
-                                current: current_base,
-                            });
-                            current_base = self.m.current.len();
-                            pc = 0;
+                            push_frame!(code, info);
                             reload!();
                             continue;
                         }
@@ -2502,14 +2509,7 @@ impl<'a> Run<'a> {
                     break 'slow;
                 }
                 if let Some((code, info)) = enter.take() {
-                    frames.push(Frame {
-                        code: std::mem::replace(&mut cur, code),
-                        pc,
-                        call: Some(info),
-                        current: current_base,
-                    });
-                    current_base = self.m.current.len();
-                    pc = 0;
+                    push_frame!(code, info);
                     break 'slow;
                 }
                 let Err(flow) = r else { break 'slow };
