@@ -1728,59 +1728,45 @@ impl Run<'_> {
     }
 
     /// Whether evaluating `e` again gives an equal value and does nothing
-    /// else (no call, no allocator): then an `others` that covers many
+    /// else (no call, no allocator, no check against bounds that are not
+    /// static, which evaluates them): then an `others` that covers many
     /// components is evaluated once, not once per component (RM 4.3.3(23)
-    /// asks for the latter, which only a call or an allocator could tell
-    /// apart; nothing else runs between the components' evaluations).
+    /// asks for the latter, which only such effects could tell apart;
+    /// nothing else runs between the components' evaluations). The
+    /// engine's [`vm::effects_unless`] decides, with aggregates and range
+    /// checks judged here.
     fn repeatable(&self, e: &Ex) -> bool {
-        match &e.kind {
-            ExKind::ArrayAgg(a) => {
-                let bounds_pure = match self.c.types.array(a.ty) {
-                    Some((_, _, Some(bs))) => bs
-                        .iter()
-                        .all(|(l, h)| self.repeatable(l) && self.repeatable(h)),
-                    _ => true,
-                };
-                bounds_pure
-                    && match &a.kind {
-                        ArrayAggKind::Positional(items, others) => {
-                            items.iter().all(|i| self.repeatable(i))
-                                && others.as_deref().is_none_or(|o| self.repeatable(o))
-                        }
-                        ArrayAggKind::Named(choices, others) => {
-                            choices.iter().all(|(rs, v)| {
-                                self.repeatable(v)
-                                    && rs
-                                        .iter()
-                                        .all(|(l, h)| self.repeatable(l) && self.repeatable(h))
-                            }) && others.as_deref().is_none_or(|o| self.repeatable(o))
-                        }
-                    }
-            }
-            ExKind::Int(_) | ExKind::Real(_) | ExKind::Str(_) | ExKind::Null | ExKind::Var(_) => {
-                true
-            }
-            ExKind::IntBin(_, a, b)
-            | ExKind::FloatBin(_, a, b)
-            | ExKind::Cmp(_, a, b)
-            | ExKind::Eq(_, a, b)
-            | ExKind::Logic(_, a, b) => self.repeatable(a) && self.repeatable(b),
-            ExKind::Not(a)
-            | ExKind::IntNeg(a)
-            | ExKind::FloatNeg(a)
-            | ExKind::IntAbs(a)
-            | ExKind::FloatAbs(a)
-            | ExKind::IntToFloat(a)
-            | ExKind::FloatToInt(a)
-            | ExKind::Field(a, _) => self.repeatable(a),
-            // A check against bounds that are not static evaluates them
-            // (they may call a function).
-            ExKind::RangeCheck(a, t) => {
+        !vm::effects_unless(e, &|x| match &x.kind {
+            ExKind::ArrayAgg(a) => Some(!self.repeatable_agg(a)),
+            ExKind::RangeCheck(_, t) => {
                 let info = self.c.types.get(*t);
-                (info.static_range.is_some() || info.static_frange.is_some()) && self.repeatable(a)
+                (info.static_range.is_none() && info.static_frange.is_none()).then_some(true)
             }
-            _ => false,
-        }
+            _ => None,
+        })
+    }
+
+    /// [`Self::repeatable`] for an array aggregate: its type's bounds and
+    /// its parts.
+    fn repeatable_agg(&self, a: &ArrayAgg) -> bool {
+        let both = |(l, h): &(Ex, Ex)| self.repeatable(l) && self.repeatable(h);
+        let bounds = match self.c.types.array(a.ty) {
+            Some((_, _, Some(bs))) => bs.iter().all(both),
+            _ => true,
+        };
+        bounds
+            && match &a.kind {
+                ArrayAggKind::Positional(items, others) => {
+                    items.iter().all(|i| self.repeatable(i))
+                        && others.as_deref().is_none_or(|o| self.repeatable(o))
+                }
+                ArrayAggKind::Named(choices, others) => {
+                    choices
+                        .iter()
+                        .all(|(rs, v)| self.repeatable(v) && rs.iter().all(both))
+                        && others.as_deref().is_none_or(|o| self.repeatable(o))
+                }
+            }
     }
 
     /// Builds an array from its first-dimension components (elements, or rows

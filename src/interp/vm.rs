@@ -282,13 +282,23 @@ struct Compiler<'p, 'r> {
 /// True when evaluating `e` may run a call or other code with effects
 /// (so that an operand read before it must be copied first).
 fn effects(e: &Ex) -> bool {
+    effects_unless(e, &|_| None)
+}
+
+/// [`effects`], where `judge` has the first word on each node (`Some`:
+/// its answer for the node and everything under it).
+pub(crate) fn effects_unless(e: &Ex, judge: &dyn Fn(&Ex) -> Option<bool>) -> bool {
+    if let Some(answer) = judge(e) {
+        return answer;
+    }
+    let eff = |x: &Ex| effects_unless(x, judge);
     match &e.kind {
         ExKind::Int(_) | ExKind::Real(_) | ExKind::Var(_) | ExKind::Str(_) | ExKind::Null => false,
         ExKind::IntBin(_, a, b)
         | ExKind::FloatBin(_, a, b)
         | ExKind::Cmp(_, a, b)
         | ExKind::Eq(_, a, b)
-        | ExKind::Logic(_, a, b) => effects(a) || effects(b),
+        | ExKind::Logic(_, a, b) => eff(a) || eff(b),
         ExKind::Not(a)
         | ExKind::IntNeg(a)
         | ExKind::FloatNeg(a)
@@ -297,10 +307,10 @@ fn effects(e: &Ex) -> bool {
         | ExKind::IntToFloat(a)
         | ExKind::FloatToInt(a)
         | ExKind::RangeCheck(a, _)
-        | ExKind::Field(a, _) => effects(a),
-        ExKind::Index(p, idx) => effects(p) || idx.iter().any(effects),
-        ExKind::Concat(a, b, ..) | ExKind::ArrLogic(_, a, b) => effects(a) || effects(b),
-        ExKind::ArrNot(a) => effects(a),
+        | ExKind::Field(a, _) => eff(a),
+        ExKind::Index(p, idx) => eff(p) || idx.iter().any(eff),
+        ExKind::Concat(a, b, ..) | ExKind::ArrLogic(_, a, b) => eff(a) || eff(b),
+        ExKind::ArrNot(a) => eff(a),
         _ => true,
     }
 }
