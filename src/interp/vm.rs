@@ -205,9 +205,11 @@ pub(crate) struct Regs {
 struct SavedFrame {
     func: Option<FuncId>,
     pc: u32,
-    /// The callee: subprogram, result slot, base, top, level, saved display.
-    call: Option<(FuncId, Option<Var>, usize, usize, usize, usize)>,
     current: usize,
+    /// The callee's frame: base, top, and the display entry it replaced.
+    base: usize,
+    top: usize,
+    saved: usize,
 }
 
 impl Regs {
@@ -215,19 +217,15 @@ impl Regs {
     pub(crate) fn regions(&self) -> Vec<(usize, usize)> {
         self.root
             .into_iter()
-            .chain(
-                self.frames
-                    .iter()
-                    .filter_map(|f| f.call.map(|c| (c.2, c.3))),
-            )
+            .chain(self.frames.iter().map(|f| (f.base, f.top)))
             .collect()
     }
 }
 
 /// The live registers of the running thread, as the engine's loop holds them.
-type Live<'a> = (
-    Vec<Frame<'a>>,
-    Rc<Code<'a>>,
+type Live<'c, 'a> = (
+    Vec<Frame<'c, 'a>>,
+    &'c Code<'a>,
     u32,
     usize,
     Option<Box<Occurrence>>,
@@ -245,6 +243,8 @@ struct Region {
 pub(crate) struct Code<'p> {
     /// The subprogram whose body this is (None: level-0 code).
     func: Option<FuncId>,
+    /// Every parameter is `in`: a return has nothing to copy back.
+    all_in: bool,
     /// The static level of its frame (its own slots are `Var`s of it).
     level: u16,
     ops: Vec<Op<'p>>,
@@ -1092,10 +1092,11 @@ impl<'p> Compiler<'p, '_> {
         });
     }
 
-    fn finish(mut self, func: Option<FuncId>) -> Code<'p> {
+    fn finish(mut self, func: Option<FuncId>, all_in: bool) -> Code<'p> {
         self.ops.push(Op::FallOff);
         Code {
             func,
+            all_in,
             level: self.level,
             ops: self.ops,
             temps: self.max_temp,
@@ -1106,30 +1107,33 @@ impl<'p> Compiler<'p, '_> {
     }
 }
 
-/// A frame of the compiled engine. The level-0 code's frame has no
-/// subprogram.
-pub(crate) struct Frame<'p> {
-    code: Rc<Code<'p>>,
-    /// Where to go on in this frame's code when the callee returns.
+/// A call in progress in the compiled engine: what its return goes back
+/// to. The rest of the call is found without storing it: the callee (its
+/// subprogram, level, frame size, whether it has `out` parameters) is the
+/// code that runs until the return, and the arguments and result slot are
+/// in the call instruction before `pc` (see [`call_site`]).
+pub(crate) struct Frame<'c, 'p> {
+    /// The caller's code and where it goes on when the callee returns.
+    code: &'c Code<'p>,
     pc: u32,
-    /// The subprogram, its call's arguments and result slot, and what the
-    /// call saved.
-    call: Option<CallInfo<'p>>,
-    /// Current occurrences when the frame was entered.
+    /// Current occurrences when the callee was entered.
     current: usize,
+    /// Where the callee's frame begins, and the display entry of the
+    /// callee's level that the call replaced.
+    base: usize,
+    saved: usize,
 }
 
-struct CallInfo<'p> {
-    f: FuncId,
-    args: &'p [Arg],
-    dst: Option<Var>,
-    base: usize,
-    /// The end of the frame's slots.
-    top: usize,
-    level: usize,
-    saved: usize,
-    /// Every parameter is `in` (nothing to copy back on return).
-    all_in: bool,
+/// A called frame just set up: the callee's code, where its frame begins,
+/// and the display entry it replaced.
+type Entered<'c, 'a> = (&'c Code<'a>, usize, usize);
+
+/// The compiled bodies of a run, each compiled on its subprogram's first
+/// call. A body stays where it is while others are added, so the engine
+/// holds plain references to them.
+pub(crate) struct Codes<'c, 'a> {
+    arena: &'c typed_arena::Arena<Code<'a>>,
+    by_func: Vec<Option<&'c Code<'a>>>,
 }
 
 impl<'a> Run<'a> {
@@ -1175,14 +1179,20 @@ impl<'a> Run<'a> {
                 },
             ),
         }
-        c.finish(func)
+        let all_in = func.is_none_or(|f| {
+            self.c.funcs[f as usize]
+                .params
+                .iter()
+                .all(|p| p.mode == Mode::In)
+        });
+        c.finish(func, all_in)
     }
 
     /// The compiled body of `f`, compiled on its first call.
     #[inline(always)]
-    fn code_of(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>, f: FuncId) -> Rc<Code<'a>> {
-        match cache.get(f as usize) {
-            Some(Some(c)) => c.clone(),
+    fn code_of<'c>(&mut self, cache: &mut Codes<'c, 'a>, f: FuncId) -> &'c Code<'a> {
+        match cache.by_func.get(f as usize) {
+            Some(Some(c)) => c,
             _ => self.compile_first(cache, f),
         }
     }
@@ -1190,36 +1200,43 @@ impl<'a> Run<'a> {
     /// [`Self::code_of`] the first time.
     #[cold]
     #[inline(never)]
-    fn compile_first(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>, f: FuncId) -> Rc<Code<'a>> {
+    fn compile_first<'c>(&mut self, cache: &mut Codes<'c, 'a>, f: FuncId) -> &'c Code<'a> {
         let i = f as usize;
-        if cache.len() <= i {
-            cache.resize(self.c.funcs.len().max(i + 1), None);
+        if cache.by_func.len() <= i {
+            cache.by_func.resize(self.c.funcs.len().max(i + 1), None);
         }
-        if let Some(c) = &cache[i] {
-            return c.clone();
+        if let Some(c) = cache.by_func[i] {
+            return c;
         }
         let sub = &self.c.funcs[i];
         let body = sub.body.as_deref().expect("a subprogram with a body");
         let own = sub.nslots.max(sub.params.len() as u32);
-        let code = Rc::new(self.compile(sub.level, own, Compiled::Body(body), Some(f)));
-        cache[i] = Some(code.clone());
+        let code: &'c Code<'a> =
+            cache
+                .arena
+                .alloc(self.compile(sub.level, own, Compiled::Body(body), Some(f)));
+        cache.by_func[i] = Some(code);
         code
     }
 
     /// Runs level-0 statements, then the main subprogram, in the compiled
     /// engine.
     pub(crate) fn run_compiled(&mut self, stmts: &'a [Stmt], main: Option<FuncId>) -> R<()> {
-        let mut cache = Vec::new();
+        let arena = typed_arena::Arena::new();
+        let mut cache = Codes {
+            arena: &arena,
+            by_func: Vec::new(),
+        };
         let own = self.c.globals;
         for (a, t) in std::mem::take(&mut self.m.pending_irqs) {
             self.deliver(a, t);
         }
-        let code = Rc::new(self.compile(0, own, Compiled::Stmts(stmts), None));
+        let code = arena.alloc(self.compile(0, own, Compiled::Stmts(stmts), None));
         let mut r = self.exec_code(&mut cache, code);
         if r.is_ok()
             && let Some(f) = main
         {
-            let code = Rc::new(self.compile(0, own, Compiled::Main(f), None));
+            let code = arena.alloc(self.compile(0, own, Compiled::Main(f), None));
             r = self.exec_code(&mut cache, code);
         }
         // The environment waits for the library-level tasks, also after an
@@ -1234,8 +1251,9 @@ impl<'a> Run<'a> {
             } else {
                 Op::AwaitAll
             };
-            let code = Rc::new(Code {
+            let code = arena.alloc(Code {
                 func: None,
+                all_in: true,
                 level: 0,
                 ops: vec![last, Op::FallOff],
                 temps: 0,
@@ -1252,15 +1270,14 @@ impl<'a> Run<'a> {
 
     /// Pushes the frame of a call of `f` whose arguments are in `ops`.
     #[inline(always)]
-    fn push_call(
+    fn push_call<'c>(
         &mut self,
-        cache: &mut Vec<Option<Rc<Code<'a>>>>,
+        cache: &mut Codes<'c, 'a>,
         f: FuncId,
-        args: &'a [Arg],
         ops: &[Var],
-        d: Option<Var>,
+        (lvl, fp): (u16, usize),
         span: Span,
-    ) -> R<(Rc<Code<'a>>, CallInfo<'a>)> {
+    ) -> R<Entered<'c, 'a>> {
         if self.m.depth >= MAX_DEPTH {
             return Err(self.raise(
                 check::STORAGE_ERROR,
@@ -1272,9 +1289,15 @@ impl<'a> Run<'a> {
         let level = code.level as usize;
         let base = self.m.stack.len();
         // The arguments go straight into the new frame; the display is
-        // still the caller's while they are read.
+        // still the caller's while they are read (an operand of the
+        // caller's own frame, at `lvl`, begins at `fp`).
         for v in ops.iter() {
-            match &self.m.stack[self.sl(*v)] {
+            let i = if v.level == lvl {
+                fp + v.slot as usize
+            } else {
+                self.sl(*v)
+            };
+            match &self.m.stack[i] {
                 Value::Int(i) => {
                     let i = *i;
                     self.m.stack.push_int(i);
@@ -1285,11 +1308,11 @@ impl<'a> Run<'a> {
                 }
             }
         }
+        // A frame holds its parameters (see `compile_first`).
+        debug_assert!(code.frame as usize >= ops.len());
         let own = (code.frame - code.temps) as usize;
-        let top = base + (code.frame as usize).max(ops.len());
-        self.m
-            .stack
-            .grow_to_clearing(base + own.max(ops.len()), top);
+        let top = base + code.frame as usize;
+        self.m.stack.grow_to_clearing(base + own, top);
         if self.m.display.len() <= level {
             self.m.display.resize(level + 1, 0);
         }
@@ -1297,19 +1320,7 @@ impl<'a> Run<'a> {
         self.m.display[level] = base;
         self.m.depth += 1;
         self.m.calls.push(span);
-        Ok((
-            code,
-            CallInfo {
-                f,
-                args,
-                dst: d,
-                base,
-                top,
-                level,
-                saved,
-                all_in: args.iter().all(|a| a.mode == Mode::In),
-            },
-        ))
+        Ok((code, base, saved))
     }
 
     /// Whether this instruction runs a second time (after its thread was
@@ -1727,12 +1738,12 @@ impl<'a> Run<'a> {
 
     /// Makes `t` the running thread: its saved registers, or its body's
     /// first frame when it starts.
-    fn resume(
+    fn resume<'c>(
         &mut self,
-        cache: &mut Vec<Option<Rc<Code<'a>>>>,
-        level0: &Rc<Code<'a>>,
+        cache: &mut Codes<'c, 'a>,
+        level0: &'c Code<'a>,
         t: tasking::Tid,
-    ) -> R<Live<'a>> {
+    ) -> R<Live<'c, 'a>> {
         if self.m.trace.is_some() && self.m.sched.cur != t {
             let (from, to) = (
                 self.m.sched.threads[self.m.sched.cur].name.clone(),
@@ -1772,37 +1783,24 @@ impl<'a> Run<'a> {
 
     /// Live registers from saved ones: each frame's code compiled (or
     /// taken from this run's cache) again.
-    fn load_regs(
+    fn load_regs<'c>(
         &mut self,
-        cache: &mut Vec<Option<Rc<Code<'a>>>>,
-        level0: &Rc<Code<'a>>,
+        cache: &mut Codes<'c, 'a>,
+        level0: &'c Code<'a>,
         r: Regs,
-    ) -> Live<'a> {
+    ) -> Live<'c, 'a> {
         let mut fetch = |this: &mut Self, func: Option<FuncId>| match func {
             Some(f) => this.code_of(cache, f),
-            None => level0.clone(),
+            None => level0,
         };
         let mut frames = Vec::with_capacity(r.frames.len());
         for sf in r.frames {
-            let code = fetch(self, sf.func);
-            let call = sf.call.map(|(f, dst, base, top, level, saved)| {
-                let args = call_args(&code, sf.pc);
-                CallInfo {
-                    f,
-                    args,
-                    dst,
-                    base,
-                    top,
-                    level,
-                    saved,
-                    all_in: args.iter().all(|a| a.mode == Mode::In),
-                }
-            });
             frames.push(Frame {
-                code,
+                code: fetch(self, sf.func),
                 pc: sf.pc,
-                call,
                 current: sf.current,
+                base: sf.base,
+                saved: sf.saved,
             });
         }
         let cur = fetch(self, r.cur);
@@ -1821,11 +1819,11 @@ impl<'a> Run<'a> {
     }
 
     /// Switches to the next ready thread after the running one ended.
-    fn next_thread(
+    fn next_thread<'c>(
         &mut self,
-        cache: &mut Vec<Option<Rc<Code<'a>>>>,
-        level0: &Rc<Code<'a>>,
-    ) -> R<Live<'a>> {
+        cache: &mut Codes<'c, 'a>,
+        level0: &'c Code<'a>,
+    ) -> R<Live<'c, 'a>> {
         let next = loop {
             if let Some(n) = self.m.sched.pick() {
                 break n;
@@ -1924,16 +1922,16 @@ impl<'a> Run<'a> {
     }
 
     /// Runs level-0 code to its end.
-    fn exec_code(&mut self, cache: &mut Vec<Option<Rc<Code<'a>>>>, code: Rc<Code<'a>>) -> R<()> {
+    fn exec_code<'c>(&mut self, cache: &mut Codes<'c, 'a>, code: &'c Code<'a>) -> R<()> {
         let need = self.c.globals as usize + code.temps as usize;
         self.m.stack.grow_to(need);
-        let mut frames: Vec<Frame<'a>> = Vec::new();
-        let level0 = code.clone();
+        let mut frames: Vec<Frame<'c, 'a>> = Vec::new();
+        let level0 = code;
         let mut cur = code;
         let mut pc: u32 = 0;
         let mut current_base = self.m.current.len();
         let mut pending: Option<Box<Occurrence>> = None;
-        let mut enter: Option<(Rc<Code<'a>>, CallInfo<'a>)> = None;
+        let mut enter: Option<Entered<'c, 'a>> = None;
         // A task's own frame (None: the main program's code).
         let mut root: Option<(usize, usize)> = None;
         // The running code's level and where its frame begins: an operand
@@ -1953,12 +1951,14 @@ impl<'a> Run<'a> {
         // Enters a called frame: the running code is saved with its resume
         // point, and the callee's code starts.
         macro_rules! push_frame {
-            ($code:expr, $info:expr) => {
+            ($entered:expr) => {
+                let (code, base, saved) = $entered;
                 frames.push(Frame {
-                    code: std::mem::replace(&mut cur, $code),
+                    code: std::mem::replace(&mut cur, code),
                     pc,
-                    call: Some($info),
                     current: current_base,
+                    base,
+                    saved,
                 });
                 current_base = self.m.current.len();
                 pc = 0;
@@ -2285,11 +2285,14 @@ impl<'a> Run<'a> {
                         }
                     })
                 }
-                Op::Call(f, args, ops, d, span) => {
-                    match self.push_call(cache, *f, args, ops, *d, *span) {
-                        Ok((code, info)) => {
-                            push_frame!(code, info);
-                            reload!();
+                Op::Call(f, _, ops, _, span) => {
+                    match self.push_call(cache, *f, ops, (lvl, fp), *span) {
+                        Ok(entered) => {
+                            let base = entered.1;
+                            push_frame!(entered);
+                            // The callee's frame is the running one.
+                            lvl = cur.level;
+                            fp = base;
                             continue;
                         }
                         Err(e) => Err(e),
@@ -2308,12 +2311,10 @@ impl<'a> Run<'a> {
                     // A return from a call without `out` parameters: the
                     // frame goes, the value lands (everything else takes
                     // the long way below).
-                    if let Some(frame) = frames.pop_if(|f| matches!(&f.call, Some(i) if i.all_in)) {
-                        let dst = match &frame.call {
-                            Some(i) => i.dst,
-                            None => None,
-                        };
-                        self.pop_frame(&frame, current_base);
+                    let frame = if cur.all_in { frames.pop() } else { None };
+                    if let Some(frame) = frame {
+                        let (_, dst) = call_site(&frame.code, frame.pc);
+                        self.pop_frame(&frame, &cur, current_base);
                         cur = frame.code;
                         pc = frame.pc;
                         current_base = frame.current;
@@ -2439,7 +2440,7 @@ impl<'a> Run<'a> {
                     Ok(ProtStep::Body) => {
                         let sub = &self.c.prots[ec.kind as usize].entries[ec.entry as usize];
                         let body = sub.body.expect("an entry body");
-                        match self.push_call(cache, body, ec.args, &ec.ops, None, ec.span) {
+                        match self.push_call(cache, body, &ec.ops, (lvl, fp), ec.span) {
                             Ok(e) => {
                                 enter = Some(e);
                                 Ok(())
@@ -2515,11 +2516,11 @@ impl<'a> Run<'a> {
                         }
                     };
                     (frames, cur, pc, current_base, pending, root) =
-                        self.resume(cache, &level0, next)?;
+                        self.resume(cache, level0, next)?;
                     break 'slow;
                 }
-                if let Some((code, info)) = enter.take() {
-                    push_frame!(code, info);
+                if let Some(entered) = enter.take() {
+                    push_frame!(entered);
                     break 'slow;
                 }
                 let Err(flow) = r else { break 'slow };
@@ -2537,8 +2538,9 @@ impl<'a> Run<'a> {
                             // Not a loop of this code (the user's stop): leave
                             // every frame.
                             while let Some(f) = frames.pop() {
-                                self.pop_frame(&f, current_base);
+                                self.pop_frame(&f, &cur, current_base);
                                 current_base = f.current;
+                                cur = f.code;
                             }
                             return Err(Flow::Exit(id));
                         }
@@ -2556,25 +2558,26 @@ impl<'a> Run<'a> {
                                 // The end of a task body.
                                 self.task_ends(root, false);
                                 (frames, cur, pc, current_base, pending, root) =
-                                    self.next_thread(cache, &level0)?;
+                                    self.next_thread(cache, level0)?;
                                 break;
                             };
-                            let info = frame.call.as_ref().expect("a called frame");
+                            let (args, dst) = call_site(&frame.code, frame.pc);
                             // Copy-out values live in the frame.
                             let mut outs = Vec::new();
-                            for (i, a) in info.args.iter().enumerate() {
+                            for (i, a) in args.iter().enumerate() {
                                 if a.mode != Mode::In {
                                     outs.push((
                                         a,
-                                        std::mem::take(&mut self.m.stack[info.base + i]),
+                                        std::mem::take(&mut self.m.stack[frame.base + i]),
                                     ));
                                 }
                             }
-                            self.pop_frame(&frame, current_base);
+                            let f = cur.func.expect("a called frame");
+                            self.pop_frame(&frame, &cur, current_base);
                             cur = frame.code;
                             pc = frame.pc;
                             current_base = frame.current;
-                            let sub = &self.c.funcs[info.f as usize];
+                            let sub = &self.c.funcs[f as usize];
                             let r = if fell_off && sub.ret.is_some() {
                                 Err(self.raise(
                                     check::PROGRAM_ERROR,
@@ -2589,7 +2592,7 @@ impl<'a> Run<'a> {
                                         }
                                         self.assign(&a.value, v)?;
                                     }
-                                    if let Some(d) = info.dst {
+                                    if let Some(d) = dst {
                                         self.put(d, value.unwrap_or_default());
                                     }
                                     Ok(())
@@ -2617,10 +2620,10 @@ impl<'a> Run<'a> {
                                 // An exception ends a task silently.
                                 self.task_ends(root, true);
                                 (frames, cur, pc, current_base, pending, root) =
-                                    self.next_thread(cache, &level0)?;
+                                    self.next_thread(cache, level0)?;
                                 break;
                             };
-                            self.pop_frame(&frame, current_base);
+                            self.pop_frame(&frame, &cur, current_base);
                             cur = frame.code;
                             pc = frame.pc;
                             current_base = frame.current;
@@ -2633,17 +2636,15 @@ impl<'a> Run<'a> {
         }
     }
 
-    /// Leaves a called frame: its slots, display entry, depth, call place,
-    /// and the occurrences it made current (back to `entry`, their number
-    /// when it was entered); no copy-out.
+    /// Leaves the frame of a call to `callee`: its slots, display entry,
+    /// depth, call place, and the occurrences it made current (back to
+    /// `entry`, their number when it was entered); no copy-out.
     #[inline(always)]
-    fn pop_frame(&mut self, f: &Frame<'a>, entry: usize) {
-        if let Some(info) = &f.call {
-            self.free_frame(info.base, info.top);
-            self.m.display[info.level] = info.saved;
-            self.m.depth -= 1;
-            self.m.calls.pop();
-        }
+    fn pop_frame(&mut self, f: &Frame<'_, 'a>, callee: &Code<'a>, entry: usize) {
+        self.free_frame(f.base, f.base + callee.frame as usize);
+        self.m.display[callee.level as usize] = f.saved;
+        self.m.depth -= 1;
+        self.m.calls.pop();
         self.m.current.truncate(entry);
     }
 }
@@ -2660,23 +2661,32 @@ fn set(slot: &mut Value, v: Value) {
 
 /// Saves the running thread's registers (see [`Regs`]).
 fn save_regs(
-    frames: &mut Vec<Frame<'_>>,
-    cur: &Rc<Code<'_>>,
+    frames: &mut Vec<Frame<'_, '_>>,
+    cur: &Code<'_>,
     pc: u32,
     current_base: usize,
     pending: Option<Box<Occurrence>>,
     root: Option<(usize, usize)>,
 ) -> Regs {
+    // Each frame's callee is the next frame's code, the last one's the
+    // running code.
+    let callees: Vec<u32> = frames
+        .iter()
+        .skip(1)
+        .map(|f| f.code.frame)
+        .chain([cur.frame])
+        .collect();
     Regs {
         frames: frames
             .drain(..)
-            .map(|f| SavedFrame {
+            .zip(callees)
+            .map(|(f, size)| SavedFrame {
                 func: f.code.func,
                 pc: f.pc,
-                call: f
-                    .call
-                    .map(|c| (c.f, c.dst, c.base, c.top, c.level, c.saved)),
                 current: f.current,
+                base: f.base,
+                top: f.base + size as usize,
+                saved: f.saved,
             })
             .collect(),
         cur: cur.func,
@@ -2687,13 +2697,14 @@ fn save_regs(
     }
 }
 
-/// The arguments of the call instruction before `pc` (a frame's resume
-/// point).
-fn call_args<'a>(code: &Code<'a>, pc: u32) -> &'a [Arg] {
+/// The arguments and result slot of the call instruction before `pc` (a
+/// frame's resume point).
+#[inline(always)]
+fn call_site<'a>(code: &Code<'a>, pc: u32) -> (&'a [Arg], Option<Var>) {
     match code.ops.get(pc as usize - 1) {
-        Some(Op::Call(_, args, ..)) => args,
-        Some(Op::ProtEntry(e)) => e.args,
-        _ => &[],
+        Some(Op::Call(_, args, _, dst, _)) => (args, *dst),
+        Some(Op::ProtEntry(e)) => (e.args, None),
+        _ => (&[], None),
     }
 }
 
