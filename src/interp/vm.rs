@@ -2313,8 +2313,8 @@ impl<'a> Run<'a> {
                     // the long way below).
                     let frame = if cur.all_in { frames.pop() } else { None };
                     if let Some(frame) = frame {
-                        let (_, dst) = call_site(&frame.code, frame.pc);
-                        self.pop_frame(&frame, &cur, current_base);
+                        let (_, dst) = call_site(frame.code, frame.pc);
+                        self.pop_frame(&frame, cur, current_base);
                         cur = frame.code;
                         pc = frame.pc;
                         current_base = frame.current;
@@ -2497,7 +2497,7 @@ impl<'a> Run<'a> {
                         th.rerun = true;
                     }
                     let me = self.m.sched.cur;
-                    let regs = save_regs(&mut frames, &cur, pc, current_base, pending.take(), root);
+                    let regs = save_regs(&mut frames, cur, pc, current_base, pending.take(), root);
                     if self.m.sched.threads[me].wait == tasking::Wait::Terminated && me != 0 {
                         for (b, t) in regs.regions() {
                             self.free_frame(b, t);
@@ -2538,7 +2538,7 @@ impl<'a> Run<'a> {
                             // Not a loop of this code (the user's stop): leave
                             // every frame.
                             while let Some(f) = frames.pop() {
-                                self.pop_frame(&f, &cur, current_base);
+                                self.pop_frame(&f, cur, current_base);
                                 current_base = f.current;
                                 cur = f.code;
                             }
@@ -2561,7 +2561,7 @@ impl<'a> Run<'a> {
                                     self.next_thread(cache, level0)?;
                                 break;
                             };
-                            let (args, dst) = call_site(&frame.code, frame.pc);
+                            let (args, dst) = call_site(frame.code, frame.pc);
                             // Copy-out values live in the frame.
                             let mut outs = Vec::new();
                             for (i, a) in args.iter().enumerate() {
@@ -2573,7 +2573,7 @@ impl<'a> Run<'a> {
                                 }
                             }
                             let f = cur.func.expect("a called frame");
-                            self.pop_frame(&frame, &cur, current_base);
+                            self.pop_frame(&frame, cur, current_base);
                             cur = frame.code;
                             pc = frame.pc;
                             current_base = frame.current;
@@ -2623,7 +2623,7 @@ impl<'a> Run<'a> {
                                     self.next_thread(cache, level0)?;
                                 break;
                             };
-                            self.pop_frame(&frame, &cur, current_base);
+                            self.pop_frame(&frame, cur, current_base);
                             cur = frame.code;
                             pc = frame.pc;
                             current_base = frame.current;
