@@ -5,10 +5,12 @@ use crate::syntax::ast::StmtKind as S;
 
 impl Checker {
     pub(super) fn stmts(&mut self, ss: &[ast::Stmt]) -> Vec<Stmt> {
-        let mut out = Vec::new();
+        let mut out = Vec::with_capacity(ss.len());
         for s in ss {
             self.stmt(s, &mut out);
         }
+        // Exact size: a long program's statements are most of its memory.
+        out.shrink_to_fit();
         out
     }
 
@@ -20,11 +22,15 @@ impl Checker {
         let mut stmts = Vec::new();
         if self.consume_ast {
             let ss = std::mem::take(&mut *b.stmts.borrow_mut());
+            // About one checked statement per statement: no doubling.
+            stmts.reserve_exact(ss.len());
             for s in ss {
                 self.stmt(&s, &mut stmts);
             }
         } else {
-            for s in b.stmts.borrow().iter() {
+            let ss = b.stmts.borrow();
+            stmts.reserve_exact(ss.len());
+            for s in ss.iter() {
                 self.stmt(s, &mut stmts);
             }
         }
@@ -154,7 +160,7 @@ impl Checker {
                 None => return,
             },
             S::If { arms, els } => {
-                let mut out_arms = Vec::new();
+                let mut out_arms = Vec::with_capacity(arms.len());
                 for (c, body) in arms {
                     let c = self.cond(c);
                     let b = self.scoped_stmts(body);

@@ -1094,6 +1094,10 @@ impl<'p> Compiler<'p, '_> {
 
     fn finish(mut self, func: Option<FuncId>, all_in: bool) -> Code<'p> {
         self.ops.push(Op::FallOff);
+        // Exact sizes: the main body of a long program is compiled once.
+        self.ops.shrink_to_fit();
+        self.regions.shrink_to_fit();
+        self.exits.shrink_to_fit();
         Code {
             func,
             all_in,

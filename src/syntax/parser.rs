@@ -144,6 +144,21 @@ fn mk(kind: ExprKind, span: Span) -> Expr {
     Expr { kind, span }
 }
 
+/// A collected list at its exact size: the repeated parsers grow their
+/// `Vec` by doubling, and a long program's syntax tree is mostly lists.
+fn exact<T>(mut v: Vec<T>) -> Vec<T> {
+    v.shrink_to_fit();
+    v
+}
+
+/// The arms of an `if`: the first, then the `elsif`s.
+fn first_and<C, B>(c: C, b: B, rest: Vec<(C, B)>) -> Vec<(C, B)> {
+    let mut arms = Vec::with_capacity(rest.len() + 1);
+    arms.push((c, b));
+    arms.extend(rest);
+    arms
+}
+
 fn join(a: Span, b: Span) -> Span {
     Span {
         start: a.start.min(b.start),
@@ -300,11 +315,10 @@ fn cond_expr<'t, I: TokIn<'t>>(
                 .collect::<Vec<_>>(),
         )
         .then(kw!(Else).ignore_then(expr.clone()).or_not())
-        .map_with(|(((c, t), mut rest), els), e| {
-            rest.insert(0, (c, t));
+        .map_with(|(((c, t), rest), els), e| {
             mk(
                 ExprKind::If {
-                    arms: rest,
+                    arms: first_and(c, t, rest),
                     els: els.map(Box::new),
                 },
                 e.span(),
@@ -507,7 +521,8 @@ fn name_with<'t, I: TokIn<'t>>(
         .or(arg
             .separated_by(just(Token::Comma))
             .at_least(1)
-            .collect::<Vec<_>>())
+            .collect::<Vec<_>>()
+            .map(exact))
         .delimited_by(just(Token::LParen), just(Token::RParen))
         .map(Suffix::Args),
     ));
@@ -874,6 +889,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .ignore_then(stmt.clone())
         .repeated()
         .collect::<Vec<_>>()
+        .map(exact)
         .boxed();
     let decls = decls_end()
         .not()
@@ -954,9 +970,9 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
         .then(kw!(Else).ignore_then(stmts.clone()).or_not())
         .then(closing(Kw::If, empty()).map(|((), missing)| missing))
         .validate(unclosed!("if"))
-        .map(|(((c, t), mut rest), els)| {
-            rest.insert(0, (c, t));
-            StmtKind::If { arms: rest, els }
+        .map(|(((c, t), rest), els)| StmtKind::If {
+            arms: first_and(c, t, rest),
+            els,
         });
     let case_stmt = kw!(Case)
         .ignore_then(expr.clone())
