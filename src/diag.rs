@@ -9,14 +9,39 @@ use std::fmt::Write as _;
 pub type FileId = u32;
 
 /// Byte offsets into one source, with the source's id: the same type is used by
-/// the lexer, chumsky, the checker, the interpreter and ariadne.
-pub type Span = chumsky::span::SimpleSpan<usize, FileId>;
+/// the lexer, chumsky, the checker, the interpreter and ariadne. The offsets
+/// are `u32` (12 bytes a span, not 24: the syntax tree, the checked program
+/// and the compiled code hold one per node); a source is at most 4 GiB.
+pub type Span = chumsky::span::SimpleSpan<u32, FileId>;
 
 pub fn span(file: FileId, start: usize, end: usize) -> Span {
     Span {
-        start,
-        end,
+        start: offset(start),
+        end: offset(end),
         context: file,
+    }
+}
+
+/// A byte offset as a span keeps it (saturating past 4 GiB).
+pub fn offset(i: usize) -> u32 {
+    u32::try_from(i).unwrap_or(u32::MAX)
+}
+
+/// A span's offsets as indices into its text.
+pub trait Offsets {
+    fn lo(&self) -> usize;
+    fn hi(&self) -> usize;
+    fn range(&self) -> std::ops::Range<usize> {
+        self.lo()..self.hi()
+    }
+}
+
+impl Offsets for Span {
+    fn lo(&self) -> usize {
+        self.start as usize
+    }
+    fn hi(&self) -> usize {
+        self.end as usize
     }
 }
 
@@ -231,8 +256,8 @@ impl<'a> ariadne::Cache<FileId> for Cache<'a> {
 
 fn clamp(sources: &Sources, s: Span) -> (FileId, std::ops::Range<usize>) {
     let len = sources.text(s.context).len();
-    let start = s.start.min(len);
-    let end = s.end.clamp(start, len);
+    let start = s.lo().min(len);
+    let end = s.hi().clamp(start, len);
     (s.context, start..end)
 }
 
@@ -243,7 +268,7 @@ pub fn render(diags: &[Diagnostic], sources: &Sources, color: bool) -> String {
     let mut cache = Cache(sources, std::collections::HashMap::new());
     for d in diags {
         let primary = clamp(sources, d.span);
-        let (line, col) = sources.line_col(d.span.context, d.span.start);
+        let (line, col) = sources.line_col(d.span.context, d.span.lo());
         // The first line is `FILE:LINE:COL: error: message`, the form editors
         // and grep understand; ariadne's snippet follows.
         let (severity, message) = d.severity_and_message();
@@ -292,7 +317,7 @@ pub fn render(diags: &[Diagnostic], sources: &Sources, color: bool) -> String {
 
 /// The first line of a diagnostic (`file:line:col: error: message`), for logs and tests.
 pub fn one_line(d: &Diagnostic, sources: &Sources) -> String {
-    let (line, col) = sources.line_col(d.span.context, d.span.start);
+    let (line, col) = sources.line_col(d.span.context, d.span.lo());
     let (severity, message) = d.severity_and_message();
     let mut s = String::new();
     let _ = write!(

@@ -3,6 +3,7 @@
 
 use super::tasks::BodyKind;
 use super::*;
+use crate::diag::Offsets as _;
 use crate::syntax::ast::{DeclKind, TypeDef};
 
 impl Checker {
@@ -889,12 +890,12 @@ impl Checker {
         let Some(t) = self.texts.get(&span.context) else {
             return span;
         };
-        let Some(text) = t.get(span.start..span.end.min(t.len())) else {
+        let Some(text) = t.get(span.lo()..span.hi().min(t.len())) else {
             return span;
         };
         match text.to_ascii_lowercase().rfind("end") {
             Some(i) => Span {
-                start: span.start + i,
+                start: span.start + crate::diag::offset(i),
                 end: span.end,
                 context: span.context,
             },

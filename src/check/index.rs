@@ -12,6 +12,7 @@
 use super::ir::{ExcId, FuncId, Var};
 use super::types::TypeId;
 use super::{Checker, Entity};
+use crate::diag::Offsets as _;
 use crate::diag::Span;
 use std::collections::HashMap;
 
@@ -103,7 +104,7 @@ impl Index {
     /// The declaration a use at `offset` of source `file` refers to, or the
     /// declaration whose name is there.
     pub fn def_at(&self, file: u32, offset: usize) -> Option<u32> {
-        let hit = |s: &Span| s.context == file && s.start <= offset && offset <= s.end;
+        let hit = |s: &Span| s.context == file && s.lo() <= offset && offset <= s.hi();
         self.refs
             .iter()
             .filter(|r| hit(&r.span))
@@ -121,7 +122,7 @@ impl Index {
     pub fn type_at(&self, file: u32, offset: usize) -> Option<(Span, TypeId)> {
         self.types
             .iter()
-            .filter(|(s, _)| s.context == file && s.start <= offset && offset < s.end)
+            .filter(|(s, _)| s.context == file && s.lo() <= offset && offset < s.hi())
             .min_by_key(|(s, _)| s.end - s.start)
             .copied()
     }

@@ -5,6 +5,7 @@
 //! The checker keeps its state between calls, so that the REPL can check one
 //! entry at a time against everything declared before.
 
+use crate::diag::Offsets as _;
 mod decl;
 pub mod exact;
 mod expr;
@@ -118,7 +119,7 @@ pub struct Checker {
     unit_path: Vec<String>,
     /// The exact value of each static real expression the checker folded
     /// or took from a named number, by the span of its `Real` node.
-    exact_reals: HashMap<(usize, usize, u32), exact::Exact>,
+    exact_reals: HashMap<(u32, u32, u32), exact::Exact>,
     pub diags: Vec<Diagnostic>,
     /// Per subprogram being checked (one per level above 0): its local
     /// variables, where each is declared, and whether it has been read
@@ -177,7 +178,7 @@ pub struct Checker {
 /// A node of the expression being checked: its source range and its kind.
 /// A clone of a node (the operands of a user operator become call
 /// arguments) has the same key and the same meaning.
-type MemoKey = (usize, usize, u32, std::mem::Discriminant<ast::ExprKind>);
+type MemoKey = (u32, u32, u32, std::mem::Discriminant<ast::ExprKind>);
 
 pub const CONSTRAINT_ERROR: ExcId = 0;
 pub const PROGRAM_ERROR: ExcId = 1;
@@ -308,7 +309,7 @@ impl Checker {
     fn snippet(&self, s: Span) -> String {
         self.texts
             .get(&s.context)
-            .and_then(|t| t.get(s.start..s.end))
+            .and_then(|t| t.get(s.range()))
             .unwrap_or("?")
             .to_string()
     }
@@ -710,7 +711,10 @@ impl Checker {
                 ast::TopItem::Decl(d) => d.span,
                 ast::TopItem::Stmt(s) => s.span,
             };
-            crate::diag::span(sp.context, sp.end, sp.end)
+            Span {
+                start: sp.end,
+                ..sp
+            }
         });
         self.activate_library_tasks(&mut out, end);
         (out, main)
@@ -742,7 +746,10 @@ impl Checker {
         if std::mem::take(&mut self.library_tasks) {
             out.push(Stmt {
                 kind: StmtKind::Activate,
-                span: crate::diag::span(at.context, at.start, at.start),
+                span: Span {
+                    end: at.start,
+                    ..at
+                },
             });
         }
     }

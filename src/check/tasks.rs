@@ -6,6 +6,7 @@
 
 use super::expr::mode_text;
 use super::*;
+use crate::diag::Offsets as _;
 
 /// What kind of body [`Checker::check_body`] checks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -1259,7 +1260,7 @@ impl Checker {
         let sp = self.funcs[f as usize].span;
         match self.texts.get(&sp.context) {
             Some(t) => {
-                let before = &t[..sp.start.min(t.len())];
+                let before = &t[..sp.lo().min(t.len())];
                 let line = before.matches('\n').count() + 1;
                 let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
                 format!(" (declared at {line}:{col})")

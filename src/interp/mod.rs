@@ -6,6 +6,7 @@
 //! in which every name is already a slot or an index: nothing here looks a
 //! name up by string.
 
+use crate::diag::Offsets as _;
 pub mod builtins;
 pub mod memory;
 mod stack;
@@ -141,7 +142,7 @@ impl ServiceCx<'_> {
 fn location_in(files: &[(String, Vec<usize>)], s: Span) -> String {
     match files.get(s.context as usize) {
         Some((name, starts)) => {
-            let line = starts.partition_point(|&x| x <= s.start);
+            let line = starts.partition_point(|&x| x <= s.lo());
             format!("{name}:{line}")
         }
         None => String::new(),

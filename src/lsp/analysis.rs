@@ -4,6 +4,7 @@
 //! embedded stdlib once ([`Base`]).
 
 use crate::check::Checker;
+use crate::diag::Offsets as _;
 use crate::diag::{Diagnostic, FileId, Sources, Span};
 use crate::syntax::ast;
 use std::path::{Path, PathBuf};
@@ -136,10 +137,7 @@ impl Analysis {
 
     /// The text of a span of any source (the document or the stdlib).
     pub fn span_text(&self, s: Span) -> &str {
-        self.sources
-            .text(s.context)
-            .get(s.start..s.end)
-            .unwrap_or("")
+        self.sources.text(s.context).get(s.range()).unwrap_or("")
     }
 }
 
@@ -162,7 +160,7 @@ fn parse_what_parses(
     let cuts: Vec<usize> = tokens
         .iter()
         .filter(|(t, s)| *t == Token::Semi && s.end <= first)
-        .map(|(_, s)| s.end)
+        .map(|(_, s)| s.hi())
         .collect();
     const CLOSERS: [&str; 5] = [
         "",
@@ -227,6 +225,6 @@ impl LineIndex {
     }
 
     pub fn range(&self, text: &str, s: Span) -> lsp_types::Range {
-        lsp_types::Range::new(self.position(text, s.start), self.position(text, s.end))
+        lsp_types::Range::new(self.position(text, s.lo()), self.position(text, s.hi()))
     }
 }

@@ -8,6 +8,7 @@ use super::features::{self, service_doc, service_of};
 use crate::check::Entity;
 use crate::check::index::DefKind;
 use crate::check::types::TypeId;
+use crate::diag::Offsets as _;
 use crate::diag::Span;
 use crate::syntax::ast;
 use lsp_types::{CompletionItemKind as CK, InsertTextFormat};
@@ -232,17 +233,17 @@ fn regions(unit: &ast::CompilationUnit) -> Vec<Span> {
 /// those declared before it whose enclosing region holds it.
 pub fn visible_defs(a: &Analysis, offset: usize) -> Vec<u32> {
     let regions = a.unit.as_ref().map(regions).unwrap_or_default();
-    let inside = |r: &Span, s: usize, e: usize| r.start <= s && e <= r.end;
+    let inside = |r: &Span, s: usize, e: usize| r.lo() <= s && e <= r.hi();
     let mut v = Vec::new();
     for (i, d) in a.checker.index.defs.iter().enumerate() {
-        if d.span.context != a.file || d.kind == DefKind::Field || d.span.start > offset {
+        if d.span.context != a.file || d.kind == DefKind::Field || d.span.lo() > offset {
             continue;
         }
         // A subprogram or package is declared in the region around its own.
         let own = matches!(d.kind, DefKind::Subprogram | DefKind::Package);
         let owner = regions
             .iter()
-            .filter(|r| inside(r, d.span.start, d.span.end) && !(own && r.start == d.decl.start))
+            .filter(|r| inside(r, d.span.lo(), d.span.hi()) && !(own && r.start == d.decl.start))
             .min_by_key(|r| r.end - r.start);
         // A parameter is visible in its body only (not after a spec).
         if d.kind == DefKind::Parameter && owner.is_none_or(|r| r.start != d.decl.start) {

@@ -5,6 +5,7 @@
 use super::analysis::{Analysis, LineIndex};
 use crate::check::Entity;
 use crate::check::index::{Def, DefKind};
+use crate::diag::Offsets as _;
 use crate::diag::Span;
 use crate::services::table::{self, Service};
 use crate::syntax::ast;
@@ -123,7 +124,7 @@ fn comment_beside(text: &str, end: usize) -> Option<&str> {
 fn decl_text(a: &Analysis, s: Span) -> String {
     const MAX: usize = 15;
     let src = a.sources.text(s.context);
-    let start = s.start.min(src.len());
+    let start = s.lo().min(src.len());
     let indent = src[..start]
         .rsplit('\n')
         .next()
@@ -152,7 +153,7 @@ pub fn hover(a: &Analysis, offset: usize) -> Option<(String, Span)> {
             .index
             .refs
             .iter()
-            .filter(|r| r.span.context == a.file && r.span.start <= offset && offset <= r.span.end)
+            .filter(|r| r.span.context == a.file && r.span.lo() <= offset && offset <= r.span.hi())
             .map(|r| r.span)
             .min_by_key(|s| s.end - s.start)
             .unwrap_or(d.span);
@@ -202,8 +203,8 @@ pub fn hover(a: &Analysis, offset: usize) -> Option<(String, Span)> {
 /// What hover says about a declaration.
 pub fn describe_def(a: &Analysis, d: &Def) -> String {
     let src = a.sources.text(d.span.context);
-    let mut doc = comment_above(src, d.decl.start);
-    if let Some(c) = comment_beside(src, d.decl.end) {
+    let mut doc = comment_above(src, d.decl.lo());
+    if let Some(c) = comment_beside(src, d.decl.hi()) {
         if !doc.is_empty() {
             doc.push('\n');
         }

@@ -3,6 +3,7 @@
 //! the session logic in `super` needs none.
 
 use super::Repl;
+use crate::diag::Offsets as _;
 use crate::syntax::lexer::lex;
 use crate::syntax::token::Token;
 use rustyline::completion::{Completer, Pair};
@@ -117,11 +118,11 @@ impl Highlighter for AdaHelper {
         let mut out = String::new();
         let mut last = 0;
         for (t, s) in tokens {
-            if s.start < last || s.end > line.len() {
+            if s.lo() < last || s.hi() > line.len() {
                 continue;
             }
-            out.push_str(&line[last..s.start]);
-            let text = &line[s.start..s.end];
+            out.push_str(&line[last..s.lo()]);
+            let text = &line[s.range()];
             let color = match t {
                 Token::Kw(_) => Some("1;34"),
                 Token::Str(_) | Token::Char(_) => Some("32"),
@@ -133,7 +134,7 @@ impl Highlighter for AdaHelper {
                 Some(c) => out.push_str(&format!("\x1b[{c}m{text}\x1b[0m")),
                 None => out.push_str(text),
             }
-            last = s.end;
+            last = s.hi();
         }
         out.push_str(&line[last..]);
         Cow::Owned(out)

@@ -3,6 +3,7 @@
 //! while lexing goes on.
 
 use super::token::{IntLit, Kw, Token};
+use crate::diag::Offsets as _;
 use crate::diag::{Diagnostic, FileId, Span, span};
 use logos::Logos;
 
@@ -150,7 +151,7 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                     let tok = Token::Str(keep[1..].replace("\"\"", "\"").into());
                     if cut.is_some() {
                         toks.push((tok, sp));
-                        base = sp.end;
+                        base = sp.hi();
                         continue 'restart;
                     }
                     tok
@@ -449,11 +450,16 @@ mod tests {
         let (t, d) = lex(src, 0);
         let got: Vec<(String, &str)> = d
             .iter()
-            .map(|d| (d.message.clone(), &src[d.span.start..d.span.end]))
+            .map(|d| {
+                (
+                    d.message.clone(),
+                    &src[d.span.start as usize..d.span.end as usize],
+                )
+            })
             .collect();
         let toks: Vec<(Token, &str)> = t
             .iter()
-            .map(|(tok, sp)| (tok.clone(), &src[sp.start..sp.end]))
+            .map(|(tok, sp)| (tok.clone(), &src[sp.start as usize..sp.end as usize]))
             .collect();
         assert_eq!(
             got,

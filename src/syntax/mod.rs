@@ -17,7 +17,7 @@ pub fn parse_source(src: &str, file: FileId) -> (Option<ast::CompilationUnit>, V
         if d.message.contains(parser::OPENER_AT)
             && let Some((at, _)) = d.notes.first()
         {
-            let (line, col) = crate::diag::line_col_in(src, at.start);
+            let (line, col) = crate::diag::line_col_in(src, at.start as usize);
             d.message = d
                 .message
                 .replace(parser::OPENER_AT, &format!("{line}:{col}"));

@@ -2014,6 +2014,7 @@ pub fn parse(
     file: FileId,
     src_len: usize,
 ) -> (Option<CompilationUnit>, Vec<Diagnostic>) {
+    let src_len = crate::diag::offset(src_len);
     let eoi = Span {
         start: src_len,
         end: src_len,
@@ -2045,7 +2046,7 @@ pub fn parse(
 
 /// The file ended inside a `loop`, `if` or `case`: name the construct and
 /// point at it rather than at the end of the file.
-fn explain_unclosed(diags: &mut [Diagnostic], tokens: &[(Token, Span)], src_len: usize) {
+fn explain_unclosed(diags: &mut [Diagnostic], tokens: &[(Token, Span)], src_len: u32) {
     let Some(d) = diags
         .iter_mut()
         .find(|d| d.span.start >= src_len && d.label == "end of input")
@@ -2102,6 +2103,7 @@ const UNFINISHED_NOTE: &str = "the text ends here";
 /// Parses a whole entry as one expression (optionally ending in `;`), for
 /// the REPL. `None` if it is not exactly an expression.
 pub fn parse_expr_entry(tokens: &[(Token, Span)], file: FileId, src_len: usize) -> Option<Expr> {
+    let src_len = crate::diag::offset(src_len);
     let eoi = Span {
         start: src_len,
         end: src_len,
@@ -2120,6 +2122,7 @@ pub fn parse_expr_entry(tokens: &[(Token, Span)], file: FileId, src_len: usize) 
 /// True if the error list only says the input ended too early (for the REPL's
 /// continuation prompt).
 pub fn is_unfinished(diags: &[Diagnostic], src_len: usize) -> bool {
+    let src_len = crate::diag::offset(src_len);
     // The input ran out inside a construct; other errors it caused on the
     // way (after recovery) do not make it finished.
     diags.iter().any(|d| {
@@ -2148,7 +2151,7 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
         RichReason::Custom(msg) if msg.starts_with(UNCLOSED) => {
             let mut words = msg[UNCLOSED.len_utf8()..].split(' ');
             let word = words.next().unwrap_or("loop").to_string();
-            let start: usize = words.next().and_then(|w| w.parse().ok()).unwrap_or(0);
+            let start: u32 = words.next().and_then(|w| w.parse().ok()).unwrap_or(0);
             // The construct's own keyword (after a label, `for ... `, `while ...`).
             let opener = tokens
                 .iter()

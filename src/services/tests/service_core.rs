@@ -128,7 +128,7 @@ fn a_service_exception_is_raised_at_the_call_and_the_state_stays_with_the_sessio
                 d.message
             );
             assert_eq!(
-                s.sources.line_col(d.span.context, d.span.start).0,
+                s.sources.line_col(d.span.context, d.span.start as usize).0,
                 3,
                 "{}",
                 d.message
