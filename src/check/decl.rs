@@ -3,7 +3,6 @@
 
 use super::tasks::BodyKind;
 use super::*;
-use crate::diag::Offsets as _;
 use crate::syntax::ast::{DeclKind, TypeDef};
 
 impl Checker {

@@ -6,7 +6,6 @@
 
 use super::expr::mode_text;
 use super::*;
-use crate::diag::Offsets as _;
 
 /// What kind of body [`Checker::check_body`] checks.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
