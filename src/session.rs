@@ -361,7 +361,13 @@ impl Session {
         let id = self.sources.add(name, text);
         self.machine.add_source(id, name, text);
         self.checker.add_text(id, self.sources.shared(id));
-        let (unit, mut diags) = crate::syntax::parse_source(text, id);
+        // A long program's bodies are parsed as they are checked (the
+        // stdlib's are short).
+        let (unit, mut diags) = if self.in_stdlib {
+            crate::syntax::parse_source(text, id)
+        } else {
+            crate::syntax::parse_source_lazy(text, id)
+        };
         let Some(unit) = unit else { return Err(diags) };
         use crate::syntax::ast::TopItem;
         let is_script = script || is_script_unit(&unit, self.in_stdlib || self.in_with_file);

@@ -20,7 +20,17 @@ impl Checker {
     /// shrinks as its checked form grows.
     pub(super) fn block(&mut self, b: &ast::Block) -> Body {
         let mut stmts = Vec::new();
-        if self.consume_ast {
+        if let Some(at) = b.lazy {
+            let text = self.texts.get(&at.context).cloned().unwrap_or_default();
+            let diags = crate::syntax::lazy_stmts(&text, at.context, at, |ss| {
+                for s in ss {
+                    self.stmt(&s, &mut stmts);
+                }
+            });
+            for d in diags {
+                self.err(d);
+            }
+        } else if self.consume_ast {
             let ss = std::mem::take(&mut *b.stmts.borrow_mut());
             // About one checked statement per statement: no doubling.
             stmts.reserve_exact(ss.len());

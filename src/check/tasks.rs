@@ -468,6 +468,7 @@ impl Checker {
             .into(),
             handlers: Vec::new(),
             span: b.barrier.span,
+            lazy: None,
         };
         self.check_body(
             barrier,

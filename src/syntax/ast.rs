@@ -336,6 +336,11 @@ pub struct Block {
     pub stmts: std::cell::RefCell<Vec<Stmt>>,
     pub handlers: Vec<Handler>,
     pub span: Span,
+    /// A subprogram body's statements not parsed yet: where they are in
+    /// the text (`stmts` is then empty). `adair check` and `run` parse a
+    /// file's bodies this way and the checker parses each a part at a time
+    /// as it lowers it (see `syntax::parse_source_lazy`).
+    pub lazy: Option<Span>,
 }
 
 #[derive(Clone, Debug, PartialEq)]

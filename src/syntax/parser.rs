@@ -872,7 +872,9 @@ struct Parsers<'t, I: TokIn<'t>> {
     stmt: Boxed<'t, 't, I, Stmt, Ex<'t>>,
 }
 
-fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
+/// The grammar. `lazy`: a subprogram body's statements are read but not
+/// built (see [`Block::lazy`]).
+fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
     let mut decl: Recursive<chumsky::recursive::Indirect<'t, 't, I, Decl, Ex<'t>>> =
         Recursive::declare();
     let mut stmt: Recursive<chumsky::recursive::Indirect<'t, 't, I, Stmt, Ex<'t>>> =
@@ -929,8 +931,40 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
             stmts: stmts.into(),
             handlers: handlers.unwrap_or_default(),
             span: e.span(),
+            lazy: None,
         })
         .boxed();
+
+    // A subprogram body whose statements are only recognised: chumsky
+    // checks them without building them (`ignored`), and the block keeps
+    // where they are.
+    let body_block = if lazy {
+        kw!(Begin)
+            .ignore_then(
+                seq_end()
+                    .not()
+                    .rewind()
+                    .ignore_then(stmt.clone())
+                    .repeated()
+                    .ignored()
+                    .map_with(|(), e| e.span()),
+            )
+            .then(
+                kw!(Exception)
+                    .ignore_then(handler.clone().repeated().collect::<Vec<_>>())
+                    .or_not(),
+            )
+            .then_ignore(kw!(End))
+            .map_with(|(at, handlers), e| Block {
+                stmts: Vec::new().into(),
+                handlers: handlers.unwrap_or_default(),
+                span: e.span(),
+                lazy: Some(at),
+            })
+            .boxed()
+    } else {
+        block.clone()
+    };
 
     let end_name = name()
         .map(|n: Expr| (expr_text(&n), n.span))
@@ -1061,6 +1095,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                     stmts: stmts.into(),
                     handlers: handlers.unwrap_or_default(),
                     span: e.span(),
+                    lazy: None,
                 },
                 missing,
             )
@@ -1168,6 +1203,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                     stmts: stmts.into(),
                     handlers: handlers.unwrap_or_default(),
                     span: e.span(),
+                    lazy: None,
                 })
                 .or_not(),
         )
@@ -1628,6 +1664,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                             stmts: vec![ret].into(),
                             handlers: Vec::new(),
                             span,
+                            lazy: None,
                         },
                         None,
                         None,
@@ -1636,7 +1673,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
             kw!(Is)
                 .ignore_then(decls.clone())
                 .then(choice((
-                    block
+                    body_block
                         .clone()
                         .then(end_name.clone())
                         .then_ignore(semi())
@@ -1657,6 +1694,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                                 stmts: stmts.into(),
                                 handlers: handlers.unwrap_or_default(),
                                 span: e.span(),
+                                lazy: None,
                             };
                             (b, None, Some(at))
                         }),
@@ -1703,6 +1741,7 @@ fn parsers<'t, I: TokIn<'t>>() -> Parsers<'t, I> {
                         stmts: stmts.into(),
                         handlers: handlers.unwrap_or_default(),
                         span: e.span(),
+                        lazy: None,
                     })
                     .or_not(),
             )
@@ -1979,8 +2018,8 @@ pub fn expr_text(e: &Expr) -> String {
     }
 }
 
-fn compilation<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, CompilationUnit, Ex<'t>> {
-    let p = parsers::<I>();
+fn compilation<'t, I: TokIn<'t>>(lazy: bool) -> Boxed<'t, 't, I, CompilationUnit, Ex<'t>> {
+    let p = parsers::<I>(lazy);
     let with = kw!(Limited)
         .or_not()
         .ignore_then(kw!(With))
@@ -2014,6 +2053,17 @@ pub fn parse(
     file: FileId,
     src_len: usize,
 ) -> (Option<CompilationUnit>, Vec<Diagnostic>) {
+    parse_with(tokens, file, src_len, false)
+}
+
+/// [`parse`], the statements of subprogram bodies left unbuilt when `lazy`
+/// (see [`Block::lazy`]).
+pub fn parse_with(
+    tokens: &[(Token, Span)],
+    file: FileId,
+    src_len: usize,
+    lazy: bool,
+) -> (Option<CompilationUnit>, Vec<Diagnostic>) {
     let src_len = crate::diag::offset(src_len);
     let eoi = Span {
         start: src_len,
@@ -2024,7 +2074,7 @@ pub fn parse(
         return (None, vec![d]);
     }
     let input = tokens.map(eoi, |(t, s)| (t, s));
-    let (out, errs) = compilation().parse(input).into_output_errors();
+    let (out, errs) = compilation(lazy).parse(input).into_output_errors();
     let mut diags: Vec<Diagnostic> = errs.into_iter().map(|e| rich_to_diag(e, tokens)).collect();
     diags.dedup_by(|a, b| a.span == b.span);
     // Report a missing `;` at the end of the token it should follow.
@@ -2042,6 +2092,83 @@ pub fn parse(
     }
     explain_unclosed(&mut diags, tokens, src_len);
     (out, diags)
+}
+
+/// Parses a list of statements: a part of a lazy body (see
+/// [`Block::lazy`]), whose text ends at offset `end`.
+pub fn parse_stmts(
+    tokens: &[(Token, Span)],
+    file: FileId,
+    end: u32,
+) -> (Option<Vec<Stmt>>, Vec<Diagnostic>) {
+    let eoi = Span {
+        start: end,
+        end,
+        context: file,
+    };
+    if let Some(d) = too_deep(tokens) {
+        return (None, vec![d]);
+    }
+    let input = tokens.map(eoi, |(t, s)| (t, s));
+    let (out, errs) = parsers(false)
+        .stmt
+        .repeated()
+        .collect::<Vec<_>>()
+        .map(exact)
+        .then_ignore(chumsky::primitive::end())
+        .parse(input)
+        .into_output_errors();
+    let diags = errs.into_iter().map(|e| rich_to_diag(e, tokens)).collect();
+    (out, diags)
+}
+
+/// Where the statements of a lazy body (tokens `tokens`) may be cut into
+/// parts that parse alone: the ends of its own statements' `;`, about one
+/// every `every` tokens. The nesting is followed as the words that open
+/// and `end` close it; a cut it misjudges makes a part that does not
+/// parse, which is then parsed joined with the next (see
+/// `syntax::lazy_stmts`).
+pub fn statement_cuts(tokens: &[(Token, Span)], every: usize) -> Vec<u32> {
+    let mut cuts = Vec::new();
+    let mut open: Vec<Kw> = Vec::new();
+    let mut paren = 0usize;
+    let mut after_end = false;
+    let mut since = 0usize;
+    for (t, s) in tokens {
+        since += 1;
+        let was_end = std::mem::replace(&mut after_end, false);
+        match t {
+            Token::LParen => paren += 1,
+            Token::RParen => paren = paren.saturating_sub(1),
+            _ if paren > 0 => {}
+            Token::Kw(Kw::End) => {
+                open.pop();
+                after_end = true;
+            }
+            // `end if`, `end loop`, ...: the word names what ends.
+            Token::Kw(Kw::If | Kw::Case | Kw::Loop | Kw::Select | Kw::Record) if !was_end => {
+                if let Token::Kw(k) = t {
+                    open.push(*k);
+                }
+            }
+            Token::Kw(Kw::Do | Kw::Declare) => {
+                if let Token::Kw(k) = t {
+                    open.push(*k);
+                }
+            }
+            // A declare block's `begin` continues it.
+            Token::Kw(Kw::Begin) => match open.last_mut() {
+                Some(k @ Kw::Declare) => *k = Kw::Begin,
+                _ => open.push(Kw::Begin),
+            },
+            Token::Semi if open.is_empty() && since >= every => {
+                cuts.push(s.end);
+                since = 0;
+            }
+            _ => {}
+        }
+    }
+    cuts
 }
 
 /// The file ended inside a `loop`, `if` or `case`: name the construct and
