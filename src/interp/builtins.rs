@@ -47,12 +47,10 @@ const TABLE: &[(&str, Native)] = &[
     ("sin", |_, a, _| f1(a, f64::sin)),
     ("cos", |_, a, _| f1(a, f64::cos)),
     ("tan", |_, a, _| f1(a, f64::tan)),
-    ("cot", |_, a, _| f1(a, |x| 1.0 / x.tan())),
+    ("cot", cot),
     ("arcsin", arcsin),
     ("arccos", arccos),
-    ("arctan", |_, a, _| {
-        Ok(Some(Value::Real(a[0].real().atan2(a[1].real()))))
-    }),
+    ("arctan", arctan),
     ("exp", |_, a, _| f1(a, f64::exp)),
     ("log", log),
     ("log_base", log_base),
@@ -139,15 +137,39 @@ fn log(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
         return Err(argument_error(r, "Log of a negative number", span));
     }
     if x == 0.0 {
-        return Err(r.raise(check::CONSTRAINT_ERROR, "Log of zero", span));
+        return Err(pole(r, "Log of zero", span));
     }
     Ok(Some(Value::Real(x.ln())))
+}
+
+/// RM A.5.1: a pole of the function raises Constraint_Error.
+fn pole(r: &Run, what: &str, span: Span) -> Flow {
+    r.raise(check::CONSTRAINT_ERROR, what.to_string(), span)
+}
+
+fn cot(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let x = a[0].real();
+    if x == 0.0 {
+        return Err(pole(r, "Cot of zero", span));
+    }
+    Ok(Some(Value::Real(1.0 / x.tan())))
+}
+
+fn arctan(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
+    let (y, x) = (a[0].real(), a[1].real());
+    if y == 0.0 && x == 0.0 {
+        return Err(argument_error(r, "Arctan with both arguments zero", span));
+    }
+    Ok(Some(Value::Real(y.atan2(x))))
 }
 
 fn log_base(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let (x, b) = (a[0].real(), a[1].real());
     if x < 0.0 || b <= 0.0 || b == 1.0 {
         return Err(argument_error(r, "Log with a bad argument or base", span));
+    }
+    if x == 0.0 {
+        return Err(pole(r, "Log of zero", span));
     }
     Ok(Some(Value::Real(x.ln() / b.ln())))
 }
@@ -160,6 +182,9 @@ fn float_pow(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
             "\"**\" with a negative base or 0.0 ** 0.0",
             span,
         ));
+    }
+    if x == 0.0 && y < 0.0 {
+        return Err(pole(r, "\"**\" of 0.0 to a negative power", span));
     }
     Ok(Some(Value::Real(x.powf(y))))
 }
