@@ -2750,8 +2750,10 @@ impl Checker {
                     if !self.types.is_integer(x.ty) && x.ty != ERROR {
                         self.err(Diagnostic::ty(x.span, "`'Val` needs an integer"));
                     }
+                    // `S'Val` is a function of S's base type (RM 3.5.5): a
+                    // position outside a subtype's range is no error.
                     if let (Some(Static::Int(v)), Some((l, h))) =
-                        (self.static_value(&x), self.types.discrete_bounds(t))
+                        (self.static_value(&x), self.types.discrete_bounds(base))
                         && (v < l || v > h)
                     {
                         self.err(
@@ -2759,14 +2761,14 @@ impl Checker {
                                 x.span,
                                 format!(
                                     "{v} is not a position of `{}` (its positions are {l} .. {h})",
-                                    self.types.name(t)
+                                    self.types.name(base)
                                 ),
                             )
                             .with_label("static value out of range"),
                         );
                     }
                     let v = self.mk(ExKind::Attr(AttrOp::Val, vec![x]), base, sp);
-                    return self.coerce_force_check(v, t);
+                    return self.coerce_force_check(v, base);
                 }
                 "succ" | "pred" if self.types.is_discrete(t) => {
                     let x = arg(self, 0, Some(base));
@@ -2775,6 +2777,28 @@ impl Checker {
                     } else {
                         AttrOp::Pred
                     };
+                    // Past the base type's end with a static argument: a
+                    // compile-time error in GNAT too.
+                    if let (Some(Static::Int(v)), Some((l, h))) =
+                        (self.static_value(&x), self.types.discrete_bounds(base))
+                        && ((op == AttrOp::Succ && v >= h) || (op == AttrOp::Pred && v <= l))
+                    {
+                        let (end, which) = if op == AttrOp::Succ {
+                            ("last", "Succ")
+                        } else {
+                            ("first", "Pred")
+                        };
+                        self.err(
+                            Diagnostic::ty(
+                                x.span,
+                                format!(
+                                    "`'{which}` of the {end} value of `{}` has no value",
+                                    self.types.name(base)
+                                ),
+                            )
+                            .with_label("static value out of range"),
+                        );
+                    }
                     let v = self.mk(ExKind::Attr(op, vec![x]), base, sp);
                     return self.coerce_force_check(v, base);
                 }
