@@ -12,6 +12,36 @@ impl Checker {
         }
     }
 
+    /// [`Self::decls`] for a declarative part that must complete what it
+    /// declares (a body's, a block's, a package body's): a subprogram
+    /// declared in it without a body there is an error, as in GNAT
+    /// ("missing body"), not a `Program_Error` when it is called.
+    pub(super) fn decls_completed(&mut self, decls: &[ast::Decl], out: &mut Vec<Stmt>) {
+        let before = self.funcs.len();
+        self.decls(decls, out);
+        for d in decls {
+            let DeclKind::SubprogramDecl { spec, import: None } = &d.kind else {
+                continue;
+            };
+            let declared = self.funcs[before..]
+                .iter()
+                .position(|f| f.span == spec.span)
+                .map(|i| before + i);
+            if let Some(f) = declared
+                && self.funcs[f].body.is_none()
+                && self.imports[f].is_none()
+            {
+                let name = spec.name.display();
+                self.err(
+                    Diagnostic::name(spec.span, format!("`{name}` is declared but has no body"))
+                        .with_hint(format!(
+                            "write the body of `{name}` in the same declarative part"
+                        )),
+                );
+            }
+        }
+    }
+
     pub(super) fn decl(&mut self, d: &ast::Decl, out: &mut Vec<Stmt>) {
         let outer = self.cur_decl.replace(d.span);
         self.decl_inner(d, out);
@@ -861,7 +891,7 @@ impl Checker {
         }
         self.masters.push(false);
         let mut elab = Vec::new();
-        self.decls(decls, &mut elab);
+        self.decls_completed(decls, &mut elab);
         let inner = self.block(body);
         let creates = self.masters.pop().unwrap_or(false);
         let body_span = body.span;
@@ -1002,7 +1032,7 @@ impl Checker {
         self.push_scope();
         self.scopes.last_mut().expect("scope").package = Some((idx, true));
         self.unit_path.extend(name.split('.').map(str::to_string));
-        self.decls(&p.decls, out);
+        self.decls_completed(&p.decls, out);
         if let Some(init) = &p.init {
             let b = self.block(init);
             out.push(Stmt {

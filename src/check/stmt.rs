@@ -369,7 +369,7 @@ impl Checker {
                 }
                 let mut elab = Vec::new();
                 self.masters.push(false);
-                self.decls(decls, &mut elab);
+                self.decls_completed(decls, &mut elab);
                 let inner = self.block(body);
                 let creates = self.masters.pop().unwrap_or(false);
                 if label.is_some() {
