@@ -885,9 +885,15 @@ impl Checker {
                 None => self.declare(&p.name, e),
             }
         }
+        let outer_function_obj = self.prot_function_obj;
         if let BodyKind::Protected(k) = kind {
             self.prot_ctx.push((k, last));
             self.declare_components(k, last);
+            self.prot_function_obj = if self.funcs[f as usize].ret.is_some() {
+                last
+            } else {
+                None
+            };
         }
         self.masters.push(false);
         let mut elab = Vec::new();
@@ -899,6 +905,7 @@ impl Checker {
         if matches!(kind, BodyKind::Protected(_)) {
             self.prot_ctx.pop();
         }
+        self.prot_function_obj = outer_function_obj;
         self.unit_path.pop();
         self.pop_scope();
         let ctx = self.ctx.pop().expect("ctx");

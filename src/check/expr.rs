@@ -883,6 +883,20 @@ impl Checker {
                     return;
                 }
                 ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _, _) => e = p,
+                // A component of the object of a protected function.
+                ExKind::Deref(p) if matches!(p.kind, ExKind::Var(v) if Some(v) == self.prot_function_obj) =>
+                {
+                    let name = self.snippet(span);
+                    self.err(
+                        Diagnostic::ty(
+                            span,
+                            format!("`{name}` is a component of the protected object: a protected function cannot change it"),
+                        )
+                        .with_label(format!("used as {what}"))
+                        .with_hint("change it in a protected procedure or entry (a function only reads the object)"),
+                    );
+                    return;
+                }
                 ExKind::Deref(_) | ExKind::Error => return,
                 ExKind::Register(a) => {
                     if let Some((d, role)) = self.devices.lookup(*a)

@@ -159,6 +159,9 @@ pub struct Checker {
     /// The protected bodies being checked: the type and the slot of the
     /// object parameter of the operation being checked.
     prot_ctx: Vec<(u32, Option<Var>)>,
+    /// The object parameter of the protected function being checked: its
+    /// components are constants there (RM 9.5.1).
+    prot_function_obj: Option<Var>,
     /// Each protected type's subprograms: name, profile, real subprogram,
     /// whether it is a function.
     prot_members: Vec<Vec<(String, FuncId, FuncId, bool)>>,
@@ -229,6 +232,7 @@ impl Checker {
             task_ctx: Vec::new(),
             accepting: Vec::new(),
             prot_ctx: Vec::new(),
+            prot_function_obj: None,
             prot_members: Vec::new(),
             prot_real: HashMap::new(),
             masters: Vec::new(),
