@@ -2348,6 +2348,33 @@ impl Checker {
                 };
                 match (lo, hi) {
                     (Some(Static::Int(l)), Some(Static::Int(h))) => {
+                        // A choice outside the selector's static subtype
+                        // (RM 5.4(7); GNAT: "minimum allowed choice value").
+                        if l <= h
+                            && t != ERROR
+                            && let Some((lo, hi)) = self.types.discrete_bounds(t)
+                            && (l < lo || h > hi)
+                        {
+                            let name = self.types.name(t);
+                            let lits = self.types.enum_lits(t).map(|l| l.to_vec());
+                            let show = |v: i128| match &lits {
+                                Some(ls) if self.types.base(t) != CHARACTER => {
+                                    ls.get(v as usize).cloned().unwrap_or_default()
+                                }
+                                _ => v.to_string(),
+                            };
+                            self.err(
+                                Diagnostic::ty(
+                                    csp,
+                                    format!(
+                                        "this `case` choice is outside `{name}` ({} .. {})",
+                                        show(lo),
+                                        show(hi)
+                                    ),
+                                )
+                                .with_label("no value of the selector is here"),
+                            );
+                        }
                         let (l, h) = (l as i64, h as i64);
                         if l <= h {
                             if let Some(prev) = all.iter().find(|(a, b, _)| l <= *b && *a <= h) {
