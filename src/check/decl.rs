@@ -164,7 +164,13 @@ impl Checker {
                 if *what == "<error>" || *what == "pragma" {
                     return;
                 }
-                self.err(Diagnostic::unsupported(d.span, what));
+                let mut diag = Diagnostic::unsupported(d.span, what);
+                if *what == "a representation clause" {
+                    diag = diag.with_hint(
+                        "the representation clauses AdaIR reads are address clauses: `for Interrupt use at 8#340#;` binds an entry to an interrupt, `for Input use at 8#342#;` an object to a device register (tasks.md)",
+                    );
+                }
+                self.err(diag);
             }
             DeclKind::TaskSpec(t) => self.task_spec(t, d.span, out),
             DeclKind::TaskBody(b) => self.task_body(b, d.span),

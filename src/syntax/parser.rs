@@ -1292,6 +1292,13 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
         .then(ident())
         .then(semi())
         .map_with(|_, e| StmtKind::Decl(Box::new(unsupported(e.span(), "`goto`"))));
+    // A statement label `<<L>>` (labels exist for `goto` only).
+    let stmt_label = just(Token::Lt)
+        .then(just(Token::Lt))
+        .then(ident())
+        .then(just(Token::Gt))
+        .then(just(Token::Gt))
+        .map_with(|_, e| StmtKind::Decl(Box::new(unsupported(e.span(), "a statement label"))));
     let simple_stmt = expr
         .clone()
         .then(just(Token::Assign).ignore_then(expr.clone()).or_not())
@@ -1323,12 +1330,15 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
         kw!(Null).then(semi()).to(StmtKind::Null),
         if_stmt,
         case_stmt,
-        // An address clause among statements (script mode): `for R use at A;`.
+        // An address clause among statements (script mode): `for R use at
+        // A;`, or another representation clause (`for T'Size use 8;`).
         kw!(For)
             .then(ident())
+            .then(just(Token::Tick).then(ident()).or_not())
             .then(kw!(Use))
             .rewind()
             .ignore_then(decl_stmt.clone()),
+        stmt_label,
         loop_stmt,
         block_stmt,
         exit_stmt,
@@ -1837,6 +1847,31 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
         .then(expr.clone())
         .then_ignore(semi())
         .map(|(entry, address)| DeclKind::InterruptUse { entry, address });
+    // Representation clauses other than `use at`: read whole (a record
+    // representation to its `end record;`) and refused.
+    let rep_clause = kw!(For)
+        .ignore_then(ident())
+        .then_ignore(just(Token::Tick).then(ident()).or_not())
+        .then_ignore(kw!(Use))
+        .then_ignore(kw!(At).not().rewind())
+        .then_ignore(choice((
+            kw!(Record)
+                .then(any().and_is(kw!(End).then(kw!(Record)).not()).repeated())
+                .then(kw!(End))
+                .then(kw!(Record))
+                .then(semi())
+                .ignored(),
+            skip_to_semi(),
+        )))
+        .to(DeclKind::Unsupported("a representation clause"));
+    // `package body P is separate;` (and of a task or protected unit).
+    let separate_body = choice((kw!(Package), kw!(Task), kw!(Protected)))
+        .then(kw!(Body))
+        .then(ident().separated_by(just(Token::Dot)).at_least(1))
+        .then(kw!(Is))
+        .then(kw!(Separate))
+        .then(semi())
+        .to(DeclKind::Unsupported("a separate body"));
     let task = kw!(Task).ignore_then(choice((
         kw!(Body)
             .ignore_then(ident())
@@ -1968,6 +2003,7 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
 
     decl.define(
         choice((
+            separate_body,
             type_decl,
             subtype_decl,
             object_decl,
@@ -1977,6 +2013,7 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
             pragma,
             task,
             interrupt_use,
+            rep_clause,
             generic,
             protected,
             entry_body,
