@@ -550,13 +550,26 @@ impl Checker {
         let Some(&(real, k)) = self.prot_real.get(&f) else {
             return (f, args);
         };
-        match self.prot_ctx.iter().rev().find(|(p, _)| *p == k) {
+        let ctx = self.prot_ctx.iter().rev().find(|(p, _)| *p == k).copied();
+        match ctx {
             Some((_, Some(obj))) => {
+                // A protected function only reads its object (RM 9.5.1):
+                // it may not call a procedure of it.
+                if Some(obj) == self.prot_function_obj && self.funcs[real as usize].ret.is_none() {
+                    let name = self.funcs[real as usize].name.clone();
+                    self.err(
+                        Diagnostic::ty(
+                            span,
+                            format!("a protected function cannot call `{name}`, a protected procedure of its object"),
+                        )
+                        .with_hint("call it from a protected procedure or entry (a function only reads the object)"),
+                    );
+                }
                 let access = self.prot_access(k);
                 args.push(Arg {
                     mode: ast::Mode::In,
                     value: Ex {
-                        kind: ExKind::Var(*obj),
+                        kind: ExKind::Var(obj),
                         ty: access,
                         span,
                     },
