@@ -83,7 +83,14 @@ pub type Spanned = (Token, Span);
 /// Lexes a whole source. Always returns a token list (erroneous parts become
 /// [`Token::Error`] or a best guess) together with every lexical diagnostic.
 pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
-    let mut toks: Vec<Spanned> = Vec::new();
+    // A big source's tokens are counted first: the list is then allocated
+    // once at its size, not grown by doubling (which held up to three
+    // times the tokens' memory at once; issue 14).
+    let mut toks: Vec<Spanned> = if src.len() > 64 * 1024 {
+        Vec::with_capacity(Raw::lexer(src).count())
+    } else {
+        Vec::new()
+    };
     let mut diags = Vec::new();
     // A UTF-8 byte-order mark (editors on Windows write one) is not source.
     let mut base = if src.starts_with('\u{feff}') { 3 } else { 0 };
