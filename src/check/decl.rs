@@ -172,6 +172,12 @@ impl Checker {
                 }
                 self.err(diag);
             }
+            DeclKind::UnsupportedNamed(what, names) => {
+                self.err(Diagnostic::unsupported(d.span, what));
+                for n in names {
+                    self.unsupported_names.insert(n.key.to_string());
+                }
+            }
             DeclKind::TaskSpec(t) => self.task_spec(t, d.span, out),
             DeclKind::TaskBody(b) => self.task_body(b, d.span),
             DeclKind::ProtectedSpec(p) => self.protected_spec(p, out),

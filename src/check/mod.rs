@@ -162,6 +162,9 @@ pub struct Checker {
     /// The object parameter of the protected function being checked: its
     /// components are constants there (RM 9.5.1).
     prot_function_obj: Option<Var>,
+    /// Names an unsupported declaration would have declared (a generic
+    /// unit, its formals, an instance): a use of one is no second error.
+    unsupported_names: std::collections::HashSet<String>,
     /// Each protected type's subprograms: name, profile, real subprogram,
     /// whether it is a function.
     prot_members: Vec<Vec<(String, FuncId, FuncId, bool)>>,
@@ -233,6 +236,7 @@ impl Checker {
             accepting: Vec::new(),
             prot_ctx: Vec::new(),
             prot_function_obj: None,
+            unsupported_names: Default::default(),
             prot_members: Vec::new(),
             prot_real: HashMap::new(),
             masters: Vec::new(),
@@ -629,6 +633,9 @@ impl Checker {
     /// statements are allowed; returns the statements to run at level 0 and,
     /// for a main-procedure program, the main subprogram.
     pub fn check_unit(&mut self, unit: &ast::CompilationUnit) -> (Vec<Stmt>, Option<FuncId>) {
+        // (A name only a failed unit meant to declare is not declared
+        // afterwards: a later REPL entry that uses it is told so.)
+        self.unsupported_names.clear();
         let (tasks0, prots0) = (self.tasks.len(), self.prots.len());
         let r = self.check_unit_items(unit);
         // Every task and protected type declared here has its body here.
@@ -840,7 +847,7 @@ impl Checker {
                 if report {
                     self.index_use(id, &es);
                 }
-                if es.is_empty() && report {
+                if es.is_empty() && report && !self.unsupported_names.contains(&*id.key) {
                     let mut d = Diagnostic::name(id.span, format!("`{}` is not declared", id.name))
                         .with_label("undefined name");
                     if let Some(pkg) = self.package_declaring(&id.key) {

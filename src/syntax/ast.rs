@@ -109,6 +109,11 @@ pub enum DeclKind {
     Use(Vec<Name>),
     /// `X : T renames Y;` and friends are outside the subset; kept for messages.
     Unsupported(&'static str),
+    /// An unsupported declaration and the names it would declare (a
+    /// generic unit and its formals, an instance, a separate body): the
+    /// checker reports it once, and uses of these names raise no
+    /// follow-on "not declared".
+    UnsupportedNamed(&'static str, Vec<Ident>),
     TaskSpec(Box<TaskSpec>),
     TaskBody(Box<TaskBody>),
     /// `for E use at Addr;` (an interrupt entry or a device register).

@@ -1716,7 +1716,13 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
                 .map(|imp| SubTail::Decl(imp.flatten())),
         )))
         .validate(|(spec, rest), e, emitter| match rest {
-            SubTail::Unsupported(what) => DeclKind::Unsupported(what),
+            SubTail::Unsupported(what) => DeclKind::UnsupportedNamed(
+                what,
+                match &spec.name {
+                    Designator::Ident(i) => vec![i.clone()],
+                    _ => Vec::new(),
+                },
+            ),
             SubTail::Decl(import) => DeclKind::SubprogramDecl { spec, import },
             SubTail::Body(decls, body, end_name, missing) => {
                 if let Some(at) = missing {
@@ -1766,12 +1772,12 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
                     span: e.span(),
                 }))
             }),
-        name()
+        ident()
             .then_ignore(kw!(Is))
             .then_ignore(kw!(New))
-            .then(any().and_is(semi().not()).repeated())
+            .then_ignore(any().and_is(semi().not()).repeated())
             .then_ignore(semi())
-            .to(DeclKind::Unsupported("a generic instantiation")),
+            .map(|n| DeclKind::UnsupportedNamed("a generic instantiation", vec![n])),
         name()
             .then_ignore(kw!(Is))
             .then(decls.clone())
@@ -1928,16 +1934,45 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
                 DeclKind::TaskSpec(Box::new(spec))
             }),
     )));
+    // A generic unit: refused, with the names of its formal types and
+    // objects and of the unit itself kept (see `UnsupportedNamed`).
     let generic = kw!(Generic)
-        .then(
+        .ignore_then(
             any()
                 .and_is(
                     select! { Token::Kw(Kw::Procedure | Kw::Function | Kw::Package) => () }.not(),
                 )
-                .repeated(),
+                .map_with(|t, e| (t, e.span()))
+                .repeated()
+                .collect::<Vec<(Token, Span)>>(),
         )
-        .ignore_then(decl.clone())
-        .to(DeclKind::Unsupported("a generic unit"));
+        .then(decl.clone())
+        .map(|(formals, unit)| {
+            let mut names = Vec::new();
+            for (k, w) in formals.windows(2).enumerate() {
+                let is_type = matches!(w[0].0, Token::Kw(Kw::Type));
+                let before_colon = matches!(w[1].0, Token::Colon)
+                    && !matches!(
+                        formals.get(k.wrapping_sub(1)),
+                        Some((Token::Kw(Kw::Type), _))
+                    );
+                let (t, sp) = if is_type { &w[1] } else { &w[0] };
+                if (is_type || before_colon)
+                    && let Token::Ident(n) = t
+                {
+                    names.push(Ident::new(n, *sp));
+                }
+            }
+            match &unit.kind {
+                DeclKind::SubprogramDecl { spec, .. } => {
+                    if let Designator::Ident(i) = &spec.name {
+                        names.push(i.clone());
+                    }
+                }
+                _ => {}
+            }
+            DeclKind::UnsupportedNamed("a generic unit", names)
+        });
     let prot_op = choice((
         entry_decl.clone().map(|e| Some(ProtOp::Entry(e))),
         spec.clone()
