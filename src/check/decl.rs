@@ -889,9 +889,11 @@ impl Checker {
                 value: None,
             };
             match written.next() {
+                // As the body writes it (the same name as its declaration's
+                // in a legal completion; a duplicate body's own otherwise).
                 Some(id) => {
                     self.index_body_param(f, i as u32, id, &e);
-                    self.declare(&p.name, e);
+                    self.declare(&id.name, e);
                 }
                 // The hidden object parameter of a protected operation.
                 None => self.declare(&p.name, e),
