@@ -165,6 +165,10 @@ pub struct Checker {
     /// Names an unsupported declaration would have declared (a generic
     /// unit, its formals, an instance): a use of one is no second error.
     unsupported_names: std::collections::HashSet<String>,
+    /// "not declared" reports that a later declaration may explain: the
+    /// name, the report's index, and the depth of the scopes it was made in
+    /// that are still open.
+    undeclared: Vec<(String, usize, usize)>,
     /// Each protected type's subprograms: name, profile, real subprogram,
     /// whether it is a function.
     prot_members: Vec<Vec<(String, FuncId, FuncId, bool)>>,
@@ -237,6 +241,7 @@ impl Checker {
             prot_ctx: Vec::new(),
             prot_function_obj: None,
             unsupported_names: Default::default(),
+            undeclared: Vec::new(),
             prot_members: Vec::new(),
             prot_real: HashMap::new(),
             masters: Vec::new(),
@@ -350,6 +355,10 @@ impl Checker {
     }
     fn pop_scope(&mut self) {
         self.scopes.pop();
+        let depth = self.scopes.len();
+        for u in &mut self.undeclared {
+            u.2 = u.2.min(depth);
+        }
     }
 
     fn declare(&mut self, name: &str, e: Entity) {
@@ -411,6 +420,32 @@ impl Checker {
             }
         }
         self.index_def(&id.name, id.span, &e, None);
+        // A name reported "not declared" earlier in this scope (or one
+        // inside it): it was used before its declaration.
+        let depth = self.scopes.len();
+        let is_func = matches!(e, Entity::Func(_));
+        let (before, later): (Vec<_>, Vec<_>) = std::mem::take(&mut self.undeclared)
+            .into_iter()
+            .partition(|(k, _, d)| **k == *id.key && depth <= *d);
+        self.undeclared = later;
+        for (_, i, _) in before {
+            if let Some(d) = self.diags.get_mut(i) {
+                d.message = format!("`{}` is used before its declaration", id.name);
+                d.label = "used here before it is declared".into();
+                d.hint = Some(if is_func {
+                    format!(
+                        "declare `{}`'s specification before its first use (Ada resolves names in declaration order)",
+                        id.name
+                    )
+                } else {
+                    format!(
+                        "move the declaration of `{}` above its first use (Ada resolves names in declaration order)",
+                        id.name
+                    )
+                });
+                d.notes.push((id.span, "declared here".into()));
+            }
+        }
         self.declare(&id.name, e);
     }
 
@@ -858,7 +893,12 @@ impl Checker {
                     } else if let Some(s) = self.suggest(&id.key) {
                         d = d.with_hint(format!("did you mean `{s}`?"));
                     }
+                    let n = self.diags.len();
                     self.err(d);
+                    if self.diags.len() > n {
+                        self.undeclared
+                            .push((id.key.to_string(), n, self.scopes.len()));
+                    }
                 }
                 es
             }
@@ -1000,6 +1040,7 @@ impl Checker {
     /// Finishes a check: the level-0 statements and the slot count.
     pub fn take_diags(&mut self) -> Vec<Diagnostic> {
         self.diag_keys.clear();
+        self.undeclared.clear();
         std::mem::take(&mut self.diags)
     }
 
