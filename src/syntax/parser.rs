@@ -1963,13 +1963,10 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
                     names.push(Ident::new(n, *sp));
                 }
             }
-            match &unit.kind {
-                DeclKind::SubprogramDecl { spec, .. } => {
-                    if let Designator::Ident(i) = &spec.name {
-                        names.push(i.clone());
-                    }
-                }
-                _ => {}
+            if let DeclKind::SubprogramDecl { spec, .. } = &unit.kind
+                && let Designator::Ident(i) = &spec.name
+            {
+                names.push(i.clone());
             }
             DeclKind::UnsupportedNamed("a generic unit", names)
         });
