@@ -2430,6 +2430,29 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
             expected.dedup();
             // A missing `;` is the most common slip: say so, at the end of
             // the token it should follow.
+            // A `)` that closes no `(` (counted back to the statement's
+            // start) is the slip, not a missing `;`.
+            if matches!(e.found(), Some(Token::RParen)) {
+                let mut depth = 0i64;
+                for (t, _) in tokens
+                    .iter()
+                    .rev()
+                    .skip_while(|(_, s)| s.start >= span.start)
+                {
+                    match t {
+                        Token::Semi
+                        | Token::Kw(Kw::Begin | Kw::Is | Kw::Then | Kw::Else | Kw::Loop) => break,
+                        Token::RParen => depth += 1,
+                        Token::LParen => depth -= 1,
+                        _ => {}
+                    }
+                }
+                if depth >= 0 {
+                    return Diagnostic::syntax(span, "unexpected `)` without a matching `(`")
+                        .with_label("this `)` closes nothing")
+                        .with_hint("remove it, or add the `(` it should close");
+                }
+            }
             if expected.iter().any(|x| x == "`;`") && e.found().is_some() {
                 let prev = tokens
                     .iter()
