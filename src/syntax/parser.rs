@@ -2156,7 +2156,13 @@ pub fn parse_with(
                 end: p.end,
                 context: p.context,
             };
-            d.label = "expected `;` here".into();
+            // The word that is missing (`;`, `then`, `loop`, ...).
+            let word = d.message["missing ".len()..]
+                .split(' ')
+                .next()
+                .unwrap_or("`;`")
+                .to_string();
+            d.label = format!("expected {word} here");
         }
     }
     explain_unclosed(&mut diags, tokens, src_len);
