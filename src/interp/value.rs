@@ -414,13 +414,35 @@ pub fn value_int(s: &str) -> Option<i64> {
     }
 }
 
+/// `Float'Value`: as [`value_int`], and as GNAT also a point with no
+/// digit on one side (`.5`, `5.`, `16#.8#`), never on both.
 pub fn value_float(s: &str) -> Option<f64> {
     let t = s.trim_matches(|c: char| c == ' ' || c == '\t');
     let (neg, body) = match t.strip_prefix('-') {
         Some(r) => (true, r),
         None => (false, t.strip_prefix('+').unwrap_or(t)),
     };
-    match crate::syntax::lexer::numeric_literal(body)? {
+    // (In a based literal `E` is a digit; elsewhere it starts an exponent.)
+    let based = body.contains('#');
+    let digit = |c: Option<char>| {
+        c.is_some_and(|c| c.is_ascii_digit() || (based && c.is_ascii_alphanumeric()))
+    };
+    let mut full = String::with_capacity(body.len() + 2);
+    let chars: Vec<char> = body.chars().collect();
+    for (i, &c) in chars.iter().enumerate() {
+        let (before, after) = (
+            i.checked_sub(1).map(|j| chars[j]),
+            chars.get(i + 1).copied(),
+        );
+        if c == '.' && !digit(before) && digit(after) {
+            full.push('0');
+        }
+        full.push(c);
+        if c == '.' && digit(before) && !digit(after) {
+            full.push('0');
+        }
+    }
+    match crate::syntax::lexer::numeric_literal(&full)? {
         crate::syntax::token::Token::Real(v) => Some(if neg { -v } else { v }),
         crate::syntax::token::Token::Int(v) => {
             let v = v.get() as f64;
@@ -465,6 +487,16 @@ mod tests {
 
     #[test]
     fn values() {
+        // GNAT's Float'Value takes a point with digits on one side only.
+        assert_eq!(value_float(".5"), Some(0.5));
+        assert_eq!(value_float("5."), Some(5.0));
+        assert_eq!(value_float("-.5"), Some(-0.5));
+        assert_eq!(value_float("5.e2"), Some(500.0));
+        assert_eq!(value_float("16#.8#"), Some(0.5));
+        assert_eq!(value_float("16#E.#"), Some(14.0));
+        assert_eq!(value_float("."), None);
+        assert_eq!(value_float(".e5"), None);
+        assert_eq!(value_float("1..5"), None);
         assert_eq!(value_int(" +1_000 "), Some(1000));
         assert_eq!(value_int("16#FF#"), Some(255));
         assert_eq!(value_int("3e2"), Some(300));
