@@ -122,14 +122,14 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                 Ok(Raw::Decimal) => match decimal(text) {
                     Ok(t) => t,
                     Err(why) => {
-                        diags.push(Diagnostic::bad_number(sp, why));
+                        diags.push(number_error(sp, why, text));
                         Token::Error
                     }
                 },
                 Ok(Raw::Based) => match based(text) {
                     Ok(t) => t,
                     Err(why) => {
-                        diags.push(Diagnostic::bad_number(sp, why));
+                        diags.push(number_error(sp, why, text));
                         Token::Error
                     }
                 },
@@ -235,7 +235,13 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                 Err(()) => {
                     let c = text.chars().next().unwrap_or('?');
                     let mut d = Diagnostic::stray_char(sp, c);
-                    if c == '[' || c == ']' {
+                    if c == '@' {
+                        d = d.with_hint("`@` (Ada 2022's target name) is not part of AdaIR: write the name again, as in `Count := Count + 1;`");
+                    } else if c == '$' {
+                        d = d.with_hint(
+                            "delete it: AdaIR has no `$` (a hexadecimal literal is written 16#FF#)",
+                        );
+                    } else if c == '[' || c == ']' {
                         d = d.with_hint("Ada indexes arrays with parentheses: A (I)");
                     } else if c == '{' || c == '}' {
                         d = d.with_hint("Ada has no braces: blocks are `begin ... end;`");
@@ -323,6 +329,54 @@ fn decimal(text: &str) -> Result<Token, String> {
     }
 }
 
+/// A malformed numeric literal's diagnostic, with the fix when there is
+/// one.
+fn number_error(sp: Span, why: String, text: &str) -> Diagnostic {
+    let hint = if why.contains("negative exponent") {
+        // `2E-3` -> `2.0E-3`
+        let cut = text.find(['e', 'E']).unwrap_or(text.len());
+        Some(format!(
+            "for a Float, write `{}.0{}`",
+            &text[..cut],
+            &text[cut..]
+        ))
+    } else if why.starts_with("misplaced `_`") {
+        let mut fixed = String::new();
+        for c in text.chars() {
+            if c == '_' && (fixed.is_empty() || fixed.ends_with(['_', '.', '#'])) {
+                continue;
+            }
+            fixed.push(c);
+        }
+        let fixed = fixed
+            .trim_end_matches('_')
+            .replace("_.", ".")
+            .replace("_#", "#");
+        Some(format!("a `_` stands between two digits: `{fixed}`"))
+    } else if let Some(b) = why.split("of base ").nth(1) {
+        let base: u32 = b
+            .split(' ')
+            .next()
+            .and_then(|b| b.parse().ok())
+            .unwrap_or(10);
+        Some(if base <= 10 {
+            format!("the digits of base {base} are 0 .. {}", base - 1)
+        } else {
+            format!(
+                "the digits of base {base} are 0 .. 9 and A .. {}",
+                char::from(b'A' + (base - 11) as u8)
+            )
+        })
+    } else {
+        None
+    };
+    let d = Diagnostic::bad_number(sp, why);
+    match hint {
+        Some(h) => d.with_hint(h),
+        None => d,
+    }
+}
+
 fn based(text: &str) -> Result<Token, String> {
     let mut parts = text.splitn(3, '#');
     let base_s = parts.next().unwrap_or("");
@@ -358,7 +412,7 @@ fn based(text: &str) -> Result<Token, String> {
     };
     let digit = |c: char| -> Result<u32, String> {
         c.to_digit(base)
-            .ok_or_else(|| format!("digit `{c}` is not valid in base {base}"))
+            .ok_or_else(|| format!("`{c}` is not a digit of base {base} in `{text}`"))
     };
     if !digits_ok(ip) || fp.is_some_and(|f| !digits_ok(f)) {
         return Err(format!("misplaced `_` or missing digits in `{text}`"));
@@ -372,11 +426,11 @@ fn based(text: &str) -> Result<Token, String> {
             }
             let mut v: i128 = 0;
             for c in ip.chars().filter(|c| *c != '_') {
+                let d = digit(c)?;
                 v = v
                     .checked_mul(base as i128)
-                    .and_then(|v| v.checked_add(digit(c).ok()? as i128))
-                    .ok_or_else(|| format!("`{text}` is too large or has a bad digit"))?;
-                digit(c)?;
+                    .and_then(|v| v.checked_add(d as i128))
+                    .ok_or_else(|| format!("`{text}` is too large"))?;
             }
             for _ in 0..exp_val {
                 v = v
