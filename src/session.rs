@@ -539,6 +539,9 @@ impl Session {
         };
         let mut d =
             Diagnostic::new(Phase::Runtime, o.span, msg).with_label(format!("{name} raised here"));
+        for s in &o.reraised {
+            d = d.with_note(*s, "re-raised here by `raise;`");
+        }
         let real = |s: &Span| !(s.start == 0 && s.end == 0);
         // Consecutive calls from one place (recursion) are one note.
         let mut runs: Vec<(Span, usize)> = Vec::new();

@@ -297,6 +297,7 @@ impl Machine {
                     ),
                     span: crate::diag::span(0, 0, 0),
                     chain: Vec::new(),
+                    reraised: Vec::new(),
                 }));
             }
             self.reset_main();
@@ -345,6 +346,7 @@ impl Machine {
                 message: "interrupted (Ctrl-C): every task stopped".into(),
                 span: crate::diag::span(0, 0, 0),
                 chain: Vec::new(),
+                reraised: Vec::new(),
             })),
             Ok(()) | Err(Flow::Return(_)) | Err(Flow::Exit(_)) => Ok(()),
             Err(Flow::Raise(o)) => Err(o),
@@ -571,6 +573,7 @@ impl Run<'_> {
             message: msg.into(),
             span,
             chain,
+            reraised: Vec::new(),
         }))
     }
 
@@ -753,7 +756,11 @@ impl Run<'_> {
             StmtKind::Reraise => {
                 // The handler keeps the current occurrence in a hidden slot.
                 match self.m.current.last().cloned() {
-                    Some(o) => Err(Flow::Raise(Box::new((*o).clone()))),
+                    Some(o) => {
+                        let mut o = (*o).clone();
+                        o.reraised.push(s.span);
+                        Err(Flow::Raise(Box::new(o)))
+                    }
                     None => {
                         Err(self.raise(check::PROGRAM_ERROR, "no exception to re-raise", s.span))
                     }

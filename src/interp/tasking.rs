@@ -685,6 +685,7 @@ impl Run<'_> {
                     context: 0,
                 },
                 chain: Vec::new(),
+                reraised: Vec::new(),
             };
             self.m.sched.threads[c].outcome = Outcome::Error(Box::new(occ));
             self.m.sched.make_ready(c);
@@ -1011,6 +1012,7 @@ impl Run<'_> {
             message: msg,
             span: lines.first().map_or(crate::diag::span(0, 0, 0), |l| l.0),
             chain: lines.iter().map(|l| l.0).collect(),
+            reraised: Vec::new(),
         }))
     }
 }

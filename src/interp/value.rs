@@ -234,6 +234,8 @@ pub struct Occurrence {
     pub message: String,
     pub span: Span,
     pub chain: Vec<Span>,
+    /// Where a handler re-raised it (`raise;`), first first.
+    pub reraised: Vec<Span>,
 }
 
 /// `Integer'Image`: a leading blank for non-negative values.
