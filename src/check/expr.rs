@@ -94,6 +94,55 @@ impl Checker {
                     "make it text: `{tn}'Image ({})`",
                     self.snippet(ex.span)
                 ));
+            } else if self.types.base(ex.ty) == types::STRING
+                && (ti || tf || matches!(self.types.kind(self.types.base(t)), TypeKind::Enum(_)))
+            {
+                // Text where a number or an enumeration value is wanted.
+                let text = self.snippet(ex.span);
+                let lit = text.strip_prefix('"').and_then(|t| t.strip_suffix('"'));
+                let lits = self
+                    .types
+                    .enum_lits(t)
+                    .map(|l| l.to_vec())
+                    .unwrap_or_default();
+                let same = lit.and_then(|l| lits.iter().find(|x| x.eq_ignore_ascii_case(l)));
+                let hint = match (same, lit) {
+                    (Some(name), _) => format!(
+                        "write `{}` without quotes",
+                        self.spelled(&name.to_lowercase())
+                    ),
+                    (None, Some(l)) if (ti || tf) && !l.is_empty() => format!(
+                        "convert the text: `{}'Value ({text})`, or write the number `{l}`",
+                        self.types.name(t)
+                    ),
+                    _ => format!("convert the text: `{}'Value ({text})`", self.types.name(t)),
+                };
+                d = d.with_hint(hint);
+            } else if let ExKind::Int(v) = ex.kind
+                && self.types.is_universal(ex.ty)
+            {
+                // An integer literal where a Boolean or an enumeration
+                // value is wanted.
+                if self.types.base(t) == types::BOOLEAN {
+                    d = d.with_hint(format!(
+                        "write `{}` (Ada's Boolean is not a number)",
+                        if v == 0 { "False" } else { "True" }
+                    ));
+                } else if let Some(lits) = self.types.enum_lits(t).map(|l| l.to_vec())
+                    && self.types.base(t) != types::CHARACTER
+                {
+                    let names: Vec<String> = lits
+                        .iter()
+                        .take(6)
+                        .map(|l| format!("`{}`", self.spelled(&l.to_lowercase())))
+                        .collect();
+                    let more = if lits.len() > 6 { ", ..." } else { "" };
+                    d = d.with_hint(format!(
+                        "write one of {}{more} (or `{}'Val ({v})`)",
+                        names.join(", "),
+                        self.types.name(t)
+                    ));
+                }
             }
             self.err(d);
             ex.ty = ERROR;
