@@ -919,13 +919,14 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
             stmts,
             span: e.span(),
         });
+    // A block's handlers, if it has an `exception` part.
+    let handlers = kw!(Exception)
+        .ignore_then(handler.clone().repeated().collect::<Vec<_>>())
+        .or_not()
+        .boxed();
     let block = kw!(Begin)
         .ignore_then(stmts.clone())
-        .then(
-            kw!(Exception)
-                .ignore_then(handler.clone().repeated().collect::<Vec<_>>())
-                .or_not(),
-        )
+        .then(handlers.clone())
         .then_ignore(kw!(End))
         .map_with(|(stmts, handlers), e| Block {
             stmts: stmts.into(),
@@ -949,11 +950,7 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
                     .ignored()
                     .map_with(|(), e| e.span()),
             )
-            .then(
-                kw!(Exception)
-                    .ignore_then(handler.clone().repeated().collect::<Vec<_>>())
-                    .or_not(),
-            )
+            .then(handlers.clone())
             .then_ignore(kw!(End))
             .map_with(|(at, handlers), e| Block {
                 stmts: Vec::new().into(),
