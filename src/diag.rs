@@ -165,16 +165,18 @@ impl Diagnostic {
 pub struct Sources {
     /// Name and text; the text is shared with the checker (`shared`).
     files: Vec<(String, std::rc::Rc<str>)>,
-    /// The byte offset where each line of each file starts.
-    line_starts: Vec<Vec<usize>>,
+    /// The byte offset where each line of each file starts (`u32`, as
+    /// spans keep offsets: half the memory of a long program's table).
+    line_starts: Vec<Vec<u32>>,
 }
 
 impl Sources {
     pub fn add(&mut self, name: impl Into<String>, text: &str) -> FileId {
-        let text: std::rc::Rc<str> = text.into();
-        let mut starts = vec![0];
-        starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
-        self.line_starts.push(starts);
+        self.add_shared(name, text.into())
+    }
+    /// [`Self::add`] of a text already shared (no copy).
+    pub fn add_shared(&mut self, name: impl Into<String>, text: std::rc::Rc<str>) -> FileId {
+        self.line_starts.push(line_starts(&text));
         self.files.push((name.into(), text));
         (self.files.len() - 1) as FileId
     }
@@ -205,11 +207,19 @@ impl Sources {
             Some(starts) => {
                 let start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
                 let col = text[start..offset].chars().count() + 1;
-                (starts.partition_point(|&x| x <= offset), col)
+                (starts.partition_point(|&x| x as usize <= offset), col)
             }
             None => line_col_in(text, offset),
         }
     }
+}
+
+/// Where each line of `text` starts (past 4 GiB: saturated, see [`offset`]).
+pub fn line_starts(text: &str) -> Vec<u32> {
+    let mut starts = vec![0];
+    starts.extend(text.match_indices('\n').map(|(i, _)| offset(i + 1)));
+    starts.shrink_to_fit();
+    starts
 }
 
 /// 1-based line and column (in characters) of a byte offset in `text`,

@@ -205,11 +205,14 @@ fn color(choice: &str) -> bool {
     }
 }
 
-fn read(path: &PathBuf) -> Result<String, ExitCode> {
-    std::fs::read_to_string(path).map_err(|e| {
-        eprintln!("adair: cannot read {}: {e}", path.display());
-        ExitCode::from(2)
-    })
+/// A program file's text, shared with the session (held once).
+fn read(path: &PathBuf) -> Result<std::rc::Rc<str>, ExitCode> {
+    std::fs::read_to_string(path)
+        .map(std::rc::Rc::from)
+        .map_err(|e| {
+            eprintln!("adair: cannot read {}: {e}", path.display());
+            ExitCode::from(2)
+        })
 }
 
 /// Global options that take a value in the next argument (kept equal to
@@ -413,7 +416,7 @@ fn real_main(
             if record.is_some() || plot.is_some() {
                 s.start_recording();
             }
-            let outcome = s.run_source(&file.to_string_lossy(), &text);
+            let outcome = s.run_source(&file.to_string_lossy(), text.clone());
             let stopped = s.take_stopped();
             if stopped.is_none() {
                 report(&outcome, &s, color);
@@ -536,7 +539,7 @@ fn real_main(
                 if let Some(d) = &devices {
                     s.set_devices(d.clone());
                 }
-                match s.check_source(&f.to_string_lossy(), &text, false) {
+                match s.check_source(&f.to_string_lossy(), text.clone(), false) {
                     Err(d) => {
                         eprint!("{}", adair::diag::render(&d, &s.sources, color));
                         worst = 2;

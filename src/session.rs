@@ -89,6 +89,31 @@ fn known(name: &str) -> bool {
     resolve(name).is_some()
 }
 
+/// A program's text as a session takes it: borrowed (copied once into
+/// the session's sources) or already shared (`adair run` and `check` read
+/// a file into an `Rc<str>`, so a long program is held once, not twice).
+pub trait SourceText {
+    fn into_shared(self) -> std::rc::Rc<str>;
+}
+
+impl SourceText for &str {
+    fn into_shared(self) -> std::rc::Rc<str> {
+        self.into()
+    }
+}
+
+impl SourceText for &String {
+    fn into_shared(self) -> std::rc::Rc<str> {
+        self.as_str().into()
+    }
+}
+
+impl SourceText for std::rc::Rc<str> {
+    fn into_shared(self) -> std::rc::Rc<str> {
+        self
+    }
+}
+
 pub struct Session {
     pub sources: Sources,
     pub checker: Checker,
@@ -171,7 +196,7 @@ impl Session {
         self.loaded[i] = true;
         let u = &STDLIB[i];
         let outer = std::mem::replace(&mut self.in_stdlib, true);
-        let checked = self.check_source(u.name, &stdlib_text(u.text), false);
+        let checked = self.check_source(u.name, &*stdlib_text(u.text), false);
         self.in_stdlib = outer;
         let stmts = match checked {
             Ok((stmts, _)) => stmts,
@@ -355,10 +380,12 @@ impl Session {
     pub fn check_source(
         &mut self,
         name: &str,
-        text: &str,
+        text: impl SourceText,
         script: bool,
     ) -> Result<(Vec<Stmt>, Option<FuncId>), Vec<Diagnostic>> {
-        let id = self.sources.add(name, text);
+        let shared = text.into_shared();
+        let text: &str = &shared;
+        let id = self.sources.add_shared(name, shared.clone());
         self.machine.add_source(id, name, text);
         self.checker.add_text(id, self.sources.shared(id));
         // A long program's bodies are parsed as they are checked (the
@@ -499,7 +526,7 @@ impl Session {
     }
 
     /// Checks and runs a whole program.
-    pub fn run_source(&mut self, name: &str, text: &str) -> Outcome {
+    pub fn run_source(&mut self, name: &str, text: impl SourceText) -> Outcome {
         let (stmts, main) = match self.check_source(name, text, false) {
             Ok(x) => x,
             Err(d) => return Outcome::CheckFailed(d),

@@ -22,7 +22,10 @@ impl Checker {
         let mut stmts = Vec::new();
         if let Some(at) = b.lazy {
             let text = self.texts.get(&at.context).cloned().unwrap_or_default();
-            let diags = crate::syntax::lazy_stmts(&text, at.context, at, |ss| {
+            let diags = crate::syntax::lazy_stmts(&text, at.context, at, |n, ss| {
+                if stmts.capacity() == 0 {
+                    stmts.reserve_exact(n);
+                }
                 for s in ss {
                     self.stmt(&s, &mut stmts);
                 }

@@ -6,7 +6,6 @@
 //! in which every name is already a slot or an index: nothing here looks a
 //! name up by string.
 
-use crate::diag::Offsets as _;
 pub mod builtins;
 pub mod memory;
 mod stack;
@@ -116,7 +115,7 @@ pub struct ServiceCx<'a> {
     pub world: Option<&'a mut crate::devices::World>,
     /// The call being served.
     pub span: Span,
-    files: &'a [(String, Vec<usize>)],
+    files: &'a [(String, Vec<u32>)],
     interrupted: Option<&'a std::sync::atomic::AtomicBool>,
 }
 
@@ -139,10 +138,10 @@ impl ServiceCx<'_> {
     }
 }
 
-fn location_in(files: &[(String, Vec<usize>)], s: Span) -> String {
+fn location_in(files: &[(String, Vec<u32>)], s: Span) -> String {
     match files.get(s.context as usize) {
         Some((name, starts)) => {
-            let line = starts.partition_point(|&x| x <= s.lo());
+            let line = starts.partition_point(|&x| x <= s.start);
             format!("{name}:{line}")
         }
         None => String::new(),
@@ -181,7 +180,7 @@ pub struct Machine {
     depth: usize,
     calls: Vec<Span>,
     /// Line starts of each source, for GNAT-style exception messages.
-    files: Vec<(String, Vec<usize>)>,
+    files: Vec<(String, Vec<u32>)>,
     pub input: Box<dyn std::io::BufRead>,
     /// What `Get_Line (Item, Last)` left of a line longer than Item (its
     /// terminator still to read): the next read starts with it. An empty
@@ -254,8 +253,7 @@ impl Machine {
         if self.files.len() <= id {
             self.files.resize(id + 1, (String::new(), Vec::new()));
         }
-        let mut starts = vec![0];
-        starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        let starts = crate::diag::line_starts(text);
         let base = std::path::Path::new(name)
             .file_name()
             .map(|s| s.to_string_lossy().to_string())

@@ -73,20 +73,20 @@ fn lex_part(src: &str, file: FileId, at: std::ops::Range<usize>) -> Vec<(token::
 const PART_TOKENS: usize = 8192;
 
 /// Parses the statements of a lazy body (`at`, see [`ast::Block::lazy`]) a
-/// part at a time, giving each part's statements to `each` in order; the
+/// part at a time, giving each part's statements to `each` in order, with
+/// the number of the body's statements (about: to reserve room for their
+/// checked form at once, not by doubling); the
 /// syntax errors if some part does not parse (after
 /// [`parse_source_lazy`] has read them all, none).
 pub fn lazy_stmts(
     src: &str,
     file: FileId,
     at: Span,
-    mut each: impl FnMut(Vec<ast::Stmt>),
+    mut each: impl FnMut(usize, Vec<ast::Stmt>),
 ) -> Vec<Diagnostic> {
     let mut bounds = vec![at.start];
-    bounds.extend(parser::statement_cuts(
-        &lex_part(src, file, at.range()),
-        PART_TOKENS,
-    ));
+    let (cuts, count) = parser::statement_cuts(&lex_part(src, file, at.range()), PART_TOKENS);
+    bounds.extend(cuts);
     bounds.push(at.end);
     let last = bounds.len() - 1;
     let mut i = 0;
@@ -99,7 +99,7 @@ pub fn lazy_stmts(
             match parser::parse_stmts(&tokens, file, bounds[j]) {
                 (Some(ss), d) if d.is_empty() => {
                     drop(tokens);
-                    each(ss);
+                    each(count, ss);
                     break;
                 }
                 (_, d) if j == last => return d,
@@ -163,16 +163,21 @@ mod lazy_tests {
         assert!(body(&lazy).stmts.borrow().is_empty());
         let mut parts = 0;
         let mut got = Vec::new();
-        let d = lazy_stmts(&src, 0, at, |ss| {
+        let mut counted = 0;
+        let d = lazy_stmts(&src, 0, at, |n, ss| {
             parts += 1;
+            counted = n;
             got.extend(ss);
         });
         assert!(d.is_empty(), "{d:?}");
         assert!(parts > 3, "{parts} parts");
         assert_eq!(got, *body(&eager).stmts.borrow());
-        // The cut finder's cuts each end a statement of the body.
+        // The count follows the nesting as the cuts do: here (declare blocks
+        // whose task types and bodies end without opening) it counts more
+        // than there are, never fewer.
+        assert!(counted >= got.len(), "{counted} < {}", got.len());
         let tokens = lex_part(&src, 0, at.range());
-        let cuts = parser::statement_cuts(&tokens, 100);
+        let (cuts, _) = parser::statement_cuts(&tokens, 100);
         assert!(cuts.len() > 100);
     }
 

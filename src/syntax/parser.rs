@@ -2200,8 +2200,10 @@ pub fn parse_stmts(
 /// and `end` close it; a cut it misjudges makes a part that does not
 /// parse, which is then parsed joined with the next (see
 /// `syntax::lazy_stmts`).
-pub fn statement_cuts(tokens: &[(Token, Span)], every: usize) -> Vec<u32> {
+pub fn statement_cuts(tokens: &[(Token, Span)], every: usize) -> (Vec<u32>, usize) {
     let mut cuts = Vec::new();
+    // The body's own statements, as far as the nesting was followed.
+    let mut count = 0usize;
     let mut open: Vec<Kw> = Vec::new();
     let mut paren = 0usize;
     let mut after_end = false;
@@ -2233,14 +2235,17 @@ pub fn statement_cuts(tokens: &[(Token, Span)], every: usize) -> Vec<u32> {
                 Some(k @ Kw::Declare) => *k = Kw::Begin,
                 _ => open.push(Kw::Begin),
             },
-            Token::Semi if open.is_empty() && since >= every => {
-                cuts.push(s.end);
-                since = 0;
+            Token::Semi if open.is_empty() => {
+                count += 1;
+                if since >= every {
+                    cuts.push(s.end);
+                    since = 0;
+                }
             }
             _ => {}
         }
     }
-    cuts
+    (cuts, count)
 }
 
 /// The file ended inside a `loop`, `if` or `case`: name the construct and
