@@ -165,10 +165,10 @@ pub struct Checker {
     /// Names an unsupported declaration would have declared (a generic
     /// unit, its formals, an instance): a use of one is no second error.
     unsupported_names: std::collections::HashSet<String>,
-    /// "not declared" reports that a later declaration may explain: the
-    /// name, the report's index, and the depth of the scopes it was made in
-    /// that are still open.
-    undeclared: Vec<(String, usize, usize)>,
+    /// "not declared" reports that a later declaration may explain, by
+    /// name: the report's index, and the depth of the scopes it was made in
+    /// that are still open (a declaration finds its own in one look-up).
+    undeclared: HashMap<String, Vec<(usize, usize)>>,
     /// Each protected type's subprograms: name, profile, real subprogram,
     /// whether it is a function.
     prot_members: Vec<Vec<(String, FuncId, FuncId, bool)>>,
@@ -241,7 +241,7 @@ impl Checker {
             prot_ctx: Vec::new(),
             prot_function_obj: None,
             unsupported_names: Default::default(),
-            undeclared: Vec::new(),
+            undeclared: HashMap::new(),
             prot_members: Vec::new(),
             prot_real: HashMap::new(),
             masters: Vec::new(),
@@ -356,8 +356,8 @@ impl Checker {
     fn pop_scope(&mut self) {
         self.scopes.pop();
         let depth = self.scopes.len();
-        for u in &mut self.undeclared {
-            u.2 = u.2.min(depth);
+        for u in self.undeclared.values_mut().flatten() {
+            u.1 = u.1.min(depth);
         }
     }
 
@@ -424,11 +424,17 @@ impl Checker {
         // inside it): it was used before its declaration.
         let depth = self.scopes.len();
         let is_func = matches!(e, Entity::Func(_));
-        let (before, later): (Vec<_>, Vec<_>) = std::mem::take(&mut self.undeclared)
-            .into_iter()
-            .partition(|(k, _, d)| **k == *id.key && depth <= *d);
-        self.undeclared = later;
-        for (_, i, _) in before {
+        let mut before = Vec::new();
+        if let Some(uses) = self.undeclared.get_mut(&*id.key) {
+            uses.retain(|&(i, d)| {
+                let here = depth <= d;
+                if here {
+                    before.push(i);
+                }
+                !here
+            });
+        }
+        for i in before {
             if let Some(d) = self.diags.get_mut(i) {
                 d.message = format!("`{}` is used before its declaration", id.name);
                 d.label = "used here before it is declared".into();
@@ -896,8 +902,11 @@ impl Checker {
                     let n = self.diags.len();
                     self.err(d);
                     if self.diags.len() > n {
+                        let depth = self.scopes.len();
                         self.undeclared
-                            .push((id.key.to_string(), n, self.scopes.len()));
+                            .entry(id.key.to_string())
+                            .or_default()
+                            .push((n, depth));
                     }
                 }
                 es
