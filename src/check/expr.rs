@@ -931,7 +931,7 @@ impl Checker {
                     }
                     return;
                 }
-                ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _, _) => e = p,
+                ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _) => e = p,
                 // A component of the object of a protected function.
                 ExKind::Deref(p) if matches!(p.kind, ExKind::Var(v) if Some(v) == self.prot_function_obj) =>
                 {
@@ -1210,7 +1210,11 @@ impl Checker {
                         )),
                     }
                 }
-                self.mk(ExKind::InRanges(bx(s), ranges, *negated), BOOLEAN, sp)
+                self.mk(
+                    ExKind::InRanges(bx(s), Box::new(ranges), *negated),
+                    BOOLEAN,
+                    sp,
+                )
             }
             ExprKind::Aggregate(items) => match want {
                 Some(t) if t != ERROR && !self.types.is_universal(t) => {
@@ -1258,7 +1262,7 @@ impl Checker {
                         self.mk(ExKind::Int(1), BOOLEAN, sp)
                     }
                 };
-                self.mk(ExKind::If(out, bx(els)), t, sp)
+                self.mk(ExKind::If(Box::new(out), bx(els)), t, sp)
             }
             ExprKind::Case { subject, arms } => {
                 let t = match want {
@@ -1284,12 +1288,12 @@ impl Checker {
                     let v = self.expr(&a.body, Some(t));
                     let v = self.coerce(v, t);
                     if Some(i) == others_at {
-                        others = Some(bx(v));
+                        others = Some(v);
                     } else {
                         out.push((ranges[i].clone(), v));
                     }
                 }
-                self.mk(ExKind::Case(bx(s), out, others), t, sp)
+                self.mk(ExKind::Case(Box::new((s, out, others))), t, sp)
             }
             ExprKind::Allocator(tm, init) => {
                 let Some(w) = want.filter(|w| self.types.is_access(*w)) else {
@@ -1409,7 +1413,7 @@ impl Checker {
                     Some((f, args)) => {
                         self.index_ref(id.span, &id.key, &Entity::Func(f));
                         let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
-                        self.mk(ExKind::Call(f, args), r, sp)
+                        self.mk(ExKind::Call(f, args.into()), r, sp)
                     }
                     None => self.err_ex(sp),
                 }
@@ -1550,7 +1554,7 @@ impl Checker {
                             back_check: None,
                         })
                         .collect();
-                    let callee = self.mk(ExKind::Call(f, defaults), r, p.span);
+                    let callee = self.mk(ExKind::Call(f, defaults.into()), r, p.span);
                     let idx: Vec<TypeId> = self
                         .types
                         .array(r)
@@ -1562,7 +1566,7 @@ impl Checker {
                         let v = self.expr(&a.value, Some(*it));
                         ix.push(self.coerce_base(v, *it));
                     }
-                    return self.mk(ExKind::Index(bx(callee), ix), el, sp);
+                    return self.mk(ExKind::Index(bx(callee), Box::new(ix)), el, sp);
                 }
                 match self.call(&fs, args, want, false, sp, &name) {
                     Some((f, a)) => {
@@ -1570,7 +1574,7 @@ impl Checker {
                             self.index_ref(id.span, &id.key, &Entity::Func(f));
                         }
                         let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
-                        self.mk(ExKind::Call(f, a), r, sp)
+                        self.mk(ExKind::Call(f, a.into()), r, sp)
                     }
                     None => self.err_ex(sp),
                 }
@@ -1617,7 +1621,7 @@ impl Checker {
                     let h = self.expr(h, Some(idx[0]));
                     let h = self.coerce_base(h, idx[0]);
                     let t = self.unconstrained_of(pe.ty);
-                    return self.mk(ExKind::Slice(bx(pe), bx(l), bx(h)), t, sp);
+                    return self.mk(ExKind::Slice(bx(pe), Box::new([l, h])), t, sp);
                 }
                 if args.len() != idx.len() {
                     self.err(Diagnostic::ty(
@@ -1639,7 +1643,7 @@ impl Checker {
                     let v = self.expr(&a.value, Some(*it));
                     ix.push(self.coerce_base(v, *it));
                 }
-                self.mk(ExKind::Index(bx(pe), ix), el, sp)
+                self.mk(ExKind::Index(bx(pe), Box::new(ix)), el, sp)
             }
         }
     }
@@ -1788,7 +1792,7 @@ impl Checker {
             match this.call(&[f], &args, want, false, sp, op.symbol()) {
                 Some((f, args)) => {
                     let r = this.funcs[f as usize].ret.unwrap_or(ERROR);
-                    this.mk(ExKind::Call(f, args), r, sp)
+                    this.mk(ExKind::Call(f, args.into()), r, sp)
                 }
                 None => this.err_ex(sp),
             }
@@ -2277,7 +2281,7 @@ impl Checker {
                 return match self.call(&user, &args, want, false, sp, op.symbol()) {
                     Some((f, args)) => {
                         let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
-                        self.mk(ExKind::Call(f, args), r, sp)
+                        self.mk(ExKind::Call(f, args.into()), r, sp)
                     }
                     None => self.err_ex(sp),
                 };
@@ -2592,7 +2596,7 @@ impl Checker {
                     }
                 }
             }
-            return self.mk(ExKind::RecordAgg(out), t, sp);
+            return self.mk(ExKind::RecordAgg(out.into()), t, sp);
         }
         let Some((idx, el, bounds)) = self
             .types
@@ -2697,7 +2701,7 @@ impl Checker {
         } else {
             ArrayAggKind::Named(named, others)
         };
-        self.mk(ExKind::ArrayAgg(ArrayAgg { ty: t, kind }), t, sp)
+        self.mk(ExKind::ArrayAgg(Box::new(ArrayAgg { ty: t, kind })), t, sp)
     }
 
     fn attribute(
@@ -2803,7 +2807,7 @@ impl Checker {
                                 sp,
                             );
                             self.mk(
-                                ExKind::Attr(AttrOp::Max, vec![len, Ex::int(0)]),
+                                ExKind::Attr(AttrOp::Max, Box::new(vec![len, Ex::int(0)])),
                                 UNIV_INT,
                                 sp,
                             )
@@ -2824,11 +2828,11 @@ impl Checker {
                         AttrOp::ValueEnum(base)
                     };
                     // 'Value yields the base type; only an assignment checks the subtype.
-                    return self.mk(ExKind::Attr(op, vec![x]), base, sp);
+                    return self.mk(ExKind::Attr(op, Box::new(vec![x])), base, sp);
                 }
                 "pos" if self.types.is_discrete(t) => {
                     let x = arg(self, 0, Some(base));
-                    return self.mk(ExKind::Attr(AttrOp::Pos, vec![x]), UNIV_INT, sp);
+                    return self.mk(ExKind::Attr(AttrOp::Pos, Box::new(vec![x])), UNIV_INT, sp);
                 }
                 "val" if self.types.is_discrete(t) => {
                     let x = arg(self, 0, Some(UNIV_INT));
@@ -2857,7 +2861,7 @@ impl Checker {
                             .with_label("static value out of range"),
                         );
                     }
-                    let v = self.mk(ExKind::Attr(AttrOp::Val, vec![x]), base, sp);
+                    let v = self.mk(ExKind::Attr(AttrOp::Val, Box::new(vec![x])), base, sp);
                     return self.coerce_force_check(v, base);
                 }
                 "succ" | "pred" if self.types.is_discrete(t) => {
@@ -2889,7 +2893,7 @@ impl Checker {
                             .with_label("static value out of range"),
                         );
                     }
-                    let v = self.mk(ExKind::Attr(op, vec![x]), base, sp);
+                    let v = self.mk(ExKind::Attr(op, Box::new(vec![x])), base, sp);
                     return self.coerce_force_check(v, base);
                 }
                 "min" | "max" if scalar => {
@@ -2901,7 +2905,7 @@ impl Checker {
                         ("min", true) => AttrOp::FloatMin,
                         _ => AttrOp::FloatMax,
                     };
-                    return self.mk(ExKind::Attr(op, vec![x, y]), base, sp);
+                    return self.mk(ExKind::Attr(op, Box::new(vec![x, y])), base, sp);
                 }
                 "floor" | "ceiling" | "truncation" | "rounding" if self.types.is_float(t) => {
                     let x = arg(self, 0, Some(base));
@@ -2911,7 +2915,7 @@ impl Checker {
                         "truncation" => AttrOp::Truncation,
                         _ => AttrOp::Rounding,
                     };
-                    return self.mk(ExKind::Attr(op, vec![x]), base, sp);
+                    return self.mk(ExKind::Attr(op, Box::new(vec![x])), base, sp);
                 }
                 "digits" if self.types.is_float(t) => {
                     return self.mk(ExKind::Int(self.types.digits(t) as i64), UNIV_INT, sp);
@@ -2956,9 +2960,17 @@ impl Checker {
             }
             let it = idx[d as usize - 1];
             return match key {
-                "first" => self.mk(ExKind::Attr(AttrOp::ArrFirst(d), vec![pe]), it, sp),
-                "last" => self.mk(ExKind::Attr(AttrOp::ArrLast(d), vec![pe]), it, sp),
-                "length" => self.mk(ExKind::Attr(AttrOp::ArrLength(d), vec![pe]), UNIV_INT, sp),
+                "first" => self.mk(
+                    ExKind::Attr(AttrOp::ArrFirst(d), Box::new(vec![pe])),
+                    it,
+                    sp,
+                ),
+                "last" => self.mk(ExKind::Attr(AttrOp::ArrLast(d), Box::new(vec![pe])), it, sp),
+                "length" => self.mk(
+                    ExKind::Attr(AttrOp::ArrLength(d), Box::new(vec![pe])),
+                    UNIV_INT,
+                    sp,
+                ),
                 "range" => {
                     self.err(Diagnostic::ty(sp, "`'Range` can only be used as a range (in `for` loops, memberships and constraints)"));
                     self.err_ex(sp)
@@ -3014,7 +3026,7 @@ impl Checker {
         } else {
             AttrOp::ImageEnum(self.types.base(t))
         };
-        self.mk(ExKind::Attr(op, vec![x]), STRING, sp)
+        self.mk(ExKind::Attr(op, Box::new(vec![x])), STRING, sp)
     }
 
     /// `X'Range` and `T'Range` as a discrete range.
@@ -3068,8 +3080,12 @@ impl Checker {
             Some(idx) if (d as usize) <= idx.len() => {
                 let it = idx[d as usize - 1];
                 (
-                    self.mk(ExKind::Attr(AttrOp::ArrFirst(d), vec![pe.clone()]), it, sp),
-                    self.mk(ExKind::Attr(AttrOp::ArrLast(d), vec![pe]), it, sp),
+                    self.mk(
+                        ExKind::Attr(AttrOp::ArrFirst(d), Box::new(vec![pe.clone()])),
+                        it,
+                        sp,
+                    ),
+                    self.mk(ExKind::Attr(AttrOp::ArrLast(d), Box::new(vec![pe])), it, sp),
                     it,
                 )
             }

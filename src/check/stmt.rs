@@ -147,7 +147,8 @@ impl Checker {
                 // An aggregate assigned to a slice takes the slice's bounds
                 // (`A (2 .. 4) := (others => 9);`).
                 let vty = match (&t.kind, &value.kind) {
-                    (ExKind::Slice(_, l, h), ast::ExprKind::Aggregate(_)) => {
+                    (ExKind::Slice(_, lh), ast::ExprKind::Aggregate(_)) => {
+                        let [l, h] = &**lh;
                         match self.types.array(ty).map(|(i, e, _)| (i.to_vec(), e)) {
                             Some((index, elem)) => {
                                 let name = self.types.name(ty).to_string();
@@ -155,7 +156,7 @@ impl Checker {
                                 self.types.list[st as usize].kind = TypeKind::Array {
                                     index,
                                     elem,
-                                    bounds: Some(vec![(l.as_ref().clone(), h.as_ref().clone())]),
+                                    bounds: Some(vec![(l.clone(), h.clone())]),
                                 };
                                 st
                             }
@@ -283,14 +284,14 @@ impl Checker {
                         self.declare(&var.name, e);
                         let body = self.stmts(body);
                         self.pop_scope();
-                        StmtKind::For {
+                        StmtKind::For(Box::new(ForLoop {
                             id,
                             var: v,
                             lo,
                             hi,
                             reverse: *reverse,
                             body,
-                        }
+                        }))
                     }
                     ast::LoopScheme::ForOf {
                         var,
@@ -523,7 +524,7 @@ impl Checker {
         if let Some(id) = last_ident(prefix) {
             self.index_ref(id.span, &id.key, &Entity::Func(f));
         }
-        Some(StmtKind::Call(f, a))
+        Some(StmtKind::Call(f, a.into()))
     }
 }
 
@@ -588,11 +589,14 @@ impl Checker {
             .collect();
         // A slice `P (L .. H)`: its components are those of `P` from L to H.
         let (base, slice) = match base.kind {
-            ExKind::Slice(p, l, h) => (*p, Some((*l, *h))),
+            ExKind::Slice(p, lh) => {
+                let [l, h] = *lh;
+                (*p, Some((l, h)))
+            }
             _ => (base, None),
         };
         let element = self.mk(
-            ExKind::Index(Box::new(base.clone()), subscripts),
+            ExKind::Index(Box::new(base.clone()), Box::new(subscripts)),
             elem,
             var.span,
         );
@@ -609,12 +613,12 @@ impl Checker {
                 Some((l, h)) => (l.clone(), h.clone()),
                 None => (
                     self.mk(
-                        ExKind::Attr(AttrOp::ArrFirst(dim), vec![base.clone()]),
+                        ExKind::Attr(AttrOp::ArrFirst(dim), Box::new(vec![base.clone()])),
                         it,
                         array.span,
                     ),
                     self.mk(
-                        ExKind::Attr(AttrOp::ArrLast(dim), vec![base.clone()]),
+                        ExKind::Attr(AttrOp::ArrLast(dim), Box::new(vec![base.clone()])),
                         it,
                         array.span,
                     ),
@@ -622,14 +626,14 @@ impl Checker {
             };
             let loop_id = if d == 0 { id } else { self.new_loop() };
             stmts = vec![Stmt {
-                kind: StmtKind::For {
+                kind: StmtKind::For(Box::new(ForLoop {
                     id: loop_id,
                     var: *v,
                     lo,
                     hi,
                     reverse,
                     body: stmts,
-                },
+                })),
                 span: array.span,
             }];
         }
@@ -649,7 +653,7 @@ impl Checker {
 fn is_name(e: &Ex) -> bool {
     match &e.kind {
         ExKind::Var(_) | ExKind::Deref(_) => true,
-        ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _, _) => is_name(p),
+        ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _) => is_name(p),
         _ => false,
     }
 }

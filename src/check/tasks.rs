@@ -648,7 +648,7 @@ impl Checker {
         match self.prot_subprogram(k, obj, id, args, false, sp) {
             Some((real, a)) => {
                 let r = self.funcs[real as usize].ret.unwrap_or(ERROR);
-                self.mk(ExKind::Call(real, a), r, sp)
+                self.mk(ExKind::Call(real, a.into()), r, sp)
             }
             None => self.err_ex(sp),
         }
@@ -817,7 +817,7 @@ impl Checker {
                     })));
                 }
                 let (real, a) = self.prot_subprogram(k, obj, id, args, true, span)?;
-                Some(StmtKind::ProtCall(real, a))
+                Some(StmtKind::ProtCall(real, a.into()))
             }
             _ => None,
         }
@@ -1118,7 +1118,7 @@ impl Checker {
                     span: sp,
                 };
                 return Some(self.mk(
-                    ExKind::Attr(AttrOp::ProtCount(i as u32), vec![o]),
+                    ExKind::Attr(AttrOp::ProtCount(i as u32), Box::new(vec![o])),
                     INTEGER,
                     sp,
                 ));
@@ -1130,7 +1130,7 @@ impl Checker {
                     .position(|e| e.name.eq_ignore_ascii_case(&id.name))
             {
                 return Some(self.mk(
-                    ExKind::Attr(AttrOp::Count(i as u32), Vec::new()),
+                    ExKind::Attr(AttrOp::Count(i as u32), Box::new(vec![])),
                     INTEGER,
                     sp,
                 ));
@@ -1150,7 +1150,7 @@ impl Checker {
         } else {
             AttrOp::Terminated
         };
-        Some(self.mk(ExKind::Attr(op, vec![t]), BOOLEAN, sp))
+        Some(self.mk(ExKind::Attr(op, Box::new(vec![t])), BOOLEAN, sp))
     }
 
     /// `for X use at Addr;` outside a task spec: `X` becomes a device

@@ -683,14 +683,15 @@ impl Run<'_> {
                 }
                 Ok(())
             }
-            StmtKind::For {
-                id,
-                var,
-                lo,
-                hi,
-                reverse,
-                body,
-            } => {
+            StmtKind::For(f) => {
+                let ForLoop {
+                    id,
+                    var,
+                    lo,
+                    hi,
+                    reverse,
+                    body,
+                } = &**f;
                 let (l, h) = (self.eval_int(lo)?, self.eval_int(hi)?);
                 if l > h {
                     return Ok(());
@@ -1017,7 +1018,7 @@ impl Run<'_> {
                 }
                 ExKind::Index(p, idx) => {
                     let mut ix = Vec::with_capacity(idx.len());
-                    for x in idx {
+                    for x in idx.iter() {
                         ix.push(self.eval(x)?.int());
                     }
                     steps.push(Step::Index(ix, e.span));
@@ -1027,8 +1028,8 @@ impl Run<'_> {
                     steps.push(Step::Field(*i));
                     e = p;
                 }
-                ExKind::Slice(p, l, h) => {
-                    let (l, h) = (self.eval(l)?.int(), self.eval(h)?.int());
+                ExKind::Slice(p, lh) => {
+                    let (l, h) = (self.eval(&lh[0])?.int(), self.eval(&lh[1])?.int());
                     steps.push(Step::Slice(l, h, e.span));
                     e = p;
                 }
@@ -1142,9 +1143,9 @@ impl Run<'_> {
                     None => return Err(self.check_failed("index check failed", e.span)),
                 }
             }
-            ExKind::Slice(p, l, h) => {
+            ExKind::Slice(p, lh) => {
                 let base = self.eval(p)?;
-                let (l, h) = (self.eval(l)?.int(), self.eval(h)?.int());
+                let (l, h) = (self.eval(&lh[0])?.int(), self.eval(&lh[1])?.int());
                 let Value::Arr(a) = base else {
                     return Err(self.check_failed("access check failed", e.span));
                 };
@@ -1316,7 +1317,7 @@ impl Run<'_> {
             ExKind::InRanges(s, ranges, neg) => {
                 let v = self.eval(s)?;
                 let mut inside = false;
-                for (l, h) in ranges {
+                for (l, h) in ranges.iter() {
                     let lo = self.eval(l)?;
                     let hi = self.eval(h)?;
                     if v.compare(&lo) != std::cmp::Ordering::Less
@@ -1337,14 +1338,15 @@ impl Run<'_> {
                 Value::Rec(Rc::new(v))
             }
             ExKind::If(arms, els) => {
-                for (c, v) in arms {
+                for (c, v) in arms.iter() {
                     if self.eval_int(c)? != 0 {
                         return self.eval(v);
                     }
                 }
                 self.eval(els)?
             }
-            ExKind::Case(s, arms, others) => {
+            ExKind::Case(c) => {
+                let (s, arms, others) = &**c;
                 let v = self.eval(s)?.int();
                 for (ranges, x) in arms {
                     if ranges.iter().any(|(l, h)| *l <= v && v <= *h) {

@@ -95,9 +95,10 @@ enum Op<'p> {
     /// Next step: counter, low, high, reverse, the body's start.
     ForNext(Var, Var, Var, bool, u32, Span),
     Poll(Span),
-    /// A call of a subprogram with a body: its argument operands, the slot
-    /// for a function's result.
-    Call(FuncId, &'p [Arg], Box<[Var]>, Option<Var>, Span),
+    /// A call of a subprogram with a body: whether it is a function, its
+    /// arguments (None: none, the main subprogram's call), their operands
+    /// followed by the slot for a function's result.
+    Call(bool, FuncId, Option<&'p Box<[Arg]>>, Box<[Var]>, Span),
     /// A call the walker makes (natives, services, a subprogram without body).
     CallWalker(FuncId, &'p [Arg], Option<Var>, Span),
     /// The same with `in` arguments computed here first.
@@ -139,7 +140,7 @@ enum Op<'p> {
     EntryCall(Box<EntryOp<'p>>),
     /// After an entry call: copy-out, the caller's exception, or the jump
     /// to a timed call's delay (conditional call's else) statements.
-    EntryDone(&'p [Arg], Box<[Var]>, Option<u32>, Span),
+    EntryDone(&'p Vec<Arg>, Box<[Var]>, Option<u32>, Span),
     /// A protected entry call.
     ProtEntry(Box<EntryOp<'p>>),
     /// After a protected action: the object's queues are served.
@@ -489,11 +490,11 @@ impl<'p> Compiler<'p, '_> {
                 }
             },
             ExKind::Null => self.ops.push(Op::Null(dst)),
-            ExKind::Call(f, args) => self.call(*f, args, Some(dst), span),
+            ExKind::Call(f, args) => self.call(*f, Some(args), Some(dst), span),
             ExKind::If(arms, els) => {
                 let t = self.temp();
                 let mut ends = Vec::new();
-                for (c, v) in arms {
+                for (c, v) in arms.iter() {
                     let x = self.expr(c);
                     let j = self.ops.len();
                     self.ops.push(Op::JumpIfNot(x, 0));
@@ -519,10 +520,11 @@ impl<'p> Compiler<'p, '_> {
                 self.ops.push(Op::Activate(span));
                 self.ops.push(Op::Move(dst, t));
             }
-            ExKind::Case(subj, arms, others) => {
+            ExKind::Case(c) => {
+                let (subj, arms, others) = &**c;
                 let t = self.temp();
                 let x = self.expr(subj);
-                self.case(x, span, arms, others.as_deref(), |c, v| c.expr_into(v, t));
+                self.case(x, span, arms, others.as_ref(), |c, v| c.expr_into(v, t));
                 self.ops.push(Op::Move(dst, t));
             }
             _ => match self.strict_copy(e) {
@@ -550,7 +552,7 @@ impl<'p> Compiler<'p, '_> {
             | ExKind::FloatToInt(a)
             | ExKind::Deref(a)
             | ExKind::ArrayConvert(a, _) => vec![a],
-            ExKind::Slice(p, l, h) => vec![p, l, h],
+            ExKind::Slice(p, lh) => vec![p, &lh[0], &lh[1]],
             ExKind::Index(p, idx) => std::iter::once(&**p).chain(idx.iter()).collect(),
             _ => return None,
         };
@@ -574,7 +576,9 @@ impl<'p> Compiler<'p, '_> {
         let mut v = vars.into_iter();
         let mut next = || Box::new(v.next().expect("an operand"));
         let kind = match &e.kind {
-            ExKind::Attr(op, args) => ExKind::Attr(*op, args.iter().map(|_| *next()).collect()),
+            ExKind::Attr(op, args) => {
+                ExKind::Attr(*op, Box::new(args.iter().map(|_| *next()).collect()))
+            }
             ExKind::Concat(_, _, x, y) => ExKind::Concat(next(), next(), *x, *y),
             ExKind::ArrLogic(op, ..) => ExKind::ArrLogic(*op, next(), next()),
             ExKind::ArrNot(_) => ExKind::ArrNot(next()),
@@ -584,10 +588,10 @@ impl<'p> Compiler<'p, '_> {
             ExKind::FloatToInt(_) => ExKind::FloatToInt(next()),
             ExKind::Deref(_) => ExKind::Deref(next()),
             ExKind::ArrayConvert(_, t) => ExKind::ArrayConvert(next(), *t),
-            ExKind::Slice(..) => ExKind::Slice(next(), next(), next()),
+            ExKind::Slice(..) => ExKind::Slice(next(), Box::new([*next(), *next()])),
             ExKind::Index(_, idx) => {
                 let p = next();
-                ExKind::Index(p, idx.iter().map(|_| *next()).collect())
+                ExKind::Index(p, Box::new(idx.iter().map(|_| *next()).collect()))
             }
             _ => unreachable!("only the kinds above are copied"),
         };
@@ -601,16 +605,18 @@ impl<'p> Compiler<'p, '_> {
         ))
     }
 
-    fn call(&mut self, f: FuncId, args: &'p [Arg], dst: Option<Var>, span: Span) {
+    fn call(&mut self, f: FuncId, args: Option<&'p Box<[Arg]>>, dst: Option<Var>, span: Span) {
+        let all: &'p [Arg] = match args {
+            Some(a) => a,
+            None => &[],
+        };
         if (self.walker_calls)(f) {
             // `in` arguments with calls in them are computed here, so that
             // those calls run compiled.
-            if args.iter().any(|a| effects(&a.value))
-                && args
-                    .iter()
-                    .all(|a| a.mode == Mode::In || !effects(&a.value))
+            if all.iter().any(|a| effects(&a.value))
+                && all.iter().all(|a| a.mode == Mode::In || !effects(&a.value))
             {
-                let owned: Vec<Arg> = args
+                let owned: Vec<Arg> = all
                     .iter()
                     .map(|a| {
                         if a.mode != Mode::In {
@@ -632,13 +638,13 @@ impl<'p> Compiler<'p, '_> {
                 self.ops
                     .push(Op::CallWalkerOwned(f, owned.into(), dst, span));
             } else {
-                self.ops.push(Op::CallWalker(f, args, dst, span));
+                self.ops.push(Op::CallWalker(f, all, dst, span));
             }
             return;
         }
-        let mut ops = Vec::with_capacity(args.len());
-        for (k, a) in args.iter().enumerate() {
-            let later = args[k + 1..].iter().any(|b| effects(&b.value));
+        let mut ops = Vec::with_capacity(all.len() + 1);
+        for (k, a) in all.iter().enumerate() {
+            let later = all[k + 1..].iter().any(|b| effects(&b.value));
             let mut v = self.expr(&a.value);
             if later && !self.is_temp(v) {
                 let t = self.temp();
@@ -647,7 +653,9 @@ impl<'p> Compiler<'p, '_> {
             }
             ops.push(v);
         }
-        self.ops.push(Op::Call(f, args, ops.into(), dst, span));
+        ops.extend(dst);
+        self.ops
+            .push(Op::Call(dst.is_some(), f, args, ops.into(), span));
     }
 
     fn stmts(&mut self, ss: &'p [Stmt]) {
@@ -689,7 +697,7 @@ impl<'p> Compiler<'p, '_> {
                     self.ops.push(Op::Assign(t, src));
                 }
             },
-            StmtKind::Call(f, args) => self.call(*f, args, None, s.span),
+            StmtKind::Call(f, args) => self.call(*f, Some(args), None, s.span),
             StmtKind::If(arms, els) => {
                 let mut ends = Vec::new();
                 for (c, body) in arms {
@@ -728,14 +736,15 @@ impl<'p> Compiler<'p, '_> {
                 let end = self.end_loop(*id);
                 self.patch(j, end);
             }
-            StmtKind::For {
-                id,
-                var,
-                lo,
-                hi,
-                reverse,
-                body,
-            } => {
+            StmtKind::For(f) => {
+                let ForLoop {
+                    id,
+                    var,
+                    lo,
+                    hi,
+                    reverse,
+                    body,
+                } = &**f;
                 let (l, h) = (self.temp(), self.temp());
                 self.expr_into(lo, l);
                 self.expr_into(hi, h);
@@ -814,7 +823,7 @@ impl<'p> Compiler<'p, '_> {
                 self.patch(j, end);
             }
             StmtKind::ProtCall(f, args) => {
-                self.call(*f, args, None, s.span);
+                self.call(*f, Some(args), None, s.span);
                 let obj = self.expr(&args.last().expect("the object").value);
                 let bargs = self.obj_args(obj, &args.last().expect("the object").value);
                 self.ops.push(Op::ProtDone(obj, bargs, s.span));
@@ -1174,7 +1183,7 @@ impl<'a> Run<'a> {
             Compiled::Stmts(ss) => c.stmts(ss),
             Compiled::Main(f) => c.call(
                 f,
-                &[],
+                None,
                 None,
                 Span {
                     start: 0,
@@ -2289,8 +2298,9 @@ impl<'a> Run<'a> {
                         }
                     })
                 }
-                Op::Call(f, _, ops, _, span) => {
-                    match self.push_call(cache, *f, ops, (lvl, fp), *span) {
+                Op::Call(func, f, _, ops, span) => {
+                    let args = &ops[..ops.len() - *func as usize];
+                    match self.push_call(cache, *f, args, (lvl, fp), *span) {
                         Ok(entered) => {
                             let base = entered.1;
                             push_frame!(entered);
@@ -2706,7 +2716,9 @@ fn save_regs(
 #[inline(always)]
 fn call_site<'a>(code: &Code<'a>, pc: u32) -> (&'a [Arg], Option<Var>) {
     match code.ops.get(pc as usize - 1) {
-        Some(Op::Call(_, args, _, dst, _)) => (args, *dst),
+        Some(Op::Call(func, _, args, ops, _)) => {
+            (args.map_or(&[], |a| a), func.then(|| ops[ops.len() - 1]))
+        }
         Some(Op::ProtEntry(e)) => (e.args, None),
         _ => (&[], None),
     }
@@ -2745,3 +2757,15 @@ fn holds(o: CmpOp, ord: std::cmp::Ordering) -> bool {
 
 /// The label by which the end of a body is signalled inside the engine.
 const FALL_OFF: u32 = u32::MAX - 1;
+
+#[cfg(test)]
+mod size_tests {
+    /// A long program's main body is one compiled code (issue 14): an
+    /// instruction of 48 bytes, not 64 (a call keeps its result slot among
+    /// its operands).
+    #[test]
+    fn instructions_stay_small() {
+        let op = std::mem::size_of::<super::Op>();
+        assert!(op <= 48, "{op}");
+    }
+}
