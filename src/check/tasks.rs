@@ -1130,7 +1130,7 @@ impl Checker {
                     .position(|e| e.name.eq_ignore_ascii_case(&id.name))
             {
                 return Some(self.mk(
-                    ExKind::Attr(AttrOp::Count(i as u32), Box::new(vec![])),
+                    ExKind::Attr(AttrOp::Count(i as u32), Box::default()),
                     INTEGER,
                     sp,
                 ));
