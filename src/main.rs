@@ -535,6 +535,8 @@ fn real_main(
                 };
                 let mut s = Session::new(Box::new(std::io::sink()));
                 s.checker.index.uses = false;
+                // Nothing runs: a long program's checked form is not kept.
+                s.checker.diagnostics_only = true;
                 s.strict = strict;
                 if let Some(d) = &devices {
                     s.set_devices(d.clone());

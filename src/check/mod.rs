@@ -103,6 +103,11 @@ pub type ImportProfileOf = fn(&str) -> Option<ImportProfile>;
 pub struct Checker {
     /// In `check_unit_consuming`: blocks' statements are taken from the AST.
     consume_ast: bool,
+    /// Only the diagnostics are wanted (`adair check`): the checked form of
+    /// a lazily parsed body is dropped a part at a time as it is made, so
+    /// that checking a long program holds one part of it, not all. Such a
+    /// program's bodies are empty afterwards: it cannot run.
+    pub diagnostics_only: bool,
     pub types: Types,
     pub funcs: Vec<Subprogram>,
     /// Import name of each subprogram bound to a builtin.
@@ -203,6 +208,7 @@ impl Checker {
     pub fn new(known_builtin: KnownBuiltin) -> Checker {
         let mut c = Checker {
             consume_ast: false,
+            diagnostics_only: false,
             types: Types::standard(),
             funcs: Vec::new(),
             imports: Vec::new(),
@@ -1236,5 +1242,49 @@ mod consume_tests {
         assert_eq!(body_len(&unit), 0);
         assert_eq!(format!("{kept:?}"), format!("{consumed:?}"));
         assert!(!c.consume_ast);
+    }
+
+    /// A long program (its bodies parsed lazily, a part at a time) checked
+    /// for its diagnostics only (`adair check`) keeps no checked statement
+    /// of its lazy bodies, and reports what a check that keeps them reports:
+    /// an error in a late part, a warning.
+    #[test]
+    fn a_check_for_diagnostics_only_keeps_no_lazy_body() {
+        let mut text = String::from(
+            "procedure Big is\n   X : Integer := 0;\n   Unused : Integer := 1;\nbegin\n",
+        );
+        for i in 0..6000 {
+            text.push_str(&format!("   X := X + {i} mod 7;\n"));
+        }
+        let good = format!("{text}end Big;\n");
+        let bad = format!("{text}   X := \"late\";\nend Big;\n");
+        let check = |src: &str, only: bool| {
+            let mut s = crate::session::Session::new(Box::new(std::io::sink()));
+            s.checker.diagnostics_only = only;
+            let r = s.check_source("big.adb", src, false);
+            let body = s
+                .checker
+                .funcs
+                .iter()
+                .find(|f| f.name.eq_ignore_ascii_case("big"))
+                .and_then(|f| f.body.as_ref())
+                .map(|b| format!("{b:?}").matches("Assign").count());
+            let diags = match r {
+                Ok(_) => s.warnings.clone(),
+                Err(d) => d,
+            };
+            (format!("{diags:?}"), body)
+        };
+        assert!(good.len() >= 64 * 1024, "a lazily parsed source");
+        let (kept, n) = check(&good, false);
+        assert_eq!(n, Some(6000));
+        let (only, n) = check(&good, true);
+        assert_eq!(n, Some(0));
+        assert_eq!(kept, only);
+        assert!(kept.contains("Unused"), "{kept}");
+        let (kept, _) = check(&bad, false);
+        let (only, _) = check(&bad, true);
+        assert!(kept.contains("late"), "{kept}");
+        assert_eq!(kept, only);
     }
 }

@@ -23,13 +23,19 @@ impl Checker {
         if let Some(at) = b.lazy {
             let text = self.texts.get(&at.context).cloned().unwrap_or_default();
             let diags = crate::syntax::lazy_stmts(&text, at.context, at, |n, ss| {
-                if stmts.capacity() == 0 {
+                if self.diagnostics_only {
+                    // This part's checked statements go as the next are made.
+                    stmts.clear();
+                } else if stmts.capacity() == 0 {
                     stmts.reserve_exact(n);
                 }
                 for s in ss {
                     self.stmt(&s, &mut stmts);
                 }
             });
+            if self.diagnostics_only {
+                stmts.clear();
+            }
             for d in diags {
                 self.err(d);
             }
