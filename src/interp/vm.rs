@@ -58,10 +58,15 @@ enum Op<'p> {
     Logic(LogicOp, Var, Var, Var),
     Not(Var, Var),
     RangeCheck(Var, TypeId, Span),
-    /// `dst := arr (ix...)` for an array held in a slot.
+    /// `dst := arr (ix...)` for an array held in a slot (three or four
+    /// indices; one and two are `Index1`, `Index2`, without an allocation).
     Index(Var, Var, Box<[Var]>, Span),
-    /// `arr (ix...) := src`.
+    Index1(Var, Var, Var, Span),
+    Index2(Var, Var, [Var; 2], Span),
+    /// `arr (ix...) := src` (and with one or two indices).
     StoreIndex(Var, Box<[Var]>, Var, Span),
+    StoreIndex1(Var, Var, Var, Span),
+    StoreIndex2(Var, [Var; 2], Var, Span),
     Field(Var, Var, u32, Span),
     /// `dst := ptr.all.field` (a component of the record an access
     /// designates, not a copy of the record); where the access check and
@@ -479,7 +484,11 @@ impl<'p> Compiler<'p, '_> {
                     }
                     ix.push(v);
                 }
-                self.ops.push(Op::Index(dst, arr, ix.into(), span));
+                self.ops.push(match ix[..] {
+                    [i] => Op::Index1(dst, arr, i, span),
+                    [i, j] => Op::Index2(dst, arr, [i, j], span),
+                    _ => Op::Index(dst, arr, ix.into(), span),
+                });
             }
             ExKind::Field(p, i) => match &p.kind {
                 ExKind::Deref(a) => {
@@ -692,7 +701,11 @@ impl<'p> Compiler<'p, '_> {
                         t
                     };
                     let ix: Vec<Var> = idx.iter().map(|x| self.expr(x)).collect();
-                    self.ops.push(Op::StoreIndex(arr, ix.into(), src, t.span));
+                    self.ops.push(match ix[..] {
+                        [i] => Op::StoreIndex1(arr, i, src, t.span),
+                        [i, j] => Op::StoreIndex2(arr, [i, j], src, t.span),
+                        _ => Op::StoreIndex(arr, ix.into(), src, t.span),
+                    });
                 }
                 _ => {
                     let src = self.temp();
@@ -1986,6 +1999,68 @@ impl<'a> Run<'a> {
                 fp = self.m.display.get(lvl as usize).copied().unwrap_or(0);
             };
         }
+        // `dst := arr (idx)` and `arr (idx) := src` for the first `n`
+        // indices (the instructions with one, two and more indices).
+        macro_rules! load_index {
+            ($d:ident, $arr:ident, $idx:ident, $n:expr, $span:ident) => {{
+                // Scalars are copied out as such: a `Value` moved through
+                // the native stack costs a drop call and a store stall.
+                let got = match &self.m.stack[ix!(*$arr)] {
+                    Value::Arr(a) => match a.offset(&$idx[..$n]) {
+                        Some(o) => match &a.data[o] {
+                            Value::Real(x) => Ok(Err(*x)),
+                            v => Ok(Ok(v.clone())),
+                        },
+                        None => Err("index check failed"),
+                    },
+                    _ => Err("access check failed"),
+                };
+                match got {
+                    Ok(Err(x)) => {
+                        self.put_real_ix(ix!(*$d), x);
+                        continue;
+                    }
+                    Ok(Ok(v)) => {
+                        self.put_ix(ix!(*$d), v);
+                        continue;
+                    }
+                    Err(what) => Err(self.check_failed(what, *$span)),
+                }
+            }};
+        }
+        macro_rules! store_index {
+            ($arr:ident, $idx:ident, $n:expr, $src:ident, $span:ident) => {{
+                let i = ix!(*$src);
+                // A real goes as such (see `Index`), anything else is
+                // taken from its temporary.
+                let val = match &mut self.m.stack[i] {
+                    Value::Real(x) => Err(*x),
+                    v => Ok(std::mem::take(v)),
+                };
+                let slot = ix!(*$arr);
+                let r = match &mut self.m.stack[slot] {
+                    Value::Arr(a) => {
+                        let a = Rc::make_mut(a);
+                        match a.offset(&$idx[..$n]) {
+                            Some(o) => {
+                                match (val, &mut a.data[o]) {
+                                    (Err(x), Value::Real(y)) => *y = x,
+                                    (Err(x), s) => value::overwrite(s, Value::Real(x)),
+                                    (Ok(v), s) => set(s, v),
+                                }
+                                Ok(())
+                            }
+                            None => Err("index check failed"),
+                        }
+                    }
+                    _ => Err("access check failed"),
+                };
+                match r {
+                    Ok(()) => continue,
+                    Err(what) => Err(self.check_failed(what, *$span)),
+                }
+            }};
+        }
         loop {
             let op = &cur.ops[pc as usize];
             pc += 1;
@@ -2094,64 +2169,30 @@ impl<'a> Run<'a> {
                     for (k, v) in ix.iter().enumerate() {
                         idx[k] = self.int_ix(ix!(*v));
                     }
-                    // Scalars are copied out as such: a `Value` moved through
-                    // the native stack costs a drop call and a store stall.
-                    let got = match &self.m.stack[ix!(*arr)] {
-                        Value::Arr(a) => match a.offset(&idx[..ix.len()]) {
-                            Some(o) => match &a.data[o] {
-                                Value::Real(x) => Ok(Err(*x)),
-                                v => Ok(Ok(v.clone())),
-                            },
-                            None => Err("index check failed"),
-                        },
-                        _ => Err("access check failed"),
-                    };
-                    match got {
-                        Ok(Err(x)) => {
-                            self.put_real_ix(ix!(*d), x);
-                            continue;
-                        }
-                        Ok(Ok(v)) => {
-                            self.put_ix(ix!(*d), v);
-                            continue;
-                        }
-                        Err(what) => Err(self.check_failed(what, *span)),
-                    }
+                    load_index!(d, arr, idx, ix.len(), span)
+                }
+                Op::Index1(d, arr, i, span) => {
+                    let idx = [self.int_ix(ix!(*i))];
+                    load_index!(d, arr, idx, 1, span)
+                }
+                Op::Index2(d, arr, [i, j], span) => {
+                    let idx = [self.int_ix(ix!(*i)), self.int_ix(ix!(*j))];
+                    load_index!(d, arr, idx, 2, span)
                 }
                 Op::StoreIndex(arr, ix, src, span) => {
                     let mut idx = [0i64; 4];
                     for (k, v) in ix.iter().enumerate() {
                         idx[k] = self.int_ix(ix!(*v));
                     }
-                    let i = ix!(*src);
-                    // A real goes as such (see `Index`), anything else is
-                    // taken from its temporary.
-                    let val = match &mut self.m.stack[i] {
-                        Value::Real(x) => Err(*x),
-                        v => Ok(std::mem::take(v)),
-                    };
-                    let slot = ix!(*arr);
-                    let r = match &mut self.m.stack[slot] {
-                        Value::Arr(a) => {
-                            let a = Rc::make_mut(a);
-                            match a.offset(&idx[..ix.len()]) {
-                                Some(o) => {
-                                    match (val, &mut a.data[o]) {
-                                        (Err(x), Value::Real(y)) => *y = x,
-                                        (Err(x), s) => value::overwrite(s, Value::Real(x)),
-                                        (Ok(v), s) => set(s, v),
-                                    }
-                                    Ok(())
-                                }
-                                None => Err("index check failed"),
-                            }
-                        }
-                        _ => Err("access check failed"),
-                    };
-                    match r {
-                        Ok(()) => continue,
-                        Err(what) => Err(self.check_failed(what, *span)),
-                    }
+                    store_index!(arr, idx, ix.len(), src, span)
+                }
+                Op::StoreIndex1(arr, i, src, span) => {
+                    let idx = [self.int_ix(ix!(*i))];
+                    store_index!(arr, idx, 1, src, span)
+                }
+                Op::StoreIndex2(arr, [i, j], src, span) => {
+                    let idx = [self.int_ix(ix!(*i)), self.int_ix(ix!(*j))];
+                    store_index!(arr, idx, 2, src, span)
                 }
                 Op::Field(d, a, i, span) => {
                     let got = match &self.m.stack[ix!(*a)] {
