@@ -40,6 +40,35 @@ impl Checker {
                 );
             }
         }
+        // A package whose spec declares a subprogram needs a body in the
+        // same declarative part (GNAT: missing body for "P"): without it, a
+        // call would stop the program half-way with Program_Error.
+        for d in decls {
+            let DeclKind::PackageSpec(p) = &d.kind else {
+                continue;
+            };
+            let needs_body = p
+                .decls
+                .iter()
+                .chain(&p.private)
+                .any(|d| matches!(&d.kind, DeclKind::SubprogramDecl { import: None, .. }));
+            let name = crate::syntax::parser::expr_text(&p.name);
+            let has_body = decls.iter().any(|b| {
+                matches!(&b.kind, DeclKind::PackageBody(b)
+                    if crate::syntax::parser::expr_text(&b.name).eq_ignore_ascii_case(&name))
+            });
+            if needs_body && !has_body {
+                self.err(
+                    Diagnostic::name(
+                        p.name.span,
+                        format!("package `{name}` declares subprograms but has no body"),
+                    )
+                    .with_hint(format!(
+                        "write `package body {name} is ... end {name};` in the same declarative part"
+                    )),
+                );
+            }
+        }
     }
 
     pub(super) fn decl(&mut self, d: &ast::Decl, out: &mut Vec<Stmt>) {

@@ -335,6 +335,12 @@ pub fn char_image(c: char) -> String {
     } else if (128..160).contains(&n) {
         format!("Character'Val({n})")
     } else {
-        format!("'{c}'")
+        // Built by hand, not by `format!`: the 256 literals of Character
+        // are made at every start (issue 11: start-up).
+        let mut s = String::with_capacity(2 + c.len_utf8());
+        s.push('\'');
+        s.push(c);
+        s.push('\'');
+        s
     }
 }
