@@ -635,6 +635,20 @@ impl Checker {
                 best = Some((d, n));
             }
         }
+        if best.is_none() && key.len() >= 4 {
+            // A name cut short (`Error` for `ErrorCode`): the shortest
+            // visible name it begins.
+            for n in self.visible_names() {
+                if n.len() > key.len()
+                    && n.starts_with(key)
+                    && best
+                        .as_ref()
+                        .is_none_or(|b| (n.len(), &n) < (b.1.len(), &b.1))
+                {
+                    best = Some((0, n));
+                }
+            }
+        }
         best.map(|b| self.spelled(&b.1))
     }
 

@@ -2506,7 +2506,22 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
                 1 => format!(", expected {}", expected[0]),
                 _ => format!(", expected one of {}", expected.join(", ")),
             };
-            Diagnostic::syntax(span, format!("unexpected {found}{exp}")).with_label(label)
+            let d = Diagnostic::syntax(span, format!("unexpected {found}{exp}")).with_label(label);
+            // `...` (`..` then `.`): a placeholder copied from a text, as in
+            // the handbook's demo (`F := ... -- Hier Code zur
+            // Stellungsanpassung`).
+            let placeholder = matches!(e.found(), Some(Token::DotDot))
+                && tokens
+                    .iter()
+                    .skip_while(|(_, s)| s.start < span.start)
+                    .nth(1)
+                    .is_some_and(|(t, s)| *t == Token::Dot && s.start == span.end);
+            if placeholder {
+                return d.with_hint(
+                    "`...` is a placeholder, not Ada: write the expression (the handbook's demo adapts a frame the arm cannot reach with `ValidFrame (F);`)",
+                );
+            }
+            d
         }
     }
 }
