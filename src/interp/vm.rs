@@ -2371,7 +2371,7 @@ impl<'a> Run<'a> {
                     // the long way below).
                     let frame = if cur.all_in { frames.pop() } else { None };
                     if let Some(frame) = frame {
-                        let (_, dst) = call_site(frame.code, frame.pc);
+                        let dst = call_dst(frame.code, frame.pc);
                         self.pop_frame(&frame, cur, current_base);
                         cur = frame.code;
                         pc = frame.pc;
@@ -2758,10 +2758,20 @@ fn save_regs(
 /// The arguments and result slot of the call instruction before `pc` (a
 /// frame's resume point).
 #[inline(always)]
+/// The result slot of the call instruction before `pc` (see [`call_site`]).
+#[inline(always)]
+fn call_dst(code: &Code<'_>, pc: u32) -> Option<Var> {
+    match code.ops.get(pc as usize - 1) {
+        Some(Op::Call(true, _, _, ops, _)) => ops.last().copied(),
+        _ => None,
+    }
+}
+
 fn call_site<'a>(code: &Code<'a>, pc: u32) -> (&'a [Arg], Option<Var>) {
     match code.ops.get(pc as usize - 1) {
         Some(Op::Call(func, _, args, ops, _)) => {
-            (args.map_or(&[], |a| a), func.then(|| ops[ops.len() - 1]))
+            let dst = if *func { ops.last().copied() } else { None };
+            (args.map_or(&[], |a| a), dst)
         }
         Some(Op::ProtEntry(e)) => (e.args, None),
         _ => (&[], None),
