@@ -427,7 +427,16 @@ impl Session {
         // check the rest of the stdlib to say where it is declared.
         // (`X` is not declared; `X` is not declared in `P`: name X, prefix P.)
         let undeclared = |d: &Diagnostic| {
-            let m = d.message.strip_prefix('`').filter(|_| d.hint.is_none())?;
+            // A guess from the names in view gives way to the package that
+            // declares the name.
+            let guessed = d
+                .hint
+                .as_ref()
+                .is_some_and(|h| h.starts_with("did you mean"));
+            let m = d
+                .message
+                .strip_prefix('`')
+                .filter(|_| d.hint.is_none() || guessed)?;
             if let Some(n) = m.strip_suffix("` is not declared") {
                 return Some((n.to_string(), None));
             }

@@ -43,15 +43,31 @@ impl Checker {
         // A package whose spec declares a subprogram needs a body in the
         // same declarative part (GNAT: missing body for "P"): without it, a
         // call would stop the program half-way with Program_Error.
+        // A declaration that did not parse, or a refused one (`package body
+        // P is separate;`), may be the body: no second error for it.
+        if decls.iter().any(|d| {
+            matches!(
+                d.kind,
+                DeclKind::Unsupported(_) | DeclKind::UnsupportedNamed(..)
+            )
+        }) {
+            return;
+        }
         for d in decls {
             let DeclKind::PackageSpec(p) = &d.kind else {
                 continue;
             };
-            let needs_body = p
-                .decls
-                .iter()
-                .chain(&p.private)
-                .any(|d| matches!(&d.kind, DeclKind::SubprogramDecl { import: None, .. }));
+            // What the check of the spec left without a body (a function
+            // completed by an expression function in the private part has
+            // one).
+            let needs_body = match self.denote(&p.name, false).first() {
+                Some(Entity::Package(i)) => self.packages[*i].names.values().flatten().any(|e| {
+                    matches!(e, Entity::Func(f)
+                            if self.funcs[*f as usize].body.is_none()
+                                && self.imports[*f as usize].is_none())
+                }),
+                _ => false,
+            };
             let name = crate::syntax::parser::expr_text(&p.name);
             let has_body = decls.iter().any(|b| {
                 matches!(&b.kind, DeclKind::PackageBody(b)

@@ -640,6 +640,7 @@ impl Checker {
             // visible name it begins.
             for n in self.visible_names() {
                 if n.len() > key.len()
+                    && n.len() <= 2 * key.len()
                     && n.starts_with(key)
                     && best
                         .as_ref()

@@ -2755,9 +2755,6 @@ fn save_regs(
     }
 }
 
-/// The arguments and result slot of the call instruction before `pc` (a
-/// frame's resume point).
-#[inline(always)]
 /// The result slot of the call instruction before `pc` (see [`call_site`]).
 #[inline(always)]
 fn call_dst(code: &Code<'_>, pc: u32) -> Option<Var> {
@@ -2767,6 +2764,9 @@ fn call_dst(code: &Code<'_>, pc: u32) -> Option<Var> {
     }
 }
 
+/// The arguments and result slot of the call instruction before `pc` (a
+/// frame's resume point).
+#[inline(always)]
 fn call_site<'a>(code: &Code<'a>, pc: u32) -> (&'a [Arg], Option<Var>) {
     match code.ops.get(pc as usize - 1) {
         Some(Op::Call(func, _, args, ops, _)) => {
