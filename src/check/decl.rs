@@ -108,7 +108,7 @@ impl Checker {
                     let t = self.type_def(tn, def, d.span);
                     self.declare(&tn.name, Entity::Type(t));
                 }
-                let t = self.subtype_ind(ty);
+                let t = self.elaborating(true, out, |c| c.subtype_ind(ty));
                 self.object(names, *constant, t, init.as_ref(), d.span, out);
             }
             DeclKind::Number { names, value } => {
@@ -161,12 +161,14 @@ impl Checker {
                     self.declare_checked(name, Entity::Type(t));
                     return;
                 }
-                let t = self.type_def(name, def, d.span);
+                // An array type's bounds are evaluated once, here.
+                let hoist = matches!(def, TypeDef::Array { .. });
+                let t = self.elaborating(hoist, out, |c| c.type_def(name, def, d.span));
                 self.declare_checked(name, Entity::Type(t));
                 self.collection_master(t, d.span, out);
             }
             DeclKind::Subtype { name, ind } => {
-                let of = self.subtype_ind(ind);
+                let of = self.elaborating(true, out, |c| c.subtype_ind(ind));
                 let t = self.types.add_subtype(&name.name, of);
                 self.declare_checked(name, Entity::Type(t));
             }
@@ -395,7 +397,7 @@ impl Checker {
                 let mut bs = Vec::new();
                 for (r, it) in ranges.iter().zip(&index) {
                     let (lo, hi, _) = self.discrete_range(r, Some(*it));
-                    bs.push((lo, hi));
+                    bs.push((self.elaborate_bound(lo), self.elaborate_bound(hi)));
                 }
                 let name = self.types.name(t).to_string();
                 let st = self.types.add_subtype(&name, t);
@@ -426,7 +428,49 @@ impl Checker {
         st
     }
 
+    /// Runs `f` (the check of a subtype indication or type definition of a
+    /// declaration) with its non-static bounds elaborated into `out`: they
+    /// are evaluated once, when the declaration is (RM 3.2.2), not at each
+    /// check against the subtype.
+    fn elaborating<T>(
+        &mut self,
+        hoist: bool,
+        out: &mut Vec<Stmt>,
+        f: impl FnOnce(&mut Self) -> T,
+    ) -> T {
+        if !hoist {
+            return f(self);
+        }
+        let outer = self.bounds_out.replace(Vec::new());
+        let r = f(self);
+        let got = std::mem::replace(&mut self.bounds_out, outer);
+        out.extend(got.unwrap_or_default());
+        r
+    }
+
+    /// A bound that is not static, while a declaration is elaborated: a
+    /// fresh slot that holds its value from now on.
+    pub(super) fn elaborate_bound(&mut self, e: Ex) -> Ex {
+        if self.bounds_out.is_none() || self.static_value(&e).is_some() || e.ty == ERROR {
+            return e;
+        }
+        let v = self.new_slot();
+        let (ty, span) = (e.ty, e.span);
+        if let Some(out) = &mut self.bounds_out {
+            out.push(Stmt {
+                kind: StmtKind::Init(v, e),
+                span,
+            });
+        }
+        Ex {
+            kind: ExKind::Var(v),
+            ty,
+            span,
+        }
+    }
+
     fn set_range(&mut self, st: TypeId, l: Ex, h: Ex) {
+        let (l, h) = (self.elaborate_bound(l), self.elaborate_bound(h));
         let (sl, sh) = (self.static_value(&l), self.static_value(&h));
         let info = &mut self.types.list[st as usize];
         info.static_range = None;
@@ -643,7 +687,7 @@ impl Checker {
                                 t
                             };
                             idx.push(self.types.base(t));
-                            bs.push((l, h));
+                            bs.push((self.elaborate_bound(l), self.elaborate_bound(h)));
                         }
                         self.types.add(
                             &name.name,

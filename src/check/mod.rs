@@ -108,6 +108,9 @@ pub struct Checker {
     /// that checking a long program holds one part of it, not all. Such a
     /// program's bodies are empty afterwards: it cannot run.
     pub diagnostics_only: bool,
+    /// While a declaration's subtype indication is checked: the statements
+    /// that evaluate its non-static bounds once (`elaborating`).
+    bounds_out: Option<Vec<Stmt>>,
     pub types: Types,
     pub funcs: Vec<Subprogram>,
     /// Import name of each subprogram bound to a builtin.
@@ -209,6 +212,7 @@ impl Checker {
         let mut c = Checker {
             consume_ast: false,
             diagnostics_only: false,
+            bounds_out: None,
             types: Types::standard(),
             funcs: Vec::new(),
             imports: Vec::new(),
