@@ -139,7 +139,7 @@ impl Checker {
                 if let Some(Entity::Type(old)) = prev
                     && matches!(self.types.kind(old), TypeKind::Incomplete)
                 {
-                    let t = self.type_def(name, def, d.span);
+                    let t = self.elaborating(true, out, |c| c.type_def(name, def, d.span));
                     let mut info = self.types.get(t).clone();
                     info.base = old;
                     self.types.list[old as usize] = info;
@@ -161,9 +161,9 @@ impl Checker {
                     self.declare_checked(name, Entity::Type(t));
                     return;
                 }
-                // An array type's bounds are evaluated once, here.
-                let hoist = matches!(def, TypeDef::Array { .. });
-                let t = self.elaborating(hoist, out, |c| c.type_def(name, def, d.span));
+                // Its bounds (an array's, its components') are evaluated
+                // once, here.
+                let t = self.elaborating(true, out, |c| c.type_def(name, def, d.span));
                 self.declare_checked(name, Entity::Type(t));
                 self.collection_master(t, d.span, out);
             }

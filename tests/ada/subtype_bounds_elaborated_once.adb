@@ -15,6 +15,11 @@ procedure Subtype_Bounds_Elaborated_Once is
    A : Arr := (others => 0);
    N : Integer range 1 .. Hi := 4;
    Name : String (1 .. Hi) := "abcde";
+   type R is record
+      S : String (1 .. Hi);
+      K : Integer range 0 .. Hi;
+   end record;
+   RX : R;
    procedure Nested is
       W : S := 5;
    begin
@@ -51,6 +56,15 @@ begin
       B : Arr;
    begin
       Put_Line ("B'Length =" & Integer'Image (B'Length));
+   end;
+   declare
+      RY : R;
+   begin
+      Put_Line ("R.S'Length =" & Integer'Image (RX.S'Length) & Integer'Image (RY.S'Length));
+      RY.K := 7;
+      Put_Line ("K accepted 7");
+   exception
+      when Constraint_Error => Put_Line ("K: Constraint_Error");
    end;
    for I in 1 .. 2 loop
       declare
