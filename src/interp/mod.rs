@@ -977,6 +977,8 @@ impl Run<'_> {
         match &target.kind {
             ExKind::Var(v) => {
                 let i = self.slot(*v);
+                let val = keep_bounds(&self.m.stack[i], val)
+                    .map_err(|what| self.check_failed(what, target.span))?;
                 self.m.stack[i] = val;
                 return Ok(());
             }
@@ -988,10 +990,13 @@ impl Run<'_> {
                 };
                 let a = Rc::make_mut(a);
                 return match a.offset(&ix[..idx.len()]) {
-                    Some(o) => {
-                        a.data[o] = val;
-                        Ok(())
-                    }
+                    Some(o) => match keep_bounds(&a.data[o], val) {
+                        Ok(val) => {
+                            a.data[o] = val;
+                            Ok(())
+                        }
+                        Err(what) => Err(self.check_failed(what, target.span)),
+                    },
                     None => Err(self.check_failed("index check failed", target.span)),
                 };
             }
@@ -1005,14 +1010,14 @@ impl Run<'_> {
                     let i = self.slot(*v);
                     steps.reverse();
                     let root = &mut self.m.stack[i];
-                    return write_path(root, &steps, val)
+                    return write_path(root, &steps, val, target.span)
                         .map_err(|(what, sp)| self.check_failed(what, sp));
                 }
                 // A device register: read, change, write back.
                 ExKind::Register(a) => {
                     let mut root = self.read_register(*a, e.ty, e.span)?;
                     steps.reverse();
-                    write_path(&mut root, &steps, val)
+                    write_path(&mut root, &steps, val, target.span)
                         .map_err(|(what, sp)| self.check_failed(what, sp))?;
                     return self.write_register(*a, &root, e.span);
                 }
@@ -1040,7 +1045,7 @@ impl Run<'_> {
                     };
                     steps.reverse();
                     let mut b = rc.borrow_mut();
-                    return write_path(&mut b, &steps, val)
+                    return write_path(&mut b, &steps, val, target.span)
                         .map_err(|(what, sp)| self.check_failed(what, sp));
                 }
                 _ => return Err(self.raise(check::PROGRAM_ERROR, "not a variable", e.span)),
@@ -1926,9 +1931,33 @@ fn fast(p: &Ex, idx: &[Ex]) -> bool {
 }
 
 /// Writes `val` at the end of a path of steps into `root` (copy-on-write).
-fn write_path(root: &mut Value, steps: &[Step], val: Value) -> Result<(), (&'static str, Span)> {
+/// An array object keeps its bounds (every array object is constrained,
+/// RM 3.3.1): a new value of another length fails the length check, one of
+/// the same length slides to the object's bounds (RM 5.2(10-11)).
+fn keep_bounds(old: &Value, val: Value) -> Result<Value, &'static str> {
+    let Value::Arr(o) = old else {
+        return Ok(val);
+    };
+    let n = match val {
+        Value::Arr(n) if n.bounds != o.bounds => n,
+        other => return Ok(other),
+    };
+    if o.bounds.len() != n.bounds.len() || (0..o.bounds.len()).any(|d| o.len(d) != n.len(d)) {
+        return Err("length check failed");
+    }
+    let mut slid = Rc::unwrap_or_clone(n);
+    slid.bounds = o.bounds.clone();
+    Ok(Value::Arr(Rc::new(slid)))
+}
+
+fn write_path(
+    root: &mut Value,
+    steps: &[Step],
+    val: Value,
+    at: Span,
+) -> Result<(), (&'static str, Span)> {
     let Some((first, rest)) = steps.split_first() else {
-        *root = val;
+        *root = keep_bounds(root, val).map_err(|what| (what, at))?;
         return Ok(());
     };
     match first {
@@ -1940,7 +1969,7 @@ fn write_path(root: &mut Value, steps: &[Step], val: Value) -> Result<(), (&'sta
             let Some(o) = a.offset(ix) else {
                 return Err(("index check failed", *sp));
             };
-            write_path(&mut a.data[o], rest, val)
+            write_path(&mut a.data[o], rest, val, at)
         }
         Step::Field(i) => {
             let Value::Rec(r) = root else {
@@ -1954,7 +1983,7 @@ fn write_path(root: &mut Value, steps: &[Step], val: Value) -> Result<(), (&'sta
                 ));
             };
             let r = Rc::make_mut(r);
-            write_path(&mut r[*i as usize], rest, val)
+            write_path(&mut r[*i as usize], rest, val, at)
         }
         Step::Slice(l, h, sp) => {
             let Value::Arr(a) = root else {

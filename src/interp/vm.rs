@@ -285,6 +285,9 @@ struct Compiler<'p, 'r> {
     walker_calls: &'r dyn Fn(FuncId) -> bool,
     /// Whether an access type designates a task (its allocator activates it).
     has_task: &'r dyn Fn(TypeId) -> bool,
+    /// Whether a type is an array type (an assignment to it keeps the
+    /// target's bounds).
+    is_array: &'r dyn Fn(TypeId) -> bool,
 }
 
 /// True when evaluating `e` may run a call or other code with effects
@@ -682,10 +685,13 @@ impl<'p> Compiler<'p, '_> {
         match &s.kind {
             StmtKind::Null => {}
             StmtKind::Init(v, e) => self.expr_into(e, *v),
+            // An array target keeps its bounds (the walker's `assign`
+            // checks the length and slides).
             StmtKind::Assign(t, e) => match &t.kind {
-                ExKind::Var(v) => self.expr_into(e, *v),
+                ExKind::Var(v) if !(self.is_array)(t.ty) => self.expr_into(e, *v),
                 ExKind::Index(p, idx)
                     if matches!(p.kind, ExKind::Var(_))
+                        && !(self.is_array)(t.ty)
                         && idx.len() <= 4
                         && !idx.iter().any(effects) =>
                 {
@@ -1174,6 +1180,7 @@ impl<'a> Run<'a> {
 
     fn compile(&self, level: u16, own: u32, what: Compiled<'a>, func: Option<FuncId>) -> Code<'a> {
         let walker_calls = |f: FuncId| self.walker_call(f);
+        let is_array = |t: TypeId| self.c.types.array(t).is_some();
         let has_task = |t: TypeId| {
             self.c
                 .types
@@ -1193,6 +1200,7 @@ impl<'a> Run<'a> {
             masters: 0,
             walker_calls: &walker_calls,
             has_task: &has_task,
+            is_array: &is_array,
         };
         match what {
             Compiled::Body(b) => c.body(b),
