@@ -1539,8 +1539,10 @@ impl Run<'_> {
                     ));
                 }
                 self.reserve(n, span)?;
-                let data = if self.c.types.is_unique(elem) {
-                    // Each component its own task or protected object.
+                let data = if self.c.types.is_unique(elem) || !self.default_repeatable(elem) {
+                    // Each component its own task or protected object, or
+                    // its own evaluation of its defaults (RM 3.3.1(18-20):
+                    // `V : Integer := Next;`, `P : Ptr := new ...`).
                     let mut v = Vec::with_capacity(n as usize);
                     for _ in 0..n {
                         v.push(self.default_value(elem, span)?);
@@ -1704,13 +1706,23 @@ impl Run<'_> {
                 let n = (hi - lo + 1).max(0) as usize;
                 let mut vals: Vec<Option<Value>> = vec![None; n];
                 for (rs, v) in &pairs {
-                    let val = self.eval(v)?;
+                    // Once per component (RM 4.3.3(23)), unless that is the
+                    // same as once.
+                    let once = if self.repeatable(v) {
+                        Some(self.eval(v)?)
+                    } else {
+                        None
+                    };
                     for (l, h) in rs {
                         for i in *l..=*h {
                             if i < lo || i > hi {
                                 return Err(self.check_failed("index check failed", span));
                             }
-                            vals[(i - lo) as usize] = Some(val.clone());
+                            let val = match &once {
+                                Some(x) => x.clone(),
+                                None => self.eval(v)?,
+                            };
+                            vals[(i - lo) as usize] = Some(val);
                         }
                     }
                 }
@@ -1737,6 +1749,19 @@ impl Run<'_> {
                 }
                 self.rows_to_array(out, (lo, hi), fixed, dims, span)
             }
+        }
+    }
+
+    /// Whether a value of `t` by default can be computed once and copied
+    /// (its components' defaults are [`Self::repeatable`]).
+    fn default_repeatable(&self, t: TypeId) -> bool {
+        match self.c.types.kind(t) {
+            TypeKind::Record(fs) => fs.iter().all(|f| match &f.default {
+                Some(d) => self.repeatable(d),
+                None => self.default_repeatable(f.ty),
+            }),
+            TypeKind::Array { elem, .. } => self.default_repeatable(*elem),
+            _ => true,
         }
     }
 
