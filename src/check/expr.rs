@@ -2625,8 +2625,18 @@ impl Checker {
         let mut named = Vec::new();
         let mut others = None;
         for it in items {
-            let v = self.expr(&it.value, Some(comp_ty));
-            let v = self.coerce(v, comp_ty);
+            // `Choice => <>` (parsed as an error value): the component's
+            // default (RM 4.3.3(23.1)).
+            let v = if matches!(it.value.kind, ExprKind::Error) && !it.choices.is_empty() {
+                Ex {
+                    kind: ExKind::Default(comp_ty),
+                    ty: comp_ty,
+                    span: it.span,
+                }
+            } else {
+                let v = self.expr(&it.value, Some(comp_ty));
+                self.coerce(v, comp_ty)
+            };
             if it.choices.is_empty() {
                 positional.push(v);
                 continue;
