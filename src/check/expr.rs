@@ -1070,6 +1070,27 @@ impl Checker {
                 } else {
                     STRING
                 };
+                // Its lower bound is its index subtype's first (RM 4.2(11)):
+                // 1 for String; otherwise an aggregate of its characters.
+                let first = match self.types.array(ty) {
+                    Some((index, elem, None)) if index.len() == 1 => {
+                        self.types.get(index[0]).static_range.map(|r| (r.0, elem))
+                    }
+                    _ => None,
+                };
+                if let Some((f, elem)) = first
+                    && f != 1
+                {
+                    let items: Vec<Ex> = s
+                        .chars()
+                        .map(|c| self.mk(ExKind::Int(c as i64), elem, sp))
+                        .collect();
+                    let agg = ArrayAgg {
+                        ty,
+                        kind: ArrayAggKind::Positional(items, None),
+                    };
+                    return self.mk(ExKind::ArrayAgg(Box::new(agg)), ty, sp);
+                }
                 self.mk(ExKind::Str(Rc::from(s.as_str())), ty, sp)
             }
             ExprKind::Null => self.mk(ExKind::Null, NULL_T, sp),
