@@ -759,24 +759,16 @@ impl<'p> Compiler<'p, '_> {
                 self.patch(j, end);
             }
             StmtKind::For(f) => {
-                let ForLoop {
-                    id,
-                    var,
-                    lo,
-                    hi,
-                    reverse,
-                    body,
-                } = &**f;
                 let (l, h) = (self.temp(), self.temp());
-                self.expr_into(lo, l);
-                self.expr_into(hi, h);
+                self.expr_into(&f.lo, l);
+                self.expr_into(&f.hi, h);
                 let start = self.ops.len();
-                self.ops.push(Op::ForStart(*var, l, h, *reverse, 0));
+                self.ops.push(Op::ForStart(f.var, l, h, f.reverse, 0));
                 let body_pc = self.here();
-                self.loop_body(*id, body);
+                self.loop_body(f.id, &f.body);
                 self.ops
-                    .push(Op::ForNext(*var, l, h, *reverse, body_pc, s.span));
-                let end = self.end_loop(*id);
+                    .push(Op::ForNext(f.var, l, h, f.reverse, body_pc, s.span));
+                let end = self.end_loop(f.id);
                 self.patch(start, end);
             }
             StmtKind::Exit(id, cond) => {
