@@ -108,7 +108,7 @@ impl Checker {
                     let t = self.type_def(tn, def, d.span);
                     self.declare(&tn.name, Entity::Type(t));
                 }
-                let t = self.elaborating(true, out, |c| c.subtype_ind(ty));
+                let t = self.elaborating(out, |c| c.subtype_ind(ty));
                 self.object(names, *constant, t, init.as_ref(), d.span, out);
             }
             DeclKind::Number { names, value } => {
@@ -139,7 +139,7 @@ impl Checker {
                 if let Some(Entity::Type(old)) = prev
                     && matches!(self.types.kind(old), TypeKind::Incomplete)
                 {
-                    let t = self.elaborating(true, out, |c| c.type_def(name, def, d.span));
+                    let t = self.elaborating(out, |c| c.type_def(name, def, d.span));
                     let mut info = self.types.get(t).clone();
                     info.base = old;
                     self.types.list[old as usize] = info;
@@ -163,12 +163,12 @@ impl Checker {
                 }
                 // Its bounds (an array's, its components') are evaluated
                 // once, here.
-                let t = self.elaborating(true, out, |c| c.type_def(name, def, d.span));
+                let t = self.elaborating(out, |c| c.type_def(name, def, d.span));
                 self.declare_checked(name, Entity::Type(t));
                 self.collection_master(t, d.span, out);
             }
             DeclKind::Subtype { name, ind } => {
-                let of = self.elaborating(true, out, |c| c.subtype_ind(ind));
+                let of = self.elaborating(out, |c| c.subtype_ind(ind));
                 let t = self.types.add_subtype(&name.name, of);
                 self.declare_checked(name, Entity::Type(t));
             }
@@ -432,15 +432,7 @@ impl Checker {
     /// declaration) with its non-static bounds elaborated into `out`: they
     /// are evaluated once, when the declaration is (RM 3.2.2), not at each
     /// check against the subtype.
-    fn elaborating<T>(
-        &mut self,
-        hoist: bool,
-        out: &mut Vec<Stmt>,
-        f: impl FnOnce(&mut Self) -> T,
-    ) -> T {
-        if !hoist {
-            return f(self);
-        }
+    fn elaborating<T>(&mut self, out: &mut Vec<Stmt>, f: impl FnOnce(&mut Self) -> T) -> T {
         let outer = self.bounds_out.replace(Vec::new());
         let r = f(self);
         let got = std::mem::replace(&mut self.bounds_out, outer);
