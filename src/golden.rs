@@ -157,6 +157,8 @@ pub fn run_text_on(name: &str, text: &str, robot: &str, trace: bool, target: &Ta
     if let Some(e) = target.engine {
         s.machine.engine = e;
     }
+    // The script runs once, as `adair run` runs it.
+    s.compile_as_checked();
     let tracer = || trace.then(|| Box::new(buf.clone()) as Box<dyn Write>);
     if let Some(d) = &target.devices {
         s.set_devices(d.clone());

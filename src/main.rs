@@ -375,6 +375,8 @@ fn real_main(
             let mut s = Session::new(Box::new(std::io::LineWriter::new(std::io::stdout())));
             // No tool reads the uses and types of this run.
             s.checker.index.uses = false;
+            // It runs once: a long body is compiled as it is checked.
+            s.compile_as_checked();
             s.strict = strict;
             s.warnings_to = Some((Box::new(std::io::stderr()), color));
             if let Some(d) = &devices {

@@ -377,6 +377,14 @@ impl Session {
         self.machine.eval_expr(self.checker.program(), e, svc)
     }
 
+    /// For a program that is checked and run once (`adair run`): a long
+    /// subprogram body is compiled a part at a time as it is checked, so
+    /// that its checked form is never held whole (see
+    /// `Checker::compile_parts`). Its code is then used up by its run.
+    pub fn compile_as_checked(&mut self) {
+        self.checker.compile_parts = self.machine.part_compiler();
+    }
+
     pub fn check_source(
         &mut self,
         name: &str,

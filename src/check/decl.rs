@@ -993,6 +993,7 @@ impl Checker {
         self.masters.push(false);
         let mut elab = Vec::new();
         self.decls_completed(decls, &mut elab);
+        self.parts_here = kind == BodyKind::Subprogram;
         let inner = self.block(body);
         let creates = self.masters.pop().unwrap_or(false);
         let body_span = body.span;

@@ -279,6 +279,39 @@ pub enum StmtKind {
     /// A timed (`or delay`) or conditional (`else`) entry call.
     TimedCall(Box<TimedCall>),
     Abort(Vec<Ex>),
+    /// A part of a long body, compiled by the engine as it was checked
+    /// (see [`PartCompiler`]); its checked statements are gone.
+    Compiled(Precompiled),
+}
+
+/// Compiles the checked statements of a part of a long body for the
+/// compiled engine as soon as the checker has made them, so that a long
+/// program's checked form is never held whole (issue 14: memory per
+/// source byte). Returns the compiled part and how many temporaries it
+/// uses (slots the checker reserves for it, above the body's slots so far).
+pub type PartCompiler = fn(ProgramRef<'_>, PartAt, Vec<Stmt>) -> (Precompiled, u32);
+
+/// Where a part of a long body is compiled: the body's level, its number
+/// of slots so far (the part's temporaries go above them), and whether the
+/// body is a master (its `return`s leave that region).
+#[derive(Clone, Copy, Debug)]
+pub struct PartAt {
+    pub level: u16,
+    pub own: u32,
+    pub master: bool,
+}
+
+/// The code of a compiled part, opaque to the checker. The engine takes
+/// it out when it compiles the body: a body made of parts is compiled
+/// once (a second compilation finds the parts empty, and running them
+/// raises Program_Error).
+#[derive(Clone)]
+pub struct Precompiled(pub Rc<std::cell::RefCell<Option<crate::interp::vm::Part>>>);
+
+impl std::fmt::Debug for Precompiled {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Precompiled")
+    }
 }
 
 /// A `for` loop: its id (for `exit`), counter, bounds, direction, body.

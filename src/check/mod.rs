@@ -108,6 +108,15 @@ pub struct Checker {
     /// that checking a long program holds one part of it, not all. Such a
     /// program's bodies are empty afterwards: it cannot run.
     pub diagnostics_only: bool,
+    /// Set for a run in the compiled engine (`adair run`): a lazily parsed
+    /// subprogram body is compiled a part at a time as it is checked, and
+    /// each part's checked statements dropped (see [`ir::PartCompiler`]).
+    pub compile_parts: Option<ir::PartCompiler>,
+    /// The next block checked is a subprogram's own (see `compile_parts`).
+    parts_here: bool,
+    /// An error was reported since the diagnostics were last taken (a
+    /// program with errors does not run: its parts are not compiled).
+    erred: bool,
     /// While a declaration's subtype indication is checked: the statements
     /// that evaluate its non-static bounds once (`elaborating`).
     bounds_out: Option<Vec<Stmt>>,
@@ -212,6 +221,9 @@ impl Checker {
         let mut c = Checker {
             consume_ast: false,
             diagnostics_only: false,
+            compile_parts: None,
+            parts_here: false,
+            erred: false,
             bounds_out: None,
             types: Types::standard(),
             funcs: Vec::new(),
@@ -349,6 +361,7 @@ impl Checker {
             &d.message,
         ));
         if self.diag_keys.insert(key) {
+            self.erred |= !d.is_warning();
             self.diags.push(d);
         }
     }
@@ -1075,6 +1088,7 @@ impl Checker {
     pub fn take_diags(&mut self) -> Vec<Diagnostic> {
         self.diag_keys.clear();
         self.undeclared.clear();
+        self.erred = false;
         std::mem::take(&mut self.diags)
     }
 

@@ -20,10 +20,40 @@ impl Checker {
     /// shrinks as its checked form grows.
     pub(super) fn block(&mut self, b: &ast::Block) -> Body {
         let mut stmts = Vec::new();
+        let parts_here = std::mem::take(&mut self.parts_here);
         if let Some(at) = b.lazy {
             let text = self.texts.get(&at.context).cloned().unwrap_or_default();
             let diags = crate::syntax::lazy_stmts(&text, at.context, at, |n, ss| {
-                if self.diagnostics_only {
+                if let Some(compile) = self.compile_parts.filter(|_| parts_here) {
+                    let mut part = Vec::with_capacity(ss.len());
+                    for s in ss {
+                        self.stmt(&s, &mut part);
+                    }
+                    // A program with errors does not run.
+                    if self.erred || self.diagnostics_only {
+                        return;
+                    }
+                    let span = match (part.first(), part.last()) {
+                        (Some(a), Some(z)) => Span {
+                            end: z.span.end,
+                            ..a.span
+                        },
+                        _ => return,
+                    };
+                    let ctx = self.ctx.last().expect("a body's context");
+                    let at = ir::PartAt {
+                        level: self.level,
+                        own: ctx.next_slot,
+                        master: self.masters.last().copied().unwrap_or(false),
+                    };
+                    let (code, temps) = compile(self.program(), at, part);
+                    self.ctx.last_mut().expect("a body's context").next_slot += temps;
+                    stmts.push(Stmt {
+                        kind: StmtKind::Compiled(code),
+                        span,
+                    });
+                    return;
+                } else if self.diagnostics_only {
                     // This part's checked statements go as the next are made.
                     stmts.clear();
                 } else if stmts.capacity() == 0 {

@@ -409,6 +409,14 @@ impl Machine {
         }
     }
 
+    /// What compiles a long body a part at a time as it is checked, for
+    /// a program this machine runs once in the compiled engine (none for
+    /// the reference walker, which runs the checked statements).
+    pub fn part_compiler(&self) -> Option<crate::check::ir::PartCompiler> {
+        (self.engine == vm::Engine::Compiled)
+            .then_some(vm::compile_part as crate::check::ir::PartCompiler)
+    }
+
     /// Makes ready for a run at level 0: natives bound, the level-0 slots
     /// there (kept between runs), no frames. Returns the level-0 slot count.
     fn prepare(&mut self, chk: ProgramRef<'_>) -> usize {
@@ -630,6 +638,12 @@ impl Run<'_> {
     fn exec(&mut self, s: &Stmt) -> R<()> {
         match &s.kind {
             StmtKind::Null => Ok(()),
+            // Only the compiled engine runs a compiled part, once.
+            StmtKind::Compiled(_) => Err(self.raise(
+                check::PROGRAM_ERROR,
+                "this part of a long body was compiled for one run of the compiled engine",
+                s.span,
+            )),
             StmtKind::Init(v, e) => {
                 let val = self.eval(e)?;
                 let i = self.slot(*v);

@@ -41,7 +41,7 @@ impl Engine {
 /// One instruction. Operands are frame slots (`Var`); `Span`s are where a
 /// check that fails raises.
 #[derive(Debug)]
-enum Op<'p> {
+enum Op {
     Int(Var, i64),
     Real(Var, f64),
     Move(Var, Var),
@@ -74,17 +74,16 @@ enum Op<'p> {
     DerefField(Var, Var, u32, Span, Span),
     /// `dst := null`.
     Null(Var),
-    /// The walker evaluates an expression into a slot.
-    Eval(Var, &'p Ex),
-    /// The same for a copy of an expression whose operands were computed
-    /// here first (replaced by the temporaries holding them, which are
-    /// emptied once it is evaluated: a chain `F (X) & "a" & ...` would keep
-    /// every intermediate string alive until the frame ends).
-    EvalOwned(Var, Box<Ex>, Box<[Var]>),
+    /// The walker evaluates an expression into a slot. The expression may
+    /// be a copy whose operands were computed here first (replaced by the
+    /// temporaries holding them, listed last, which are emptied once it is
+    /// evaluated: a chain `F (X) & "a" & ...` would keep every intermediate
+    /// string alive until the frame ends).
+    Eval(Var, Box<Ex>, Box<[Var]>),
     /// The walker assigns a slot's value to a target.
-    Assign(&'p Ex, Var),
+    Assign(Box<Ex>, Var),
     /// The walker executes a statement.
-    Exec(&'p Stmt),
+    Exec(Box<Stmt>),
     Jump(u32),
     JumpIfNot(Var, u32),
     /// `JumpIfNot` of a `CmpK`, in one instruction (`if N < 2 then`).
@@ -101,21 +100,20 @@ enum Op<'p> {
     ForNext(Var, Var, Var, bool, u32, Span),
     Poll(Span),
     /// A call of a subprogram with a body: whether it is a function, its
-    /// arguments (None: none, the main subprogram's call), their operands
-    /// followed by the slot for a function's result. The arguments are
-    /// a reference to their box, a thin pointer: it keeps `Op` at 48 bytes.
-    #[allow(clippy::borrowed_box)]
-    Call(bool, FuncId, Option<&'p Box<[Arg]>>, Box<[Var]>, Span),
-    /// A call the walker makes (natives, services, a subprogram without body).
-    CallWalker(FuncId, &'p [Arg], Option<Var>, Span),
-    /// The same with `in` arguments computed here first.
-    CallWalkerOwned(FuncId, Box<[Arg]>, Option<Var>, Span),
+    /// arguments when one is not `in` (for the copy-back; None: all `in`,
+    /// or none), their operands followed by the slot for a function's
+    /// result. The arguments are boxed twice, a thin pointer: it keeps `Op`
+    /// at 48 bytes.
+    Call(bool, FuncId, Option<Box<Box<[Arg]>>>, Box<[Var]>, Span),
+    /// A call the walker makes (natives, services, a subprogram without
+    /// body), its `in` arguments with calls in them computed here first.
+    CallWalker(FuncId, Box<[Arg]>, Option<Var>, Span),
     Return(Option<Var>),
     /// The end of a body: a procedure returns, a function raises.
     FallOff,
     /// Handler dispatch for the pending occurrence: the handlers, the
     /// target of each, and the handler depth of the region.
-    Dispatch(&'p [Handler], Box<[u32]>, u32),
+    Dispatch(Box<[Catch]>, u32),
     /// Leaves a handler body: its occurrence is no longer current.
     PopCurrent,
     /// Back to `frame's depth + n` current occurrences (an `exit` out of
@@ -138,25 +136,25 @@ enum Op<'p> {
     /// until every one has blocked.
     Settle,
     /// `accept`: the entry and the parameters' slots.
-    Accept(u32, &'p [(Var, Mode)], Span),
+    Accept(u32, Box<[(Var, Mode)]>, Span),
     /// The end of a rendezvous: `out` values go to the caller.
-    AcceptEnd(&'p [(Var, Mode)]),
+    AcceptEnd(Box<[(Var, Mode)]>),
     /// An exception leaves an accept body: the caller gets it too.
     AcceptFail,
     /// An entry call of a task.
-    EntryCall(Box<EntryOp<'p>>),
+    EntryCall(Box<EntryOp>),
     /// After an entry call: copy-out, the caller's exception, or the jump
     /// to a timed call's delay (conditional call's else) statements.
-    EntryDone(&'p Vec<Arg>, Box<[Var]>, Option<u32>, Span),
+    EntryDone(Box<Box<[Arg]>>, Box<[Var]>, Option<u32>, Span),
     /// A protected entry call.
-    ProtEntry(Box<EntryOp<'p>>),
+    ProtEntry(Box<EntryOp>),
     /// After a protected action: the object's queues are served.
     ProtDone(Var, Box<[Arg]>, Span),
-    Select(Box<SelectOp<'p>>),
+    Select(Box<SelectOp>),
     Abort(Box<[Var]>),
     /// An allocator of a task: the task is activated by the next
     /// instruction (`Activate`), not left to the walker.
-    AllocTask(Var, &'p Ex),
+    AllocTask(Var, Box<Ex>),
     /// An access type to tasks is declared: note its master.
     NoteMaster(Var),
 }
@@ -165,11 +163,11 @@ enum Op<'p> {
 /// operands, the timeout (delay or time) of a timed call, whether it is
 /// conditional, and where a timed call's delay statements begin.
 #[derive(Debug)]
-struct EntryOp<'p> {
+struct EntryOp {
     target: Var,
     kind: u32,
     entry: u32,
-    args: &'p [Arg],
+    args: Box<[Arg]>,
     ops: Box<[Var]>,
     timed: Option<(Var, bool)>,
     conditional: bool,
@@ -179,12 +177,21 @@ struct EntryOp<'p> {
     span: Span,
 }
 
+/// A handler of a dispatch: its exceptions (None: `others`), the slot of
+/// its occurrence, where its statements begin.
+#[derive(Debug)]
+struct Catch {
+    choices: Option<Box<[ExcId]>>,
+    occurrence: Option<Var>,
+    target: u32,
+}
+
 /// A select's accept alternative: guard, entry, parameters, target.
-type AcceptAlt<'p> = (Option<Var>, u32, &'p [(Var, Mode)], u32);
+type AcceptAlt = (Option<Var>, u32, Box<[(Var, Mode)]>, u32);
 
 #[derive(Debug)]
-struct SelectOp<'p> {
-    alts: Vec<AcceptAlt<'p>>,
+struct SelectOp {
+    alts: Vec<AcceptAlt>,
     /// Guard, amount, until, target.
     delay: Option<(Option<Var>, Var, bool, u32)>,
     terminate: Option<Option<Var>>,
@@ -231,14 +238,163 @@ impl Regs {
 }
 
 /// The live registers of the running thread, as the engine's loop holds them.
-type Live<'c, 'a> = (
-    Vec<Frame<'c, 'a>>,
-    &'c Code<'a>,
+type Live<'c> = (
+    Vec<Frame<'c>>,
+    &'c Code,
     u32,
     usize,
     Option<Box<Occurrence>>,
     Option<(usize, usize)>,
 );
+
+/// A part of a long body compiled as it was checked (see
+/// [`compile_part`]): its instructions, handler regions and loop exits,
+/// with targets counted from its first instruction.
+pub struct Part {
+    ops: Vec<Op>,
+    regions: Vec<Region>,
+    exits: Vec<(u32, u32, u32)>,
+}
+
+/// Compiles a part of a long subprogram body as soon as the checker has
+/// made it (an [`crate::check::ir::PartCompiler`]), for `adair run`: the checked
+/// statements are dropped here, the instructions wait in the body for
+/// [`Compiler::splice`]. Which calls the walker makes is decided now: an
+/// imported subprogram (a native, as [`Run::walker_call`] binds it) or one
+/// whose body is not checked yet (the body itself, when it calls itself).
+pub(crate) fn compile_part(
+    prog: ProgramRef<'_>,
+    at: crate::check::ir::PartAt,
+    stmts: Vec<Stmt>,
+) -> (crate::check::ir::Precompiled, u32) {
+    let walker_calls = |f: FuncId| {
+        let i = f as usize;
+        prog.imports.get(i).is_some_and(|n| n.is_some())
+            || prog.funcs.get(i).is_none_or(|s| s.body.is_none())
+    };
+    let is_array = |t: TypeId| prog.types.array(t).is_some();
+    let has_task = |t: TypeId| {
+        prog.types
+            .designated(t)
+            .is_some_and(|d| prog.types.has_task(d))
+    };
+    let mut c = Compiler {
+        level: at.level,
+        own: at.own,
+        ntemp: 0,
+        max_temp: 0,
+        ops: Vec::new(),
+        regions: Vec::new(),
+        exits: Vec::new(),
+        loops: Vec::new(),
+        hdepth: 0,
+        masters: u32::from(at.master),
+        walker_calls: &walker_calls,
+        has_task: &has_task,
+        is_array: &is_array,
+    };
+    c.stmts(&stmts);
+    drop(stmts);
+    c.ops.shrink_to_fit();
+    let part = Part {
+        ops: c.ops,
+        regions: c.regions,
+        exits: c.exits,
+    };
+    let code = crate::check::ir::Precompiled(Rc::new(std::cell::RefCell::new(Some(part))));
+    (code, c.max_temp)
+}
+
+/// Moves `op`'s jump targets `by` instructions on (a compiled part
+/// spliced into its body's code).
+fn relocate(op: &mut Op, by: u32) {
+    match op {
+        Op::Jump(t)
+        | Op::JumpIfNot(_, t)
+        | Op::JumpIf(_, t)
+        | Op::CmpKJumpNot(.., t)
+        | Op::CmpJumpNot(.., t)
+        | Op::ForStart(.., t)
+        | Op::ForNext(_, _, _, _, t, _) => *t += by,
+        Op::Case(_, table, other, _) => {
+            for (_, _, t) in table.iter_mut() {
+                *t += by;
+            }
+            if let Some(t) = other {
+                *t += by;
+            }
+        }
+        Op::Dispatch(catches, _) => {
+            for c in catches.iter_mut() {
+                c.target += by;
+            }
+        }
+        Op::EntryDone(_, _, other, _) => {
+            if let Some(t) = other {
+                *t += by;
+            }
+        }
+        Op::EntryCall(e) | Op::ProtEntry(e) => e.other += by,
+        Op::Select(sel) => {
+            for a in sel.alts.iter_mut() {
+                a.3 += by;
+            }
+            if let Some(d) = &mut sel.delay {
+                d.3 += by;
+            }
+            if let Some(t) = &mut sel.els {
+                *t += by;
+            }
+        }
+        Op::Int(..)
+        | Op::Real(..)
+        | Op::Move(..)
+        | Op::IntBin(..)
+        | Op::IntBinK(..)
+        | Op::IntNeg(..)
+        | Op::FloatBin(..)
+        | Op::ToReal(..)
+        | Op::Cmp(..)
+        | Op::CmpK(..)
+        | Op::Eq(..)
+        | Op::Logic(..)
+        | Op::Not(..)
+        | Op::RangeCheck(..)
+        | Op::Index(..)
+        | Op::Index1(..)
+        | Op::Index2(..)
+        | Op::StoreIndex(..)
+        | Op::StoreIndex1(..)
+        | Op::StoreIndex2(..)
+        | Op::Field(..)
+        | Op::DerefField(..)
+        | Op::Null(..)
+        | Op::Eval(..)
+        | Op::Assign(..)
+        | Op::Exec(..)
+        | Op::Poll(..)
+        | Op::Call(..)
+        | Op::CallWalker(..)
+        | Op::Return(..)
+        | Op::FallOff
+        | Op::PopCurrent
+        | Op::TruncCurrent(..)
+        | Op::Delay(..)
+        | Op::Activate(..)
+        | Op::MasterEnter
+        | Op::MasterLeave(..)
+        | Op::MasterUnwind(..)
+        | Op::AwaitAll
+        | Op::Settle
+        | Op::Accept(..)
+        | Op::AcceptEnd(..)
+        | Op::AcceptFail
+        | Op::ProtDone(..)
+        | Op::Abort(..)
+        | Op::AllocTask(..)
+        | Op::NoteMaster(..) => {}
+    }
+}
 
 /// A part of the code whose exceptions go to handlers.
 struct Region {
@@ -248,14 +404,14 @@ struct Region {
 }
 
 /// A compiled body.
-pub(crate) struct Code<'p> {
+pub(crate) struct Code {
     /// The subprogram whose body this is (None: level-0 code).
     func: Option<FuncId>,
     /// Every parameter is `in`: a return has nothing to copy back.
     all_in: bool,
     /// The static level of its frame (its own slots are `Var`s of it).
     level: u16,
-    ops: Vec<Op<'p>>,
+    ops: Vec<Op>,
     /// Slots beyond the subprogram's own: temporaries.
     temps: u32,
     /// The frame's size: the subprogram's own slots and the temporaries.
@@ -267,12 +423,12 @@ pub(crate) struct Code<'p> {
     exits: Vec<(u32, u32, u32)>,
 }
 
-struct Compiler<'p, 'r> {
+struct Compiler<'r> {
     level: u16,
     own: u32,
     ntemp: u32,
     max_temp: u32,
-    ops: Vec<Op<'p>>,
+    ops: Vec<Op>,
     regions: Vec<Region>,
     exits: Vec<(u32, u32, u32)>,
     /// The loops being compiled: id, jumps to patch with the exit, handler
@@ -326,7 +482,7 @@ pub(crate) fn effects_unless(e: &Ex, judge: &dyn Fn(&Ex) -> Option<bool>) -> boo
     }
 }
 
-impl<'p> Compiler<'p, '_> {
+impl Compiler<'_> {
     fn temp(&mut self) -> Var {
         let v = Var {
             level: self.level,
@@ -359,7 +515,7 @@ impl<'p> Compiler<'p, '_> {
 
     /// A jump (to be patched) taken when the condition `c` is False: a
     /// comparison jumps itself.
-    fn jump_unless(&mut self, c: &'p Ex) -> usize {
+    fn jump_unless(&mut self, c: &Ex) -> usize {
         let op = match &c.kind {
             ExKind::Cmp(op, a, b) => match b.kind {
                 ExKind::Int(k) => Op::CmpKJumpNot(*op, self.expr(a), k, 0),
@@ -375,7 +531,7 @@ impl<'p> Compiler<'p, '_> {
     }
 
     /// The operand holding `e`'s value: a variable itself, or a temporary.
-    fn expr(&mut self, e: &'p Ex) -> Var {
+    fn expr(&mut self, e: &Ex) -> Var {
         if let ExKind::Var(v) = e.kind {
             return v;
         }
@@ -386,7 +542,7 @@ impl<'p> Compiler<'p, '_> {
 
     /// An operand for the left side of a binary operation whose right side
     /// is `right`: copied to a temporary when the right side may change it.
-    fn left(&mut self, e: &'p Ex, right: &Ex) -> Var {
+    fn left(&mut self, e: &Ex, right: &Ex) -> Var {
         let a = self.expr(e);
         if !self.is_temp(a) && effects(right) {
             let t = self.temp();
@@ -397,7 +553,7 @@ impl<'p> Compiler<'p, '_> {
     }
 
     /// Evaluates `e` into `dst`, which is written once, at the end.
-    fn expr_into(&mut self, e: &'p Ex, dst: Var) {
+    fn expr_into(&mut self, e: &Ex, dst: Var) {
         let span = e.span;
         match &e.kind {
             ExKind::Int(v) => self.ops.push(Op::Int(dst, *v)),
@@ -530,7 +686,7 @@ impl<'p> Compiler<'p, '_> {
             // target keeps its value).
             ExKind::Alloc(None, _) if (self.has_task)(e.ty) => {
                 let t = self.temp();
-                self.ops.push(Op::AllocTask(t, e));
+                self.ops.push(Op::AllocTask(t, Box::new(e.clone())));
                 self.ops.push(Op::Activate(span));
                 self.ops.push(Op::Move(dst, t));
             }
@@ -541,13 +697,12 @@ impl<'p> Compiler<'p, '_> {
                 self.case(x, span, arms, others.as_ref(), |c, v| c.expr_into(v, t));
                 self.ops.push(Op::Move(dst, t));
             }
-            _ => match self.strict_copy(e) {
-                Some((copy, temps)) => {
-                    self.ops
-                        .push(Op::EvalOwned(dst, Box::new(copy), temps.into()))
-                }
-                None => self.ops.push(Op::Eval(dst, e)),
-            },
+            _ => {
+                let (copy, temps) = self
+                    .strict_copy(e)
+                    .unwrap_or_else(|| (e.clone(), Vec::new()));
+                self.ops.push(Op::Eval(dst, Box::new(copy), temps.into()));
+            }
         }
     }
 
@@ -555,8 +710,8 @@ impl<'p> Compiler<'p, '_> {
     /// has a call among them: the operands computed here (so that the calls
     /// run compiled), and a copy of the node that reads them from their
     /// temporaries, for the walker. None: the walker takes the node whole.
-    fn strict_copy(&mut self, e: &'p Ex) -> Option<(Ex, Vec<Var>)> {
-        let kids: Vec<&'p Ex> = match &e.kind {
+    fn strict_copy(&mut self, e: &Ex) -> Option<(Ex, Vec<Var>)> {
+        let kids: Vec<&Ex> = match &e.kind {
             ExKind::Attr(_, args) => args.iter().collect(),
             ExKind::Concat(a, b, ..) | ExKind::ArrLogic(_, a, b) => vec![a, b],
             ExKind::ArrNot(a) => vec![a],
@@ -619,12 +774,8 @@ impl<'p> Compiler<'p, '_> {
         ))
     }
 
-    #[allow(clippy::borrowed_box)]
-    fn call(&mut self, f: FuncId, args: Option<&'p Box<[Arg]>>, dst: Option<Var>, span: Span) {
-        let all: &'p [Arg] = match args {
-            Some(a) => a,
-            None => &[],
-        };
+    fn call(&mut self, f: FuncId, args: Option<&[Arg]>, dst: Option<Var>, span: Span) {
+        let all: &[Arg] = args.unwrap_or_default();
         if (self.walker_calls)(f) {
             // `in` arguments with calls in them are computed here, so that
             // those calls run compiled.
@@ -650,10 +801,9 @@ impl<'p> Compiler<'p, '_> {
                         }
                     })
                     .collect();
-                self.ops
-                    .push(Op::CallWalkerOwned(f, owned.into(), dst, span));
+                self.ops.push(Op::CallWalker(f, owned.into(), dst, span));
             } else {
-                self.ops.push(Op::CallWalker(f, all, dst, span));
+                self.ops.push(Op::CallWalker(f, all.into(), dst, span));
             }
             return;
         }
@@ -669,11 +819,28 @@ impl<'p> Compiler<'p, '_> {
             ops.push(v);
         }
         ops.extend(dst);
+        // The copy-back needs the arguments (see `call_site`).
+        let args = all
+            .iter()
+            .any(|a| a.mode != Mode::In)
+            .then(|| Box::new(Box::from(all)));
         self.ops
             .push(Op::Call(dst.is_some(), f, args, ops.into(), span));
     }
 
-    fn stmts(&mut self, ss: &'p [Stmt]) {
+    fn stmts(&mut self, ss: &[Stmt]) {
+        // Room for compiled parts at once (not by doubling: a long body's
+        // code is most of a long program's memory).
+        let parts: usize = ss
+            .iter()
+            .map(|s| match &s.kind {
+                StmtKind::Compiled(p) => p.0.borrow().as_ref().map_or(0, |p| p.ops.len()),
+                _ => 0,
+            })
+            .sum();
+        if parts > 0 {
+            self.ops.reserve_exact(parts + parts / 64 + 256);
+        }
         for s in ss {
             let mark = self.ntemp;
             self.stmt(s);
@@ -681,7 +848,7 @@ impl<'p> Compiler<'p, '_> {
         }
     }
 
-    fn stmt(&mut self, s: &'p Stmt) {
+    fn stmt(&mut self, s: &Stmt) {
         match &s.kind {
             StmtKind::Null => {}
             StmtKind::Init(v, e) => self.expr_into(e, *v),
@@ -716,7 +883,7 @@ impl<'p> Compiler<'p, '_> {
                 _ => {
                     let src = self.temp();
                     self.expr_into(e, src);
-                    self.ops.push(Op::Assign(t, src));
+                    self.ops.push(Op::Assign(Box::new(t.clone()), src));
                 }
             },
             StmtKind::Call(f, args) => self.call(*f, Some(args), None, s.span),
@@ -773,7 +940,7 @@ impl<'p> Compiler<'p, '_> {
             }
             StmtKind::Exit(id, cond) => {
                 let Some(k) = self.loops.iter().rposition(|(l, ..)| l == id) else {
-                    self.ops.push(Op::Exec(s));
+                    self.ops.push(Op::Exec(Box::new(s.clone())));
                     return;
                 };
                 let skip = cond.as_ref().map(|c| self.jump_unless(c));
@@ -800,7 +967,7 @@ impl<'p> Compiler<'p, '_> {
                 self.ops.push(Op::Return(x));
             }
             StmtKind::Block(b) => self.body(b),
-            StmtKind::Raise(..) | StmtKind::Reraise => self.ops.push(Op::Exec(s)),
+            StmtKind::Raise(..) | StmtKind::Reraise => self.ops.push(Op::Exec(Box::new(s.clone()))),
             StmtKind::Delay(until, d) => {
                 let x = self.expr(d);
                 self.ops.push(Op::Delay(x, *until, s.span));
@@ -843,6 +1010,14 @@ impl<'p> Compiler<'p, '_> {
                 self.ops.push(Op::ProtDone(obj, bargs, s.span));
             }
             StmtKind::Select(sel) => self.select(sel, s.span),
+            StmtKind::Compiled(p) => {
+                let part = p.0.borrow_mut().take();
+                match part {
+                    Some(part) => self.splice(part),
+                    // Compiled once already: the walker raises.
+                    None => self.ops.push(Op::Exec(Box::new(s.clone()))),
+                }
+            }
             StmtKind::Abort(ts) => {
                 let ops: Vec<Var> = ts.iter().map(|t| self.expr(t)).collect();
                 self.ops.push(Op::Abort(ops.into()));
@@ -852,7 +1027,7 @@ impl<'p> Compiler<'p, '_> {
 
     /// Compiles `inner` as a region whose normal end runs `leave` and
     /// whose exceptions go to `unwind` (which propagates them).
-    fn guarded(&mut self, inner: impl FnOnce(&mut Self), leave: Op<'p>, unwind: Op<'p>) {
+    fn guarded(&mut self, inner: impl FnOnce(&mut Self), leave: Op, unwind: Op) {
         let start = self.here();
         inner(self);
         let end = self.here();
@@ -872,15 +1047,20 @@ impl<'p> Compiler<'p, '_> {
 
     /// `accept`: wait for a caller, then the body (whose exception the
     /// caller gets too), then the end of the rendezvous.
-    fn accept(&mut self, a: &'p Accept, span: Span) {
-        self.ops.push(Op::Accept(a.entry, &a.params, span));
+    fn accept(&mut self, a: &Accept, span: Span) {
+        self.ops
+            .push(Op::Accept(a.entry, a.params.as_slice().into(), span));
         self.accept_rest(a);
     }
 
-    fn accept_rest(&mut self, a: &'p Accept) {
+    fn accept_rest(&mut self, a: &Accept) {
         match &a.body {
-            Some(b) => self.guarded(|c| c.body(b), Op::AcceptEnd(&a.params), Op::AcceptFail),
-            None => self.ops.push(Op::AcceptEnd(&a.params)),
+            Some(b) => self.guarded(
+                |c| c.body(b),
+                Op::AcceptEnd(a.params.as_slice().into()),
+                Op::AcceptFail,
+            ),
+            None => self.ops.push(Op::AcceptEnd(a.params.as_slice().into())),
         }
     }
 
@@ -901,7 +1081,7 @@ impl<'p> Compiler<'p, '_> {
     /// and conditional calls) is to be set.
     fn entry_call(
         &mut self,
-        ec: &'p EntryCall,
+        ec: &EntryCall,
         timed: Option<(Var, bool)>,
         conditional: bool,
         span: Span,
@@ -932,7 +1112,7 @@ impl<'p> Compiler<'p, '_> {
                     target,
                     kind,
                     entry,
-                    args: &ec.args,
+                    args: ec.args.as_slice().into(),
                     ops: ops.clone().into(),
                     timed,
                     conditional,
@@ -941,8 +1121,12 @@ impl<'p> Compiler<'p, '_> {
                     span,
                 })));
                 let at = self.ops.len();
-                self.ops
-                    .push(Op::EntryDone(&ec.args, ops.into(), None, span));
+                self.ops.push(Op::EntryDone(
+                    Box::new(ec.args.as_slice().into()),
+                    ops.into(),
+                    None,
+                    span,
+                ));
                 is_timed.then_some(at)
             }
             CallTarget::Prot { .. } => {
@@ -954,7 +1138,7 @@ impl<'p> Compiler<'p, '_> {
                     target: obj,
                     kind,
                     entry,
-                    args: &ec.args,
+                    args: ec.args.as_slice().into(),
                     ops: ops.into(),
                     timed,
                     conditional,
@@ -976,11 +1160,11 @@ impl<'p> Compiler<'p, '_> {
         }
     }
 
-    fn select(&mut self, sel: &'p Select, span: Span) {
+    fn select(&mut self, sel: &Select, span: Span) {
         let mut alts = Vec::new();
         for (g, a, _) in &sel.alts {
             let g = g.as_ref().map(|g| self.expr(g));
-            alts.push((g, a.entry, &a.params[..], 0u32));
+            alts.push((g, a.entry, a.params.as_slice().into(), 0u32));
         }
         let delay = sel.delay.as_ref().map(|(g, until, d, _)| {
             let g = g.as_ref().map(|g| self.expr(g));
@@ -1036,9 +1220,9 @@ impl<'p> Compiler<'p, '_> {
         &mut self,
         x: Var,
         span: Span,
-        arms: &'p [(Vec<(i64, i64)>, T)],
-        others: Option<&'p T>,
-        mut each: impl FnMut(&mut Self, &'p T),
+        arms: &[(Vec<(i64, i64)>, T)],
+        others: Option<&T>,
+        mut each: impl FnMut(&mut Self, &T),
     ) {
         let at = self.ops.len();
         self.ops.push(Op::Case(x, Box::new([]), None, span));
@@ -1063,7 +1247,7 @@ impl<'p> Compiler<'p, '_> {
         self.ops[at] = Op::Case(x, table.into(), other, span);
     }
 
-    fn loop_body(&mut self, id: u32, body: &'p [Stmt]) {
+    fn loop_body(&mut self, id: u32, body: &[Stmt]) {
         self.loops.push((id, Vec::new(), self.hdepth, self.masters));
         self.stmts(body);
     }
@@ -1079,7 +1263,7 @@ impl<'p> Compiler<'p, '_> {
         end
     }
 
-    fn body(&mut self, b: &'p Body) {
+    fn body(&mut self, b: &Body) {
         if b.handlers.is_empty() {
             self.stmts(&b.stmts);
             return;
@@ -1091,11 +1275,14 @@ impl<'p> Compiler<'p, '_> {
         self.ops.push(Op::Jump(0));
         let dispatch = self.here();
         let at = self.ops.len();
-        self.ops
-            .push(Op::Dispatch(&b.handlers, Box::new([]), self.hdepth));
-        let mut targets = Vec::new();
+        self.ops.push(Op::Dispatch(Box::new([]), self.hdepth));
+        let mut catches = Vec::with_capacity(b.handlers.len());
         for h in &b.handlers {
-            targets.push(self.here());
+            catches.push(Catch {
+                choices: h.choices.as_deref().map(Box::from),
+                occurrence: h.occurrence,
+                target: self.here(),
+            });
             self.hdepth += 1;
             self.stmts(&h.stmts);
             self.hdepth -= 1;
@@ -1103,7 +1290,7 @@ impl<'p> Compiler<'p, '_> {
             ends.push(self.ops.len());
             self.ops.push(Op::Jump(0));
         }
-        self.ops[at] = Op::Dispatch(&b.handlers, targets.into(), self.hdepth);
+        self.ops[at] = Op::Dispatch(catches.into(), self.hdepth);
         let after = self.here();
         for j in ends {
             self.patch(j, after);
@@ -1115,7 +1302,24 @@ impl<'p> Compiler<'p, '_> {
         });
     }
 
-    fn finish(mut self, func: Option<FuncId>, all_in: bool) -> Code<'p> {
+    /// Moves a compiled part's code here.
+    fn splice(&mut self, part: Part) {
+        let by = self.here();
+        for mut op in part.ops {
+            relocate(&mut op, by);
+            self.ops.push(op);
+        }
+        self.regions
+            .extend(part.regions.into_iter().map(|r| Region {
+                start: r.start + by,
+                end: r.end + by,
+                dispatch: r.dispatch + by,
+            }));
+        self.exits
+            .extend(part.exits.into_iter().map(|(id, t, d)| (id, t + by, d)));
+    }
+
+    fn finish(mut self, func: Option<FuncId>, all_in: bool) -> Code {
         self.ops.push(Op::FallOff);
         // Exact sizes: the main body of a long program is compiled once.
         self.ops.shrink_to_fit();
@@ -1139,9 +1343,9 @@ impl<'p> Compiler<'p, '_> {
 /// subprogram, level, frame size, whether it has `out` parameters) is the
 /// code that runs until the return, and the arguments and result slot are
 /// in the call instruction before `pc` (see [`call_site`]).
-pub(crate) struct Frame<'c, 'p> {
+pub(crate) struct Frame<'c> {
     /// The caller's code and where it goes on when the callee returns.
-    code: &'c Code<'p>,
+    code: &'c Code,
     pc: u32,
     /// Current occurrences when the callee was entered.
     current: usize,
@@ -1153,14 +1357,14 @@ pub(crate) struct Frame<'c, 'p> {
 
 /// A called frame just set up: the callee's code, where its frame begins,
 /// and the display entry it replaced.
-type Entered<'c, 'a> = (&'c Code<'a>, usize, usize);
+type Entered<'c> = (&'c Code, usize, usize);
 
 /// The compiled bodies of a run, each compiled on its subprogram's first
 /// call. A body stays where it is while others are added, so the engine
 /// holds plain references to them.
-pub(crate) struct Codes<'c, 'a> {
-    arena: &'c typed_arena::Arena<Code<'a>>,
-    by_func: Vec<Option<&'c Code<'a>>>,
+pub(crate) struct Codes<'c> {
+    arena: &'c typed_arena::Arena<Code>,
+    by_func: Vec<Option<&'c Code>>,
 }
 
 impl<'a> Run<'a> {
@@ -1170,7 +1374,7 @@ impl<'a> Run<'a> {
             || self.c.funcs[f as usize].body.is_none()
     }
 
-    fn compile(&self, level: u16, own: u32, what: Compiled<'a>, func: Option<FuncId>) -> Code<'a> {
+    fn compile(&self, level: u16, own: u32, what: Compiled<'a>, func: Option<FuncId>) -> Code {
         let walker_calls = |f: FuncId| self.walker_call(f);
         let is_array = |t: TypeId| self.c.types.array(t).is_some();
         let has_task = |t: TypeId| {
@@ -1219,7 +1423,7 @@ impl<'a> Run<'a> {
 
     /// The compiled body of `f`, compiled on its first call.
     #[inline(always)]
-    fn code_of<'c>(&mut self, cache: &mut Codes<'c, 'a>, f: FuncId) -> &'c Code<'a> {
+    fn code_of<'c>(&mut self, cache: &mut Codes<'c>, f: FuncId) -> &'c Code {
         match cache.by_func.get(f as usize) {
             Some(Some(c)) => c,
             _ => self.compile_first(cache, f),
@@ -1229,7 +1433,7 @@ impl<'a> Run<'a> {
     /// [`Self::code_of`] the first time.
     #[cold]
     #[inline(never)]
-    fn compile_first<'c>(&mut self, cache: &mut Codes<'c, 'a>, f: FuncId) -> &'c Code<'a> {
+    fn compile_first<'c>(&mut self, cache: &mut Codes<'c>, f: FuncId) -> &'c Code {
         let i = f as usize;
         if cache.by_func.len() <= i {
             cache.by_func.resize(self.c.funcs.len().max(i + 1), None);
@@ -1240,7 +1444,7 @@ impl<'a> Run<'a> {
         let sub = &self.c.funcs[i];
         let body = sub.body.as_deref().expect("a subprogram with a body");
         let own = sub.nslots.max(sub.params.len() as u32);
-        let code: &'c Code<'a> =
+        let code: &'c Code =
             cache
                 .arena
                 .alloc(self.compile(sub.level, own, Compiled::Body(body), Some(f)));
@@ -1301,12 +1505,12 @@ impl<'a> Run<'a> {
     #[inline(always)]
     fn push_call<'c>(
         &mut self,
-        cache: &mut Codes<'c, 'a>,
+        cache: &mut Codes<'c>,
         f: FuncId,
         ops: &[Var],
         (lvl, fp): (u16, usize),
         span: Span,
-    ) -> R<Entered<'c, 'a>> {
+    ) -> R<Entered<'c>> {
         if self.m.depth >= MAX_DEPTH {
             return Err(self.raise(
                 check::STORAGE_ERROR,
@@ -1494,7 +1698,7 @@ impl<'a> Run<'a> {
         })
     }
 
-    fn op_entry_call(&mut self, ec: &EntryOp<'a>) -> R<()> {
+    fn op_entry_call(&mut self, ec: &EntryOp) -> R<()> {
         self.tasking_on();
         let me = self.m.sched.cur;
         let s = self.int_at(ec.target) as usize;
@@ -1564,7 +1768,7 @@ impl<'a> Run<'a> {
     }
 
     /// After an entry call: false when it timed out (or was not taken).
-    fn entry_done(&mut self, args: &'a [Arg], ops: &[Var], span: Span) -> R<bool> {
+    fn entry_done(&mut self, args: &[Arg], ops: &[Var], span: Span) -> R<bool> {
         let me = self.m.sched.cur;
         match std::mem::take(&mut self.m.sched.threads[me].outcome) {
             tasking::Outcome::Timeout => Ok(false),
@@ -1598,7 +1802,7 @@ impl<'a> Run<'a> {
         Ok(self.call(b, bargs, span)?.is_some_and(|v| v.int() != 0))
     }
 
-    fn op_prot_entry(&mut self, ec: &EntryOp<'a>) -> R<ProtStep> {
+    fn op_prot_entry(&mut self, ec: &EntryOp) -> R<ProtStep> {
         let active = self.m.sched.active();
         let me = self.m.sched.cur;
         if active {
@@ -1682,7 +1886,7 @@ impl<'a> Run<'a> {
     }
 
     /// A selective accept: Some(target) when an alternative is taken now.
-    fn op_select(&mut self, sel: &SelectOp<'a>) -> R<Option<u32>> {
+    fn op_select(&mut self, sel: &SelectOp) -> R<Option<u32>> {
         let me = self.m.sched.cur;
         let again = self.rerun();
         if std::mem::take(&mut self.m.sched.threads[me].timed_out)
@@ -1769,10 +1973,10 @@ impl<'a> Run<'a> {
     /// first frame when it starts.
     fn resume<'c>(
         &mut self,
-        cache: &mut Codes<'c, 'a>,
-        level0: &'c Code<'a>,
+        cache: &mut Codes<'c>,
+        level0: &'c Code,
         t: tasking::Tid,
-    ) -> R<Live<'c, 'a>> {
+    ) -> R<Live<'c>> {
         if self.m.trace.is_some() && self.m.sched.cur != t {
             let (from, to) = (
                 self.m.sched.threads[self.m.sched.cur].name.clone(),
@@ -1812,12 +2016,7 @@ impl<'a> Run<'a> {
 
     /// Live registers from saved ones: each frame's code compiled (or
     /// taken from this run's cache) again.
-    fn load_regs<'c>(
-        &mut self,
-        cache: &mut Codes<'c, 'a>,
-        level0: &'c Code<'a>,
-        r: Regs,
-    ) -> Live<'c, 'a> {
+    fn load_regs<'c>(&mut self, cache: &mut Codes<'c>, level0: &'c Code, r: Regs) -> Live<'c> {
         let mut fetch = |this: &mut Self, func: Option<FuncId>| match func {
             Some(f) => this.code_of(cache, f),
             None => level0,
@@ -1848,11 +2047,7 @@ impl<'a> Run<'a> {
     }
 
     /// Switches to the next ready thread after the running one ended.
-    fn next_thread<'c>(
-        &mut self,
-        cache: &mut Codes<'c, 'a>,
-        level0: &'c Code<'a>,
-    ) -> R<Live<'c, 'a>> {
+    fn next_thread<'c>(&mut self, cache: &mut Codes<'c>, level0: &'c Code) -> R<Live<'c>> {
         let next = loop {
             if let Some(n) = self.m.sched.pick() {
                 break n;
@@ -1951,16 +2146,16 @@ impl<'a> Run<'a> {
     }
 
     /// Runs level-0 code to its end.
-    fn exec_code<'c>(&mut self, cache: &mut Codes<'c, 'a>, code: &'c Code<'a>) -> R<()> {
+    fn exec_code<'c>(&mut self, cache: &mut Codes<'c>, code: &'c Code) -> R<()> {
         let need = self.c.globals as usize + code.temps as usize;
         self.m.stack.grow_to(need);
-        let mut frames: Vec<Frame<'c, 'a>> = Vec::new();
+        let mut frames: Vec<Frame<'c>> = Vec::new();
         let level0 = code;
         let mut cur = code;
         let mut pc: u32 = 0;
         let mut current_base = self.m.current.len();
         let mut pending: Option<Box<Occurrence>> = None;
-        let mut enter: Option<Entered<'c, 'a>> = None;
+        let mut enter: Option<Entered<'c>> = None;
         // A task's own frame (None: the main program's code).
         let mut root: Option<(usize, usize)> = None;
         // The running code's level and where its frame begins: an operand
@@ -2227,8 +2422,7 @@ impl<'a> Run<'a> {
                     self.put_ix(ix!(*d), Value::Ptr(None));
                     continue;
                 }
-                Op::Eval(d, e) => self.eval(e).map(|v| self.put_ix(ix!(*d), v)),
-                Op::EvalOwned(d, e, temps) => {
+                Op::Eval(d, e, temps) => {
                     let r = self.eval(e).map(|v| self.put_ix(ix!(*d), v));
                     for t in temps.iter() {
                         let i = ix!(*t);
@@ -2317,7 +2511,7 @@ impl<'a> Run<'a> {
                 Op::Poll(span) => self.poll(*span),
                 // A motion service while another task's motion runs waits
                 // for it (the services are a monitor).
-                Op::CallWalker(f, _, _, span) | Op::CallWalkerOwned(f, _, _, span)
+                Op::CallWalker(f, _, _, span)
                     if self.m.sched.active()
                         && self.is_service(*f)
                         && self.m.clock.now() < self.robot_free_at(*f) =>
@@ -2327,14 +2521,6 @@ impl<'a> Run<'a> {
                     Ok(())
                 }
                 Op::CallWalker(f, args, d, span) => {
-                    self.rerun();
-                    self.call(*f, args, *span).map(|v| {
-                        if let Some(d) = d {
-                            self.put_ix(ix!(*d), v.unwrap_or_default());
-                        }
-                    })
-                }
-                Op::CallWalkerOwned(f, args, d, span) => {
                     self.rerun();
                     self.call(*f, args, *span).map(|v| {
                         if let Some(d) = d {
@@ -2392,20 +2578,20 @@ impl<'a> Run<'a> {
                     }))
                 }
                 Op::FallOff => Err(Flow::Exit(FALL_OFF)),
-                Op::Dispatch(handlers, targets, depth) => {
+                Op::Dispatch(catches, depth) => {
                     let occ = pending.take().expect("an occurrence to dispatch");
                     self.m.current.truncate(current_base + *depth as usize);
-                    match handlers.iter().position(|h| match &h.choices {
+                    match catches.iter().find(|h| match &h.choices {
                         None => true,
                         Some(list) => list.contains(&occ.exc),
                     }) {
-                        Some(k) => {
+                        Some(h) => {
                             let occ: Rc<Occurrence> = Rc::from(occ);
-                            if let Some(v) = handlers[k].occurrence {
+                            if let Some(v) = h.occurrence {
                                 self.put(v, Value::Occ(occ.clone()));
                             }
                             self.m.current.push(occ);
-                            pc = targets[k];
+                            pc = h.target;
                             Ok(())
                         }
                         None => Err(Flow::Raise(occ)),
@@ -2698,7 +2884,7 @@ impl<'a> Run<'a> {
     /// depth, call place, and the occurrences it made current (back to
     /// `entry`, their number when it was entered); no copy-out.
     #[inline(always)]
-    fn pop_frame(&mut self, f: &Frame<'_, 'a>, callee: &Code<'a>, entry: usize) {
+    fn pop_frame(&mut self, f: &Frame<'_>, callee: &Code, entry: usize) {
         self.free_frame(f.base, f.base + callee.frame as usize);
         self.m.display[callee.level as usize] = f.saved;
         self.m.depth -= 1;
@@ -2719,8 +2905,8 @@ fn set(slot: &mut Value, v: Value) {
 
 /// Saves the running thread's registers (see [`Regs`]).
 fn save_regs(
-    frames: &mut Vec<Frame<'_, '_>>,
-    cur: &Code<'_>,
+    frames: &mut Vec<Frame<'_>>,
+    cur: &Code,
     pc: u32,
     current_base: usize,
     pending: Option<Box<Occurrence>>,
@@ -2757,7 +2943,7 @@ fn save_regs(
 
 /// The result slot of the call instruction before `pc` (see [`call_site`]).
 #[inline(always)]
-fn call_dst(code: &Code<'_>, pc: u32) -> Option<Var> {
+fn call_dst(code: &Code, pc: u32) -> Option<Var> {
     match code.ops.get(pc as usize - 1) {
         Some(Op::Call(true, _, _, ops, _)) => ops.last().copied(),
         _ => None,
@@ -2767,13 +2953,13 @@ fn call_dst(code: &Code<'_>, pc: u32) -> Option<Var> {
 /// The arguments and result slot of the call instruction before `pc` (a
 /// frame's resume point).
 #[inline(always)]
-fn call_site<'a>(code: &Code<'a>, pc: u32) -> (&'a [Arg], Option<Var>) {
+fn call_site(code: &Code, pc: u32) -> (&[Arg], Option<Var>) {
     match code.ops.get(pc as usize - 1) {
         Some(Op::Call(func, _, args, ops, _)) => {
             let dst = if *func { ops.last().copied() } else { None };
-            (args.map_or(&[], |a| a), dst)
+            (args.as_deref().map_or(&[], |a| a), dst)
         }
-        Some(Op::ProtEntry(e)) => (e.args, None),
+        Some(Op::ProtEntry(e)) => (&e.args, None),
         _ => (&[], None),
     }
 }
@@ -2821,5 +3007,133 @@ mod size_tests {
     fn instructions_stay_small() {
         let op = std::mem::size_of::<super::Op>();
         assert!(op <= 48, "{op}");
+    }
+}
+
+#[cfg(test)]
+mod part_tests {
+    use crate::golden::SharedBuf;
+    use crate::session::Session;
+
+    /// A long program (over `LAZY_FROM`, so its bodies are parsed a part
+    /// at a time), with in each part: assignments, indexing, a call with an
+    /// `in out` parameter, a declare block (slots declared in a late part),
+    /// a loop left by `exit`, an exception handled inside the part; a
+    /// nested function and procedure (a part each) whose handler and
+    /// `return` are in the part; a task (the body is a master, which a
+    /// `return` leaves; the reference walker runs no task); and a `return`
+    /// in the last part.
+    fn long_program(task: bool) -> String {
+        let mut t = String::from(
+            "with Ada.Text_IO; use Ada.Text_IO;\nprocedure Big is\n\
+             X : Integer := 0;\n\
+             A : array (1 .. 10) of Integer := (others => 0);\n\
+             procedure Bump (V : in out Integer; K : Integer) is\n\
+             begin\n   V := V + K;\n   if V < 0 then raise Constraint_Error; end if;\n\
+             exception\n   when Constraint_Error => V := 0;\nend Bump;\n\
+             function Twice (V : Integer) return Integer is\n\
+             begin\n   if V > 1000 then return V - 1000; end if;\n   return V * 2;\nend Twice;\n\
+             begin\n",
+        );
+        if task {
+            t = t.replace(
+                "procedure Bump",
+                "task T;\ntask body T is begin Put_Line (\"task\"); end T;\nprocedure Bump",
+            );
+        }
+        for i in 0..2400 {
+            t.push_str(&format!("   X := X + {i} mod 7;\n"));
+            t.push_str(&format!(
+                "   A ({}) := A ({}) + X mod 3;\n",
+                i % 10 + 1,
+                i % 10 + 1
+            ));
+            t.push_str(&format!("   Bump (X, {} - 3);\n", i % 5));
+            t.push_str("   if X > 100000 then X := X - 99999; end if;\n");
+            if i % 300 == 0 {
+                t.push_str(&format!(
+                    "   declare\n      Y{i} : Integer := Twice (X);\n   begin\n      X := X + Y{i} mod 5;\n   end;\n"
+                ));
+                t.push_str("   for J in 1 .. 5 loop\n      X := X + J;\n      exit when J = 3;\n   end loop;\n");
+                t.push_str(
+                    "   begin\n      if X mod 2 = 0 then raise Constraint_Error; end if;\n   \
+                     exception\n      when Constraint_Error => X := X + 1;\n   end;\n",
+                );
+                t.push_str("   Put_Line (Integer'Image (X) & Integer'Image (A (3)));\n");
+            }
+        }
+        t.push_str(
+            "   if X > 0 then\n      Put_Line (\"returning\" & Integer'Image (X));\n      return;\n   end if;\n\
+             Put_Line (\"not reached\");\nexception\n   when others => Put_Line (\"unexpected\");\nend Big;\n",
+        );
+        t
+    }
+
+    /// Output and outcome of a run of `src`, compiled as checked or not, in
+    /// the compiled engine or the reference walker; and whether the body
+    /// of `Big` kept any checked assignment.
+    fn run(src: &str, parts: bool, engine: super::Engine) -> (String, String, bool) {
+        let buf = SharedBuf::default();
+        let mut s = Session::new(Box::new(buf.clone()));
+        s.machine.engine = engine;
+        if parts {
+            s.compile_as_checked();
+        }
+        let outcome = s.run_source("big.adb", src);
+        let kept = s
+            .checker
+            .funcs
+            .iter()
+            .find(|f| f.name.eq_ignore_ascii_case("big"))
+            .and_then(|f| f.body.as_ref())
+            .is_some_and(|b| format!("{b:?}").contains("Assign"));
+        let said = match &outcome {
+            crate::session::Outcome::CheckFailed(d) => format!("{d:?}"),
+            crate::session::Outcome::Raised(d) => format!("{d:?}"),
+            crate::session::Outcome::Ok => String::new(),
+        };
+        (buf.take(), format!("{} {said}", outcome.exit_code()), kept)
+    }
+
+    /// A long body compiled a part at a time as it is checked (`adair run`)
+    /// runs as the body compiled whole and as the reference walker runs
+    /// it, and keeps none of its checked statements.
+    #[test]
+    fn a_long_body_compiled_as_checked_runs_as_the_whole_body() {
+        for task in [false, true] {
+            let src = long_program(task);
+            assert!(src.len() >= crate::syntax::LAZY_FROM, "{}", src.len());
+            let (whole, code, kept) = run(&src, false, super::Engine::Compiled);
+            assert!(kept, "the checked body is kept without parts");
+            assert!(whole.contains("returning"), "{whole}");
+            assert!(!whole.contains("not reached") && !whole.contains("unexpected"));
+            let lines = 1 + task as usize + 2400 / 300;
+            assert_eq!(whole.lines().count(), lines, "{whole}");
+            assert_eq!(code, "0 ");
+            let (parts, code2, kept) = run(&src, true, super::Engine::Compiled);
+            assert!(!kept, "no checked statement of the long body is kept");
+            assert_eq!((&parts, &code2), (&whole, &code));
+            if !task {
+                let (walked, code3, _) = run(&src, true, super::Engine::Walker);
+                assert_eq!((&walked, &code3), (&whole, &code));
+            }
+        }
+    }
+
+    /// A long program with an error in a late part is not compiled (it does
+    /// not run), and reports what the check without parts reports.
+    #[test]
+    fn a_long_body_with_an_error_reports_it_and_compiles_nothing() {
+        let src = long_program(false).replace(
+            "return;\n   end if;",
+            "return;\n   end if;\n   X := \"late\";",
+        );
+        let (out, code, _) = run(&src, true, super::Engine::Compiled);
+        let (out2, code2, _) = run(&src, false, super::Engine::Compiled);
+        assert!(
+            out.is_empty() && code.starts_with("2 ") && code.contains("late"),
+            "{code}"
+        );
+        assert_eq!((out, code), (out2, code2));
     }
 }
