@@ -279,17 +279,19 @@ pub enum StmtKind {
     /// A timed (`or delay`) or conditional (`else`) entry call.
     TimedCall(Box<TimedCall>),
     Abort(Vec<Ex>),
-    /// A part of a long body, compiled by the engine as it was checked
-    /// (see [`PartCompiler`]); its checked statements are gone.
+    /// The statements of a long body, compiled by the engine a part at a
+    /// time as they were checked (see [`PartCompiler`]); their checked
+    /// form is gone.
     Compiled(Precompiled),
 }
 
 /// Compiles the checked statements of a part of a long body for the
 /// compiled engine as soon as the checker has made them, so that a long
 /// program's checked form is never held whole (issue 14: memory per
-/// source byte). Returns the compiled part and how many temporaries it
-/// uses (slots the checker reserves for it, above the body's slots so far).
-pub type PartCompiler = fn(ProgramRef<'_>, PartAt, Vec<Stmt>) -> (Precompiled, u32);
+/// source byte). The part's code is added to the body's code so far;
+/// returns how many temporaries it uses (slots the checker reserves for
+/// it, above the body's slots so far).
+pub type PartCompiler = fn(ProgramRef<'_>, PartAt, Vec<Stmt>, &Precompiled) -> u32;
 
 /// Where a part of a long body is compiled: the body's level, its number
 /// of slots so far (the part's temporaries go above them), and whether the
@@ -301,12 +303,25 @@ pub struct PartAt {
     pub master: bool,
 }
 
-/// The code of a compiled part, opaque to the checker. The engine takes
-/// it out when it compiles the body: a body made of parts is compiled
-/// once (a second compilation finds the parts empty, and running them
-/// raises Program_Error).
+/// The code of a long body's compiled parts, in one list, opaque to the
+/// checker. The engine takes it out when it compiles the body: a body made
+/// of parts is compiled once (a second compilation finds the code gone,
+/// and running it raises Program_Error).
 #[derive(Clone)]
 pub struct Precompiled(pub Rc<std::cell::RefCell<Option<crate::interp::vm::Part>>>);
+
+impl Precompiled {
+    /// No code yet.
+    pub fn new() -> Precompiled {
+        Precompiled(Rc::new(std::cell::RefCell::new(Some(Default::default()))))
+    }
+}
+
+impl Default for Precompiled {
+    fn default() -> Self {
+        Self::new()
+    }
+}
 
 impl std::fmt::Debug for Precompiled {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {

@@ -23,6 +23,8 @@ impl Checker {
         let parts_here = std::mem::take(&mut self.parts_here);
         if let Some(at) = b.lazy {
             let text = self.texts.get(&at.context).cloned().unwrap_or_default();
+            // The body's code, as its parts are compiled.
+            let code = ir::Precompiled::new();
             let diags = crate::syntax::lazy_stmts(&text, at.context, at, |n, ss| {
                 if let Some(compile) = self.compile_parts.filter(|_| parts_here) {
                     let mut part = Vec::with_capacity(ss.len());
@@ -33,25 +35,14 @@ impl Checker {
                     if self.erred || self.diagnostics_only {
                         return;
                     }
-                    let span = match (part.first(), part.last()) {
-                        (Some(a), Some(z)) => Span {
-                            end: z.span.end,
-                            ..a.span
-                        },
-                        _ => return,
-                    };
                     let ctx = self.ctx.last().expect("a body's context");
                     let at = ir::PartAt {
                         level: self.level,
                         own: ctx.next_slot,
                         master: self.masters.last().copied().unwrap_or(false),
                     };
-                    let (code, temps) = compile(self.program(), at, part);
+                    let temps = compile(self.program(), at, part, &code);
                     self.ctx.last_mut().expect("a body's context").next_slot += temps;
-                    stmts.push(Stmt {
-                        kind: StmtKind::Compiled(code),
-                        span,
-                    });
                     return;
                 } else if self.diagnostics_only {
                     // This part's checked statements go as the next are made.
@@ -63,6 +54,12 @@ impl Checker {
                     self.stmt(&s, &mut stmts);
                 }
             });
+            if self.compile_parts.is_some() && parts_here && !self.erred && !self.diagnostics_only {
+                stmts.push(Stmt {
+                    kind: StmtKind::Compiled(code),
+                    span: at,
+                });
+            }
             if self.diagnostics_only {
                 stmts.clear();
             }

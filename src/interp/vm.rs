@@ -250,6 +250,7 @@ type Live<'c> = (
 /// A part of a long body compiled as it was checked (see
 /// [`compile_part`]): its instructions, handler regions and loop exits,
 /// with targets counted from its first instruction.
+#[derive(Default)]
 pub struct Part {
     ops: Vec<Op>,
     regions: Vec<Region>,
@@ -257,16 +258,17 @@ pub struct Part {
 }
 
 /// Compiles a part of a long subprogram body as soon as the checker has
-/// made it (an [`crate::check::ir::PartCompiler`]), for `adair run`: the checked
-/// statements are dropped here, the instructions wait in the body for
-/// [`Compiler::splice`]. Which calls the walker makes is decided now: an
+/// made it (an [`crate::check::ir::PartCompiler`]), for `adair run`: the
+/// checked statements are dropped here, the instructions are added to the
+/// body's code so far (`into`), which waits for [`Compiler::splice`]. Which calls the walker makes is decided now: an
 /// imported subprogram (a native, as [`Run::walker_call`] binds it) or one
 /// whose body is not checked yet (the body itself, when it calls itself).
 pub(crate) fn compile_part(
     prog: ProgramRef<'_>,
     at: crate::check::ir::PartAt,
     stmts: Vec<Stmt>,
-) -> (crate::check::ir::Precompiled, u32) {
+    into: &crate::check::ir::Precompiled,
+) -> u32 {
     let walker_calls = |f: FuncId| {
         let i = f as usize;
         prog.imports.get(i).is_some_and(|n| n.is_some())
@@ -295,14 +297,20 @@ pub(crate) fn compile_part(
     };
     c.stmts(&stmts);
     drop(stmts);
-    c.ops.shrink_to_fit();
-    let part = Part {
-        ops: c.ops,
-        regions: c.regions,
-        exits: c.exits,
-    };
-    let code = crate::check::ir::Precompiled(Rc::new(std::cell::RefCell::new(Some(part))));
-    (code, c.max_temp)
+    if let Some(body) = into.0.borrow_mut().as_mut() {
+        // One list for the whole body, grown in place (a big list's memory
+        // is remapped, not copied, as it grows).
+        let by = body.ops.len() as u32;
+        body.ops.extend(c.ops.into_iter().map(|mut op| {
+            relocate(&mut op, by);
+            op
+        }));
+        body.regions
+            .extend(c.regions.into_iter().map(|r| r.moved(by)));
+        body.exits
+            .extend(c.exits.into_iter().map(|(id, t, d)| (id, t + by, d)));
+    }
+    c.max_temp
 }
 
 /// Moves `op`'s jump targets `by` instructions on (a compiled part
@@ -401,6 +409,17 @@ struct Region {
     start: u32,
     end: u32,
     dispatch: u32,
+}
+
+impl Region {
+    /// The region `by` instructions on.
+    fn moved(&self, by: u32) -> Region {
+        Region {
+            start: self.start + by,
+            end: self.end + by,
+            dispatch: self.dispatch + by,
+        }
+    }
 }
 
 /// A compiled body.
@@ -829,18 +848,6 @@ impl Compiler<'_> {
     }
 
     fn stmts(&mut self, ss: &[Stmt]) {
-        // Room for compiled parts at once (not by doubling: a long body's
-        // code is most of a long program's memory).
-        let parts: usize = ss
-            .iter()
-            .map(|s| match &s.kind {
-                StmtKind::Compiled(p) => p.0.borrow().as_ref().map_or(0, |p| p.ops.len()),
-                _ => 0,
-            })
-            .sum();
-        if parts > 0 {
-            self.ops.reserve_exact(parts + parts / 64 + 256);
-        }
         for s in ss {
             let mark = self.ntemp;
             self.stmt(s);
@@ -1303,18 +1310,19 @@ impl Compiler<'_> {
     }
 
     /// Moves a compiled part's code here.
+    /// The code so far goes in front of the part's, in its list (a long
+    /// body's code is most of a long program's memory: it is not copied
+    /// into a second list).
     fn splice(&mut self, part: Part) {
         let by = self.here();
-        for mut op in part.ops {
-            relocate(&mut op, by);
-            self.ops.push(op);
+        let mut ops = part.ops;
+        ops.splice(0..0, self.ops.drain(..));
+        for op in &mut ops[by as usize..] {
+            relocate(op, by);
         }
+        self.ops = ops;
         self.regions
-            .extend(part.regions.into_iter().map(|r| Region {
-                start: r.start + by,
-                end: r.end + by,
-                dispatch: r.dispatch + by,
-            }));
+            .extend(part.regions.iter().map(|r| r.moved(by)));
         self.exits
             .extend(part.exits.into_iter().map(|(id, t, d)| (id, t + by, d)));
     }

@@ -35,8 +35,16 @@ pub const LAZY_FROM: usize = 64 * 1024;
 /// [`parse_source`] for `adair check` and `run`: the statements of
 /// subprogram bodies are recognised but not built (the checker builds them
 /// a part at a time with [`lazy_stmts`]), so a long program's syntax tree
-/// is never held whole (issue 14: memory per source byte). A source with
-/// any error is parsed again the usual way, whose diagnostics are the ones
+/// is never held whole (issue 14: memory per source byte). The parser
+/// reads a skeleton: the source's tokens, a window at a time, with the
+/// statements of each long body left out (one [`token::Token::Statements`]
+/// in their place), so that no list of all the tokens is held either. Those
+/// statements are then parsed a part at a time and dropped, to find any
+/// syntax error now. A skeleton that does not parse (a long body the
+/// [`parser::Nesting`] misjudged, or a package's or task's long statements,
+/// which are not left out) is parsed from the list of all the tokens, with
+/// the subprograms' statements recognised but not built. A source with any
+/// error is parsed again the usual way, whose diagnostics are the ones
 /// reported.
 pub fn parse_source_lazy(
     src: &str,
@@ -44,6 +52,15 @@ pub fn parse_source_lazy(
 ) -> (Option<ast::CompilationUnit>, Vec<Diagnostic>) {
     if src.len() < LAZY_FROM {
         return parse_source(src, file);
+    }
+    let unit = skeleton(src, file).and_then(|(tokens, long)| {
+        let (unit, diags) = parser::parse_with(&tokens, file, src.len(), true);
+        drop(tokens);
+        let valid = |at: &Span| lazy_stmts(src, file, *at, |_, _| {}).is_empty();
+        unit.filter(|_| diags.is_empty() && long.iter().all(valid))
+    });
+    if let Some(u) = unit {
+        return (Some(u), Vec::new());
     }
     let (unit, diags) = {
         let (tokens, diags) = lexer::lex(src, file);
@@ -58,15 +75,133 @@ pub fn parse_source_lazy(
     }
 }
 
-/// The tokens of `src[at]`, with their offsets in `src`.
-fn lex_part(src: &str, file: FileId, at: std::ops::Range<usize>) -> Vec<(token::Token, Span)> {
-    let base = crate::diag::offset(at.start);
-    let (mut tokens, _) = lexer::lex(&src[at], file);
-    for (_, s) in &mut tokens {
-        s.start += base;
-        s.end += base;
+/// Tokens a window of [`lex_windows`] holds, about (bytes of source).
+const WINDOW: usize = 256 * 1024;
+
+/// Lexes `src[at]` a window at a time, giving each window's tokens (with
+/// their offsets in `src`) to `each`. A window ends after a line end (no
+/// token goes on past one) before a line that does not begin with `'` (a
+/// window's first `'` has no token before it to tell an attribute mark).
+/// Stops at the first window with a lexical error, and returns its
+/// diagnostics.
+fn lex_windows(
+    src: &str,
+    file: FileId,
+    at: std::ops::Range<usize>,
+    mut each: impl FnMut(Vec<(token::Token, Span)>),
+) -> Result<(), Vec<Diagnostic>> {
+    let mut start = at.start;
+    while start < at.end {
+        let mut end = at.end;
+        if start + WINDOW < at.end {
+            let window = &src[start..start + WINDOW];
+            let mut cut = window.len();
+            while let Some(nl) = window[..cut].rfind('\n') {
+                if !src[start + nl + 1..].trim_start().starts_with('\'') {
+                    end = start + nl + 1;
+                    break;
+                }
+                cut = nl;
+            }
+        }
+        let base = crate::diag::offset(start);
+        let (mut tokens, mut diags) = lexer::lex(&src[start..end], file);
+        let spans =
+            tokens
+                .iter_mut()
+                .map(|(_, s)| s)
+                .chain(diags.iter_mut().flat_map(|d| {
+                    std::iter::once(&mut d.span).chain(d.notes.iter_mut().map(|(s, _)| s))
+                }));
+        for s in spans {
+            s.start += base;
+            s.end += base;
+        }
+        if !diags.is_empty() {
+            return Err(diags);
+        }
+        each(tokens);
+        start = end;
     }
-    tokens
+    Ok(())
+}
+
+/// Statements of a body from this many tokens on are left out of the
+/// skeleton.
+const LONG_BODY: usize = 2 * PART_TOKENS;
+
+/// The skeleton of `src` for [`parse_source_lazy`]: its tokens, with the
+/// statements of each body of at least [`LONG_BODY`] tokens replaced by one
+/// `Statements` token spanning them; and those spans. None at a lexical
+/// error. Outside statements, every `begin` is a body's; the statements
+/// end at the `exception` or `end` that closes them (see
+/// [`parser::Nesting`]), the handlers at their body's `end`.
+fn skeleton(src: &str, file: FileId) -> Option<(Vec<parser::Tok>, Vec<Span>)> {
+    use token::{Kw, Token};
+    enum Mode {
+        Decls,
+        /// In a body's statements: their first token in `out`, or (past
+        /// `LONG_BODY`) their span so far.
+        Stmts(parser::Nesting, usize, Option<Span>),
+        Handlers(parser::Nesting),
+    }
+    let mut out: Vec<(Token, Span)> = Vec::new();
+    let mut long = Vec::new();
+    let mut mode = Mode::Decls;
+    let lexed = lex_windows(src, file, 0..src.len(), |tokens| {
+        for (t, s) in tokens {
+            match &mut mode {
+                Mode::Decls => {
+                    if t == Token::Kw(Kw::Begin) {
+                        mode = Mode::Stmts(parser::Nesting::default(), out.len() + 1, None);
+                    }
+                    out.push((t, s));
+                }
+                Mode::Stmts(n, first, left_out) => {
+                    if n.step(&t) == parser::At::Close {
+                        if let Some(at) = left_out.take() {
+                            out.push((Token::Statements, at));
+                            long.push(at);
+                        }
+                        mode = if t == Token::Kw(Kw::Exception) {
+                            Mode::Handlers(parser::Nesting::default())
+                        } else {
+                            Mode::Decls
+                        };
+                        out.push((t, s));
+                        continue;
+                    }
+                    if let Some(at) = left_out {
+                        at.end = s.end;
+                        continue;
+                    }
+                    out.push((t, s));
+                    if out.len() - *first >= LONG_BODY {
+                        *left_out = Some(Span {
+                            end: s.end,
+                            ..out[*first].1
+                        });
+                        out.truncate(*first);
+                    }
+                }
+                Mode::Handlers(n) => {
+                    if n.step(&t) == parser::At::Close {
+                        mode = Mode::Decls;
+                    }
+                    out.push((t, s));
+                }
+            }
+        }
+    });
+    lexed.ok().map(|()| (out, long))
+}
+
+/// The tokens of `src[at]`, with their offsets in `src`.
+#[cfg(test)]
+fn lex_part(src: &str, file: FileId, at: std::ops::Range<usize>) -> Vec<(token::Token, Span)> {
+    let mut all = Vec::new();
+    let _ = lex_windows(src, file, at, |t| all.extend(t));
+    all
 }
 
 /// Tokens between two cuts of a lazy body, about.
@@ -85,8 +220,12 @@ pub fn lazy_stmts(
     mut each: impl FnMut(usize, Vec<ast::Stmt>),
 ) -> Vec<Diagnostic> {
     let mut bounds = vec![at.start];
-    let (cuts, count) = parser::statement_cuts(&lex_part(src, file, at.range()), PART_TOKENS);
-    bounds.extend(cuts);
+    let mut cuts = parser::Cuts::new(PART_TOKENS);
+    if let Err(d) = lex_windows(src, file, at.range(), |tokens| cuts.feed(&tokens)) {
+        return d;
+    }
+    let count = cuts.count;
+    bounds.extend(cuts.cuts);
     bounds.push(at.end);
     let last = bounds.len() - 1;
     let mut i = 0;
@@ -95,7 +234,11 @@ pub fn lazy_stmts(
         // with the next ones, twice as many each time.
         let mut j = i + 1;
         loop {
-            let tokens = lex_part(src, file, bounds[i] as usize..bounds[j] as usize);
+            let (start, end) = (bounds[i] as usize, bounds[j] as usize);
+            let mut tokens = Vec::new();
+            if let Err(d) = lex_windows(src, file, start..end, |t| tokens.extend(t)) {
+                return d;
+            }
             match parser::parse_stmts(&tokens, file, bounds[j]) {
                 (Some(ss), d) if d.is_empty() => {
                     drop(tokens);
@@ -161,6 +304,11 @@ mod lazy_tests {
         let lazy = lazy.unwrap();
         let at = body(&lazy).lazy.expect("a lazy body");
         assert!(body(&lazy).stmts.borrow().is_empty());
+        // The parser read a skeleton without the body's statements (every
+        // nesting above followed to the body's `end`), no list of them all.
+        let (skeleton, long) = skeleton(&src, 0).expect("no lexical error");
+        assert_eq!(long, [at]);
+        assert!(skeleton.len() < 100, "{}", skeleton.len());
         let mut parts = 0;
         let mut got = Vec::new();
         let mut counted = 0;

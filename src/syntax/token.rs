@@ -226,6 +226,9 @@ pub enum Token {
     Ge,
     /// Placeholder for a lexical error (already reported), so parsing can go on.
     Error,
+    /// The statements of a long subprogram body, not lexed into the
+    /// skeleton of `syntax::parse_source_lazy` (its span is their text).
+    Statements,
 }
 
 impl fmt::Display for Token {
@@ -238,6 +241,7 @@ impl fmt::Display for Token {
             Token::Char(c) => write!(f, "character '{c}'"),
             Token::Str(s) => write!(f, "string \"{s}\""),
             Token::Error => write!(f, "invalid token"),
+            Token::Statements => write!(f, "statements"),
             other => write!(f, "`{}`", other.punct()),
         }
     }
