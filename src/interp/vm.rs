@@ -260,20 +260,19 @@ pub struct Part {
 /// Compiles a part of a long subprogram body as soon as the checker has
 /// made it (an [`crate::check::ir::PartCompiler`]), for `adair run`: the
 /// checked statements are dropped here, the instructions are added to the
-/// body's code so far (`into`), which waits for [`Compiler::splice`]. Which calls the walker makes is decided now: an
-/// imported subprogram (a native, as [`Run::walker_call`] binds it) or one
-/// whose body is not checked yet (the body itself, when it calls itself).
+/// body's code so far (`into`), which waits for [`Compiler::splice`].
+/// Which calls the walker makes is decided now: those of an imported
+/// subprogram (a native, as [`Run::walker_call`] binds it). A subprogram
+/// whose body is not checked yet (the body itself, when it calls itself;
+/// one declared before and completed later) gets a compiled call (one left
+/// without body raises when called, see `compile_first`).
 pub(crate) fn compile_part(
     prog: ProgramRef<'_>,
     at: crate::check::ir::PartAt,
     stmts: Vec<Stmt>,
     into: &crate::check::ir::Precompiled,
 ) -> u32 {
-    let walker_calls = |f: FuncId| {
-        let i = f as usize;
-        prog.imports.get(i).is_some_and(|n| n.is_some())
-            || prog.funcs.get(i).is_none_or(|s| s.body.is_none())
-    };
+    let walker_calls = |f: FuncId| prog.imports.get(f as usize).is_some_and(|n| n.is_some());
     let is_array = |t: TypeId| prog.types.array(t).is_some();
     let has_task = |t: TypeId| {
         prog.types
@@ -1450,12 +1449,26 @@ impl<'a> Run<'a> {
             return c;
         }
         let sub = &self.c.funcs[i];
-        let body = sub.body.as_deref().expect("a subprogram with a body");
         let own = sub.nslots.max(sub.params.len() as u32);
-        let code: &'c Code =
-            cache
-                .arena
-                .alloc(self.compile(sub.level, own, Compiled::Body(body), Some(f)));
+        let code: &'c Code = match sub.body.as_deref() {
+            Some(body) => {
+                cache
+                    .arena
+                    .alloc(self.compile(sub.level, own, Compiled::Body(body), Some(f)))
+            }
+            // A call compiled with a long body's part (see `compile_part`)
+            // of a subprogram that has no body: the walker raises.
+            None => cache.arena.alloc(Code {
+                func: Some(f),
+                all_in: true,
+                level: sub.level,
+                ops: vec![Op::CallWalker(f, Box::new([]), None, sub.span), Op::FallOff],
+                temps: 0,
+                frame: own,
+                regions: Vec::new(),
+                exits: Vec::new(),
+            }),
+        };
         cache.by_func[i] = Some(code);
         code
     }
@@ -3027,8 +3040,9 @@ mod part_tests {
     /// at a time), with in each part: assignments, indexing, a call with an
     /// `in out` parameter, a declare block (slots declared in a late part),
     /// a loop left by `exit`, an exception handled inside the part; a
-    /// nested function and procedure (a part each) whose handler and
-    /// `return` are in the part; a task (the body is a master, which a
+    /// nested recursive function, two mutually recursive ones (the first
+    /// called before its body is checked) and a procedure (a part each)
+    /// whose handler and `return` are in the part; a task (the body is a master, which a
     /// `return` leaves; the reference walker runs no task); and a `return`
     /// in the last part.
     fn long_program(task: bool) -> String {
@@ -3040,7 +3054,12 @@ mod part_tests {
              begin\n   V := V + K;\n   if V < 0 then raise Constraint_Error; end if;\n\
              exception\n   when Constraint_Error => V := 0;\nend Bump;\n\
              function Twice (V : Integer) return Integer is\n\
-             begin\n   if V > 1000 then return V - 1000; end if;\n   return V * 2;\nend Twice;\n\
+             begin\n   if V > 1000 then return Twice (V - 1000); end if;\n   return V * 2;\nend Twice;\n\
+             function Odd (N : Natural) return Boolean;\n\
+             function Even (N : Natural) return Boolean is\n\
+             begin\n   if N = 0 then return True; else return Odd (N - 1); end if;\nend Even;\n\
+             function Odd (N : Natural) return Boolean is\n\
+             begin\n   if N = 0 then return False; else return Even (N - 1); end if;\nend Odd;\n\
              begin\n",
         );
         if task {
@@ -3060,7 +3079,7 @@ mod part_tests {
             t.push_str("   if X > 100000 then X := X - 99999; end if;\n");
             if i % 300 == 0 {
                 t.push_str(&format!(
-                    "   declare\n      Y{i} : Integer := Twice (X);\n   begin\n      X := X + Y{i} mod 5;\n   end;\n"
+                    "   declare\n      Y{i} : Integer := Twice (X);\n   begin\n      X := X + Y{i} mod 5;\n      if Even (X mod 10) then X := X + 1; end if;\n   end;\n"
                 ));
                 t.push_str("   for J in 1 .. 5 loop\n      X := X + J;\n      exit when J = 3;\n   end loop;\n");
                 t.push_str(
