@@ -279,21 +279,8 @@ pub(crate) fn compile_part(
             .designated(t)
             .is_some_and(|d| prog.types.has_task(d))
     };
-    let mut c = Compiler {
-        level: at.level,
-        own: at.own,
-        ntemp: 0,
-        max_temp: 0,
-        ops: Vec::new(),
-        regions: Vec::new(),
-        exits: Vec::new(),
-        loops: Vec::new(),
-        hdepth: 0,
-        masters: u32::from(at.master),
-        walker_calls: &walker_calls,
-        has_task: &has_task,
-        is_array: &is_array,
-    };
+    let mut c = Compiler::new(at.level, at.own, &walker_calls, &has_task, &is_array);
+    c.masters = u32::from(at.master);
     c.stmts(&stmts);
     drop(stmts);
     if let Some(body) = into.0.borrow_mut().as_mut() {
@@ -500,7 +487,32 @@ pub(crate) fn effects_unless(e: &Ex, judge: &dyn Fn(&Ex) -> Option<bool>) -> boo
     }
 }
 
-impl Compiler<'_> {
+impl<'r> Compiler<'r> {
+    /// A compiler for code at `level` whose own slots are below `own`.
+    fn new(
+        level: u16,
+        own: u32,
+        walker_calls: &'r dyn Fn(FuncId) -> bool,
+        has_task: &'r dyn Fn(TypeId) -> bool,
+        is_array: &'r dyn Fn(TypeId) -> bool,
+    ) -> Self {
+        Compiler {
+            level,
+            own,
+            ntemp: 0,
+            max_temp: 0,
+            ops: Vec::new(),
+            regions: Vec::new(),
+            exits: Vec::new(),
+            loops: Vec::new(),
+            hdepth: 0,
+            masters: 0,
+            walker_calls,
+            has_task,
+            is_array,
+        }
+    }
+
     fn temp(&mut self) -> Var {
         let v = Var {
             level: self.level,
@@ -1390,21 +1402,7 @@ impl<'a> Run<'a> {
                 .designated(t)
                 .is_some_and(|d| self.c.types.has_task(d))
         };
-        let mut c = Compiler {
-            level,
-            own,
-            ntemp: 0,
-            max_temp: 0,
-            ops: Vec::new(),
-            regions: Vec::new(),
-            exits: Vec::new(),
-            loops: Vec::new(),
-            hdepth: 0,
-            masters: 0,
-            walker_calls: &walker_calls,
-            has_task: &has_task,
-            is_array: &is_array,
-        };
+        let mut c = Compiler::new(level, own, &walker_calls, &has_task, &is_array);
         match what {
             Compiled::Body(b) => c.body(b),
             Compiled::Stmts(ss) => c.stmts(ss),
