@@ -329,6 +329,34 @@ mod lazy_tests {
         assert!(cuts.len() > 100);
     }
 
+    /// Units declared in a long body's blocks whose `end` closes an `is`
+    /// (a package body without statements, a protected type and body, a
+    /// generic instance, an expression function, a null record): the
+    /// skeleton still leaves the body's statements out whole, and the
+    /// program parses as it does the usual way.
+    #[test]
+    fn a_long_body_with_units_declared_in_its_blocks_is_left_out_whole() {
+        let mut src = String::from("procedure Big is\n   X : Integer := 0;\nbegin\n");
+        for i in 0..3000 {
+            src.push_str(&match i % 3 {
+                0 => format!("   X := X + {i} mod 7;\n"),
+                1 => "   declare\n      package Q is procedure P; end Q;\n      package body Q is procedure P is begin null; end P; end Q;\n      protected type PT is procedure Inc; private N : Integer := 0; end PT;\n      protected body PT is procedure Inc is begin N := N + 1; end Inc; end PT;\n      type R is null record;\n      function F (A : Integer) return Integer is (A + 1);\n   begin\n      X := F (X);\n   end;\n".into(),
+                _ => "   if X > 1000 then X := 0; end if;\n".into(),
+            });
+        }
+        src.push_str("end Big;\n");
+        assert!(src.len() > LAZY_FROM);
+        let (_, long) = skeleton(&src, 0).expect("no lexical error");
+        let (lazy, d) = parse_source_lazy(&src, 0);
+        assert!(d.is_empty(), "{d:?}");
+        let at = body(&lazy.unwrap()).lazy.expect("a lazy body");
+        assert_eq!(long, [at]);
+        let (eager, _) = parse_source(&src, 0);
+        let mut got = Vec::new();
+        assert!(lazy_stmts(&src, 0, at, |_, ss| got.extend(ss)).is_empty());
+        assert_eq!(got, *body(&eager.unwrap()).stmts.borrow());
+    }
+
     #[test]
     fn a_long_source_with_an_error_is_parsed_whole_for_its_diagnostics() {
         let mut src = long_source(6000);
