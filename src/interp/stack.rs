@@ -46,6 +46,18 @@ impl Stack {
         self.len = n;
     }
 
+    /// [`Self::truncate`] of slots that hold scalars only (a frame whose
+    /// code puts nothing else there, see `vm::Code::scalar`): nothing to
+    /// drop, nothing to look at.
+    #[inline(always)]
+    pub fn truncate_scalars(&mut self, n: usize) {
+        debug_assert!(
+            self.data[n.min(self.len)..self.len].iter().all(scalar),
+            "a frame freed as scalars holds a value that owns memory"
+        );
+        self.len = self.len.min(n);
+    }
+
     /// Grows the stack to `n` slots, the new ones `Undef`.
     #[inline]
     pub fn grow_to(&mut self, n: usize) {

@@ -252,6 +252,9 @@ type Live<'c> = (
 /// with targets counted from its first instruction.
 #[derive(Default)]
 pub struct Part {
+    /// None: no code yet; then whether the code only puts scalars in the
+    /// frame (see `Code::scalar`).
+    scalar: Option<bool>,
     ops: Vec<Op>,
     regions: Vec<Region>,
     exits: Vec<(u32, u32, u32)>,
@@ -273,13 +276,7 @@ pub(crate) fn compile_part(
     into: &crate::check::ir::Precompiled,
 ) -> u32 {
     let walker_calls = |f: FuncId| prog.imports.get(f as usize).is_some_and(|n| n.is_some());
-    let is_array = |t: TypeId| prog.types.array(t).is_some();
-    let has_task = |t: TypeId| {
-        prog.types
-            .designated(t)
-            .is_some_and(|d| prog.types.has_task(d))
-    };
-    let mut c = Compiler::new(at.level, at.own, &walker_calls, &has_task, &is_array);
+    let mut c = Compiler::new(at.level, at.own, &walker_calls, prog.types);
     c.masters = u32::from(at.master);
     c.stmts(&stmts);
     drop(stmts);
@@ -295,6 +292,7 @@ pub(crate) fn compile_part(
             .extend(c.regions.into_iter().map(|r| r.moved(by)));
         body.exits
             .extend(c.exits.into_iter().map(|(id, t, d)| (id, t + by, d)));
+        body.scalar = Some(body.scalar.unwrap_or(true) && c.scalar);
     }
     c.max_temp
 }
@@ -414,6 +412,11 @@ pub(crate) struct Code {
     func: Option<FuncId>,
     /// Every parameter is `in`: a return has nothing to copy back.
     all_in: bool,
+    /// Every value in its frame is a scalar (`Undef`, `Int`, `Real`: its
+    /// parameters' and variables' types are scalar, and no instruction
+    /// puts anything else there): freeing the frame drops nothing, so it
+    /// is freed without looking at its slots.
+    scalar: bool,
     /// The static level of its frame (its own slots are `Var`s of it).
     level: u16,
     ops: Vec<Op>,
@@ -444,11 +447,10 @@ struct Compiler<'r> {
     masters: u32,
     /// Which subprograms the walker calls (bound to natives or without body).
     walker_calls: &'r dyn Fn(FuncId) -> bool,
-    /// Whether an access type designates a task (its allocator activates it).
-    has_task: &'r dyn Fn(TypeId) -> bool,
-    /// Whether a type is an array type (an assignment to it keeps the
-    /// target's bounds).
-    is_array: &'r dyn Fn(TypeId) -> bool,
+    types: &'r crate::check::types::Types,
+    /// Every value this code puts in its frame is a scalar (`Undef`, `Int`,
+    /// `Real`) so far: freeing the frame drops nothing (see `Code::scalar`).
+    scalar: bool,
 }
 
 /// True when evaluating `e` may run a call or other code with effects
@@ -493,8 +495,7 @@ impl<'r> Compiler<'r> {
         level: u16,
         own: u32,
         walker_calls: &'r dyn Fn(FuncId) -> bool,
-        has_task: &'r dyn Fn(TypeId) -> bool,
-        is_array: &'r dyn Fn(TypeId) -> bool,
+        types: &'r crate::check::types::Types,
     ) -> Self {
         Compiler {
             level,
@@ -508,8 +509,28 @@ impl<'r> Compiler<'r> {
             hdepth: 0,
             masters: 0,
             walker_calls,
-            has_task,
-            is_array,
+            types,
+            scalar: true,
+        }
+    }
+
+    /// Whether an access type designates a task (its allocator activates it).
+    fn has_task(&self, t: TypeId) -> bool {
+        self.types
+            .designated(t)
+            .is_some_and(|d| self.types.has_task(d))
+    }
+
+    /// Whether a type is an array type (an assignment to it keeps the
+    /// target's bounds).
+    fn is_array(&self, t: TypeId) -> bool {
+        self.types.array(t).is_some()
+    }
+
+    /// A value of type `t` goes into this code's frame.
+    fn holds(&mut self, t: TypeId) {
+        if !self.types.is_scalar(t) {
+            self.scalar = false;
         }
     }
 
@@ -575,6 +596,7 @@ impl<'r> Compiler<'r> {
     fn left(&mut self, e: &Ex, right: &Ex) -> Var {
         let a = self.expr(e);
         if !self.is_temp(a) && effects(right) {
+            self.holds(e.ty);
             let t = self.temp();
             self.ops.push(Op::Move(t, a));
             return t;
@@ -584,6 +606,7 @@ impl<'r> Compiler<'r> {
 
     /// Evaluates `e` into `dst`, which is written once, at the end.
     fn expr_into(&mut self, e: &Ex, dst: Var) {
+        self.holds(e.ty);
         let span = e.span;
         match &e.kind {
             ExKind::Int(v) => self.ops.push(Op::Int(dst, *v)),
@@ -714,7 +737,7 @@ impl<'r> Compiler<'r> {
             // A task made by an allocator is activated by it, which waits
             // for the activation (Tasking_Error when it fails, and the
             // target keeps its value).
-            ExKind::Alloc(None, _) if (self.has_task)(e.ty) => {
+            ExKind::Alloc(None, _) if self.has_task(e.ty) => {
                 let t = self.temp();
                 self.ops.push(Op::AllocTask(t, Box::new(e.clone())));
                 self.ops.push(Op::Activate(span));
@@ -807,6 +830,10 @@ impl<'r> Compiler<'r> {
     fn call(&mut self, f: FuncId, args: Option<&[Arg]>, dst: Option<Var>, span: Span) {
         let all: &[Arg] = args.unwrap_or_default();
         if (self.walker_calls)(f) {
+            // The walker copies `out` values back into their targets.
+            if all.iter().any(|a| a.mode != Mode::In) {
+                self.scalar = false;
+            }
             // `in` arguments with calls in them are computed here, so that
             // those calls run compiled.
             if all.iter().any(|a| effects(&a.value))
@@ -842,6 +869,7 @@ impl<'r> Compiler<'r> {
             let later = all[k + 1..].iter().any(|b| effects(&b.value));
             let mut v = self.expr(&a.value);
             if later && !self.is_temp(v) {
+                self.holds(a.value.ty);
                 let t = self.temp();
                 self.ops.push(Op::Move(t, v));
                 v = t;
@@ -873,10 +901,10 @@ impl<'r> Compiler<'r> {
             // An array target keeps its bounds (the walker's `assign`
             // checks the length and slides).
             StmtKind::Assign(t, e) => match &t.kind {
-                ExKind::Var(v) if !(self.is_array)(t.ty) => self.expr_into(e, *v),
+                ExKind::Var(v) if !self.is_array(t.ty) => self.expr_into(e, *v),
                 ExKind::Index(p, idx)
                     if matches!(p.kind, ExKind::Var(_))
-                        && !(self.is_array)(t.ty)
+                        && !self.is_array(t.ty)
                         && idx.len() <= 4
                         && !idx.iter().any(effects) =>
                 {
@@ -887,6 +915,7 @@ impl<'r> Compiler<'r> {
                     let src = if self.is_temp(src) {
                         src
                     } else {
+                        self.holds(e.ty);
                         let t = self.temp();
                         self.ops.push(Op::Move(t, src));
                         t
@@ -1326,6 +1355,7 @@ impl<'r> Compiler<'r> {
     /// into a second list).
     fn splice(&mut self, part: Part) {
         let by = self.here();
+        self.scalar &= part.scalar.unwrap_or(true);
         let mut ops = part.ops;
         ops.splice(0..0, self.ops.drain(..));
         for op in &mut ops[by as usize..] {
@@ -1338,8 +1368,76 @@ impl<'r> Compiler<'r> {
             .extend(part.exits.into_iter().map(|(id, t, d)| (id, t + by, d)));
     }
 
-    fn finish(mut self, func: Option<FuncId>, all_in: bool) -> Code {
+    /// The compiled code; `scalar_params`: its parameters' types are
+    /// scalar.
+    fn finish(mut self, func: Option<FuncId>, all_in: bool, scalar_params: bool) -> Code {
         self.ops.push(Op::FallOff);
+        // Only what the engine itself puts in slots is known: the walker's
+        // and the tasking instructions may put anything there.
+        let scalar = scalar_params
+            && self.scalar
+            && self.ops.iter().all(|op| match op {
+                Op::Dispatch(catches, _) => catches.iter().all(|c| c.occurrence.is_none()),
+                Op::Eval(..)
+                | Op::Assign(..)
+                | Op::Exec(..)
+                | Op::Delay(..)
+                | Op::Activate(..)
+                | Op::MasterEnter
+                | Op::MasterLeave(..)
+                | Op::MasterUnwind(..)
+                | Op::AwaitAll
+                | Op::Settle
+                | Op::Accept(..)
+                | Op::AcceptEnd(..)
+                | Op::AcceptFail
+                | Op::EntryCall(..)
+                | Op::EntryDone(..)
+                | Op::ProtEntry(..)
+                | Op::ProtDone(..)
+                | Op::Select(..)
+                | Op::Abort(..)
+                | Op::AllocTask(..)
+                | Op::NoteMaster(..) => false,
+                Op::Int(..)
+                | Op::Real(..)
+                | Op::Move(..)
+                | Op::IntBin(..)
+                | Op::IntBinK(..)
+                | Op::IntNeg(..)
+                | Op::FloatBin(..)
+                | Op::ToReal(..)
+                | Op::Cmp(..)
+                | Op::CmpK(..)
+                | Op::Eq(..)
+                | Op::Logic(..)
+                | Op::Not(..)
+                | Op::RangeCheck(..)
+                | Op::Index(..)
+                | Op::Index1(..)
+                | Op::Index2(..)
+                | Op::StoreIndex(..)
+                | Op::StoreIndex1(..)
+                | Op::StoreIndex2(..)
+                | Op::Field(..)
+                | Op::DerefField(..)
+                | Op::Null(..)
+                | Op::Jump(..)
+                | Op::JumpIfNot(..)
+                | Op::CmpKJumpNot(..)
+                | Op::CmpJumpNot(..)
+                | Op::JumpIf(..)
+                | Op::Case(..)
+                | Op::ForStart(..)
+                | Op::ForNext(..)
+                | Op::Poll(..)
+                | Op::Call(..)
+                | Op::CallWalker(..)
+                | Op::Return(..)
+                | Op::FallOff
+                | Op::PopCurrent
+                | Op::TruncCurrent(..) => true,
+            });
         // Exact sizes: the main body of a long program is compiled once.
         self.ops.shrink_to_fit();
         self.regions.shrink_to_fit();
@@ -1347,6 +1445,7 @@ impl<'r> Compiler<'r> {
         Code {
             func,
             all_in,
+            scalar,
             level: self.level,
             ops: self.ops,
             temps: self.max_temp,
@@ -1395,14 +1494,7 @@ impl<'a> Run<'a> {
 
     fn compile(&self, level: u16, own: u32, what: Compiled<'a>, func: Option<FuncId>) -> Code {
         let walker_calls = |f: FuncId| self.walker_call(f);
-        let is_array = |t: TypeId| self.c.types.array(t).is_some();
-        let has_task = |t: TypeId| {
-            self.c
-                .types
-                .designated(t)
-                .is_some_and(|d| self.c.types.has_task(d))
-        };
-        let mut c = Compiler::new(level, own, &walker_calls, &has_task, &is_array);
+        let mut c = Compiler::new(level, own, &walker_calls, self.c.types);
         match what {
             Compiled::Body(b) => c.body(b),
             Compiled::Stmts(ss) => c.stmts(ss),
@@ -1423,7 +1515,13 @@ impl<'a> Run<'a> {
                 .iter()
                 .all(|p| p.mode == Mode::In)
         });
-        c.finish(func, all_in)
+        let scalar_params = func.is_some_and(|f| {
+            self.c.funcs[f as usize]
+                .params
+                .iter()
+                .all(|p| self.c.types.is_scalar(p.ty))
+        });
+        c.finish(func, all_in, scalar_params)
     }
 
     /// The compiled body of `f`, compiled on its first call.
@@ -1459,6 +1557,7 @@ impl<'a> Run<'a> {
             None => cache.arena.alloc(Code {
                 func: Some(f),
                 all_in: true,
+                scalar: false,
                 level: sub.level,
                 ops: vec![Op::CallWalker(f, Box::new([]), None, sub.span), Op::FallOff],
                 temps: 0,
@@ -1506,6 +1605,7 @@ impl<'a> Run<'a> {
             let code = arena.alloc(Code {
                 func: None,
                 all_in: true,
+                scalar: false,
                 level: 0,
                 ops: vec![last, Op::FallOff],
                 temps: 0,
@@ -2904,7 +3004,12 @@ impl<'a> Run<'a> {
     /// `entry`, their number when it was entered); no copy-out.
     #[inline(always)]
     fn pop_frame(&mut self, f: &Frame<'_>, callee: &Code, entry: usize) {
-        self.free_frame(f.base, f.base + callee.frame as usize);
+        let top = f.base + callee.frame as usize;
+        if callee.scalar && self.m.sched.holes.is_empty() && top >= self.m.stack.len() {
+            self.m.stack.truncate_scalars(f.base);
+        } else {
+            self.free_frame(f.base, top);
+        }
         self.m.display[callee.level as usize] = f.saved;
         self.m.depth -= 1;
         self.m.calls.pop();
@@ -3160,5 +3265,55 @@ mod part_tests {
             "{code}"
         );
         assert_eq!((out, code), (out2, code2));
+    }
+}
+
+#[cfg(test)]
+mod scalar_frame_tests {
+    /// Frames freed without looking at their slots (`Code::scalar`) hold
+    /// only scalars: functions of scalar parameters whose frames also hold
+    /// a string, a record, an access value, an exception occurrence or the
+    /// walker's values are freed the long way. (A frame freed as scalars
+    /// that holds anything else fails the debug assertion in
+    /// `Stack::truncate_scalars`, on in test builds.)
+    #[test]
+    #[cfg_attr(
+        not(debug_assertions),
+        ignore = "the check is a debug assertion: run in a build with them"
+    )]
+    fn frames_freed_as_scalars_hold_only_scalars() {
+        let src = "with Ada.Text_IO; use Ada.Text_IO;\n\
+            procedure Frames is\n\
+               type Rec is record A : Integer; S : String (1 .. 3); end record;\n\
+               type Acc is access Integer;\n\
+               type Recs is array (1 .. 3) of Rec;\n\
+               RS : Recs := (others => (1, \"abc\"));\n\
+               function Img (N : Integer) return Integer is\n\
+                  L : constant Integer := Integer'Image (N)'Length;\n\
+               begin\n   return L;\nend Img;\n\
+               function Fld (K : Integer) return Integer is\n\
+                  R : constant Rec := RS (K);\n\
+               begin\n   return R.A + Character'Pos (RS (K).S (1));\nend Fld;\n\
+               function Ptr (N : Integer) return Integer is\n\
+                  P : constant Acc := new Integer'(N);\n\
+               begin\n   return P.all;\nend Ptr;\n\
+               function Occ (N : Integer) return Integer is\n\
+               begin\n   if N > 0 then raise Constraint_Error; end if;\n   return 0;\n\
+               exception\n   when E : others => return 1;\nend Occ;\n\
+               function Both (N : Integer) return Integer is\n\
+               begin\n   return Img (N) + Fld (N mod 3 + 1) + Ptr (N) + Occ (N);\nend Both;\n\
+               function Plain (N : Integer) return Integer is\n\
+               begin\n   if N < 2 then return N; end if;\n   return Plain (N - 1) + Both (N) - Both (N);\nend Plain;\n\
+               T : Integer := 0;\n\
+            begin\n\
+               for I in 1 .. 200 loop\n      T := T + Both (I) + Plain (I mod 7);\n   end loop;\n\
+               Put_Line (Integer'Image (T));\n\
+            end Frames;\n";
+        let buf = crate::golden::SharedBuf::default();
+        let mut s = crate::session::Session::new(Box::new(buf.clone()));
+        let outcome = s.run_source("frames.adb", src);
+        assert_eq!(outcome.exit_code(), 0, "{}", buf.take());
+        // GNAT prints 40764.
+        assert_eq!(buf.take().trim(), "40764");
     }
 }
