@@ -947,6 +947,8 @@ impl Checker {
     ) -> bool {
         let ret = self.funcs[f as usize].ret;
         let params = self.funcs[f as usize].params.clone();
+        // Nested bodies are not the main program's.
+        let main = std::mem::take(&mut self.main_body);
         self.level += 1;
         self.unread.push(HashMap::new());
         self.ctx.push(FuncCtx {
@@ -993,7 +995,7 @@ impl Checker {
         self.masters.push(false);
         let mut elab = Vec::new();
         self.decls_completed(decls, &mut elab);
-        self.parts_here = kind == BodyKind::Subprogram;
+        self.parts_here = kind == BodyKind::Subprogram && main;
         let inner = self.block(body);
         let creates = self.masters.pop().unwrap_or(false);
         let body_span = body.span;

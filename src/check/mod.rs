@@ -112,7 +112,13 @@ pub struct Checker {
     /// subprogram body is compiled a part at a time as it is checked, and
     /// each part's checked statements dropped (see [`ir::PartCompiler`]).
     pub compile_parts: Option<ir::PartCompiler>,
-    /// The next block checked is a subprogram's own (see `compile_parts`).
+    /// The next subprogram body checked is the main program's, whose
+    /// statements are compiled a part at a time (see `compile_parts`): only
+    /// the compiled engine runs it (a subprogram that an expression the
+    /// walker evaluates calls is run by the walker, from its checked
+    /// statements).
+    main_body: bool,
+    /// The next block checked is the main program's own.
     parts_here: bool,
     /// An error was reported since the diagnostics were last taken (a
     /// program with errors does not run: its parts are not compiled).
@@ -222,6 +228,7 @@ impl Checker {
             consume_ast: false,
             diagnostics_only: false,
             compile_parts: None,
+            main_body: false,
             parts_here: false,
             erred: false,
             bounds_out: None,
@@ -769,6 +776,10 @@ impl Checker {
             .iter()
             .any(|i| matches!(i, ast::TopItem::Stmt(_)));
         let mut main = None;
+        let last_main = unit.items.iter().rev().find(|i| {
+            matches!(i, ast::TopItem::Decl(d) if matches!(&d.kind,
+                ast::DeclKind::SubprogramBody(b) if b.spec.params.is_empty() && b.spec.ret.is_none()))
+        });
         for item in &unit.items {
             match item {
                 ast::TopItem::With(names, _) => {
@@ -785,7 +796,9 @@ impl Checker {
                     {
                         // Library-level procedure: the last one is the main program.
                         let before = self.funcs.len();
+                        self.main_body = std::ptr::eq(item, last_main.unwrap_or(item));
                         self.decl(d, &mut out);
+                        self.main_body = false;
                         main = self.funcs_named(&b.spec.name.key(), before);
                         continue;
                     }

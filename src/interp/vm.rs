@@ -3142,10 +3142,11 @@ mod part_tests {
     /// A long program (over `LAZY_FROM`, so its bodies are parsed a part
     /// at a time), with in each part: assignments, indexing, a call with an
     /// `in out` parameter, a declare block (slots declared in a late part),
-    /// a loop left by `exit`, an exception handled inside the part; a
-    /// nested recursive function, two mutually recursive ones (the first
-    /// called before its body is checked) and a procedure (a part each)
-    /// whose handler and `return` are in the part; a task (the body is a master, which a
+    /// a loop left by `exit`, an exception handled inside the part, a call
+    /// in an aggregate (which the walker evaluates: the function's body
+    /// is not compiled as parts, only the main program's is); a nested
+    /// recursive function, two mutually recursive ones and a procedure
+    /// with a handler; a task (the body is a master, which a
     /// `return` leaves; the reference walker runs no task); and a `return`
     /// in the last part.
     fn long_program(task: bool) -> String {
@@ -3153,6 +3154,8 @@ mod part_tests {
             "with Ada.Text_IO; use Ada.Text_IO;\nprocedure Big is\n\
              X : Integer := 0;\n\
              A : array (1 .. 10) of Integer := (others => 0);\n\
+             type Pair is record L, R : Integer; end record;\n\
+             P : Pair := (0, 0);\n\
              procedure Bump (V : in out Integer; K : Integer) is\n\
              begin\n   V := V + K;\n   if V < 0 then raise Constraint_Error; end if;\n\
              exception\n   when Constraint_Error => V := 0;\nend Bump;\n\
@@ -3182,7 +3185,7 @@ mod part_tests {
             t.push_str("   if X > 100000 then X := X - 99999; end if;\n");
             if i % 300 == 0 {
                 t.push_str(&format!(
-                    "   declare\n      Y{i} : Integer := Twice (X);\n   begin\n      X := X + Y{i} mod 5;\n      if Even (X mod 10) then X := X + 1; end if;\n   end;\n"
+                    "   declare\n      Y{i} : Integer := Twice (X);\n   begin\n      X := X + Y{i} mod 5;\n      if Even (X mod 10) then X := X + 1; end if;\n      P := (L => Twice (X mod 100), R => 1);\n      X := X + P.L mod 3;\n   end;\n"
                 ));
                 t.push_str("   for J in 1 .. 5 loop\n      X := X + J;\n      exit when J = 3;\n   end loop;\n");
                 t.push_str(
