@@ -429,7 +429,18 @@ impl Session {
                 self.checker.use_everywhere(p);
             }
         }
+        // Only the program being run is compiled as it is checked: the
+        // walker may run a unit it names (from an expression it evaluates),
+        // and the walker runs checked statements.
+        let parts = if self.in_stdlib || self.in_with_file {
+            self.checker.compile_parts.take()
+        } else {
+            None
+        };
         let (stmts, main) = self.checker.check_unit_consuming(&unit);
+        if parts.is_some() {
+            self.checker.compile_parts = parts;
+        }
         diags.extend(self.checker.take_diags());
         // A name from a stdlib package that was not checked (no `with`):
         // check the rest of the stdlib to say where it is declared.

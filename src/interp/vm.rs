@@ -3253,6 +3253,42 @@ mod part_tests {
         }
     }
 
+    /// A long library procedure in a file the program names (`with`) is not
+    /// compiled as parts, though it is its unit's last: the walker runs it
+    /// when a function called in an aggregate calls it.
+    #[test]
+    fn a_named_units_long_body_is_not_compiled_as_parts() {
+        let dir = std::env::temp_dir().join(format!("adair-parts-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let mut helper =
+            String::from("with Ada.Text_IO;\nprocedure Extra is\n   X : Integer := 0;\nbegin\n");
+        for i in 0..6000 {
+            helper.push_str(&format!("   X := X + {i} mod 7;\n"));
+        }
+        helper.push_str(
+            "   Ada.Text_IO.Put_Line (\"extra\" & Integer'Image (X));\nend Extra;\n\
+             package Helper is\n   function Run return Integer;\nend Helper;\n\
+             package body Helper is\n   function Run return Integer is\n   begin\n\
+             Extra;\n      return 1;\n   end Run;\nend Helper;\n",
+        );
+        assert!(helper.len() >= crate::syntax::LAZY_FROM);
+        std::fs::write(dir.join("helper.adb"), helper).unwrap();
+        let main = "with Helper;\nwith Ada.Text_IO;\nprocedure Main is\n\
+            type Pair is record L, R : Integer; end record;\n\
+            P : Pair := (0, 0);\n\
+            begin\n   P := (L => Helper.Run, R => 2);\n\
+            Ada.Text_IO.Put_Line (Integer'Image (P.L + P.R));\nend Main;\n";
+        let buf = SharedBuf::default();
+        let mut s = Session::new(Box::new(buf.clone()));
+        s.compile_as_checked();
+        let outcome = s.run_source(&dir.join("main.adb").to_string_lossy(), main);
+        let _ = std::fs::remove_dir_all(&dir);
+        assert_eq!(
+            (buf.take().as_str(), outcome.exit_code()),
+            ("extra 17997\n 3\n", 0)
+        );
+    }
+
     /// A long program with an error in a late part is not compiled (it does
     /// not run), and reports what the check without parts reports.
     #[test]

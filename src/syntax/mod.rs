@@ -94,10 +94,15 @@ fn lex_windows(
     while start < at.end {
         let mut end = at.end;
         if start + WINDOW < at.end {
-            let window = &src[start..start + WINDOW];
+            // Line ends are single bytes: the window is searched as bytes
+            // (its edge may fall inside a character).
+            let window = &src.as_bytes()[start..start + WINDOW];
             let mut cut = window.len();
-            while let Some(nl) = window[..cut].rfind('\n') {
-                if !src[start + nl + 1..].trim_start().starts_with('\'') {
+            while let Some(nl) = window[..cut].iter().rposition(|&b| b == b'\n') {
+                // The next token must not be a `'` (nor hide behind a
+                // comment line, which may be followed by one).
+                let next = src[start + nl + 1..].trim_start();
+                if !next.starts_with('\'') && !next.starts_with("--") {
                     end = start + nl + 1;
                     break;
                 }
@@ -355,6 +360,32 @@ mod lazy_tests {
         let mut got = Vec::new();
         assert!(lazy_stmts(&src, 0, at, |_, ss| got.extend(ss)).is_empty());
         assert_eq!(got, *body(&eager.unwrap()).stmts.borrow());
+    }
+
+    /// Lexing a window at a time gives the tokens of lexing the whole, with
+    /// a window's edge inside a character (a comment's `ö`), and with lines
+    /// where a comment line stands between a prefix and its attribute mark.
+    #[test]
+    fn windows_lex_as_the_whole() {
+        let unit = "   X := A\n   -- Größe\n   'Length + 1;\n";
+        let off = unit.find('ö').unwrap();
+        // The byte at WINDOW is the second of an `ö`.
+        let inside = (WINDOW + 10 * unit.len() - off - 1) % unit.len();
+        for shift in [inside, 0, 1, 2, 3] {
+            let src = format!(
+                "{}{}",
+                " ".repeat(shift),
+                unit.repeat(3 * WINDOW / unit.len())
+            );
+            if shift == inside {
+                assert!(!src.is_char_boundary(WINDOW));
+            }
+            let (whole, d) = lexer::lex(&src, 0);
+            assert!(d.is_empty(), "{d:?}");
+            let mut got = Vec::new();
+            assert!(lex_windows(&src, 0, 0..src.len(), |t| got.extend(t)).is_ok());
+            assert!(got == whole, "shift {shift}");
+        }
     }
 
     #[test]
