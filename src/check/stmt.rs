@@ -25,14 +25,17 @@ impl Checker {
             let text = self.texts.get(&at.context).cloned().unwrap_or_default();
             // The body's code, as its parts are compiled.
             let code = ir::Precompiled::new();
+            let compiling = self
+                .compile_parts
+                .filter(|_| parts_here && !self.diagnostics_only);
             let diags = crate::syntax::lazy_stmts(&text, at.context, at, |n, ss| {
-                if let Some(compile) = self.compile_parts.filter(|_| parts_here) {
+                if let Some(compile) = compiling {
                     let mut part = Vec::with_capacity(ss.len());
                     for s in ss {
                         self.stmt(&s, &mut part);
                     }
                     // A program with errors does not run.
-                    if self.erred || self.diagnostics_only {
+                    if self.erred {
                         return;
                     }
                     let ctx = self.ctx.last().expect("a body's context");
@@ -54,7 +57,7 @@ impl Checker {
                     self.stmt(&s, &mut stmts);
                 }
             });
-            if self.compile_parts.is_some() && parts_here && !self.erred && !self.diagnostics_only {
+            if compiling.is_some() && !self.erred {
                 stmts.push(Stmt {
                     kind: StmtKind::Compiled(code),
                     span: at,
