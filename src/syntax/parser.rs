@@ -878,11 +878,46 @@ struct Parsers<'t, I: TokIn<'t>> {
 /// The grammar. `lazy`: a subprogram body's statements are read but not
 /// built (see [`Block::lazy`]).
 fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
-    let mut decl: Recursive<chumsky::recursive::Indirect<'t, 't, I, Decl, Ex<'t>>> =
-        Recursive::declare();
-    let mut stmt: Recursive<chumsky::recursive::Indirect<'t, 't, I, Stmt, Ex<'t>>> =
-        Recursive::declare();
+    // Statements and declarations are mutually recursive. Each refers to
+    // itself and to the other through chumsky's `recursive` handles, which
+    // are weak inside their own definition: `Recursive::declare` and
+    // `define` made a reference cycle, and every parse leaked the grammar.
     let expr = expr::<I>();
+    let stmt = recursive(|stmt| {
+        let stmt = stmt.boxed();
+        let decl = recursive(|decl| {
+            let decl = decl.boxed();
+            let c = common(&expr, &stmt, &decl, lazy);
+            decl_grammar(&c, &decl)
+        })
+        .boxed();
+        let c = common(&expr, &stmt, &decl, lazy);
+        stmt_grammar(&c, &decl)
+    });
+    Parsers { stmt: stmt.boxed() }
+}
+
+/// The parts of the grammar that statements and declarations share, built
+/// over their handles.
+struct Common<'t, I: TokIn<'t>> {
+    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+    st_ind: Boxed<'t, 't, I, SubtypeInd, Ex<'t>>,
+    drange: Boxed<'t, 't, I, DiscreteRange, Ex<'t>>,
+    stmts: Boxed<'t, 't, I, Vec<Stmt>, Ex<'t>>,
+    decls: Boxed<'t, 't, I, Vec<Decl>, Ex<'t>>,
+    handler: Boxed<'t, 't, I, Handler, Ex<'t>>,
+    block: Boxed<'t, 't, I, Block, Ex<'t>>,
+    body_block: Boxed<'t, 't, I, Block, Ex<'t>>,
+    end_name: Boxed<'t, 't, I, Option<(String, Span)>, Ex<'t>>,
+}
+
+fn common<'t, I: TokIn<'t>>(
+    expr: &Boxed<'t, 't, I, Expr, Ex<'t>>,
+    stmt: &Boxed<'t, 't, I, Stmt, Ex<'t>>,
+    decl: &Boxed<'t, 't, I, Decl, Ex<'t>>,
+    lazy: bool,
+) -> Common<'t, I> {
+    let expr = expr.clone();
     let st_ind = subtype_ind(expr.clone());
     let drange = discrete_range(expr.clone());
 
@@ -965,13 +1000,40 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
     } else {
         block.clone()
     };
-
     let end_name = name()
         .map(|n: Expr| (expr_text(&n), n.span))
         .or(select! { Token::Str(s) = e => (format!("\"{s}\""), e.span()) })
         .or_not();
 
     // ---- statements ----
+    Common {
+        expr,
+        st_ind,
+        drange,
+        stmts,
+        decls,
+        handler: handler.boxed(),
+        block,
+        body_block,
+        end_name: end_name.boxed(),
+    }
+}
+
+/// The statement, over the shared parts.
+fn stmt_grammar<'t, I: TokIn<'t>>(
+    c: &Common<'t, I>,
+    decl: &Boxed<'t, 't, I, Decl, Ex<'t>>,
+) -> Boxed<'t, 't, I, Stmt, Ex<'t>> {
+    let Common {
+        expr,
+        drange,
+        stmts,
+        decls,
+        handler,
+        block,
+        ..
+    } = c;
+
     let label = ident().then_ignore(just(Token::Colon));
     let choice_p = kw!(Others)
         .map_with(|_, e| Choice::Others(e.span()))
@@ -1361,25 +1423,41 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
         simple_stmt,
     ))
     .labelled("statement");
-    stmt.define(
-        stmt_kind
-            .map_with(|kind, e| Stmt {
-                kind,
-                span: e.span(),
-            })
-            // A statement that does not parse: skipped to its `;`, but not
-            // past a word that ends the sequence around it (`end`, `else`,
-            // ...), which then closes its construct as written.
-            .recover_with(via_parser(skip_to_semi().map(|_| Stmt {
-                kind: StmtKind::Error,
-                span: Span {
-                    start: 0,
-                    end: 0,
-                    context: 0,
-                },
-            })))
-            .boxed(),
-    );
+    stmt_kind
+        .map_with(|kind, e| Stmt {
+            kind,
+            span: e.span(),
+        })
+        // A statement that does not parse: skipped to its `;`, but not
+        // past a word that ends the sequence around it (`end`, `else`,
+        // ...), which then closes its construct as written.
+        .recover_with(via_parser(skip_to_semi().map(|_| Stmt {
+            kind: StmtKind::Error,
+            span: Span {
+                start: 0,
+                end: 0,
+                context: 0,
+            },
+        })))
+        .boxed()
+}
+
+/// The declaration, over the shared parts.
+fn decl_grammar<'t, I: TokIn<'t>>(
+    c: &Common<'t, I>,
+    decl: &Boxed<'t, 't, I, Decl, Ex<'t>>,
+) -> Boxed<'t, 't, I, Decl, Ex<'t>> {
+    let Common {
+        expr,
+        st_ind,
+        drange,
+        stmts,
+        decls,
+        handler,
+        block,
+        body_block,
+        end_name,
+    } = c;
 
     // ---- declarations ----
     let names = ident()
@@ -2033,42 +2111,38 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
             }))
         });
 
-    decl.define(
-        choice((
-            separate_body,
-            type_decl,
-            subtype_decl,
-            object_decl,
-            subprogram,
-            package,
-            use_decl,
-            pragma,
-            task,
-            interrupt_use,
-            rep_clause,
-            generic,
-            protected,
-            entry_body,
-        ))
-        .map_with(|kind, e| Decl {
-            kind,
-            span: e.span(),
-        })
-        .labelled("declaration")
-        // Likewise a declaration, not past the `begin`, `end` or `private`
-        // that ends the declarative part.
-        .recover_with(via_parser(skip_to_semi().map(|_| Decl {
-            kind: DeclKind::Unsupported("<error>"),
-            span: Span {
-                start: 0,
-                end: 0,
-                context: 0,
-            },
-        })))
-        .boxed(),
-    );
-
-    Parsers { stmt: stmt.boxed() }
+    choice((
+        separate_body,
+        type_decl,
+        subtype_decl,
+        object_decl,
+        subprogram,
+        package,
+        use_decl,
+        pragma,
+        task,
+        interrupt_use,
+        rep_clause,
+        generic,
+        protected,
+        entry_body,
+    ))
+    .map_with(|kind, e| Decl {
+        kind,
+        span: e.span(),
+    })
+    .labelled("declaration")
+    // Likewise a declaration, not past the `begin`, `end` or `private`
+    // that ends the declarative part.
+    .recover_with(via_parser(skip_to_semi().map(|_| Decl {
+        kind: DeclKind::Unsupported("<error>"),
+        span: Span {
+            start: 0,
+            end: 0,
+            context: 0,
+        },
+    })))
+    .boxed()
 }
 
 fn unsupported(span: Span, what: &'static str) -> Decl {
