@@ -108,7 +108,15 @@ enum Op {
     /// A call the walker makes (natives, services, a subprogram without
     /// body), its `in` arguments with calls in them computed here first.
     CallWalker(FuncId, Box<[Arg]>, Option<Var>, Span),
+    /// A call whose one argument, `in`, is `x op k` for integers: the
+    /// operation goes straight into the callee's frame (`F (N - 1)`).
+    /// Then a function's result slot (`NO_VAR`: a procedure), the call's
+    /// place and the argument's (in the call's file).
+    CallK(FuncId, Var, IntOp, i32, Var, Span, [u32; 2]),
     Return(Option<Var>),
+    /// `return x op y` for integers, the operation and the return in one
+    /// instruction (`return F (N - 1) + F (N - 2);`).
+    ReturnIntBin(IntOp, Var, Var, Span),
     /// The end of a body: a procedure returns, a function raises.
     FallOff,
     /// Handler dispatch for the pending occurrence: the handlers, the
@@ -225,6 +233,9 @@ struct SavedFrame {
     base: usize,
     top: usize,
     saved: usize,
+    /// The caller's frame and result slot (see [`Frame`]).
+    fp: usize,
+    dst: usize,
 }
 
 impl Regs {
@@ -366,8 +377,10 @@ fn relocate(op: &mut Op, by: u32) {
         | Op::Exec(..)
         | Op::Poll(..)
         | Op::Call(..)
+        | Op::CallK(..)
         | Op::CallWalker(..)
         | Op::Return(..)
+        | Op::ReturnIntBin(..)
         | Op::FallOff
         | Op::PopCurrent
         | Op::TruncCurrent(..)
@@ -864,6 +877,19 @@ impl<'r> Compiler<'r> {
             }
             return;
         }
+        if let [a] = all
+            && a.mode == Mode::In
+            && a.value.span.context == span.context
+            && let ExKind::IntBin(op, x, k) = &a.value.kind
+            && let ExKind::Int(k) = k.kind
+            && let Ok(k) = i32::try_from(k)
+        {
+            let x = self.expr(x);
+            let at = [a.value.span.start, a.value.span.end];
+            let dst = dst.unwrap_or(NO_VAR);
+            self.ops.push(Op::CallK(f, x, *op, k, dst, span, at));
+            return;
+        }
         let mut ops = Vec::with_capacity(all.len() + 1);
         for (k, a) in all.iter().enumerate() {
             let later = all[k + 1..].iter().any(|b| effects(&b.value));
@@ -1005,6 +1031,12 @@ impl<'r> Compiler<'r> {
                     let next = self.here();
                     self.patch(j, next);
                 }
+            }
+            StmtKind::Return(Some(e)) if self.masters == 0 && int_bin(e).is_some() => {
+                let (op, a, b) = int_bin(e).expect("an integer operation");
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::ReturnIntBin(op, x, y, e.span));
             }
             StmtKind::Return(v) => {
                 let x = v.as_ref().map(|e| self.expr(e));
@@ -1432,8 +1464,10 @@ impl<'r> Compiler<'r> {
                 | Op::ForNext(..)
                 | Op::Poll(..)
                 | Op::Call(..)
+                | Op::CallK(..)
                 | Op::CallWalker(..)
                 | Op::Return(..)
+                | Op::ReturnIntBin(..)
                 | Op::FallOff
                 | Op::PopCurrent
                 | Op::TruncCurrent(..) => true,
@@ -1471,6 +1505,28 @@ pub(crate) struct Frame<'c> {
     /// callee's level that the call replaced.
     base: usize,
     saved: usize,
+    /// Where the caller's own frame begins, and the stack slot a
+    /// function's result goes to (`NO_DST`: none, or the copy-back path):
+    /// a return finds both without the display or the call instruction.
+    fp: usize,
+    dst: usize,
+}
+
+/// [`Frame::dst`] of a call whose result, if any, is not put by the
+/// quick return.
+const NO_DST: usize = usize::MAX;
+
+/// No operand (`Op::CallK` of a procedure).
+const NO_VAR: Var = Var {
+    level: u16::MAX,
+    slot: u32::MAX,
+};
+
+/// The arguments of a call: in slots of the caller, or one integer.
+#[derive(Clone, Copy)]
+enum Args<'x> {
+    Slots(&'x [Var]),
+    Int(i64),
 }
 
 /// A called frame just set up: the callee's code, where its frame begins,
@@ -1626,7 +1682,7 @@ impl<'a> Run<'a> {
         &mut self,
         cache: &mut Codes<'c>,
         f: FuncId,
-        ops: &[Var],
+        args: Args<'_>,
         (lvl, fp): (u16, usize),
         span: Span,
     ) -> R<Entered<'c>> {
@@ -1643,6 +1699,13 @@ impl<'a> Run<'a> {
         // The arguments go straight into the new frame; the display is
         // still the caller's while they are read (an operand of the
         // caller's own frame, at `lvl`, begins at `fp`).
+        let ops = match args {
+            Args::Slots(ops) => ops,
+            Args::Int(n) => {
+                self.m.stack.push_int(n);
+                &[]
+            }
+        };
         for v in ops.iter() {
             let i = if v.level == lvl {
                 fp + v.slot as usize
@@ -1661,7 +1724,7 @@ impl<'a> Run<'a> {
             }
         }
         // A frame holds its parameters (see `compile_first`).
-        debug_assert!(code.frame as usize >= ops.len());
+        debug_assert!(code.frame as usize >= self.m.stack.len() - base);
         let own = (code.frame - code.temps) as usize;
         let top = base + code.frame as usize;
         self.m.stack.grow_to_clearing(base + own, top);
@@ -2148,6 +2211,8 @@ impl<'a> Run<'a> {
                 current: sf.current,
                 base: sf.base,
                 saved: sf.saved,
+                fp: sf.fp,
+                dst: sf.dst,
             });
         }
         let cur = fetch(self, r.cur);
@@ -2221,17 +2286,20 @@ impl<'a> Run<'a> {
     /// rest (and every overflow) through the walker's own checks.
     #[inline(always)]
     fn int_arith(&mut self, o: IntOp, d: usize, x: i64, y: i64, span: Span) -> R<()> {
+        self.int_value(o, x, y, span).map(|v| self.put_int_ix(d, v))
+    }
+
+    /// `x op y` for integers, as [`Self::int_arith`] computes it.
+    #[inline(always)]
+    fn int_value(&self, o: IntOp, x: i64, y: i64, span: Span) -> R<i64> {
         let quick = match o {
             IntOp::Add => Some(x + y),
             IntOp::Sub => Some(x - y),
             _ => None,
         };
         match quick {
-            Some(v) if (i32::MIN as i64..=i32::MAX as i64).contains(&v) => {
-                self.put_int_ix(d, v);
-                Ok(())
-            }
-            _ => self.int_op(o, x, y, span).map(|v| self.put_int_ix(d, v)),
+            Some(v) if (i32::MIN as i64..=i32::MAX as i64).contains(&v) => Ok(v),
+            _ => self.int_op(o, x, y, span),
         }
     }
 
@@ -2294,7 +2362,7 @@ impl<'a> Run<'a> {
         // Enters a called frame: the running code is saved with its resume
         // point, and the callee's code starts.
         macro_rules! push_frame {
-            ($entered:expr) => {
+            ($entered:expr, $dst:expr) => {
                 let (code, base, saved) = $entered;
                 frames.push(Frame {
                     code: std::mem::replace(&mut cur, code),
@@ -2302,6 +2370,8 @@ impl<'a> Run<'a> {
                     current: current_base,
                     base,
                     saved,
+                    fp,
+                    dst: $dst,
                 });
                 current_base = self.m.current.len();
                 pc = 0;
@@ -2373,6 +2443,35 @@ impl<'a> Run<'a> {
                     Ok(()) => continue,
                     Err(what) => Err(self.check_failed(what, *$span)),
                 }
+            }};
+        }
+        // A return of `$value` (an integer, or any value, or none): from a
+        // call without `out` parameters the frame goes and the value lands
+        // here; everything else takes the long way after the match.
+        macro_rules! ret {
+            ($value:expr) => {{
+                let value: Result<i64, Option<Value>> = $value;
+                let frame = if cur.all_in { frames.pop() } else { None };
+                if let Some(frame) = frame {
+                    self.pop_frame(&frame, cur, current_base);
+                    cur = frame.code;
+                    pc = frame.pc;
+                    current_base = frame.current;
+                    lvl = cur.level;
+                    fp = frame.fp;
+                    debug_assert_eq!(fp, self.m.display.get(lvl as usize).copied().unwrap_or(0));
+                    if frame.dst != NO_DST {
+                        match value {
+                            Ok(n) => self.put_int_ix(frame.dst, n),
+                            Err(v) => self.put_ix(frame.dst, v.unwrap_or_default()),
+                        }
+                    }
+                    continue;
+                }
+                Err(Flow::Return(match value {
+                    Ok(n) => Some(Value::Int(n)),
+                    Err(v) => v,
+                }))
             }};
         }
         loop {
@@ -2648,12 +2747,39 @@ impl<'a> Run<'a> {
                     })
                 }
                 Op::Call(func, f, _, ops, span) => {
-                    let args = &ops[..ops.len() - *func as usize];
-                    match self.push_call(cache, *f, args, (lvl, fp), *span) {
+                    // (The result slot before the call: it changes the display.)
+                    let (args, dst) = match (*func, ops.split_last()) {
+                        (true, Some((d, args))) => (args, ix!(*d)),
+                        _ => (&ops[..], NO_DST),
+                    };
+                    match self.push_call(cache, *f, Args::Slots(args), (lvl, fp), *span) {
                         Ok(entered) => {
                             let base = entered.1;
-                            push_frame!(entered);
+                            push_frame!(entered, dst);
                             // The callee's frame is the running one.
+                            lvl = cur.level;
+                            fp = base;
+                            continue;
+                        }
+                        Err(e) => Err(e),
+                    }
+                }
+                Op::CallK(f, a, o, k, d, span, [start, end]) => {
+                    let x = self.int_ix(ix!(*a));
+                    // (Before the call: it changes the display.)
+                    let dst = if *d == NO_VAR { NO_DST } else { ix!(*d) };
+                    let at = Span {
+                        start: *start,
+                        end: *end,
+                        context: span.context,
+                    };
+                    let entered = self
+                        .int_value(*o, x, *k as i64, at)
+                        .and_then(|n| self.push_call(cache, *f, Args::Int(n), (lvl, fp), *span));
+                    match entered {
+                        Ok(entered) => {
+                            let base = entered.1;
+                            push_frame!(entered, dst);
                             lvl = cur.level;
                             fp = base;
                             continue;
@@ -2671,30 +2797,14 @@ impl<'a> Run<'a> {
                         },
                         None => Err(None),
                     };
-                    // A return from a call without `out` parameters: the
-                    // frame goes, the value lands (everything else takes
-                    // the long way below).
-                    let frame = if cur.all_in { frames.pop() } else { None };
-                    if let Some(frame) = frame {
-                        let dst = call_dst(frame.code, frame.pc);
-                        self.pop_frame(&frame, cur, current_base);
-                        cur = frame.code;
-                        pc = frame.pc;
-                        current_base = frame.current;
-                        reload!();
-                        if let Some(d) = dst {
-                            let i = ix!(d);
-                            match value {
-                                Ok(n) => self.put_int_ix(i, n),
-                                Err(v) => self.put_ix(i, v.unwrap_or_default()),
-                            }
-                        }
-                        continue;
+                    ret!(value)
+                }
+                Op::ReturnIntBin(o, a, b, span) => {
+                    let (x, y) = (self.int_ix(ix!(*a)), self.int_ix(ix!(*b)));
+                    match self.int_value(*o, x, y, *span) {
+                        Ok(n) => ret!(Ok(n)),
+                        Err(e) => Err(e),
                     }
-                    Err(Flow::Return(match value {
-                        Ok(n) => Some(Value::Int(n)),
-                        Err(v) => v,
-                    }))
                 }
                 Op::FallOff => Err(Flow::Exit(FALL_OFF)),
                 Op::Dispatch(catches, depth) => {
@@ -2803,7 +2913,8 @@ impl<'a> Run<'a> {
                     Ok(ProtStep::Body) => {
                         let sub = &self.c.prots[ec.kind as usize].entries[ec.entry as usize];
                         let body = sub.body.expect("an entry body");
-                        match self.push_call(cache, body, &ec.ops, (lvl, fp), ec.span) {
+                        match self.push_call(cache, body, Args::Slots(&ec.ops), (lvl, fp), ec.span)
+                        {
                             Ok(e) => {
                                 enter = Some(e);
                                 Ok(())
@@ -2883,7 +2994,7 @@ impl<'a> Run<'a> {
                     break 'slow;
                 }
                 if let Some(entered) = enter.take() {
-                    push_frame!(entered);
+                    push_frame!(entered, NO_DST);
                     break 'slow;
                 }
                 let Err(flow) = r else { break 'slow };
@@ -3013,7 +3124,19 @@ impl<'a> Run<'a> {
         self.m.display[callee.level as usize] = f.saved;
         self.m.depth -= 1;
         self.m.calls.pop();
-        self.m.current.truncate(entry);
+        // (Tested first: `truncate` calls the drop glue on an empty tail.)
+        if self.m.current.len() > entry {
+            self.m.current.truncate(entry);
+        }
+    }
+}
+
+/// The operation and operands of `e` when it is an integer operation whose
+/// right side is not a literal (those are `IntBinK`).
+fn int_bin(e: &Ex) -> Option<(IntOp, &Ex, &Ex)> {
+    match &e.kind {
+        ExKind::IntBin(op, a, b) if !matches!(b.kind, ExKind::Int(_)) => Some((*op, a, b)),
+        _ => None,
     }
 }
 
@@ -3055,6 +3178,8 @@ fn save_regs(
                 base: f.base,
                 top: f.base + size as usize,
                 saved: f.saved,
+                fp: f.fp,
+                dst: f.dst,
             })
             .collect(),
         cur: cur.func,
@@ -3065,20 +3190,12 @@ fn save_regs(
     }
 }
 
-/// The result slot of the call instruction before `pc` (see [`call_site`]).
-#[inline(always)]
-fn call_dst(code: &Code, pc: u32) -> Option<Var> {
-    match code.ops.get(pc as usize - 1) {
-        Some(Op::Call(true, _, _, ops, _)) => ops.last().copied(),
-        _ => None,
-    }
-}
-
 /// The arguments and result slot of the call instruction before `pc` (a
 /// frame's resume point).
 #[inline(always)]
 fn call_site(code: &Code, pc: u32) -> (&[Arg], Option<Var>) {
     match code.ops.get(pc as usize - 1) {
+        Some(Op::CallK(_, _, _, _, dst, ..)) => (&[], Some(*dst).filter(|d| *d != NO_VAR)),
         Some(Op::Call(func, _, args, ops, _)) => {
             let dst = if *func { ops.last().copied() } else { None };
             (args.as_deref().map_or(&[], |a| a), dst)
@@ -3354,5 +3471,103 @@ mod scalar_frame_tests {
         assert_eq!(outcome.exit_code(), 0, "{}", buf.take());
         // GNAT prints 40764.
         assert_eq!(buf.take().trim(), "40764");
+    }
+}
+
+#[cfg(test)]
+mod fused_tests {
+    use super::{Compiler, Op};
+    use crate::golden::SharedBuf;
+    use crate::session::Session;
+
+    /// The instructions of the body of `name` in `src` (checked, not run).
+    fn ops_of(src: &str, name: &str) -> Vec<String> {
+        let mut s = Session::new(Box::new(std::io::sink()));
+        s.check_source("f.adb", src, false)
+            .expect("the program checks");
+        let f = s
+            .checker
+            .funcs
+            .iter()
+            .find(|f| f.name.eq_ignore_ascii_case(name))
+            .expect("the function");
+        let body = f.body.as_deref().expect("its body");
+        let walker_calls = |_| false;
+        let own = f.nslots.max(f.params.len() as u32);
+        let mut c = Compiler::new(f.level, own, &walker_calls, &s.checker.types);
+        c.body(body);
+        let code = c.finish(None, true, true);
+        code.ops
+            .iter()
+            .map(|op| match op {
+                Op::CallK(..) => "CallK".to_string(),
+                Op::ReturnIntBin(..) => "ReturnIntBin".to_string(),
+                Op::Call(..) => "Call".to_string(),
+                other => format!("{other:?}"),
+            })
+            .collect()
+    }
+
+    /// `F (N - 1)` and `return X + Y` are one instruction each; an
+    /// argument of a constrained subtype (a range check) or a literal
+    /// argument is not fused.
+    #[test]
+    fn a_call_of_x_op_k_and_a_return_of_x_op_y_are_one_instruction() {
+        let src = "procedure P is\n\
+               function F (N : Integer) return Integer is\n\
+               begin\n   if N < 2 then return N; end if;\n   return F (N - 1) + F (N - 2);\nend F;\n\
+               function G (N : Natural) return Integer is\n\
+               begin\n   if N = 0 then return 0; end if;\n   return G (N - 1) * 2 + F (3);\nend G;\n\
+            begin\n   null;\nend P;\n";
+        let f = ops_of(src, "F");
+        assert_eq!(f.iter().filter(|o| *o == "CallK").count(), 2, "{f:?}");
+        assert_eq!(
+            f.iter().filter(|o| *o == "ReturnIntBin").count(),
+            1,
+            "{f:?}"
+        );
+        assert!(
+            !f.iter().any(|o| o == "Call" || o.starts_with("IntBin")),
+            "{f:?}"
+        );
+        // `G (N - 1)` converts to Natural (a range check): a plain call;
+        // `... * 2 + F (3)` returns `IntBin` of a temporary and a call.
+        let g = ops_of(src, "G");
+        assert!(!g.iter().any(|o| o == "CallK"), "{g:?}");
+        assert_eq!(g.iter().filter(|o| *o == "Call").count(), 2, "{g:?}");
+        assert_eq!(
+            g.iter().filter(|o| *o == "ReturnIntBin").count(),
+            1,
+            "{g:?}"
+        );
+    }
+
+    /// A fused argument that overflows is reported at the argument, as the
+    /// reference walker reports it, not at the call.
+    #[test]
+    fn an_overflow_in_a_fused_argument_is_reported_at_the_argument() {
+        let src = "with Ada.Text_IO; use Ada.Text_IO;\n\
+            procedure Loc is\n\
+               function Twice (N : Integer) return Integer is\n\
+               begin\n   return N * 2;\nend Twice;\n\
+               X : Integer := Integer'Last;\n\
+            begin\n\
+               Put_Line (Integer'Image (Twice\n     (X\n      + 1)));\n\
+            end Loc;\n";
+        let mut said = Vec::new();
+        for engine in [super::Engine::Compiled, super::Engine::Walker] {
+            let buf = SharedBuf::default();
+            let mut s = Session::new(Box::new(buf.clone()));
+            s.machine.engine = engine;
+            match s.run_source("loc.adb", src) {
+                crate::session::Outcome::Raised(d) => said.push(d.message),
+                other => panic!("{other:?}"),
+            }
+        }
+        assert!(
+            said[0].contains("loc.adb:10 overflow check failed"),
+            "{said:?}"
+        );
+        assert_eq!(said[0], said[1]);
     }
 }

@@ -885,13 +885,19 @@ fn parsers<'t, I: TokIn<'t>>(lazy: bool) -> Parsers<'t, I> {
     let expr = expr::<I>();
     let stmt = recursive(|stmt| {
         let stmt = stmt.boxed();
+        // The shared parts are built once, inside the declaration's
+        // definition; the statement's definition owns the declaration, so
+        // their weak handle to it stays good.
+        let mut shared = None;
         let decl = recursive(|decl| {
             let decl = decl.boxed();
             let c = common(&expr, &stmt, &decl, lazy);
-            decl_grammar(&c, &decl)
+            let g = decl_grammar(&c, &decl);
+            shared = Some(c);
+            g
         })
         .boxed();
-        let c = common(&expr, &stmt, &decl, lazy);
+        let c = shared.expect("the declaration's definition ran");
         stmt_grammar(&c, &decl)
     });
     Parsers { stmt: stmt.boxed() }
