@@ -1840,7 +1840,16 @@ impl Run<'_> {
             })));
         }
         let mut bounds = vec![first];
-        let mut data = Vec::new();
+        // Every row as long as the first (checked below).
+        let row_len = match vals.first() {
+            Some(Value::Arr(r)) => r.data.len(),
+            _ => 0,
+        };
+        let mut data = Vec::with_capacity(
+            vals.len()
+                .saturating_mul(row_len)
+                .min(MAX_ELEMENTS as usize),
+        );
         let mut inner: Option<Vec<(i64, i64)>> = None;
         for v in vals {
             let Value::Arr(row) = v else {
@@ -1857,7 +1866,13 @@ impl Run<'_> {
                     }
                 }
             }
-            data.extend(row.data.iter().cloned());
+            // Scalars copied as such: a clone of each `Value` through its
+            // match cost a hundred instructions an element.
+            data.extend(row.data.iter().map(|x| match x {
+                Value::Real(r) => Value::Real(*r),
+                Value::Int(i) => Value::Int(*i),
+                other => other.clone(),
+            }));
         }
         let inner = match fixed {
             Some(f) => f[1..].to_vec(),
