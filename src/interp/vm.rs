@@ -2292,6 +2292,12 @@ impl<'a> Run<'a> {
     /// `x op y` for integers, as [`Self::int_arith`] computes it.
     #[inline(always)]
     fn int_value(&self, o: IntOp, x: i64, y: i64, span: Span) -> R<i64> {
+        self.int_value_at(o, x, y, || span)
+    }
+
+    /// [`Self::int_value`] whose place is made only when a check fails.
+    #[inline(always)]
+    fn int_value_at(&self, o: IntOp, x: i64, y: i64, span: impl FnOnce() -> Span) -> R<i64> {
         let quick = match o {
             IntOp::Add => Some(x + y),
             IntOp::Sub => Some(x - y),
@@ -2299,7 +2305,7 @@ impl<'a> Run<'a> {
         };
         match quick {
             Some(v) if (i32::MIN as i64..=i32::MAX as i64).contains(&v) => Ok(v),
-            _ => self.int_op(o, x, y, span),
+            _ => self.int_op(o, x, y, span()),
         }
     }
 
@@ -2768,13 +2774,13 @@ impl<'a> Run<'a> {
                     let x = self.int_ix(ix!(*a));
                     // (Before the call: it changes the display.)
                     let dst = if *d == NO_VAR { NO_DST } else { ix!(*d) };
-                    let at = Span {
+                    let at = || Span {
                         start: *start,
                         end: *end,
                         context: span.context,
                     };
                     let entered = self
-                        .int_value(*o, x, *k as i64, at)
+                        .int_value_at(*o, x, *k as i64, at)
                         .and_then(|n| self.push_call(cache, *f, Args::Int(n), (lvl, fp), *span));
                     match entered {
                         Ok(entered) => {
