@@ -296,6 +296,7 @@ impl Machine {
                     span: crate::diag::span(0, 0, 0),
                     chain: Vec::new(),
                     reraised: Vec::new(),
+                    chained: true,
                 }));
             }
             self.reset_main();
@@ -345,6 +346,7 @@ impl Machine {
                 span: crate::diag::span(0, 0, 0),
                 chain: Vec::new(),
                 reraised: Vec::new(),
+                chained: true,
             })),
             Ok(()) | Err(Flow::Return(_)) | Err(Flow::Exit(_)) => Ok(()),
             Err(Flow::Raise(o)) => Err(o),
@@ -580,6 +582,7 @@ impl Run<'_> {
             span,
             chain,
             reraised: Vec::new(),
+            chained: false,
         }))
     }
 

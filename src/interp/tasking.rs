@@ -686,6 +686,7 @@ impl Run<'_> {
                 },
                 chain: Vec::new(),
                 reraised: Vec::new(),
+                chained: true,
             };
             self.m.sched.threads[c].outcome = Outcome::Error(Box::new(occ));
             self.m.sched.make_ready(c);
@@ -1013,6 +1014,8 @@ impl Run<'_> {
             span: lines.first().map_or(crate::diag::span(0, 0, 0), |l| l.0),
             chain: lines.iter().map(|l| l.0).collect(),
             reraised: Vec::new(),
+            // The chain is the tasks' places, not calls.
+            chained: true,
         }))
     }
 }

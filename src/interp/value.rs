@@ -236,6 +236,10 @@ pub struct Occurrence {
     pub chain: Vec<Span>,
     /// Where a handler re-raised it (`raise;`), first first.
     pub reraised: Vec<Span>,
+    /// `chain` is whole. An occurrence raised in code the compiled engine
+    /// runs holds only the walker's calls until the engine adds its own
+    /// frames' calls (it keeps them in its frames, not in `Machine::calls`).
+    pub chained: bool,
 }
 
 /// `Integer'Image`: a leading blank for non-negative values.

@@ -1734,7 +1734,6 @@ impl<'a> Run<'a> {
         let saved = self.m.display[level];
         self.m.display[level] = base;
         self.m.depth += 1;
-        self.m.calls.push(span);
         Ok((code, base, saved))
     }
 
@@ -2383,6 +2382,17 @@ impl<'a> Run<'a> {
                 pc = 0;
             };
         }
+        // A call's quick way in: the callee's frame is the running one.
+        macro_rules! enter {
+            ($entered:expr, $dst:expr) => {{
+                let entered = $entered;
+                let base = entered.1;
+                push_frame!(entered, $dst);
+                lvl = cur.level;
+                fp = base;
+                continue;
+            }};
+        }
         macro_rules! reload {
             () => {
                 lvl = cur.level;
@@ -2759,14 +2769,7 @@ impl<'a> Run<'a> {
                         _ => (&ops[..], NO_DST),
                     };
                     match self.push_call(cache, *f, Args::Slots(args), (lvl, fp), *span) {
-                        Ok(entered) => {
-                            let base = entered.1;
-                            push_frame!(entered, dst);
-                            // The callee's frame is the running one.
-                            lvl = cur.level;
-                            fp = base;
-                            continue;
-                        }
+                        Ok(entered) => enter!(entered, dst),
                         Err(e) => Err(e),
                     }
                 }
@@ -2783,13 +2786,7 @@ impl<'a> Run<'a> {
                         .int_value_at(*o, x, *k as i64, at)
                         .and_then(|n| self.push_call(cache, *f, Args::Int(n), (lvl, fp), *span));
                     match entered {
-                        Ok(entered) => {
-                            let base = entered.1;
-                            push_frame!(entered, dst);
-                            lvl = cur.level;
-                            fp = base;
-                            continue;
-                        }
+                        Ok(entered) => enter!(entered, dst),
                         Err(e) => Err(e),
                     }
                 }
@@ -3083,7 +3080,14 @@ impl<'a> Run<'a> {
                                 Err(e) => flow = e,
                             }
                         }
-                        Flow::Raise(occ) => {
+                        Flow::Raise(mut occ) => {
+                            // The calls of the compiled frames, innermost
+                            // first, after the walker's (see `Occurrence::chained`).
+                            if !occ.chained {
+                                occ.chain
+                                    .extend(frames.iter().rev().map(|f| call_span(f.code, f.pc)));
+                                occ.chained = true;
+                            }
                             let at = pc - 1;
                             if let Some(r) =
                                 cur.regions.iter().find(|r| r.start <= at && at < r.end)
@@ -3117,7 +3121,7 @@ impl<'a> Run<'a> {
     }
 
     /// Leaves the frame of a call to `callee`: its slots, display entry,
-    /// depth, call place, and the occurrences it made current (back to
+    /// depth, and the occurrences it made current (back to
     /// `entry`, their number when it was entered); no copy-out.
     #[inline(always)]
     fn pop_frame(&mut self, f: &Frame<'_>, callee: &Code, entry: usize) {
@@ -3129,7 +3133,6 @@ impl<'a> Run<'a> {
         }
         self.m.display[callee.level as usize] = f.saved;
         self.m.depth -= 1;
-        self.m.calls.pop();
         // (Tested first: `truncate` calls the drop glue on an empty tail.)
         if self.m.current.len() > entry {
             self.m.current.truncate(entry);
@@ -3193,6 +3196,15 @@ fn save_regs(
         current_base,
         pending,
         root,
+    }
+}
+
+/// Where the call before `pc` (a frame's resume point) is.
+fn call_span(code: &Code, pc: u32) -> Span {
+    match code.ops.get(pc as usize - 1) {
+        Some(Op::Call(.., span) | Op::CallK(_, _, _, _, _, span, _)) => *span,
+        Some(Op::ProtEntry(e)) => e.span,
+        _ => crate::diag::span(0, 0, 0),
     }
 }
 
@@ -3575,5 +3587,66 @@ mod fused_tests {
             "{said:?}"
         );
         assert_eq!(said[0], said[1]);
+    }
+}
+
+#[cfg(test)]
+mod chain_tests {
+    use crate::golden::SharedBuf;
+    use crate::session::{Outcome, Session};
+
+    /// The diagnostic of the exception that ends `src`, in `engine`.
+    fn raised(src: &str, engine: super::Engine) -> crate::diag::Diagnostic {
+        let buf = SharedBuf::default();
+        let mut s = Session::new(Box::new(buf.clone()));
+        s.machine.engine = engine;
+        match s.run_source("chain.adb", src) {
+            Outcome::Raised(d) => d,
+            other => panic!("{other:?}: {}", buf.take()),
+        }
+    }
+
+    /// The compiled engine keeps its calls in its frames, not in
+    /// `Machine::calls`, and adds them to an occurrence's chain: the
+    /// chain (the "called from here" notes) is the walker's, for an
+    /// exception raised in compiled code, in a function the walker runs
+    /// (in an aggregate) below compiled calls, and re-raised by a handler
+    /// (added once).
+    #[test]
+    fn an_exceptions_calls_are_those_the_walker_reports() {
+        let programs = [
+            // Plain calls and a fused one (`Down (N - 1)`).
+            "procedure Chain is\n\
+               function Down (N : Integer) return Integer is\n\
+               begin\n   if N = 0 then raise Constraint_Error; end if;\n   return Down (N - 1) + 1;\nend Down;\n\
+               function Twice (N : Integer; M : Integer) return Integer is\n\
+               begin\n   return Down (N) + Down (M);\nend Twice;\n\
+               X : Integer;\n\
+            begin\n   X := Twice (3, 2);\nend Chain;\n",
+            // A function the walker runs, in an aggregate, under compiled calls.
+            "procedure Chain is\n\
+               type Pair is array (1 .. 2) of Integer;\n\
+               function Bad (N : Integer) return Integer is\n\
+               begin\n   if N > 1 then raise Program_Error; end if;\n   return N;\nend Bad;\n\
+               function Make (N : Integer) return Pair is\n\
+               begin\n   return (Bad (1), Bad (N));\nend Make;\n\
+               function Outer (N : Integer) return Integer is\n\
+                  P : Pair := Make (N);\n\
+               begin\n   return P (1);\nend Outer;\n\
+               X : Integer;\n\
+            begin\n   X := Outer (2);\nend Chain;\n",
+            // Re-raised by a handler two calls down.
+            "procedure Chain is\n\
+               procedure Fail (N : Integer) is\n\
+               begin\n   if N = 0 then raise Tasking_Error; end if;\n   Fail (N - 1);\n\
+               exception\n   when Tasking_Error => raise;\nend Fail;\n\
+            begin\n   Fail (3);\nend Chain;\n",
+        ];
+        for src in programs {
+            let compiled = raised(src, super::Engine::Compiled);
+            let walked = raised(src, super::Engine::Walker);
+            assert!(compiled.notes.len() >= 3, "{compiled:?}");
+            assert_eq!(compiled, walked);
+        }
     }
 }
