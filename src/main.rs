@@ -443,7 +443,14 @@ fn real_main(
                 eprintln!("adair: interrupted (Ctrl-C)");
                 return 130;
             }
-            outcome.exit_code() as u8
+            let code = outcome.exit_code() as u8;
+            // The process ends here and its memory with it: the session is
+            // not taken apart piece by piece, nor this thread's 512 MiB
+            // stack (a short script's start-up, issue 11). Its output is
+            // flushed; files a program writes are written whole as it
+            // writes them, and recordings above.
+            let _ = s.machine.out.flush();
+            std::process::exit(code.into())
         }
         Some(Command::SimController {
             robot,
