@@ -1869,13 +1869,7 @@ impl Run<'_> {
                     }
                 }
             }
-            // Scalars copied as such: a clone of each `Value` through its
-            // match cost a hundred instructions an element.
-            data.extend(row.data.iter().map(|x| match x {
-                Value::Real(r) => Value::Real(*r),
-                Value::Int(i) => Value::Int(*i),
-                other => other.clone(),
-            }));
+            data.extend(row.data.iter().cloned());
         }
         let inner = match fixed {
             Some(f) => f[1..].to_vec(),
