@@ -169,6 +169,15 @@ enum Command {
         /// Multiply motion times by this factor (tests use a small one).
         #[arg(long, value_name = "F", default_value_t = 1.0)]
         time_scale: f64,
+        /// Hand jog: after the Nth command has been executed, move the arm
+        /// by these controller degrees per joint (repeatable; each joint
+        /// stops at its limit).
+        #[arg(long, value_name = "N:D1,D2,D3,D4,D5")]
+        jog_after: Vec<String>,
+        /// Poll this file or FIFO for `jog D1,D2,D3,D4,D5` lines (hand jogs
+        /// at a moment a test chooses); created when missing.
+        #[arg(long, value_name = "FILE")]
+        control: Option<PathBuf>,
     },
     /// List the serial ports of this machine.
     Ports,
@@ -461,6 +470,8 @@ fn real_main(
             refuse,
             slow,
             time_scale,
+            jog_after,
+            control,
         }) => {
             let desc = match adair::kinematics::RobotDescription::builtin(&robot) {
                 Ok(d) => d,
@@ -485,6 +496,16 @@ fn real_main(
                     return 2;
                 }
             };
+            let mut jogs = Vec::new();
+            for j in &jog_after {
+                match adair::simctl::parse_jog_after(j) {
+                    Ok(jog) => jogs.push(jog),
+                    Err(e) => {
+                        eprintln!("adair: --jog-after {e}");
+                        return 2;
+                    }
+                }
+            }
             let faults = adair::simctl::Faults {
                 silent_after,
                 corrupt,
@@ -492,7 +513,13 @@ fn real_main(
                 refuse,
                 slow,
                 time_scale,
+                jog_after: jogs,
+                control,
             };
+            if let Err(e) = faults.check() {
+                eprintln!("adair: {e}");
+                return 2;
+            }
             match adair::simctl::serve(desc, faults, log, &mut std::io::stdout()) {
                 Ok(()) => 0,
                 Err(e) => {
