@@ -168,36 +168,8 @@ pub fn save_path_system(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<
         }
         text.push_str("end\n");
     }
-    // Write a temporary file, then rename: never a half-written file.
-    let target = std::path::Path::new(&name);
-    if name.is_empty() || target.file_name().is_none() {
-        return Err(io_error(
-            st,
-            "SavePathSystem",
-            Exc::NameError,
-            format!("\"{name}\" is not a file name"),
-        ));
-    }
-    if let Some(dir) = target.parent().filter(|d| !d.as_os_str().is_empty())
-        && !dir.is_dir()
-    {
-        return Err(io_error(
-            st,
-            "SavePathSystem",
-            Exc::NameError,
-            format!("the directory {} does not exist", dir.display()),
-        ));
-    }
-    let tmp = tmp_path(target);
-    let res = std::fs::write(&tmp, text.as_bytes()).and_then(|_| std::fs::rename(&tmp, target));
-    if let Err(e) = res {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(io_error(
-            st,
-            "SavePathSystem",
-            Exc::UseError,
-            format!("cannot write {name}: {e}"),
-        ));
+    if let Err((exc, msg)) = write_whole(std::path::Path::new(&name), text.as_bytes()) {
+        return Err(io_error(st, "SavePathSystem", exc, msg));
     }
     Ok(None)
 }
@@ -298,35 +270,21 @@ fn parse(text: &str) -> Result<PathList, (usize, String)> {
 pub fn load_path_system(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let name = a[0].text();
     require_init(cx, st, "LoadPathSystem")?;
-    let text = match std::fs::read(&name) {
-        Ok(bytes) => match String::from_utf8(bytes) {
-            Ok(t) => t,
-            Err(e) => {
-                // Malformed content: Data_Error, naming the line.
-                let good = &e.as_bytes()[..e.utf8_error().valid_up_to()];
-                let line = good.iter().filter(|b| **b == b'\n').count() + 1;
-                return Err(io_error(
-                    st,
-                    "LoadPathSystem",
-                    Exc::DataError,
-                    format!("{name}:{line}: not UTF-8 text (a path file is text)"),
-                ));
-            }
-        },
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            return Err(io_error(
-                st,
-                "LoadPathSystem",
-                Exc::NameError,
-                format!("no file {name}"),
-            ));
-        }
+    let bytes = match read_whole(std::path::Path::new(&name)) {
+        Ok(b) => b,
+        Err((exc, msg)) => return Err(io_error(st, "LoadPathSystem", exc, msg)),
+    };
+    let text = match String::from_utf8(bytes) {
+        Ok(t) => t,
         Err(e) => {
+            // Malformed content: Data_Error, naming the line.
+            let good = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+            let line = good.iter().filter(|b| **b == b'\n').count() + 1;
             return Err(io_error(
                 st,
                 "LoadPathSystem",
-                Exc::UseError,
-                format!("cannot read {name}: {e}"),
+                Exc::DataError,
+                format!("{name}:{line}: not UTF-8 text (a path file is text)"),
             ));
         }
     };
@@ -364,4 +322,187 @@ pub(crate) fn tmp_path(target: &std::path::Path) -> std::path::PathBuf {
     let mut name = target.as_os_str().to_owned();
     name.push(".adair-tmp");
     std::path::PathBuf::from(name)
+}
+
+/// Why a file cannot be written or read: the Ada exception
+/// (`Name_Error`, `Use_Error`) and the message.
+pub(crate) type FileFault = (Exc, String);
+
+/// What a file that is not a regular file is, for a message.
+fn not_a_file(kind: &std::fs::FileType) -> Option<&'static str> {
+    use std::os::unix::fs::FileTypeExt;
+    Some(if kind.is_file() {
+        return None;
+    } else if kind.is_dir() {
+        "a directory"
+    } else if kind.is_fifo() {
+        "a FIFO (named pipe)"
+    } else if kind.is_char_device() {
+        "a character device"
+    } else if kind.is_block_device() {
+        "a block device"
+    } else if kind.is_socket() {
+        "a socket"
+    } else {
+        "a symbolic link"
+    })
+}
+
+/// The file a name stands for: the name itself, or the end of the chain of
+/// symbolic links it starts (which need not exist yet).
+fn resolve_links(name: &std::path::Path) -> Result<std::path::PathBuf, FileFault> {
+    let mut p = name.to_path_buf();
+    // Linux's own limit on links followed in one lookup.
+    for _ in 0..40 {
+        match std::fs::symlink_metadata(&p) {
+            Ok(m) if m.file_type().is_symlink() => {
+                let to = std::fs::read_link(&p).map_err(|e| {
+                    (
+                        Exc::UseError,
+                        format!("cannot read the link {}: {e}", p.display()),
+                    )
+                })?;
+                p = match p.parent() {
+                    Some(dir) if to.is_relative() => dir.join(to),
+                    _ => to,
+                };
+            }
+            _ => return Ok(p),
+        }
+    }
+    Err((
+        Exc::UseError,
+        format!("{}: too many levels of symbolic links", name.display()),
+    ))
+}
+
+/// Writes `bytes` as the whole new content of the file `name`, never
+/// leaving a half-written file: a temporary file beside it, then a rename
+/// over it. Only a regular file is replaced: a symbolic link is written
+/// through (its target is replaced, the link stays); a directory, FIFO,
+/// device or socket is `Use_Error` before anything is written, and so is a
+/// file without write permission (also for root: a file with no write bit
+/// is read-only to adair). The new file keeps the old one's permissions.
+/// Used by `SavePathSystem`, `--record` and `--plot`.
+pub(crate) fn write_whole(name: &std::path::Path, bytes: &[u8]) -> Result<(), FileFault> {
+    use std::io::Write as _;
+    use std::os::unix::fs::{OpenOptionsExt as _, PermissionsExt as _};
+    if name.as_os_str().is_empty() || name.file_name().is_none() {
+        return Err((
+            Exc::NameError,
+            format!("\"{}\" is not a file name", name.display()),
+        ));
+    }
+    let target = resolve_links(name)?;
+    let shown = if target == name {
+        name.display().to_string()
+    } else {
+        format!(
+            "{} (where the link {} points)",
+            target.display(),
+            name.display()
+        )
+    };
+    let old = match std::fs::symlink_metadata(&target) {
+        Ok(m) => Some(m),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
+        Err(e) => return Err((Exc::UseError, format!("cannot write {shown}: {e}"))),
+    };
+    match &old {
+        Some(m) => {
+            if let Some(kind) = not_a_file(&m.file_type()) {
+                return Err((
+                    Exc::UseError,
+                    format!("cannot write {shown}: it is {kind}, not a regular file"),
+                ));
+            }
+            let no_write_bit = m.permissions().mode() & 0o222 == 0;
+            if no_write_bit || nix::unistd::access(&target, nix::unistd::AccessFlags::W_OK).is_err()
+            {
+                return Err((
+                    Exc::UseError,
+                    format!("cannot write {shown}: the file is not writable (no write permission)"),
+                ));
+            }
+        }
+        None => {
+            if let Some(dir) = target.parent().filter(|d| !d.as_os_str().is_empty())
+                && !dir.is_dir()
+            {
+                return Err((
+                    Exc::NameError,
+                    format!("the directory {} does not exist", dir.display()),
+                ));
+            }
+        }
+    }
+    let mode = old.as_ref().map(|m| m.permissions().mode() & 0o777);
+    let tmp = tmp_path(&target);
+    // A killed save's temporary (or anything else but a directory there)
+    // is removed, never written through; the new one is created afresh.
+    if std::fs::symlink_metadata(&tmp).is_ok_and(|m| !m.is_dir()) {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    let mut created = false;
+    let res = (|| {
+        let mut f = std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .mode(mode.unwrap_or(0o666))
+            .open(&tmp)?;
+        created = true;
+        f.write_all(bytes)?;
+        if let Some(mode) = mode {
+            // Created under the umask: the old file's bits exactly.
+            f.set_permissions(std::fs::Permissions::from_mode(mode))?;
+        }
+        f.sync_all()?;
+        drop(f);
+        std::fs::rename(&tmp, &target)
+    })();
+    if let Err(e) = res {
+        if created {
+            let _ = std::fs::remove_file(&tmp);
+        }
+        return Err((Exc::UseError, format!("cannot write {shown}: {e}")));
+    }
+    Ok(())
+}
+
+/// The whole content of the regular file `name` (through symbolic links).
+/// Never blocks: a FIFO, device, socket or directory is `Use_Error`
+/// before it is opened, and the open itself does not wait
+/// (`O_NONBLOCK`). No such file: `Name_Error`.
+pub(crate) fn read_whole(name: &std::path::Path) -> Result<Vec<u8>, FileFault> {
+    use std::io::Read as _;
+    use std::os::unix::fs::OpenOptionsExt as _;
+    let refuse = |m: &std::fs::Metadata| match not_a_file(&m.file_type()) {
+        Some(kind) => Err((
+            Exc::UseError,
+            format!(
+                "cannot read {}: it is {kind}, not a regular file",
+                name.display()
+            ),
+        )),
+        None => Ok(()),
+    };
+    let cannot = |e: std::io::Error| match e.kind() {
+        std::io::ErrorKind::NotFound => (Exc::NameError, format!("no file {}", name.display())),
+        _ => (
+            Exc::UseError,
+            format!("cannot read {}: {e}", name.display()),
+        ),
+    };
+    refuse(&std::fs::metadata(name).map_err(cannot)?)?;
+    // The file may have been swapped since: the open does not wait, and
+    // what was opened is looked at again.
+    let mut f = std::fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(nix::libc::O_NONBLOCK | nix::libc::O_NOCTTY)
+        .open(name)
+        .map_err(cannot)?;
+    refuse(&f.metadata().map_err(cannot)?)?;
+    let mut bytes = Vec::new();
+    f.read_to_end(&mut bytes).map_err(cannot)?;
+    Ok(bytes)
 }

@@ -5,6 +5,7 @@
 //! (`scripts/mutants.sh`) to one test binary.
 
 mod bad_floats;
+mod file_kinds;
 mod gripper;
 mod props;
 mod realtime;
