@@ -406,6 +406,7 @@ fn real_main(
             match robot.serial.settings() {
                 None => s.set_robot(desc, trace(), robot.realtime),
                 Some(settings) => {
+                    s.checker.simulator_only = adair::services::SIMULATOR_ONLY;
                     if robot.rehearse {
                         let name = file.to_string_lossy();
                         match adair::session::rehearse(&desc, &settings, &name, &text, color) {
@@ -573,6 +574,8 @@ fn real_main(
                 s.checker.index.uses = false;
                 // Nothing runs: a long program's checked form is not kept.
                 s.checker.diagnostics_only = true;
+                // A script may be meant for a real arm: say where it cannot be.
+                s.checker.simulator_only = adair::services::SIMULATOR_ONLY;
                 s.strict = strict;
                 if let Some(d) = &devices {
                     s.set_devices(d.clone());

@@ -661,16 +661,23 @@ pub fn rehearse(
     })?;
     drop(probe);
     let mut sim = crate::driver::sim::Simulator::new(desc.clone());
+    sim.stand_in_for_real_arm();
     sim.set_joints(pose);
     let mut s = Session::new(Box::new(std::io::sink()));
     // The rehearsal must not eat the real run's input: it reads none.
     s.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
     s.set_driver(desc.clone(), Box::new(sim), None, false);
+    s.checker.simulator_only = crate::services::SIMULATOR_ONLY;
     let outcome = s.run_source(name, text);
+    // A failed rehearsal ends the run before the real one is checked: its
+    // warnings (a simulator-only service) are shown with its failure.
+    let warned = crate::diag::render(&s.take_warnings(), &s.sources, color);
     let shown = match &outcome {
         Outcome::Ok => return Ok(()),
         Outcome::CheckFailed(d) => crate::diag::render(d, &s.sources, color),
-        Outcome::Raised(d) => crate::diag::render(std::slice::from_ref(d), &s.sources, color),
+        Outcome::Raised(d) => {
+            warned + &crate::diag::render(std::slice::from_ref(d), &s.sources, color)
+        }
     };
     Err((
         format!("{shown}adair: the rehearsal on the simulator failed: the arm was not moved\n"),

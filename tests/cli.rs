@@ -556,3 +556,22 @@ fn a_long_concatenation_chain_needs_memory_in_proportion() {
         &err[..err.len().min(400)]
     );
 }
+
+/// `adair check` warns of a service only the simulator has, naming it and
+/// its place: such a script cannot finish on a real arm (`--port`), and
+/// its rehearsal refuses it too. A plain simulator run says nothing.
+#[test]
+fn check_warns_of_a_simulator_only_service() {
+    let f = temp_file(
+        "sim_only.air",
+        "InitRobot;\nMoveTool (40.0, 0.0);\nPlaceObject (30.0);\nMoveTool (0.0, 5.0);\n",
+    );
+    let (code, out, err) = adair(&["check", &f]);
+    assert_eq!((code, out.as_str()), (0, ""), "{err}");
+    assert!(
+        err.contains("sim_only.air:3:1: warning: `PlaceObject` exists only on the simulator"),
+        "{err}"
+    );
+    let (code, _, err) = adair(&["run", &f]);
+    assert_eq!((code, err.as_str()), (0, ""));
+}

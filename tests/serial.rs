@@ -187,8 +187,9 @@ end;
 Put_Line (\"went on\");
 ";
 
-/// InitRobot sends ER RS TL NT ER WH SP MJ ER GO ER: the first motion's MJ
-/// is command 12, its ER command 13.
+/// InitRobot sends ER RS TL NT ER WH SP MJ ER GO ER; the first motion
+/// then reads the arm's pose afresh (WH, command 12): its MJ is command 13,
+/// its ER command 14.
 fn fault(extra: &[&str]) -> Option<String> {
     let c = controller("rv-m1", extra)?;
     let t = std::time::Instant::now();
@@ -211,7 +212,7 @@ fn a_silent_unit_is_message_lost() {
 }
 
 fn a_garbled_reply_is_message_invalid() {
-    let Some(out) = fault(&["--corrupt", "13"]) else {
+    let Some(out) = fault(&["--corrupt", "14"]) else {
         return;
     };
     assert!(out.contains("ADAIR.MESSAGEINVALID"), "{out}");
@@ -219,7 +220,7 @@ fn a_garbled_reply_is_message_invalid() {
 }
 
 fn error_mode_one_is_command_not_supported_and_reset() {
-    let Some(out) = fault(&["--refuse", "12:1"]) else {
+    let Some(out) = fault(&["--refuse", "13:1"]) else {
         return;
     };
     assert!(
@@ -230,7 +231,7 @@ fn error_mode_one_is_command_not_supported_and_reset() {
 }
 
 fn error_mode_two_is_out_of_reach_and_reset() {
-    let Some(out) = fault(&["--refuse", "12:2"]) else {
+    let Some(out) = fault(&["--refuse", "13:2"]) else {
         return;
     };
     assert!(out.contains("ADAIR.OUTOFREACH: the unit says"), "{out}");
@@ -242,7 +243,7 @@ fn error_mode_two_is_out_of_reach_and_reset() {
 /// the arm has, 0, not the refused target; the next relative motion then
 /// ends where the program thinks.
 fn a_refused_motion_leaves_the_joints_where_the_arm_is() {
-    let Some(c) = controller("rv-m1", &["--refuse", "12:1"]) else {
+    let Some(c) = controller("rv-m1", &["--refuse", "13:1"]) else {
         return;
     };
     let script = "
@@ -269,7 +270,7 @@ MoveAxesRelative ((Rad (5.0), Rad (30.0), 0.0, 0.0, 0.0));
 }
 
 fn a_hang_up_is_fatal_then_no_connection() {
-    let Some(out) = fault(&["--hangup-after", "12"]) else {
+    let Some(out) = fault(&["--hangup-after", "13"]) else {
         return;
     };
     assert!(out.contains("ADAIR.FATALCOMMUNICATIONERROR"), "{out}");
@@ -362,6 +363,56 @@ fn a_failed_rehearsal_sends_no_motion() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{err}");
     assert!(err.contains("OUTOFREACH"), "{err}");
+    assert!(err.contains("the arm was not moved"), "{err}");
+    let sent = c.received();
+    assert!(
+        sent.iter()
+            .all(|l| ["ER", "RS", "WH"].contains(&l.as_str()) || l.starts_with("TL")),
+        "{sent:?}"
+    );
+}
+
+/// The rehearsal stands in for the real arm, not for the simulator: a
+/// script that calls a simulator-only service (`PlaceObject`) fails its
+/// rehearsal with `CommandNotSupported`, so the arm never starts a job it
+/// cannot finish; no motion command is sent.
+fn a_rehearsal_refuses_a_simulator_only_service() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let dir = std::env::temp_dir().join(format!("adair-rehearse-sim-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = dir.join("places.air");
+    std::fs::write(
+        &script,
+        "InitRobot;\nMoveAxesAbsolute ((Rad (10.0), 0.0, 0.0, 0.0, 0.0));\nPlaceObject (30.0);\nMoveTool (0.0, 5.0);\n",
+    )
+    .unwrap();
+    let out = Command::new(BIN)
+        .args([
+            "run",
+            "--port",
+            &c.path,
+            "--serial-timeout",
+            "0.5",
+            "--rehearse",
+        ])
+        .arg(&script)
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("places.air:3:1: warning: `PlaceObject` exists only on the simulator"),
+        "{err}"
+    );
+    assert!(
+        err.contains("COMMANDNOTSUPPORTED")
+            && err.contains("PlaceObject exists only on the simulator"),
+        "{err}"
+    );
     assert!(err.contains("the arm was not moved"), "{err}");
     let sent = c.received();
     assert!(
@@ -682,8 +733,147 @@ MoveAxesRelative ((Rad (-5.0), 0.0, 0.0, 0.0, 0.0));\n",
     );
 }
 
+/// Every command each unit takes, from robots.md (not from the driver):
+/// the RV-M1's D/U-M1 and the RM-501's Movemaster II unit. The RM-501's
+/// `ER` is the probe at the start only (it puts it in error mode, which the
+/// next line, `RS`, clears).
+const RV_M1_COMMANDS: &[&str] = &[
+    "NT", "OG", "MJ", "MP", "PD", "MO", "MS", "MC", "DW", "HE", "SP", "TL", "GO", "GC", "GP", "TI",
+    "WH", "ER", "RS", "ID", "DR", "OD",
+];
+const RM_501_COMMANDS: &[&str] = &["MI", "PS", "MO", "NT", "HO", "OG", "SP", "GO", "GC", "RS"];
+
+/// Every service of the handbook's appendix A, with every option (`Time`,
+/// `Control`, `RealTime`, both move modes, opening and closing the hand
+/// with and without a force), each in a block that reports an exception
+/// and goes on.
+const EVERY_SERVICE: &str = r#"
+F, G : Frame;
+A : AxesVector;
+T : ToolDescriptor;
+Arm : ArmConfig;
+Elbow : ElbowConfig;
+Hand : HandConfig;
+Code : ErrorCode;
+procedure Try (Step : String) is
+begin
+   Put_Line (Step & ": error status" & ErrorCode'Image (ValueErrorStatus));
+end Try;
+Name : constant String := "adair-every-service-paths.txt";
+InitRobot;
+CalibrateRobot;
+SetVelocity (80.0);
+SetMoveMode (JointInterpolated);
+SetInterpolation (20.0);
+SetRobotConfig (ArmForward, ElbowAbove, NoHandConfig);
+ValueRobotConfig (Arm, Elbow, Hand);
+ValueTool (T);
+SetTool (T);
+T := ValueTool;
+MoveTool (20.0, 5.0);
+MoveTool (Distance => 50.0, Force => 0.0);
+MoveTool (10.0, 0.0);
+MoveTool (60.0, 0.0);
+MoveAxesAbsolute ((Rad (20.0), Rad (20.0), Rad (60.0), Rad (40.0), Rad (10.0)));
+MoveAxesAbsolute ((Rad (25.0), Rad (20.0), Rad (60.0), Rad (40.0), Rad (10.0)), Time => 2.0);
+MoveAxesRelative ((Rad (-5.0), Rad (5.0), 0.0, 0.0, Rad (-10.0)), Control => True);
+A := ValueAxes;
+ValueAxes (A);
+MoveAxesRelative ((Rad (2.0), 0.0, 0.0, 0.0, 0.0), RealTime => True);
+F := ValueFrameAbsolute;
+ValueFrameAbsolute (G);
+ValueFrameRelative (G);
+G := ValueFrameRelative;
+MoveFrameAbsolute (Trans (0.0, 0.0, -20.0) * F);
+SetMoveMode (StraightLine);
+MoveFrameAbsolute (F);
+SetBase (Trans (10.0, 0.0, 0.0));
+MoveFrameRelative (Trans (-10.0, 0.0, -20.0) * F, Time => 3.0);
+SetBase (Identity);
+G := F;
+ValidFrame (G);
+CreatePath (1);
+InsertPosition (1, 1, F);
+InsertPosition (1, 2, Trans (0.0, 0.0, -30.0) * F);
+InsertPosition (1, 3, F);
+DeletePosition (1, 3);
+ValuePosition (1, 2, G);
+MovePath (1);
+SetMoveMode (JointInterpolated);
+MovePath (1, Control => True);
+ValueErrorStatus (Code);
+SavePathSystem (Name);
+DeletePath (1);
+LoadPathSystem (Name);
+MovePath (1, Time => 4.0);
+begin
+   TeachBox ("not on a pipe");
+exception
+   when CommandNotSupported => Try ("TeachBox");
+end;
+begin
+   MoveAxesAbsolute ((Rad (170.0), 0.0, 0.0, 0.0, 0.0));
+exception
+   when OutOfReach => Try ("refused");
+end;
+EndRobot;
+Put_Line ("done");
+"#;
+
+/// Drives every service against the virtual controller and fails on any
+/// line outside the unit's command set: the RM-501 enters error mode on an
+/// unknown command and never says so, so such a line would stop a real
+/// arm while the program goes on.
+fn only_commands_the_unit_knows(robot: &str, commands: &[&str]) {
+    let Some(c) = controller(robot, &[]) else {
+        return;
+    };
+    let dir = std::env::temp_dir().join(format!("adair-every-{robot}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("paths.txt");
+    let script = EVERY_SERVICE.replace("adair-every-service-paths.txt", &file.to_string_lossy());
+    let (o, out, _) = run(robot, Some(&c.path), &script);
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(matches!(o, Outcome::Ok), "{o:?}\n{out}");
+    assert_eq!(
+        out, "TeachBox: error status 350\nrefused: error status 180\ndone\n",
+        "{robot}"
+    );
+    let sent = c.received();
+    assert!(sent.len() > 30, "{sent:?}");
+    for (i, line) in sent.iter().enumerate() {
+        let code: String = line.chars().take(2).collect();
+        let probe = i == 0 && code == "ER";
+        assert!(
+            probe || commands.contains(&code.as_str()),
+            "{robot}: line {} `{line}` is not in the unit's command set; all lines: {sent:?}",
+            i + 1
+        );
+    }
+}
+
+fn every_service_sends_only_rv_m1_commands() {
+    only_commands_the_unit_knows("rv-m1", RV_M1_COMMANDS);
+}
+
+fn every_service_sends_only_rm_501_commands() {
+    only_commands_the_unit_knows("rm-501", RM_501_COMMANDS);
+}
+
 fn main() {
     let tests: &[(&str, fn())] = &[
+        (
+            "every_service_sends_only_rv_m1_commands",
+            every_service_sends_only_rv_m1_commands,
+        ),
+        (
+            "every_service_sends_only_rm_501_commands",
+            every_service_sends_only_rm_501_commands,
+        ),
+        (
+            "a_rehearsal_refuses_a_simulator_only_service",
+            a_rehearsal_refuses_a_simulator_only_service,
+        ),
         (
             "the_repl_rehearses_each_entry_before_the_arm_moves",
             the_repl_rehearses_each_entry_before_the_arm_moves,

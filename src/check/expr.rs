@@ -830,6 +830,7 @@ impl Checker {
                 self.index_named_arg(f, n);
             }
         }
+        self.warn_simulator_only(f, span);
         let params = self.funcs[f as usize].params.clone();
         let mut out = Vec::new();
         for (slot, p) in slots.into_iter().zip(&params) {
@@ -3157,6 +3158,30 @@ fn is_range_attr(x: &ast::Expr) -> bool {
 }
 
 impl Checker {
+    /// A call of a service that only the simulator has, when the program
+    /// is meant for a real arm too (`simulator_only`): it would raise
+    /// `CommandNotSupported` there, and in the rehearsal for it.
+    fn warn_simulator_only(&mut self, f: FuncId, span: Span) {
+        let Some(Some(import)) = self.imports.get(f as usize) else {
+            return;
+        };
+        if !self.simulator_only.contains(&import.as_str()) {
+            return;
+        }
+        let name = self.funcs[f as usize].name.clone();
+        self.err(
+            Diagnostic::new(
+                crate::diag::Phase::Warning,
+                span,
+                format!(
+                    "`{name}` exists only on the simulator: this script cannot finish on a real arm"
+                ),
+            )
+            .with_label("raises CommandNotSupported with --port, in the rehearsal too")
+            .with_hint("keep simulator-only calls in scripts that never drive the arm".to_string()),
+        );
+    }
+
     /// A literal over 2 pi where AdaIR expects radians (an angle of `RotX`,
     /// `RotY`, `RotZ`, a component of an `AxesVector`) is almost always
     /// meant in degrees: warn, and suggest `Rad (...)`.

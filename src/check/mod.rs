@@ -108,6 +108,10 @@ pub struct Checker {
     /// that checking a long program holds one part of it, not all. Such a
     /// program's bodies are empty afterwards: it cannot run.
     pub diagnostics_only: bool,
+    /// The import names of the services that only the simulator has
+    /// (`PlaceObject`): when set, a call of one is a warning that the
+    /// script cannot finish on a real arm (`adair check`, `--port`).
+    pub simulator_only: &'static [&'static str],
     /// Set for a run in the compiled engine (`adair run`): a lazily parsed
     /// subprogram body is compiled a part at a time as it is checked, and
     /// each part's checked statements dropped (see [`ir::PartCompiler`]).
@@ -227,6 +231,7 @@ impl Checker {
         let mut c = Checker {
             consume_ast: false,
             diagnostics_only: false,
+            simulator_only: &[],
             compile_parts: None,
             main_body: false,
             parts_here: false,

@@ -88,6 +88,20 @@ pub trait Robot {
     /// sees its end or [`Robot::stop_motion`] stops it; a driver finishes a
     /// running motion before its next command.
     fn start_motion(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError>;
+    /// As [`Robot::start_motion`] for a motion whose time the program
+    /// states (`Time =>`): it must end at `duration`. A real unit picks the
+    /// speed level that comes closest from below and waits out the rest.
+    fn start_timed_motion(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError> {
+        self.start_motion(points, duration)
+    }
+    /// The arm may have been moved outside the program (the unit's own
+    /// teach box, by hand): a driver that can ask the arm reads its pose
+    /// again, so that [`Robot::joints`] is where the arm is (robots.md "The
+    /// arm moved outside the program"). Called by every read-back and every
+    /// motion service before it plans.
+    fn refresh(&mut self) -> Result<(), DriverError> {
+        Ok(())
+    }
     /// Waits until the running motion (if any) has ended. A user interrupt
     /// (Ctrl-C) ends the wait with [`DriverError::Interrupted`]; the caller
     /// then calls [`Robot::stop_motion`].
@@ -119,7 +133,9 @@ pub trait Robot {
         opening: f64,
         force_limit: Option<f64>,
     ) -> Result<GripperState, DriverError>;
-    /// The simulator, for what only it can do (placing an object).
+    /// The simulator, for what only it can do (placing an object); `None`
+    /// on a real arm and on a simulator that stands in for one (a
+    /// rehearsal), so that such a service fails there as on the arm.
     fn as_simulator(&mut self) -> Option<&mut sim::Simulator> {
         None
     }

@@ -32,10 +32,48 @@ impl Unit {
         }
     }
 
+    /// Every command the driver may send to this unit: robots.md's command
+    /// set. The RM-501 takes nothing else (`GP`, `TL`, `WH`, `MJ` would put
+    /// it in error mode, and it never says so); its `ER` is only the probe
+    /// at the start ([`PROBE`]), sent before anything else and cleared by
+    /// `RS`.
+    pub fn commands(self) -> &'static [&'static str] {
+        match self {
+            Unit::RvM1 => &[
+                "NT", "OG", "MJ", "MP", "PD", "MO", "MS", "MC", "DW", "HE", "SP", "TL", "GO", "GC",
+                "GP", "TI", "WH", "ER", "RS", "ID", "DR", "OD",
+            ],
+            Unit::Rm501 => &["MI", "PS", "MO", "NT", "HO", "OG", "SP", "GO", "GC", "RS"],
+        }
+    }
+
+    /// Whether `line`'s command is in this unit's command set.
+    pub fn knows(self, line: &str) -> bool {
+        let (code, _) = split(line);
+        self.commands().contains(&code.as_str())
+    }
+
     /// Counts per controller degree of each joint (`MI`).
     pub fn counts_per_deg(self) -> [f64; JOINTS] {
         [40.0, 40.0, 40.0, 1.0 / 0.075, 1.0 / 0.075]
     }
+}
+
+/// The first line sent to any unit: an RV-M1 answers it, an RM-501 takes it
+/// as a command error (cleared by the `RS` that follows).
+pub const PROBE: &str = "ER";
+
+/// The speed levels `SP 0..9`: the fraction of each joint's maximum speed
+/// the unit moves at, in adair's model of the units (level `L` runs at
+/// `max(L, 1) / 9`; the manuals give no table, docs/serial.md says so).
+pub fn level_fraction(level: u8) -> f64 {
+    f64::from(level.clamp(1, 9)) / 9.0
+}
+
+/// The level of a velocity in percent (`SetVelocity`): `velocity / 100 x 9`,
+/// rounded.
+pub fn level_of_percent(percent: f64) -> u8 {
+    (percent / 100.0 * 9.0).round().clamp(0.0, 9.0) as u8
 }
 
 /// One decimal, always with `.`, and an explicit sign as the unit writes

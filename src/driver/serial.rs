@@ -117,6 +117,18 @@ impl Link for SerialLink {
     }
 }
 
+/// A motion the unit has been sent and not yet waited for.
+struct Pending {
+    /// Seconds the motion is expected to take (the reply may take as long).
+    expected: f64,
+    /// The last line sent, for messages.
+    last: String,
+    /// When the service may return: the motion's start plus its time. The
+    /// RM-501, which never answers, is timed by this alone; a `Time =>`
+    /// motion on the RV-M1 waits out the rest after the unit's `ER`.
+    until: Option<Instant>,
+}
+
 /// Opens links: the real port, or (in tests) anything else.
 pub type Opener = Box<dyn FnMut(Unit) -> Result<Box<dyn Link>, DriverError>>;
 
@@ -132,11 +144,14 @@ pub struct Serial {
     /// The controller position the commands add up to (controller deg).
     sent: [f64; JOINTS],
     gripper: GripperState,
+    /// The speed level the unit has (`SP`), when known.
     speed: Option<u8>,
+    /// The level the program's velocity asks for (`SetVelocity`); a timed
+    /// motion may set another for its own time.
+    level: u8,
     interrupt: Option<Arc<AtomicBool>>,
-    /// A started motion not yet waited for: its expected duration and the
-    /// last line sent (for messages).
-    pending: Option<(f64, String)>,
+    /// A started motion not yet waited for.
+    pending: Option<Pending>,
     /// The joints before the motion under way: where the arm is when the
     /// unit refuses it (the hint for `WH`, which cannot say J1 with the
     /// tool on the waist axis).
@@ -181,6 +196,7 @@ impl Serial {
                 force: 0.0,
             },
             speed: None,
+            level: protocol::level_of_percent(50.0),
             interrupt,
             pending: None,
             before: None,
@@ -203,11 +219,54 @@ impl Serial {
     /// Sends a line; a fatal error takes the link down. A motion still
     /// running (`Control => True`) is waited for first.
     fn send(&mut self, line: &str) -> Result<(), DriverError> {
+        if !self.unit.knows(line) {
+            // Never reached by the services: a line outside the unit's
+            // command set would stop a real RM-501 without a sign.
+            return Err(DriverError::Refused(format!(
+                "adair does not send `{line}`: the {} has no such command",
+                self.kin.description().name()
+            )));
+        }
+        self.send_any(line)
+    }
+
+    /// Sends a line without looking it up: the probe `ER` at the start.
+    fn send_any(&mut self, line: &str) -> Result<(), DriverError> {
         if self.pending.is_some() {
             self.wait_motion()?;
         }
         let r = self.link()?.send(line);
         self.check_fatal(r)
+    }
+
+    /// The seconds the unit takes for joint moves through `points` from
+    /// the pose it has, at speed level `level` (adair's model of the unit:
+    /// each line at the slowest joint's share of its maximum speed).
+    fn unit_time(&self, points: &[Joints], level: u8) -> f64 {
+        let desc = self.kin.description();
+        let f = protocol::level_fraction(level);
+        let mut from = self.joints;
+        let mut t = 0.0;
+        for p in points {
+            let line = desc
+                .joints()
+                .iter()
+                .enumerate()
+                .map(|(j, spec)| (p[j] - from[j]).abs() / (spec.max_speed * f))
+                .fold(0.0, f64::max);
+            t += line;
+            from = *p;
+        }
+        t
+    }
+
+    /// Sends `SP level` unless the unit has it already.
+    fn ensure_level(&mut self, level: u8) -> Result<(), DriverError> {
+        if self.speed != Some(level) {
+            self.send(&format!("SP {level}"))?;
+            self.speed = Some(level);
+        }
+        Ok(())
     }
 
     fn read(&mut self, expected: f64) -> Result<String, DriverError> {
@@ -247,17 +306,27 @@ impl Serial {
 
     /// `WH`: the joint state from the arm itself.
     fn where_is(&mut self, near: Joints) -> Result<Joints, DriverError> {
+        let pose = self.wh_reply()?;
+        self.take_pose(&pose, near)
+    }
+
+    /// Sends `WH` and parses its reply.
+    fn wh_reply(&mut self) -> Result<[f64; 5], DriverError> {
         self.send("WH")?;
         let reply = self.read(0.0)?;
-        let Some(pose) = protocol::parse_wh(&reply) else {
-            return Err(DriverError::Invalid(format!(
-                "`WH` answered `{reply}`, not five numbers"
-            )));
-        };
+        protocol::parse_wh(&reply).ok_or_else(|| {
+            DriverError::Invalid(format!("`WH` answered `{reply}`, not five numbers"))
+        })
+    }
+
+    /// Takes the joints of a `WH` pose (the branch nearest `near`).
+    fn take_pose(&mut self, pose: &[f64; 5], near: Joints) -> Result<Joints, DriverError> {
         let tl = self.kin.description().links().tool;
-        let q = wh::to_joints(&self.kin, &pose, tl, &near).map_err(|e| {
+        let q = wh::to_joints(&self.kin, pose, tl, &near).map_err(|e| {
+            let shown: Vec<String> = pose.iter().map(|v| protocol::num(*v)).collect();
             DriverError::Invalid(format!(
-                "`WH` answered `{reply}`, a pose the model cannot take: {e}"
+                "`WH` answered `{}`, a pose the model cannot take: {e}",
+                shown.join(",")
             ))
         })?;
         self.joints = q;
@@ -293,9 +362,27 @@ impl Serial {
         Ok(())
     }
 
-    /// Sends the lines of a motion; its end is checked by `finish`.
-    fn motion(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError> {
+    /// Sends the lines of a motion; its end is checked by `finish`. A
+    /// `timed` motion (`Time =>`) runs at the slowest speed level that ends
+    /// it within `duration`, and the service returns at `duration`; any
+    /// other runs at the program's level.
+    fn motion(&mut self, points: &[Joints], duration: f64, timed: bool) -> Result<(), DriverError> {
         let desc = self.kin.description().clone();
+        let level = if timed {
+            (0..=9u8)
+                .find(|l| self.unit_time(points, *l) <= duration + 1e-9)
+                .unwrap_or(9)
+        } else {
+            self.level
+        };
+        // The RM-501 is timed by adair: the longer of the program's time
+        // and the unit's own at its level.
+        let own = self.unit_time(points, level);
+        if self.pending.is_some() {
+            self.wait_motion()?;
+        }
+        self.ensure_level(level)?;
+        let start = Instant::now();
         self.before = Some(self.joints);
         let mut last = String::new();
         for p in points {
@@ -332,34 +419,106 @@ impl Serial {
         // The unit runs the lines: as far as the program knows, the arm is
         // at their target once the motion has ended (or been stopped).
         self.joints = desc.from_controller_deg(&self.sent);
-        self.pending = Some((duration, last));
+        let wait = match self.unit {
+            Unit::RvM1 => timed.then_some(duration),
+            Unit::Rm501 => Some(duration.max(own)),
+        };
+        self.pending = Some(Pending {
+            expected: duration.max(own),
+            last,
+            until: wait.map(|w| start + Duration::from_secs_f64(w.clamp(0.0, 86_400.0))),
+        });
         Ok(())
     }
 
     /// Waits for the end of the pending motion.
     fn finish(&mut self) -> Result<(), DriverError> {
-        let Some((duration, last)) = self.pending.take() else {
+        let Some(p) = self.pending.take() else {
             return Ok(());
         };
-        let r = match self.unit {
+        let mut r = match self.unit {
             // The reply to ER comes when the motion has ended.
-            Unit::RvM1 => self.error_status(duration, &last),
-            // The RM-501 never answers: time the move ourselves.
-            Unit::Rm501 => self.sleep_interruptible(duration),
+            Unit::RvM1 => self.error_status(p.expected, &p.last),
+            // The RM-501 never answers: adair times the move.
+            Unit::Rm501 => Ok(()),
         };
+        if r.is_ok()
+            && let Some(until) = p.until
+        {
+            let rest = until.saturating_duration_since(Instant::now());
+            r = self.sleep_interruptible(rest.as_secs_f64());
+        }
         if r.is_ok() {
             self.before = None;
         }
         r
     }
+
+    /// The RV-M1's pose as the unit reports it now (`WH`): where it agrees
+    /// with the tracked joints within `WH`'s resolution (0.1 mm, 0.1 deg)
+    /// they stand, so no rounding creeps in; otherwise the arm was moved
+    /// outside the program and its joints are taken from `WH`.
+    fn fresh_pose(&mut self) -> Result<(), DriverError> {
+        if self.unit != Unit::RvM1 || self.link.is_none() {
+            return Ok(());
+        }
+        let tracked = self.joints;
+        let pose = self.wh_reply()?;
+        let tl = self.kin.description().links().tool;
+        let expected = wh::of_joints(&self.kin, &tracked, tl);
+        let agrees = (0..5).all(|i| {
+            let mut d = (pose[i] - expected[i]).abs();
+            if i == 4 {
+                d = d.min(360.0 - d);
+            }
+            d <= 0.1 + 1e-6
+        });
+        if !agrees {
+            self.take_pose(&pose, tracked)?;
+        }
+        Ok(())
+    }
 }
 
 impl Serial {
+    fn start(&mut self, points: &[Joints], duration: f64, timed: bool) -> Result<(), DriverError> {
+        for p in points {
+            if let Err(v) = self.kin.description().check_limits(p) {
+                return Err(DriverError::Limit(v.to_string()));
+            }
+        }
+        let r = self.motion(points, duration, timed);
+        r.map_err(|e| self.resync(e))
+    }
+
+    /// The RM-501's `NT`: it runs to its origin from wherever it is, which
+    /// adair cannot know, so the wait is the longest such run at the fastest
+    /// level (every joint from its farthest limit to `nest`).
+    fn nest_rm501(&mut self) -> Result<(), DriverError> {
+        self.ensure_level(9)?;
+        self.send("NT")?;
+        let desc = self.kin.description().clone();
+        let nest = desc.nest();
+        let worst = desc
+            .joints()
+            .iter()
+            .enumerate()
+            .map(|(j, spec)| {
+                let far = (nest[j] - spec.min).abs().max((spec.max - nest[j]).abs());
+                far / spec.max_speed
+            })
+            .fold(0.0, f64::max);
+        self.sleep_interruptible(worst)?;
+        self.joints = nest;
+        self.sent = desc.to_controller_deg(&nest);
+        Ok(())
+    }
+
     /// The arm's pose without moving it (for `--rehearse`): `WH` on the
     /// RV-M1; the RM-501 cannot say, so its `nest`.
     pub fn read_pose(&mut self) -> Result<Joints, DriverError> {
         self.link = Some((self.open)(self.unit)?);
-        self.send("ER")?;
+        self.send_any(protocol::PROBE)?;
         let answered = match self.read(0.0) {
             Ok(_) => true,
             Err(DriverError::Lost(_)) => false,
@@ -408,7 +567,7 @@ impl Robot for Serial {
         self.link = Some((self.open)(self.unit)?);
         // A reply to the first ER proves an RV-M1 is there; an RM-501 never
         // answers (and takes the unknown ER as a command error: RS clears it).
-        self.send("ER")?;
+        self.send_any(protocol::PROBE)?;
         let answered = match self.read(0.0) {
             Ok(reply) => Some(reply),
             Err(DriverError::Lost(_)) => None,
@@ -444,11 +603,8 @@ impl Robot for Serial {
             }
             (Unit::Rm501, None) => {
                 self.send("RS")?;
-                self.send("NT")?;
-                self.sleep_interruptible(0.0)?;
-                let nest = self.kin.description().nest();
-                self.joints = nest;
-                self.sent = self.kin.description().to_controller_deg(&nest);
+                self.speed = None;
+                self.nest_rm501()?;
             }
         }
         self.speed = None;
@@ -456,21 +612,23 @@ impl Robot for Serial {
     }
 
     fn set_speed(&mut self, percent: f64) -> Result<(), DriverError> {
-        let level = (percent / 100.0 * 9.0).round().clamp(0.0, 9.0) as u8;
-        if self.speed != Some(level) && self.link.is_some() {
-            self.send(&format!("SP {level}"))?;
-            self.speed = Some(level);
+        self.level = protocol::level_of_percent(percent);
+        if self.link.is_some() {
+            self.ensure_level(self.level)?;
         }
         Ok(())
     }
 
     fn start_motion(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError> {
-        for p in points {
-            if let Err(v) = self.kin.description().check_limits(p) {
-                return Err(DriverError::Limit(v.to_string()));
-            }
-        }
-        let r = self.motion(points, duration);
+        self.start(points, duration, false)
+    }
+
+    fn start_timed_motion(&mut self, points: &[Joints], duration: f64) -> Result<(), DriverError> {
+        self.start(points, duration, true)
+    }
+
+    fn refresh(&mut self) -> Result<(), DriverError> {
+        let r = self.fresh_pose();
         r.map_err(|e| self.resync(e))
     }
 
@@ -491,9 +649,14 @@ impl Robot for Serial {
     }
 
     fn calibrate(&mut self) -> Result<(), DriverError> {
-        if self.unit == Unit::RvM1 {
-            let near = self.joints;
-            self.where_is(near)?;
+        match self.unit {
+            Unit::RvM1 => {
+                let near = self.joints;
+                self.where_is(near)?;
+            }
+            // It cannot say where it is: `NT` finds the origin, and the
+            // pose is the robot file's `nest` again.
+            Unit::Rm501 => self.nest_rm501()?,
         }
         Ok(())
     }
@@ -511,14 +674,17 @@ impl Robot for Serial {
         let line = if opening > self.gripper.opening || opening >= g.opening_max {
             "GO".to_string()
         } else {
-            // Grip force levels 0..15 (start, hold) and 0.3 s of start force.
-            let f = force_limit.unwrap_or(g.init_force).clamp(0.0, g.force_max);
-            let level = if g.force_max > 0.0 {
-                (f / g.force_max * 15.0).round() as i64
-            } else {
-                0
-            };
-            self.send(&format!("GP {level},{level},3"))?;
+            // The RV-M1's grip force levels 0..15 (start, hold) and 0.3 s of
+            // start force; the RM-501 has no `GP`: it closes with its own.
+            if self.unit == Unit::RvM1 {
+                let f = force_limit.unwrap_or(g.init_force).clamp(0.0, g.force_max);
+                let level = if g.force_max > 0.0 {
+                    (f / g.force_max * 15.0).round() as i64
+                } else {
+                    0
+                };
+                self.send(&format!("GP {level},{level},3"))?;
+            }
             "GC".to_string()
         };
         self.send(&line)?;

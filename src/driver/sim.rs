@@ -11,6 +11,9 @@ pub struct Simulator {
     gripper: GripperState,
     /// Width of an object between the jaws, mm (0 = none).
     object: f64,
+    /// Stands in for a real arm (a rehearsal): what only the simulator can
+    /// do is refused, as on the arm.
+    stand_in: bool,
 }
 
 impl Simulator {
@@ -24,11 +27,18 @@ impl Simulator {
                 force: 0.0,
             },
             object: 0.0,
+            stand_in: false,
         }
     }
 }
 
 impl Simulator {
+    /// Makes this simulator stand in for a real arm (`--rehearse` with
+    /// `--port`): simulator-only services raise `CommandNotSupported`.
+    pub fn stand_in_for_real_arm(&mut self) {
+        self.stand_in = true;
+    }
+
     /// Starts from `joints` (a rehearsal starts where the real arm is).
     pub fn set_joints(&mut self, joints: Joints) {
         self.joints = joints;
@@ -117,6 +127,6 @@ impl Robot for Simulator {
         Ok(self.gripper)
     }
     fn as_simulator(&mut self) -> Option<&mut Simulator> {
-        Some(self)
+        (!self.stand_in).then_some(self)
     }
 }

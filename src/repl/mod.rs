@@ -185,6 +185,12 @@ impl Repl {
     fn install_robot(&mut self) {
         if let Ok(desc) = RobotDescription::builtin(&self.robot) {
             let trace = self.trace.then(|| (self.make_out)());
+            // On a real arm a simulator-only call is a warning as it is
+            // checked, and `CommandNotSupported` when it runs.
+            self.session.checker.simulator_only = match &self.port {
+                None => &[],
+                Some(_) => crate::services::SIMULATOR_ONLY,
+            };
             match &self.port {
                 None => self.session.set_robot(desc, trace, false),
                 Some(p) => {

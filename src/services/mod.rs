@@ -151,6 +151,9 @@ impl RobotState {
     pub fn rehearsal(&self) -> RobotState {
         let desc = self.kin.description().clone();
         let mut sim = Simulator::new(desc.clone());
+        if self.robot.real_time() {
+            sim.stand_in_for_real_arm();
+        }
         sim.set_joints(self.robot.joints());
         let _ = sim.move_gripper(self.robot.gripper().opening, None);
         let mut st = RobotState::with_driver(desc, self.excs.clone(), Box::new(sim));
@@ -182,6 +185,11 @@ fn standard_tool(kin: &Kinematics) -> Tool {
 }
 
 pub use table::{Group, SERVICES, Service};
+
+/// The import names of the services only the simulator has: on a real arm,
+/// and in the rehearsal that stands in for it, they raise
+/// `CommandNotSupported` (`adair check` warns of them).
+pub const SIMULATOR_ONLY: &[&str] = &["PlaceObject"];
 
 /// The service bound to an import name, as the interpreter binds it.
 pub fn lookup(name: &str) -> Option<crate::interp::Binding> {
@@ -219,6 +227,18 @@ fn require_init(cx: &mut Cx, st: &mut RobotState, service: &str) -> R<()> {
         ));
     }
     wait_for_control(cx, st, service)
+}
+
+/// `require_init`, then the arm's pose as it is now: on a real arm that
+/// may have been moved by hand while the program waited, a fresh `WH`
+/// (robots.md "The arm moved outside the program"). Every read-back and
+/// every motion service starts here.
+fn require_fresh_pose(cx: &mut Cx, st: &mut RobotState, service: &str) -> R<()> {
+    require_init(cx, st, service)?;
+    if let Err(e) = st.robot.refresh() {
+        return Err(driver_fail(st, service, e));
+    }
+    Ok(())
 }
 
 /// A `Control => True` motion still running: wait for its end (virtual
@@ -344,7 +364,7 @@ fn opts(a: &[Value], first: usize) -> MotionOpts {
 /// `require_init` for a motion service, and its `Time`: a NaN, an infinite
 /// or a negative duration is `TimeInvalid` before anything moves.
 fn require_motion(cx: &mut Cx, st: &mut RobotState, service: &str, o: &MotionOpts) -> R<()> {
-    require_init(cx, st, service)?;
+    require_fresh_pose(cx, st, service)?;
     let t = o.time_arg;
     if !t.is_finite() || t < 0.0 {
         return Err(fail(
@@ -384,7 +404,12 @@ fn perform(
         }
     }
     let start = cx.clock.now();
-    if let Err(e) = st.robot.start_motion(points, duration) {
+    let started = if o.time.is_some() {
+        st.robot.start_timed_motion(points, duration)
+    } else {
+        st.robot.start_motion(points, duration)
+    };
+    if let Err(e) = started {
         return Err(driver_fail(st, service, e));
     }
     if real {
@@ -741,7 +766,7 @@ fn set_robot_config(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Opti
 }
 
 fn value_robot_config(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
-    require_init(cx, st, "ValueRobotConfig")?;
+    require_fresh_pose(cx, st, "ValueRobotConfig")?;
     let (arm, elbow) = st.kin.config_of(&st.robot.read_joints());
     a[0] = Value::Int(match arm {
         Arm::Forward => 0,
@@ -1025,7 +1050,7 @@ fn value_axes(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Val
 }
 
 fn value_axes_f(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R<Option<Value>> {
-    require_init(cx, st, "ValueAxes")?;
+    require_fresh_pose(cx, st, "ValueAxes")?;
     Ok(Some(axes_value(&st.robot.read_joints())))
 }
 
@@ -1045,7 +1070,7 @@ fn value_frame_absolute(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<
 }
 
 fn value_frame_absolute_f(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R<Option<Value>> {
-    require_init(cx, st, "ValueFrameAbsolute")?;
+    require_fresh_pose(cx, st, "ValueFrameAbsolute")?;
     Ok(Some(frame_value(&current_frame(st))))
 }
 
@@ -1055,7 +1080,7 @@ fn value_frame_relative(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<
 }
 
 fn value_frame_relative_f(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R<Option<Value>> {
-    require_init(cx, st, "ValueFrameRelative")?;
+    require_fresh_pose(cx, st, "ValueFrameRelative")?;
     Ok(Some(frame_value(&(st.base.inverse() * current_frame(st)))))
 }
 
@@ -1110,7 +1135,7 @@ fn place_object(_cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<
         Some(sim) => sim.place_object(w).map_err(|m| (Exc::ConstraintError, m)),
         None => Err((
             Exc::CommandNotSupported,
-            "PlaceObject exists only on the simulator: a real hand holds real objects".into(),
+            "PlaceObject exists only on the simulator: a real hand holds real objects (a rehearsal for a real arm refuses it as the arm would)".into(),
         )),
     };
     match result {
