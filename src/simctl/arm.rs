@@ -142,9 +142,8 @@ impl Arm {
     pub fn jog(&mut self, deg: &[f64; JOINTS]) -> [f64; JOINTS] {
         let delta = self.counts_of_deg(deg);
         let before = self.counts;
-        for j in 0..JOINTS {
-            let (lo, hi) = self.limits[j];
-            self.counts[j] = self.counts[j].saturating_add(delta[j]).clamp(lo, hi);
+        for ((c, d), (lo, hi)) in self.counts.iter_mut().zip(delta).zip(self.limits) {
+            *c = c.saturating_add(d).clamp(lo, hi);
         }
         let mut moved = [0.0; JOINTS];
         for j in 0..JOINTS {
