@@ -36,6 +36,12 @@ impl Drop for Controller {
 }
 
 impl Controller {
+    /// How many hand jogs the controller has made.
+    fn jogs(&self) -> usize {
+        let text = std::fs::read_to_string(&self.log).unwrap_or_default();
+        text.lines().filter(|l| l.contains(" j ")).count()
+    }
+
     /// The lines the controller received, in order.
     fn received(&self) -> Vec<String> {
         let text = std::fs::read_to_string(&self.log).unwrap_or_default();
@@ -860,8 +866,224 @@ fn every_service_sends_only_rm_501_commands() {
     only_commands_the_unit_knows("rm-501", RM_501_COMMANDS);
 }
 
+/// The arm moved by hand while the program waits at `Get_Line` (handbook
+/// 6.1: the operator jogs it with the unit's teach box): `ValueAxes` then
+/// reads the jogged pose, an absolute move ends at its target (its `MJ`
+/// undoes the jog exactly), and a relative move after a second jog is
+/// relative to where the arm really is.
+fn a_hand_jog_while_the_program_waits_is_seen() {
+    let dir = std::env::temp_dir().join(format!("adair-handjog-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let control = dir.join("control");
+    let control_arg = control.to_string_lossy().into_owned();
+    let Some(c) = controller("rv-m1", &["--control", &control_arg]) else {
+        return;
+    };
+    let script = dir.join("jogged.air");
+    std::fs::write(
+        &script,
+        r#"procedure Show is
+   A : constant AxesVector := ValueAxes;
+begin
+   for J in 1 .. 5 loop
+      Put (Integer'Image (Integer (Deg (A (J)))));
+   end loop;
+   New_Line;
+end Show;
+procedure Wait is
+   S : String (1 .. 80);
+   L : Natural;
+begin
+   Put_Line ("jog now");
+   Get_Line (S, L);
+end Wait;
+InitRobot;
+MoveAxesAbsolute ((Rad (10.0), Rad (20.0), Rad (30.0), Rad (40.0), Rad (50.0)));
+Wait;
+Show;
+MoveAxesAbsolute ((Rad (10.0), Rad (20.0), Rad (30.0), Rad (40.0), Rad (50.0)));
+Show;
+Wait;
+MoveAxesRelative ((Rad (5.0), 0.0, 0.0, 0.0, 0.0));
+Show;
+"#,
+    )
+    .unwrap();
+    let mut child = Command::new(BIN)
+        .args(["run", "--serial-timeout", "0.5", "--port", &c.path])
+        .arg(&script)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let stdout = child.stdout.take().unwrap();
+    let (tx, rx) = mpsc::channel();
+    std::thread::spawn(move || {
+        for line in BufReader::new(stdout).lines() {
+            let Ok(line) = line else { break };
+            if tx.send(line).is_err() {
+                break;
+            }
+        }
+    });
+    let mut seen = Vec::new();
+    let mut jog = |deg: &str, seen: &mut Vec<String>| {
+        loop {
+            let line = rx
+                .recv_timeout(Duration::from_secs(30))
+                .expect("the program waits for input");
+            let waiting = line == "jog now";
+            seen.push(line);
+            if waiting {
+                break;
+            }
+        }
+        let before = c.jogs();
+        let mut f = std::fs::OpenOptions::new()
+            .append(true)
+            .open(&control)
+            .unwrap();
+        writeln!(f, "jog {deg}").unwrap();
+        let t0 = std::time::Instant::now();
+        while c.jogs() == before {
+            assert!(t0.elapsed() < Duration::from_secs(10), "no hand jog logged");
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        stdin.write_all(b"\n").unwrap();
+    };
+    jog("+10.0,-5.0,+5.0,+0.0,+20.0", &mut seen);
+    jog("+0.0,+0.0,+0.0,+10.0,+0.0", &mut seen);
+    drop(stdin);
+    let status = child.wait().unwrap();
+    seen.extend(rx.iter());
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(status.success(), "{seen:?}");
+    assert_eq!(
+        seen,
+        [
+            "jog now",
+            " 20 15 35 40 70",
+            " 10 20 30 40 50",
+            "jog now",
+            " 15 20 30 50 50",
+        ],
+        "lines sent: {:?}",
+        c.received()
+    );
+    assert!(
+        c.received()
+            .iter()
+            .any(|l| l == "MJ -10.0,+5.0,-5.0,+0.0,-20.0"),
+        "the absolute move does not undo the jog: {:?}",
+        c.received()
+    );
+}
+
+/// When nothing moves the arm but the program, the tracked joints stand
+/// (the fresh `WH` agrees within its resolution), so 100 relative moves of
+/// odd sizes end where their sum says, with no rounding drift.
+fn no_rounding_drift_over_100_moves() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let script = "
+InitRobot;
+MoveAxesAbsolute ((Rad (10.0), Rad (20.0), Rad (30.0), Rad (40.0), Rad (50.0)));
+for I in 1 .. 100 loop
+   MoveAxesRelative ((Rad (0.37), Rad (-0.13), Rad (0.21), Rad (-0.29), Rad (0.43)));
+end loop;
+";
+    let (o, out, q) = run("rv-m1", Some(&c.path), script);
+    assert!(matches!(o, Outcome::Ok), "{o:?}\n{out}");
+    let want = [47.0, 7.0, 51.0, 11.0, 93.0];
+    for (j, (got, want)) in q.iter().zip(want).enumerate() {
+        // One decimal in MJ (0.05 deg) plus the read-back resolution.
+        assert!(
+            (got - want).abs() <= 0.05 + 0.025 + 1e-9,
+            "J{}: {got} after 100 moves, not {want}: {q:?}",
+            j + 1
+        );
+    }
+    // The arm agrees: its last WH is the one of the target pose.
+    let mj: Vec<String> = c
+        .received()
+        .into_iter()
+        .filter(|l| l.starts_with("MJ"))
+        .collect();
+    let sum: f64 = mj[2..]
+        .iter()
+        .map(|l| l[3..].split(',').next().unwrap().parse::<f64>().unwrap())
+        .sum();
+    assert!((sum - 37.0).abs() < 1e-6, "J1 sent {sum} in all: {mj:?}");
+}
+
+/// `Time =>` on a real arm: the driver picks the speed level whose motion
+/// ends closest below the stated time, and the service returns at that
+/// time. The unit's own time is read from its byte log (the `MJ` line to
+/// the `ER` reply, which comes when the arm stops).
+fn a_timed_motion_ends_at_its_time_on_the_arm() {
+    let Some(c) = controller("rv-m1", &["--time-scale", "1.0"]) else {
+        return;
+    };
+    let script = "
+InitRobot;
+declare
+   Start : constant Ada.Calendar.Time := Ada.Calendar.Clock;
+   Took : Duration;
+begin
+   MoveAxesAbsolute ((Rad (60.0), 0.0, 0.0, 0.0, 0.0), Time => 2.0);
+   Took := Ada.Calendar.\"-\" (Ada.Calendar.Clock, Start);
+   Put_Line (Boolean'Image (Took >= 2.0 and Took < 2.4));
+end;
+";
+    let (o, out, q) = run("rv-m1", Some(&c.path), script);
+    assert!(matches!(o, Outcome::Ok), "{o:?}\n{out}");
+    assert_eq!(out, "TRUE\n");
+    assert!((q[0] - 60.0).abs() < 0.05, "{q:?}");
+    let log = std::fs::read_to_string(&c.log).unwrap();
+    let stamp = |l: &str| l.split_whitespace().next().unwrap().parse::<f64>().unwrap();
+    let lines: Vec<&str> = log.lines().collect();
+    let mj = lines
+        .iter()
+        .position(|l| l.contains(" < ") && l.contains("MJ +60.0"))
+        .unwrap_or_else(|| panic!("the motion was not sent: {log}"));
+    // The unit receives lines as they come (several to a log line): the
+    // speed level in force is the last `SP` before the motion.
+    let before: String = lines[..=mj].join("\n");
+    let upto = &before[..before.find("MJ +60.0").unwrap()];
+    let sp = &upto[upto
+        .rfind("SP ")
+        .expect("a speed level before the timed motion")..];
+    let sp = &sp[..sp.find('\\').unwrap_or(sp.len())];
+    let reply = lines[mj + 1..]
+        .iter()
+        .find(|l| l.contains(" > 0"))
+        .unwrap_or_else(|| panic!("no ER reply after the motion: {log}"));
+    let unit = stamp(reply) - stamp(lines[mj]);
+    eprintln!("Time => 2.0: the unit took {unit:.3} s at `{sp}`");
+    // J1 60 deg at 120 deg/s: level 2 (2/9 of the speed) takes 2.25 s, too
+    // long; level 3 takes 1.5 s: the unit is done 0.5 s early and the
+    // service waits out the rest.
+    assert_eq!(sp, "SP 3", "{log}");
+    assert!((1.4..=2.0).contains(&unit), "the unit took {unit} s");
+}
+
 fn main() {
     let tests: &[(&str, fn())] = &[
+        (
+            "a_hand_jog_while_the_program_waits_is_seen",
+            a_hand_jog_while_the_program_waits_is_seen,
+        ),
+        (
+            "no_rounding_drift_over_100_moves",
+            no_rounding_drift_over_100_moves,
+        ),
+        (
+            "a_timed_motion_ends_at_its_time_on_the_arm",
+            a_timed_motion_ends_at_its_time_on_the_arm,
+        ),
         (
             "every_service_sends_only_rv_m1_commands",
             every_service_sends_only_rv_m1_commands,

@@ -416,9 +416,15 @@ impl Serial {
                 }
             }
         }
-        // The unit runs the lines: as far as the program knows, the arm is
-        // at their target once the motion has ended (or been stopped).
-        self.joints = desc.from_controller_deg(&self.sent);
+        // The unit runs the lines: the arm ends at their target once the
+        // motion has ended (or been stopped). The program's joints are the
+        // target as commanded, the unit's are `sent` (0.1 deg or a count
+        // from it): the next motion's lines are measured from `sent`, so
+        // the rounding of one line is made good by the next and never adds
+        // up.
+        if let Some(last) = points.last() {
+            self.joints = *last;
+        }
         let wait = match self.unit {
             Unit::RvM1 => timed.then_some(duration),
             Unit::Rm501 => Some(duration.max(own)),
@@ -455,7 +461,7 @@ impl Serial {
     }
 
     /// The RV-M1's pose as the unit reports it now (`WH`): where it agrees
-    /// with the tracked joints within `WH`'s resolution (0.1 mm, 0.1 deg)
+    /// with the joints the unit was sent within `WH`'s resolution (0.1 mm, 0.1 deg)
     /// they stand, so no rounding creeps in; otherwise the arm was moved
     /// outside the program and its joints are taken from `WH`.
     fn fresh_pose(&mut self) -> Result<(), DriverError> {
@@ -465,7 +471,8 @@ impl Serial {
         let tracked = self.joints;
         let pose = self.wh_reply()?;
         let tl = self.kin.description().links().tool;
-        let expected = wh::of_joints(&self.kin, &tracked, tl);
+        let unit = self.kin.description().from_controller_deg(&self.sent);
+        let expected = wh::of_joints(&self.kin, &unit, tl);
         let agrees = (0..5).all(|i| {
             let mut d = (pose[i] - expected[i]).abs();
             if i == 4 {
