@@ -1070,8 +1070,39 @@ end;
     assert!((1.4..=2.0).contains(&unit), "the unit took {unit} s");
 }
 
+/// `Control => True` on a real arm: the service returns once the line is
+/// sent, the program computes while the arm moves, and the next service
+/// (here `ValueAxes`) waits for the motion's end before it reads the pose.
+fn a_control_motion_returns_at_once_and_the_next_service_waits() {
+    let Some(c) = controller("rv-m1", &["--time-scale", "1.0"]) else {
+        return;
+    };
+    let script = "
+InitRobot;
+declare
+   Start : constant Ada.Calendar.Time := Ada.Calendar.Clock;
+   Sent, Read : Duration;
+   A : AxesVector;
+begin
+   MoveAxesAbsolute ((Rad (60.0), 0.0, 0.0, 0.0, 0.0), Control => True);
+   Sent := Ada.Calendar.\"-\" (Ada.Calendar.Clock, Start);
+   A := ValueAxes;
+   Read := Ada.Calendar.\"-\" (Ada.Calendar.Clock, Start);
+   Put_Line (Boolean'Image (Sent < 0.3) & Boolean'Image (Read > 0.8) & Integer'Image (Integer (Deg (A (1)))));
+end;
+";
+    let (o, out, _) = run("rv-m1", Some(&c.path), script);
+    assert!(matches!(o, Outcome::Ok), "{o:?}\n{out}");
+    // J1 60 deg at level 5 (5/9 of 120 deg/s): 0.9 s on the unit.
+    assert_eq!(out, "TRUETRUE 60\n");
+}
+
 fn main() {
     let tests: &[(&str, fn())] = &[
+        (
+            "a_control_motion_returns_at_once_and_the_next_service_waits",
+            a_control_motion_returns_at_once_and_the_next_service_waits,
+        ),
         (
             "a_hand_jog_while_the_program_waits_is_seen",
             a_hand_jog_while_the_program_waits_is_seen,
