@@ -19,6 +19,10 @@ pub trait Link {
     fn send(&mut self, line: &str) -> Result<(), DriverError>;
     /// The next reply line (ended by CR, LF or CR LF) within `timeout`.
     fn read_line(&mut self, timeout: Duration) -> Result<String, DriverError>;
+    /// Drops whatever the unit sent that nobody asked for (a reply sent
+    /// twice, line noise), so that the next reply read is the answer to
+    /// the next question.
+    fn discard_input(&mut self) {}
 }
 
 /// How to reach the unit.
@@ -114,6 +118,11 @@ impl Link for SerialLink {
                 Err(e) => return Err(DriverError::Fatal(format!("reading: {e}"))),
             }
         }
+    }
+
+    fn discard_input(&mut self) {
+        self.buf.clear();
+        let _ = self.port.clear(serialport::ClearBuffer::Input);
     }
 }
 
@@ -235,7 +244,13 @@ impl Serial {
         if self.pending.is_some() {
             self.wait_motion()?;
         }
-        let r = self.link()?.send(line);
+        let link = self.link()?;
+        // A question's answer is the next line the unit sends: nothing
+        // left over from before (a reply sent twice) may stand in for it.
+        if ["ER", "WH", "DR"].contains(&protocol::split(line).0.as_str()) {
+            link.discard_input();
+        }
+        let r = link.send(line);
         self.check_fatal(r)
     }
 
@@ -713,5 +728,81 @@ impl Robot for Serial {
             }
         };
         Ok(self.gripper)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::cell::RefCell;
+    use std::collections::VecDeque;
+    use std::rc::Rc;
+
+    /// A unit that answers from a script: each line sent takes the next
+    /// scripted reply (`None`: no reply), and `extra` is sent unasked.
+    #[derive(Default)]
+    struct Scripted {
+        replies: VecDeque<Option<String>>,
+        incoming: VecDeque<String>,
+        sent: Vec<String>,
+    }
+
+    struct Fake(Rc<RefCell<Scripted>>);
+
+    impl Link for Fake {
+        fn send(&mut self, line: &str) -> Result<(), DriverError> {
+            let mut s = self.0.borrow_mut();
+            s.sent.push(line.to_string());
+            if let Some(Some(r)) = s.replies.pop_front() {
+                for part in r.split('|') {
+                    s.incoming.push_back(part.to_string());
+                }
+            }
+            Ok(())
+        }
+        fn read_line(&mut self, _timeout: Duration) -> Result<String, DriverError> {
+            self.0
+                .borrow_mut()
+                .incoming
+                .pop_front()
+                .ok_or_else(|| DriverError::Lost("no reply".into()))
+        }
+        fn discard_input(&mut self) {
+            self.0.borrow_mut().incoming.clear();
+        }
+    }
+
+    /// A duplicated `ER` reply (the unit answered one question twice) must
+    /// not shift every later reply by one: the next `WH` reads a pose, not
+    /// the stale `0`.
+    #[test]
+    fn a_reply_sent_twice_does_not_shift_the_later_ones() {
+        let unit = Rc::new(RefCell::new(Scripted::default()));
+        let nest_wh = "+160.0,+0.0,+371.0,-90.0,+0.0";
+        let script: Vec<Option<&str>> = vec![
+            Some("0"),     // ER (probe)
+            None,          // RS
+            None,          // TL
+            None,          // NT
+            Some("0|0"),   // ER after the nest run, answered twice
+            Some(nest_wh), // WH
+        ];
+        unit.borrow_mut().replies = script.into_iter().map(|r| r.map(str::to_string)).collect();
+        let u = unit.clone();
+        let open: Opener = Box::new(move |_| Ok(Box::new(Fake(u.clone())) as Box<dyn Link>));
+        let settings = PortSettings {
+            path: "fake".into(),
+            baud: 9600,
+            timeout: 0.1,
+        };
+        let desc = RobotDescription::builtin("rv-m1").unwrap();
+        let mut d = Serial::with_opener(desc, settings, open, None);
+        d.init().expect("init reads the pose, not the stale 0");
+        let deg = d.joints().map(f64::to_degrees);
+        assert!((deg[2] - 90.0).abs() < 1e-6, "{deg:?}");
+        assert_eq!(
+            unit.borrow().sent,
+            ["ER", "RS", "TL +107.0", "NT", "ER", "WH"]
+        );
     }
 }
