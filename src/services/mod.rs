@@ -1129,8 +1129,10 @@ fn teach_box(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Valu
     }
 }
 
-fn place_object(_cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
+fn place_object(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let w = a[0].real();
+    // Like every service but `ValueErrorStatus`: not before `InitRobot`.
+    require_init(cx, st, "PlaceObject")?;
     let result = match st.robot.as_simulator() {
         Some(sim) => sim.place_object(w).map_err(|m| (Exc::ConstraintError, m)),
         None => Err((
