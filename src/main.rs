@@ -433,13 +433,15 @@ fn real_main(
             if stopped.is_none() {
                 report(&outcome, &s, color);
             }
-            if let Some(p) = &record
+            // Nothing ran after a check error: an existing file stays.
+            let ran = !matches!(outcome, Outcome::CheckFailed(_));
+            if let Some(p) = record.as_ref().filter(|_| ran)
                 && let Err(e) = write_run(p, &s, &file)
             {
                 eprintln!("adair: --record {}: {e}", p.display());
                 return 2;
             }
-            if let Some(p) = &plot
+            if let Some(p) = plot.as_ref().filter(|_| ran)
                 && let Err(e) = write_run(p, &s, &file)
             {
                 eprintln!("adair: --plot {}: {e}", p.display());
@@ -683,6 +685,7 @@ fn output_target(p: &std::path::Path, exts: &[&str], what: &str) -> Result<(), S
     {
         return Err(format!("the file must end in {what}"));
     }
+    adair::plot::check_target(p)?;
     match p.parent() {
         Some(d) if !d.as_os_str().is_empty() && !d.is_dir() => {
             Err(format!("the directory {} does not exist", d.display()))

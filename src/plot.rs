@@ -162,8 +162,24 @@ pub fn write_run(
         Some("json") => crate::services::record::to_json(samples),
         _ => crate::services::record::to_csv(samples),
     };
-    std::fs::write(path, text).map_err(|e| e.to_string())?;
+    // Only a regular file is replaced, whole (as SavePathSystem does).
+    crate::services::paths::write_whole(path, text.as_bytes()).map_err(|(_, msg)| msg)?;
     Ok(samples.len())
+}
+
+/// Whether `path` may take a run's recording or picture when the run ends:
+/// it does not exist yet, or it is a regular file (through symbolic links)
+/// that may be written. Checked before the program runs, so that a FIFO,
+/// a device or a directory is refused at once (and not written into at
+/// the end).
+pub fn check_target(path: &std::path::Path) -> Result<(), String> {
+    match std::fs::metadata(path) {
+        Ok(m) => match crate::services::paths::not_a_file(&m.file_type()) {
+            Some(kind) => Err(format!("it is {kind}, not a regular file")),
+            None => Ok(()),
+        },
+        Err(_) => Ok(()),
+    }
 }
 
 fn joints_panel(area: &Area<'_>, samples: &[Sample]) -> Result<(), String> {

@@ -142,3 +142,79 @@ fn an_unwritable_file_is_one_error_line() {
     let rec: Vec<&str> = err.lines().filter(|l| l.contains("--record")).collect();
     assert_eq!(rec.len(), 1, "{err}");
 }
+
+/// A program that does not check runs nothing, so `--record` and `--plot`
+/// leave an existing file as it was (it may be the last good run's).
+#[test]
+fn a_check_error_leaves_an_existing_recording_alone() {
+    let d = dir("check_error");
+    let script = d.join("bad.air");
+    std::fs::write(&script, "InitRobot;\nMoveTool (Nowhere, 1.0);\n").unwrap();
+    for name in ["keep.csv", "keep.json", "keep.svg"] {
+        let out = d.join(name);
+        std::fs::write(&out, "the last good run\n").unwrap();
+        let flag = if name.ends_with(".svg") {
+            "--plot"
+        } else {
+            "--record"
+        };
+        let o = Command::new(env!("CARGO_BIN_EXE_adair"))
+            .arg("run")
+            .arg(&script)
+            .arg(flag)
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(2), "{o:?}");
+        assert_eq!(
+            std::fs::read_to_string(&out).unwrap(),
+            "the last good run\n",
+            "{flag} {name} was written although nothing ran"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+/// `--record` to a FIFO or a directory is refused before the program runs
+/// (nothing is written into the pipe, and the run does not block on it).
+#[test]
+fn a_recording_to_a_fifo_is_refused_before_running() {
+    let d = dir("fifo");
+    let fifo = d.join("m.csv");
+    let _ = std::fs::remove_file(&fifo);
+    let made = Command::new("mkfifo").arg(&fifo).status();
+    if !made.is_ok_and(|s| s.success()) {
+        println!("skipped: no mkfifo");
+        return;
+    }
+    let script = d.join("t.air");
+    std::fs::write(&script, SCRIPT).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_adair"))
+        .arg("run")
+        .arg(&script)
+        .arg("--record")
+        .arg(&fifo)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed() > std::time::Duration::from_secs(20) {
+            let _ = child.kill();
+            let _ = child.wait();
+            let _ = std::fs::remove_dir_all(&d);
+            panic!("adair run --record FIFO blocked");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    let o = child.wait_with_output().unwrap();
+    let kind = std::fs::symlink_metadata(&fifo).unwrap().file_type();
+    let _ = std::fs::remove_dir_all(&d);
+    assert_eq!(o.status.code(), Some(2), "{o:?}");
+    assert!(o.stdout.is_empty(), "the program ran: {o:?}");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("--record") && err.contains("FIFO"), "{err}");
+    use std::os::unix::fs::FileTypeExt;
+    assert!(kind.is_fifo());
+}

@@ -329,7 +329,7 @@ pub(crate) fn tmp_path(target: &std::path::Path) -> std::path::PathBuf {
 pub(crate) type FileFault = (Exc, String);
 
 /// What a file that is not a regular file is, for a message.
-fn not_a_file(kind: &std::fs::FileType) -> Option<&'static str> {
+pub(crate) fn not_a_file(kind: &std::fs::FileType) -> Option<&'static str> {
     use std::os::unix::fs::FileTypeExt;
     Some(if kind.is_file() {
         return None;
