@@ -765,3 +765,44 @@ fn a_control_fifo_is_read_whenever_a_writer_comes() {
     }
     let _ = std::fs::remove_file(&path);
 }
+
+#[test]
+fn the_old_drivers_rm_501_lines_leave_the_hand_open() {
+    // What the driver sent before it learnt the RM-501's command set
+    // (tests/serial/rm_501_motions.log at e8d1e6c): `GP` puts the unit in
+    // its error mode, and the `GC` after it is ignored without a sign.
+    let sent = [
+        "ER",
+        "RS",
+        "NT",
+        "SP 5",
+        "MI +0,+0,-3600,-1200,+0,+0",
+        "GO",
+        "MI +1200,+800,+1600,-133,+667,+0",
+        "MI -220,+132,+44,+103,-269,+0",
+        "SP 7",
+        "MI +480,-240,+360,-53,+440,+0",
+        "MI -480,+240,-360,+53,-440,+0",
+        "GP 3,3,3",
+        "GC",
+    ];
+    let mut m = rm();
+    for (i, line) in sent.iter().enumerate() {
+        m.handle(line);
+        let refused = *line == "ER" || i >= 11;
+        assert_eq!(m.error() != Error::None, refused, "{line}");
+    }
+    let DriveUnit::Rm501(u) = &m else {
+        unreachable!()
+    };
+    assert!(u.hand_open);
+    // Without the GP the hand closes.
+    let mut m = rm();
+    for line in sent.iter().filter(|l| !l.starts_with("GP")) {
+        m.handle(line);
+    }
+    let DriveUnit::Rm501(u) = &m else {
+        unreachable!()
+    };
+    assert!(!u.hand_open);
+}
