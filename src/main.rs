@@ -4,8 +4,92 @@
 use adair::session::{Outcome, Session};
 use clap::{Args, Parser, Subcommand};
 use std::io::IsTerminal;
+use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
+
+// This file's `println!`, `eprint!` and `eprintln!`: std's panic when the
+// write fails (a full disk: exit 101); these write through [`Watched`],
+// which remembers the failure for the exit status ([`finish`]).
+macro_rules! println {
+    ($($t:tt)*) => {{
+        let _ = writeln!(Watched::out(), $($t)*);
+    }};
+}
+macro_rules! eprint {
+    ($($t:tt)*) => {{
+        let _ = write!(Watched::err(), $($t)*);
+    }};
+}
+macro_rules! eprintln {
+    ($($t:tt)*) => {{
+        let _ = writeln!(Watched::err(), $($t)*);
+    }};
+}
+
+/// The first write to standard output or error that failed, as a message.
+static LOST: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+
+/// Standard output or error: a write that fails (a full disk, a closed
+/// pipe) is remembered in [`LOST`] and returned to the writer, which may
+/// ignore it (the interpreter's `Put_Line` does).
+struct Watched<W> {
+    w: W,
+    name: &'static str,
+}
+
+impl Watched<std::io::Stdout> {
+    fn out() -> Self {
+        Watched {
+            w: std::io::stdout(),
+            name: "standard output",
+        }
+    }
+}
+
+impl Watched<std::io::Stderr> {
+    fn err() -> Self {
+        Watched {
+            w: std::io::stderr(),
+            name: "standard error",
+        }
+    }
+}
+
+impl<W: std::io::Write> Watched<W> {
+    fn note<T>(&self, r: std::io::Result<T>) -> std::io::Result<T> {
+        if let Err(e) = &r
+            && e.kind() != std::io::ErrorKind::Interrupted
+        {
+            let _ = LOST.set(format!("cannot write the {}: {e}", self.name));
+        }
+        r
+    }
+}
+
+impl<W: std::io::Write> std::io::Write for Watched<W> {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        let r = self.w.write(buf);
+        self.note(r)
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        let r = self.w.flush();
+        self.note(r)
+    }
+}
+
+/// The exit status `code`, at least 1 when output was lost (said on
+/// standard error, if that can still be written).
+fn finish(code: u8) -> u8 {
+    let _ = Watched::out().flush();
+    match LOST.get() {
+        None => code,
+        Some(m) => {
+            let _ = writeln!(std::io::stderr(), "adair: {m}");
+            code.max(1)
+        }
+    }
+}
 
 #[derive(Parser)]
 #[command(
@@ -254,7 +338,10 @@ fn main() -> ExitCode {
         Err(e) => {
             if !e.use_stderr() {
                 // --help and --version.
-                let _ = e.print();
+                if let Err(err) = e.print() {
+                    let _ = LOST.set(format!("cannot write the standard output: {err}"));
+                    return ExitCode::from(finish(2));
+                }
                 return ExitCode::SUCCESS;
             }
             // A usage error is one line.
@@ -292,7 +379,7 @@ fn main() -> ExitCode {
         .stack_size(512 << 20)
         .spawn(move || real_main(cli.command, color, devices));
     match child.map(|h| h.join()) {
-        Ok(Ok(code)) => ExitCode::from(code),
+        Ok(Ok(code)) => ExitCode::from(finish(code)),
         _ => {
             eprintln!("adair: internal error");
             ExitCode::from(3)
@@ -337,8 +424,8 @@ fn real_main(
                 let stdin = std::io::stdin();
                 adair::repl::term::piped_on(
                     stdin.lock(),
-                    Box::new(|| Box::new(std::io::stdout()) as Box<dyn std::io::Write>),
-                    &mut std::io::stdout(),
+                    Box::new(|| Box::new(Watched::out()) as Box<dyn std::io::Write>),
+                    &mut Watched::out(),
                     strict,
                     drive,
                 ) as u8
@@ -376,23 +463,23 @@ fn real_main(
             };
             let trace = || -> Option<Box<dyn std::io::Write>> {
                 if robot.trace {
-                    Some(Box::new(std::io::stderr()))
+                    Some(Box::new(Watched::err()))
                 } else {
                     None
                 }
             };
-            let mut s = Session::new(Box::new(std::io::LineWriter::new(std::io::stdout())));
+            let mut s = Session::new(Box::new(std::io::LineWriter::new(Watched::out())));
             // No tool reads the uses and types of this run.
             s.checker.index.uses = false;
             // It runs once: a long body is compiled as it is checked.
             s.compile_as_checked();
             s.strict = strict;
-            s.warnings_to = Some((Box::new(std::io::stderr()), color));
+            s.warnings_to = Some((Box::new(Watched::err()), color));
             if let Some(d) = &devices {
                 s.set_devices(d.clone());
             }
             if robot.trace {
-                s.machine.trace = Some(Box::new(std::io::stderr()));
+                s.machine.trace = Some(Box::new(Watched::err()));
             }
             // Ctrl-C stops the motion and ends the program (exit 130).
             let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
@@ -462,7 +549,7 @@ fn real_main(
             // flushed; files a program writes are written whole as it
             // writes them, and recordings above.
             let _ = s.machine.out.flush();
-            std::process::exit(code.into())
+            std::process::exit(finish(code).into())
         }
         Some(Command::SimController {
             robot,

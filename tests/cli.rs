@@ -575,3 +575,85 @@ fn check_warns_of_a_simulator_only_service() {
     let (code, _, err) = adair(&["run", &f]);
     assert_eq!((code, err.as_str()), (0, ""));
 }
+
+/// Runs `adair ARGS` in the repository with standard output (`out_full`)
+/// or standard error going to `/dev/full`, where every write fails with
+/// ENOSPC; the other stream is captured. `None` where there is no
+/// `/dev/full`.
+fn adair_full(args: &[&str], input: &str, out_full: bool) -> Option<(i32, String)> {
+    use std::io::Write;
+    let full = std::fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .ok()?;
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_adair"));
+    cmd.args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("NO_COLOR", "1")
+        .stdin(std::process::Stdio::piped());
+    if out_full {
+        cmd.stdout(full).stderr(std::process::Stdio::piped());
+    } else {
+        cmd.stderr(full).stdout(std::process::Stdio::piped());
+    }
+    let mut child = cmd.spawn().expect("run adair");
+    let mut stdin = child.stdin.take().unwrap();
+    stdin.write_all(input.as_bytes()).unwrap();
+    drop(stdin);
+    let out = child.wait_with_output().unwrap();
+    let other = if out_full { out.stderr } else { out.stdout };
+    Some((
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&other).into_owned(),
+    ))
+}
+
+/// Output or diagnostics that cannot be written (a full disk: `/dev/full`)
+/// end the process with a failure status (1, or 2 after a check error),
+/// never with a panic (101) or an internal error (3), and never with 0.
+#[test]
+fn a_full_stdout_or_stderr_is_an_error_exit_not_a_panic() {
+    let ok = temp_file("full_ok.air", "Put_Line (\"hi\");\n");
+    let raise = temp_file(
+        "full_raise.air",
+        "Put_Line (\"hi\");\nraise Constraint_Error;\n",
+    );
+    let bad = temp_file("full_bad.air", "X : Integer := True;\n");
+    let dir = std::path::Path::new(&ok)
+        .parent()
+        .unwrap()
+        .join("full_test");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("t.air"), "Put_Line (\"hi\");\n").unwrap();
+    std::fs::write(dir.join("t.out"), "hi\n").unwrap();
+    let dir = dir.to_string_lossy().into_owned();
+    // (arguments, standard input, stdout full?, expected status)
+    let cases: [(&[&str], &str, bool, i32); 12] = [
+        (&["run", &ok], "", true, 1),
+        (&["run", &raise], "", true, 1),
+        (&["run", &raise], "", false, 1),
+        (&["run", &bad], "", false, 2),
+        (&["check", &bad], "", false, 2),
+        (&["run", "examples/square.air", "--trace"], "", false, 1),
+        (&["test", &dir], "", true, 1),
+        (&["test", "no/such/dir"], "", false, 2),
+        (&["repl"], "Put_Line (\"hi\");\n", true, 1),
+        (&["--help"], "", true, 2),
+        (&["run", "--serial-timeout"], "", false, 2),
+        (&["no-such-command"], "", false, 2),
+    ];
+    for (args, input, out_full, want) in cases {
+        let Some((code, other)) = adair_full(args, input, out_full) else {
+            println!("skipped: no /dev/full");
+            return;
+        };
+        let stream = if out_full { "stdout" } else { "stderr" };
+        assert_eq!(code, want, "adair {args:?} with a full {stream}: {other}");
+        if out_full {
+            assert!(
+                other.contains("standard output"),
+                "adair {args:?}: say that the output was lost: {other}"
+            );
+        }
+    }
+}
