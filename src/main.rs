@@ -146,8 +146,9 @@ struct SerialOpts {
     /// Baud rate of --port.
     #[arg(long, default_value_t = 9600, requires = "port")]
     baud: u32,
-    /// Seconds a reply may take beyond a motion's expected time.
-    #[arg(long, value_name = "SECONDS", default_value_t = 2.0, requires = "port")]
+    /// Seconds a reply may take beyond a motion's expected time (0 to 3600).
+    #[arg(long, value_name = "SECONDS", default_value_t = 2.0, requires = "port",
+          value_parser = timeout_seconds)]
     serial_timeout: f64,
 }
 
@@ -748,6 +749,21 @@ fn report(outcome: &Outcome, s: &Session, color: bool) {
             adair::diag::render(std::slice::from_ref(d), &s.sources, color)
         ),
     }
+}
+
+/// A number of seconds for a timeout: finite, 0 to 3600 (NaN, an infinity
+/// or a negative number would make every wait wrong, or panic).
+fn timeout_seconds(text: &str) -> Result<f64, String> {
+    let x: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{text}` is not a number of seconds"))?;
+    if !x.is_finite() || !(0.0..=3600.0).contains(&x) {
+        return Err(format!(
+            "`{text}`: a number of seconds from 0 to 3600 (not NaN or infinite)"
+        ));
+    }
+    Ok(x)
 }
 
 fn parse_refuse(s: &str) -> Result<(u64, u8), String> {

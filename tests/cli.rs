@@ -657,3 +657,23 @@ fn a_full_stdout_or_stderr_is_an_error_exit_not_a_panic() {
         }
     }
 }
+
+/// A float option of run, repl and test takes a finite number of seconds
+/// in its range: NaN, an infinity, a negative number or one too large for
+/// a timeout is one line and exit 2, before anything runs.
+#[test]
+fn float_options_refuse_nan_and_infinities() {
+    let ok = temp_file("nan_ok.air", "Put_Line (\"ran\");\n");
+    for bad in ["nan", "NaN", "inf", "-inf", "infinity", "-1", "1e300"] {
+        for cmd in [vec!["run", &ok], vec!["repl"], vec!["test", &ok]] {
+            let mut args = cmd.clone();
+            let flag = format!("--serial-timeout={bad}");
+            args.extend(["--port", "/nonexistent/tty", &flag]);
+            let (code, out, err) = adair(&args);
+            assert_eq!(code, 2, "adair {args:?}: {out}{err}");
+            assert!(out.is_empty(), "adair {args:?} ran: {out}");
+            assert_eq!(err.lines().count(), 1, "{err}");
+            assert!(err.contains("--serial-timeout"), "{err}");
+        }
+    }
+}
