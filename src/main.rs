@@ -626,23 +626,14 @@ fn real_main(
                 1
             }
         },
-        Some(Command::Ports) => match serialport::available_ports() {
-            Ok(ports) if ports.is_empty() => {
+        Some(Command::Ports) => match list_ports(std::path::Path::new(TTY_CLASS)) {
+            Ok(lines) if lines.is_empty() => {
                 println!("no serial ports found");
                 0
             }
-            Ok(ports) => {
-                for p in ports {
-                    match p.port_type {
-                        serialport::SerialPortType::UsbPort(u) => println!(
-                            "{}  USB {:04x}:{:04x}{}",
-                            p.port_name,
-                            u.vid,
-                            u.pid,
-                            u.product.map(|s| format!(" {s}")).unwrap_or_default()
-                        ),
-                        _ => println!("{}", p.port_name),
-                    }
+            Ok(lines) => {
+                for l in lines {
+                    println!("{l}");
                 }
                 0
             }
@@ -766,6 +757,37 @@ fn timeout_seconds(text: &str) -> Result<f64, String> {
     Ok(x)
 }
 
+/// Where Linux lists its terminals, serial ports among them.
+const TTY_CLASS: &str = "/sys/class/tty";
+
+/// The serial ports, one line each (name, and USB ids where known).
+/// `tty_class` is where the system lists them (`/sys/class/tty` on Linux),
+/// which a container may not have: that is an error saying so (the
+/// `serialport` crate panics without it).
+fn list_ports(tty_class: &std::path::Path) -> Result<Vec<String>, String> {
+    if cfg!(target_os = "linux") && !tty_class.is_dir() {
+        return Err(format!(
+            "{} does not exist here (a container without sysfs?); give the port's \
+             device to --port, e.g. --port /dev/ttyUSB0",
+            tty_class.display()
+        ));
+    }
+    let ports = serialport::available_ports().map_err(|e| e.to_string())?;
+    Ok(ports
+        .into_iter()
+        .map(|p| match p.port_type {
+            serialport::SerialPortType::UsbPort(u) => format!(
+                "{}  USB {:04x}:{:04x}{}",
+                p.port_name,
+                u.vid,
+                u.pid,
+                u.product.map(|s| format!(" {s}")).unwrap_or_default()
+            ),
+            _ => p.port_name,
+        })
+        .collect())
+}
+
 fn parse_refuse(s: &str) -> Result<(u64, u8), String> {
     let (n, m) = s
         .split_once(':')
@@ -809,6 +831,19 @@ fn write_run(p: &std::path::Path, s: &Session, file: &std::path::Path) -> Result
 
 #[cfg(test)]
 mod tests {
+    /// Without `/sys/class/tty` (a container) `adair ports` says so; the
+    /// serialport crate panics there.
+    #[test]
+    fn ports_without_the_tty_class_folder_is_an_error_not_a_panic() {
+        let missing =
+            std::env::temp_dir().join(format!("adair_no_sysfs_{}/class/tty", std::process::id()));
+        let e = super::list_ports(&missing).unwrap_err();
+        assert!(
+            e.contains(&missing.display().to_string()) && e.contains("--port"),
+            "{e}"
+        );
+    }
+
     #[test]
     fn the_shorthand_knows_every_global_option_with_a_value() {
         use clap::CommandFactory;

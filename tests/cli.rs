@@ -628,7 +628,7 @@ fn a_full_stdout_or_stderr_is_an_error_exit_not_a_panic() {
     std::fs::write(dir.join("t.out"), "hi\n").unwrap();
     let dir = dir.to_string_lossy().into_owned();
     // (arguments, standard input, stdout full?, expected status)
-    let cases: [(&[&str], &str, bool, i32); 12] = [
+    let cases: [(&[&str], &str, bool, i32); 13] = [
         (&["run", &ok], "", true, 1),
         (&["run", &raise], "", true, 1),
         (&["run", &raise], "", false, 1),
@@ -639,6 +639,7 @@ fn a_full_stdout_or_stderr_is_an_error_exit_not_a_panic() {
         (&["test", "no/such/dir"], "", false, 2),
         (&["repl"], "Put_Line (\"hi\");\n", true, 1),
         (&["--help"], "", true, 2),
+        (&["ports"], "", true, 1),
         (&["run", "--serial-timeout"], "", false, 2),
         (&["no-such-command"], "", false, 2),
     ];
