@@ -173,6 +173,45 @@ impl Checker {
             ex.ty = ERROR;
             return ex;
         }
+        // RM 4.9(35): a static real expected of a floating point type lies
+        // in that type's base range (a literal beyond it, `1.0E309` or
+        // `1.0E39` for `Float`, is illegal, not infinity).
+        if self.types.is_float(t)
+            && !self.types.is_universal(t)
+            && let Some((lo, hi)) = self.float_base_range(t)
+            && (matches!(ex.kind, ExKind::Real(v) if !v.is_finite())
+                || matches!(self.static_value(&ex), Some(Static::Real(v))
+                    if exact::overflows(&v) || !(lo..=hi).contains(&exact::to_f64(&v))))
+        {
+            let e = |x: f64| {
+                let t = format!("{x:.5e}");
+                match t.split_once('e') {
+                    Some((m, p)) if p.starts_with('-') => format!("{m}E{p}"),
+                    Some((m, p)) => format!("{m}E+{p}"),
+                    None => t,
+                }
+            };
+            let shown = match self.snippet(ex.span) {
+                s if s.len() <= 40 => s,
+                _ => "the static value".to_string(),
+            };
+            self.err(
+                Diagnostic::ty(
+                    ex.span,
+                    format!(
+                        "{shown} is not in range of `{}` ({} .. {})",
+                        self.tname(self.types.base(t)),
+                        e(lo),
+                        e(hi)
+                    ),
+                )
+                .with_hint(
+                    "a static expression is computed exactly, and its value must fit its type",
+                ),
+            );
+            ex.ty = ERROR;
+            return ex;
+        }
         let from = ex.ty;
         if self.types.is_universal(ex.ty)
             || matches!(
@@ -2698,6 +2737,44 @@ impl Checker {
                 "an array aggregate is either positional or named, not both",
             ));
         }
+        // RM 4.3.3(18): static choices never cover an index twice.
+        let mut seen: Vec<(i128, i128, Span)> = Vec::new();
+        for (ranges, _) in &named {
+            for (l, h) in ranges {
+                if let (Some(Static::Int(a)), Some(Static::Int(b))) =
+                    (self.static_value(l), self.static_value(h))
+                    && a <= b
+                {
+                    let span = Span {
+                        start: l.span.start,
+                        end: h.span.end.max(l.span.end),
+                        context: l.span.context,
+                    };
+                    seen.push((a, b, span));
+                }
+            }
+        }
+        seen.sort_by_key(|x| (x.0, x.2.start));
+        for w in seen.windows(2) {
+            let ((_, prev_hi, prev_sp), (lo, _, sp2)) =
+                ((w[0].0, w[0].1, w[0].2), (w[1].0, w[1].1, w[1].2));
+            if lo <= prev_hi {
+                let (first, second) = if prev_sp.start <= sp2.start {
+                    (prev_sp, sp2)
+                } else {
+                    (sp2, prev_sp)
+                };
+                self.err(
+                    Diagnostic::ty(
+                        second,
+                        "this aggregate choice covers an index a choice before it covers",
+                    )
+                    .with_note(first, "covered here already")
+                    .with_hint("each index of a named array aggregate is given once"),
+                );
+                break;
+            }
+        }
         if others.is_some() && bounds.is_none() {
             self.err(
                 Diagnostic::ty(sp, "`others` needs the bounds from the context").with_hint(
@@ -3158,6 +3235,21 @@ fn is_range_attr(x: &ast::Expr) -> bool {
 }
 
 impl Checker {
+    /// The base range of a floating point type (RM 3.5.7): single precision
+    /// up to 6 digits, as GNAT; `Duration`'s own.
+    fn float_base_range(&self, t: TypeId) -> Option<(f64, f64)> {
+        let base = self.types.base(t);
+        if base == DURATION {
+            return self.types.get(base).static_frange;
+        }
+        let max = if self.types.digits(t) <= 6 {
+            f32::MAX as f64
+        } else {
+            f64::MAX
+        };
+        Some((-max, max))
+    }
+
     /// A call of a service that only the simulator has, when the program
     /// is meant for a real arm too (`simulator_only`): it would raise
     /// `CommandNotSupported` there, and in the rehearsal for it.
