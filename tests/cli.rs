@@ -678,3 +678,52 @@ fn float_options_refuse_nan_and_infinities() {
         }
     }
 }
+
+/// A run of unary operators nests as deep as it is long (each one's
+/// operand is the rest): 400,000 `not`, `abs` or `-` overflowed the stack
+/// (abort); now the 10,001st level is one "nesting too deep" error, the
+/// levels of parentheses counting with them; 9,000 `not` run.
+#[test]
+fn a_unary_chain_past_the_nesting_limit_is_one_error_and_below_it_runs() {
+    for (op, ty, lit) in [
+        ("not ", "Boolean", "True"),
+        ("abs ", "Integer", "1"),
+        ("- ", "Integer", "1"),
+    ] {
+        let text = format!("X : {ty} := {}{lit};\n", op.repeat(400_000));
+        let f = temp_file("unary_chain.air", &text);
+        let (code, _, err) = adair(&["check", &f]);
+        assert_eq!(code, 2, "{op}: {}", &err[..err.len().min(400)]);
+        // `X : Boolean := ` is 15 columns; the 10,001st operator follows.
+        let col = 16 + 10_000 * op.len();
+        assert!(
+            err.contains(&format!(
+                ":1:{col}: error: nesting too deep: more than 10000 levels of parentheses and unary operators"
+            )),
+            "{op}: {}",
+            &err[..err.len().min(400)]
+        );
+        assert_eq!(err.matches("error:").count(), 1, "one error only");
+    }
+    // `not (` is two levels: the 5,001st `not` is the 10,001st level.
+    let mixed = format!(
+        "X : Boolean := {}True{};\n",
+        "not (".repeat(6_000),
+        ")".repeat(6_000)
+    );
+    let f = temp_file("unary_parens.air", &mixed);
+    let (code, _, err) = adair(&["check", &f]);
+    assert_eq!(code, 2, "{}", &err[..err.len().min(400)]);
+    assert!(
+        err.contains(&format!(":1:{}: error: nesting too deep", 16 + 5_000 * 5)),
+        "{}",
+        &err[..err.len().min(400)]
+    );
+    let below = format!(
+        "X : Boolean := {}True;\nPut_Line (Boolean'Image (X));\n",
+        "not ".repeat(9_000)
+    );
+    let f = temp_file("unary_below.air", &below);
+    let (code, out, err) = adair(&["run", &f]);
+    assert_eq!((code, out.as_str()), (0, "TRUE\n"), "{err}");
+}

@@ -2737,7 +2737,8 @@ pub const MAX_NESTING: usize = 10_000;
 /// native stack.
 pub const MAX_CHAIN: usize = 50_000;
 
-/// A program nested deeper than [`MAX_NESTING`], or with an expression
+/// A program nested deeper than [`MAX_NESTING`] (parentheses, blocks, or
+/// parentheses and runs of unary operators together), or with an expression
 /// chaining more than [`MAX_CHAIN`] operators: one error at the first token
 /// past the limit, found by counting before parsing (a million nested
 /// parentheses used 11 GB of memory and 14 s before this check).
@@ -2746,6 +2747,12 @@ fn too_deep(tokens: &[(Token, Span)]) -> Option<Diagnostic> {
     let mut after_end = false;
     // Operators chained at each level of parentheses.
     let mut chain: Vec<usize> = vec![0];
+    // Levels of parentheses and unary operators: the run of unary
+    // operators just read (each one's operand is the rest of the run, so
+    // the parser recurses once an operator), and for each open parenthesis
+    // the run before it (still open until its `)`).
+    let (mut levels, mut run) = (0usize, 0usize);
+    let mut runs: Vec<usize> = Vec::new();
     for (t, sp) in tokens {
         let was_end = std::mem::replace(&mut after_end, false);
         let what = match t {
@@ -2815,6 +2822,32 @@ fn too_deep(tokens: &[(Token, Span)]) -> Option<Diagnostic> {
                 )
                 .with_label("this level is one too many")
                 .with_hint("split the expression or the statements into subprograms"),
+            );
+        }
+        match t {
+            Token::Kw(Kw::Not | Kw::Abs) | Token::Plus | Token::Minus => run += 1,
+            Token::LParen => {
+                runs.push(run);
+                levels += run + 1;
+                run = 0;
+            }
+            Token::RParen => {
+                levels = levels.saturating_sub(runs.pop().map_or(0, |r| r + 1));
+                run = 0;
+            }
+            _ => run = 0,
+        }
+        if levels + run > MAX_NESTING {
+            return Some(
+                Diagnostic::syntax(
+                    *sp,
+                    format!(
+                        "nesting too deep: more than {MAX_NESTING} levels of parentheses \
+                         and unary operators"
+                    ),
+                )
+                .with_label("this level is one too many")
+                .with_hint("split the expression into several statements"),
             );
         }
     }
