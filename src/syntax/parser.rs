@@ -1075,7 +1075,14 @@ fn stmt_grammar<'t, I: TokIn<'t>>(
         .map(|(((c, t), rest), els)| StmtKind::If {
             arms: first_and(c, t, rest),
             els,
-        });
+        })
+        // As for blocks below: an unclosed compound statement is tried again
+        // by the recovery of the statement around it; remembering each
+        // attempt by its position makes nested unclosed ones polynomial,
+        // not exponential (40 levels: 0.1 s, where 14 took 0.7 s).
+        .memoized();
+    // Only where an `if` starts: no memo entry at every statement.
+    let if_stmt = kw!(If).rewind().ignore_then(if_stmt);
     let case_stmt = kw!(Case)
         .ignore_then(expr.clone())
         .then_ignore(kw!(Is))
@@ -1098,7 +1105,9 @@ fn stmt_grammar<'t, I: TokIn<'t>>(
         .map(|(subject, arms)| StmtKind::Case {
             subject: Box::new(subject),
             arms,
-        });
+        })
+        .memoized();
+    let case_stmt = kw!(Case).rewind().ignore_then(case_stmt);
     let scheme = choice((
         kw!(While).ignore_then(expr.clone()).map(LoopScheme::While),
         kw!(For)
@@ -1137,7 +1146,18 @@ fn stmt_grammar<'t, I: TokIn<'t>>(
             scheme: Box::new(scheme),
             body,
             end_label: end_label.map(Box::new),
-        });
+        })
+        .memoized();
+    // Only where a loop can start (as for blocks: no memo entry at every
+    // statement).
+    let loop_stmt = choice((
+        kw!(For).ignored(),
+        kw!(While).ignored(),
+        kw!(Loop).ignored(),
+        label.clone().ignored(),
+    ))
+    .rewind()
+    .ignore_then(loop_stmt);
     // A `declare` block whose `end` never comes (the text ends first) is
     // reported once, as unclosed, and taken as ended: trying it again as
     // something else, level after level, took time quadratic in the nesting.
