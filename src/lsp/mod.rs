@@ -549,7 +549,7 @@ pub fn path_to_uri(path: &Path) -> Option<Uri> {
 
 /// `adair lsp`: serves on standard input and output until the client exits.
 pub fn serve_stdio() -> Result<(), String> {
-    let (conn, io) = Connection::stdio();
+    let (conn, reader, writer) = stdio_connection();
     run(
         &conn,
         Config {
@@ -558,5 +558,177 @@ pub fn serve_stdio() -> Result<(), String> {
         },
     )?;
     drop(conn);
-    io.join().map_err(|e| e.to_string())
+    let joined = |h: std::thread::JoinHandle<std::io::Result<()>>| match h.join() {
+        Ok(r) => r.map_err(|e| e.to_string()),
+        Err(_) => Err("the message thread failed".to_string()),
+    };
+    joined(reader)?;
+    joined(writer)
+}
+
+/// The largest message the server reads (its `Content-Length`): a document
+/// of this size is far beyond what the checker is for, and a length the
+/// client sends is not allocated before it is checked.
+pub const MAX_MESSAGE: usize = 64 << 20;
+
+/// The longest header line taken (`Content-Length: N` and
+/// `Content-Type: ...` are a few dozen bytes).
+const MAX_HEADER_LINE: u64 = 1024;
+
+/// What the reader found in the input.
+enum Frame {
+    /// A message's text.
+    Body(Vec<u8>),
+    /// The header of a message over [`MAX_MESSAGE`]: its length. The
+    /// body is still to be read past ([`skip`]).
+    TooLong(u64),
+    /// The input ended between messages.
+    End,
+}
+
+/// Reads one framed message (`Content-Length` header, blank line, body)
+/// from `inp`, keeping at most [`MAX_MESSAGE`] bytes: a longer one is read
+/// past. Errors are malformed headers and an input that ends inside a
+/// message: the framing is lost, the connection ends.
+fn read_frame(inp: &mut impl std::io::BufRead) -> std::io::Result<Frame> {
+    use std::io::{BufRead as _, Read as _};
+    let bad = |m: String| std::io::Error::new(std::io::ErrorKind::InvalidData, m);
+    let mut size: Option<u64> = None;
+    let mut first = true;
+    loop {
+        let mut line = Vec::new();
+        (&mut *inp)
+            .take(MAX_HEADER_LINE)
+            .read_until(b'\n', &mut line)?;
+        if line.is_empty() && first {
+            return Ok(Frame::End);
+        }
+        first = false;
+        let Some(text) = line.strip_suffix(b"\r\n") else {
+            let shown = String::from_utf8_lossy(&line[..line.len().min(80)]).into_owned();
+            return Err(bad(if line.len() as u64 >= MAX_HEADER_LINE {
+                format!("a header line longer than {MAX_HEADER_LINE} bytes: {shown:?}...")
+            } else {
+                format!("malformed header (or the input ended): {shown:?}")
+            }));
+        };
+        if text.is_empty() {
+            break;
+        }
+        let text = String::from_utf8_lossy(text);
+        let (name, value) = text
+            .split_once(": ")
+            .ok_or_else(|| bad(format!("malformed header: {text:?}")))?;
+        if name.eq_ignore_ascii_case("Content-Length") {
+            size = Some(
+                value
+                    .trim()
+                    .parse()
+                    .map_err(|_| bad(format!("malformed Content-Length: {value:?}")))?,
+            );
+        }
+    }
+    let size = size.ok_or_else(|| bad("a message without Content-Length".into()))?;
+    if size > MAX_MESSAGE as u64 {
+        return Ok(Frame::TooLong(size));
+    }
+    let mut body = vec![0; size as usize];
+    inp.read_exact(&mut body)?;
+    Ok(Frame::Body(body))
+}
+
+/// Reads past the `size` bytes of a message that is not kept.
+fn skip(inp: &mut impl std::io::BufRead, size: u64) -> std::io::Result<()> {
+    use std::io::Read as _;
+    let read = std::io::copy(&mut (&mut *inp).take(size), &mut std::io::sink())?;
+    if read < size {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::UnexpectedEof,
+            format!("the input ended inside a message of {size} bytes"),
+        ));
+    }
+    Ok(())
+}
+
+/// An error the client should see: on standard error (the editor's log of
+/// the server) and as a `window/logMessage` notification (`send`).
+fn log_error(send: &impl Fn(Message), text: &str) {
+    use std::io::Write as _;
+    let _ = writeln!(std::io::stderr(), "adair lsp: {text}");
+    send(Message::Notification(Notification::new(
+        N::LogMessage::METHOD.to_string(),
+        lsp_types::LogMessageParams {
+            typ: lsp_types::MessageType::ERROR,
+            message: text.to_string(),
+        },
+    )));
+}
+
+/// A connection on standard input and output, as
+/// `lsp_server::Connection::stdio` but with every length bounded: that
+/// one allocates whatever `Content-Length` says (`1000000000000` aborted
+/// the server) and reads header lines of any length. A message over
+/// [`MAX_MESSAGE`] or one that is not JSON-RPC is logged and skipped; a
+/// malformed header ends the connection with an error. The server's side
+/// is one end of an in-memory connection; two threads carry the other
+/// end's messages to and from the standard streams.
+fn stdio_connection() -> (
+    Connection,
+    std::thread::JoinHandle<std::io::Result<()>>,
+    std::thread::JoinHandle<std::io::Result<()>>,
+) {
+    let (server, client) = Connection::memory();
+    let Connection { sender, receiver } = client;
+    // The reader's errors go to the client, as the server's messages do.
+    let to_client = server.sender.clone();
+    let writer = std::thread::spawn(move || {
+        let stdout = std::io::stdout();
+        let mut stdout = stdout.lock();
+        receiver.into_iter().try_for_each(|m| m.write(&mut stdout))
+    });
+    let reader = std::thread::spawn(move || {
+        let log = move |m: Message| {
+            let _ = to_client.send(m);
+        };
+        let stdin = std::io::stdin();
+        let mut stdin = stdin.lock();
+        loop {
+            let frame = read_frame(&mut stdin).inspect_err(|e| {
+                log_error(&log, &format!("protocol error, the connection ends: {e}"));
+            })?;
+            let body = match frame {
+                Frame::End => return Ok(()),
+                Frame::TooLong(n) => {
+                    log_error(
+                        &log,
+                        &format!(
+                            "a message of {n} bytes (Content-Length: {n}) is over the limit of \
+                             {} MiB: read past and ignored",
+                            MAX_MESSAGE >> 20
+                        ),
+                    );
+                    skip(&mut stdin, n).inspect_err(|e| {
+                        log_error(&log, &format!("protocol error, the connection ends: {e}"));
+                    })?;
+                    continue;
+                }
+                Frame::Body(b) => b,
+            };
+            let msg: Message = match serde_json::from_slice(&body) {
+                Ok(m) => m,
+                Err(e) => {
+                    log_error(
+                        &log,
+                        &format!("a message that is not JSON-RPC: {e}; ignored"),
+                    );
+                    continue;
+                }
+            };
+            let exit = matches!(&msg, Message::Notification(n) if n.method == N::Exit::METHOD);
+            if sender.send(msg).is_err() || exit {
+                return Ok(());
+            }
+        }
+    });
+    (server, reader, writer)
 }
