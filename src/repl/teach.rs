@@ -102,15 +102,12 @@ impl TermPendant {
 
     fn store(&mut self, st: &mut RobotState) {
         let f = st.kin.fk_tcp(&st.robot.joints(), &st.tool.trans).to_rows();
-        let path = st.paths.entry(self.path).or_default();
         // As InsertPosition: before the chosen position, or after the last.
-        let at = if self.position == 0 {
-            path.len()
-        } else {
-            (self.position - 1).min(path.len())
+        let at = self.position.checked_sub(1).unwrap_or(usize::MAX);
+        self.message = match st.paths.insert(self.path, at, f) {
+            Ok(at) => format!("stored as position {} of path {}", at + 1, self.path),
+            Err(e) => format!("not stored (PathMemOverflow): {e}"),
         };
-        path.insert(at, f);
-        self.message = format!("stored as position {} of path {}", at + 1, self.path);
     }
 
     /// Handles a key; true to leave.
@@ -229,7 +226,7 @@ impl TermPendant {
         lines.push(Line::from(format!(
             "path {}: {} positions, store at {}",
             self.path,
-            st.paths.get(&self.path).map(Vec::len).unwrap_or(0),
+            st.paths.get(&self.path).map_or(0, |p| p.len()),
             if self.position == 0 {
                 "the end".to_string()
             } else {

@@ -36,6 +36,7 @@ excs! {
     OutOfReach = "ADAIR.OUTOFREACH",
     PathAlreadyDefined = "ADAIR.PATHALREADYDEFINED",
     PathElementNotDefined = "ADAIR.PATHELEMENTNOTDEFINED",
+    PathMemOverflow = "ADAIR.PATHMEMOVERFLOW",
     PathNotDefined = "ADAIR.PATHNOTDEFINED",
     SystemNotInitialized = "ADAIR.SYSTEMNOTINITIALIZED",
     TimeInvalid = "ADAIR.TIMEINVALID",

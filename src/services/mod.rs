@@ -35,7 +35,7 @@ pub struct RobotState {
     pub hand: i64,
     pub tool: Tool,
     pub base: Pose,
-    pub paths: BTreeMap<i64, Vec<[[f64; 4]; 3]>>,
+    pub paths: paths::PathMem,
     pub error_status: i64,
     /// Virtual time at which a `Control => True` motion ends.
     pub busy_until: f64,
@@ -128,7 +128,7 @@ impl RobotState {
             hand: 2,
             tool,
             base: Pose::identity(),
-            paths: BTreeMap::new(),
+            paths: paths::PathMem::default(),
             error_status: 0,
             busy_until: 0.0,
             busy_paced: None,

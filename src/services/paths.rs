@@ -13,6 +13,212 @@
 
 use super::*;
 
+/// One position of a path: the frame's three rows.
+pub type Frame = [[f64; 4]; 3];
+
+/// The most positions one path holds: `PosNo'Last` (handbook: `subtype
+/// PosNo is POSITIVE range 1..65000`), so every position has a number.
+pub const MAX_POSITIONS: usize = 65_000;
+
+/// The most positions all paths hold together (the handbook gives no
+/// figure for its path memory; this one is ours, about 96 MB of frames,
+/// see docs/differences.md). Past either limit a service raises
+/// `PathMemOverflow` and changes nothing.
+pub const MAX_TOTAL_POSITIONS: usize = 1_000_000;
+
+/// Frames per block of a [`Positions`] list before it is split in two.
+const BLOCK: usize = 512;
+
+/// The positions of one path, in order: a list of blocks of at most
+/// `2 * BLOCK` frames, so inserting or deleting anywhere moves at most one
+/// block and walks the block lengths (65,000 positions: about 130 blocks),
+/// never the whole path.
+#[derive(Clone, Debug, Default)]
+pub struct Positions {
+    blocks: Vec<Vec<Frame>>,
+    len: usize,
+}
+
+impl Positions {
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// The block and the place in it of position index `i` (`i < len`),
+    /// or of the end for `i == len`.
+    fn locate(&self, mut i: usize) -> (usize, usize) {
+        for (b, block) in self.blocks.iter().enumerate() {
+            if i < block.len() {
+                return (b, i);
+            }
+            i -= block.len();
+        }
+        let last = self.blocks.len().saturating_sub(1);
+        (last, self.blocks.get(last).map_or(0, Vec::len) + i)
+    }
+
+    pub fn get(&self, i: usize) -> Option<&Frame> {
+        if i >= self.len {
+            return None;
+        }
+        let (b, k) = self.locate(i);
+        Some(&self.blocks[b][k])
+    }
+
+    /// Inserts `f` before index `i`; `i >= len` appends.
+    pub fn insert(&mut self, i: usize, f: Frame) {
+        let i = i.min(self.len);
+        if self.blocks.is_empty() {
+            self.blocks.push(Vec::with_capacity(BLOCK));
+        }
+        let (b, k) = self.locate(i);
+        let block = &mut self.blocks[b];
+        block.insert(k, f);
+        if block.len() > 2 * BLOCK {
+            let tail = block.split_off(BLOCK);
+            self.blocks.insert(b + 1, tail);
+        }
+        self.len += 1;
+    }
+
+    pub fn push(&mut self, f: Frame) {
+        self.insert(self.len, f);
+    }
+
+    /// Removes and returns the frame at index `i` (`i < len`).
+    pub fn remove(&mut self, i: usize) -> Frame {
+        let (b, k) = self.locate(i);
+        let f = self.blocks[b].remove(k);
+        self.len -= 1;
+        // A small block joins its neighbour, so the blocks stay few.
+        if self.blocks[b].is_empty() {
+            self.blocks.remove(b);
+        } else if self.blocks[b].len() < BLOCK / 2
+            && b + 1 < self.blocks.len()
+            && self.blocks[b].len() + self.blocks[b + 1].len() <= 2 * BLOCK
+        {
+            let next = self.blocks.remove(b + 1);
+            self.blocks[b].extend(next);
+        }
+        f
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = &Frame> {
+        self.blocks.iter().flatten()
+    }
+}
+
+impl FromIterator<Frame> for Positions {
+    fn from_iter<I: IntoIterator<Item = Frame>>(it: I) -> Positions {
+        let mut p = Positions::default();
+        for f in it {
+            p.push(f);
+        }
+        p
+    }
+}
+
+/// All paths, by number, and how many positions they hold together.
+#[derive(Clone, Debug, Default)]
+pub struct PathMem {
+    paths: BTreeMap<i64, Positions>,
+    total: usize,
+}
+
+/// Why a position cannot be stored: the message of `PathMemOverflow`.
+pub type Overflow = String;
+
+impl PathMem {
+    pub fn contains_key(&self, p: &i64) -> bool {
+        self.paths.contains_key(p)
+    }
+
+    pub fn get(&self, p: &i64) -> Option<&Positions> {
+        self.paths.get(p)
+    }
+
+    /// Positions over all paths.
+    pub fn total(&self) -> usize {
+        self.total
+    }
+
+    /// Creates path `p` empty (it must not exist).
+    pub fn create(&mut self, p: i64) {
+        self.paths.entry(p).or_default();
+    }
+
+    pub fn remove(&mut self, p: &i64) {
+        if let Some(old) = self.paths.remove(p) {
+            self.total -= old.len();
+        }
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = (&i64, &Positions)> {
+        self.paths.iter()
+    }
+
+    /// Whether `more` positions fit into path `p` (now `len` long) and the
+    /// whole memory; the message of `PathMemOverflow` when not.
+    fn room(&self, p: i64, len: usize, more: usize) -> Result<(), Overflow> {
+        if len + more > MAX_POSITIONS {
+            return Err(format!(
+                "path {p} is full: it holds {len} positions, PosNo'Last"
+            ));
+        }
+        if self.total + more > MAX_TOTAL_POSITIONS {
+            return Err(format!(
+                "the path memory holds {} position(s) over all paths, its limit is {MAX_TOTAL_POSITIONS}",
+                self.total
+            ));
+        }
+        Ok(())
+    }
+
+    /// Inserts `f` into path `p` (created when missing) before index `i`;
+    /// `i` beyond the end appends. The index it got, or why it did not fit
+    /// (then nothing changed).
+    pub fn insert(&mut self, p: i64, i: usize, f: Frame) -> Result<usize, Overflow> {
+        let len = self.paths.get(&p).map_or(0, Positions::len);
+        self.room(p, len, 1)?;
+        let path = self.paths.entry(p).or_default();
+        let i = i.min(path.len());
+        path.insert(i, f);
+        self.total += 1;
+        Ok(i)
+    }
+
+    /// Removes index `i` of path `p` (both must exist).
+    pub fn delete(&mut self, p: i64, i: usize) {
+        if let Some(path) = self.paths.get_mut(&p)
+            && i < path.len()
+        {
+            path.remove(i);
+            self.total -= 1;
+        }
+    }
+
+    /// Adds the paths read from a file (none of them defined here), all
+    /// or, when they do not fit, none.
+    pub fn load(&mut self, paths: PathList) -> Result<(), Overflow> {
+        let more: usize = paths.iter().map(|(_, f)| f.len()).sum();
+        if self.total + more > MAX_TOTAL_POSITIONS {
+            return Err(format!(
+                "the file holds {more} position(s) and the path memory {} over all paths, its limit is {MAX_TOTAL_POSITIONS}",
+                self.total
+            ));
+        }
+        for (p, frames) in paths {
+            self.total += frames.len();
+            self.paths.insert(p, frames.into_iter().collect());
+        }
+        Ok(())
+    }
+}
+
 fn path_of(st: &mut RobotState, service: &str, p: i64) -> R<()> {
     if !st.paths.contains_key(&p) {
         return Err(fail(
@@ -36,7 +242,7 @@ pub fn create_path(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Optio
             format!("path {p} is already defined"),
         ));
     }
-    st.paths.insert(p, Vec::new());
+    st.paths.create(p);
     Ok(None)
 }
 
@@ -56,15 +262,15 @@ pub fn insert_position(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<O
     if let Err(e) = Pose::from_rows(f).check_rigid("position") {
         return Err(kin_fail(st, "InsertPosition", &e));
     }
-    let path = st.paths.entry(p).or_default();
-    let i = ((n - 1) as usize).min(path.len());
-    path.insert(i, f);
+    if let Err(msg) = st.paths.insert(p, (n - 1) as usize, f) {
+        return Err(fail(st, "InsertPosition", Exc::PathMemOverflow, msg));
+    }
     Ok(None)
 }
 
 fn position_index(st: &mut RobotState, service: &str, p: i64, n: i64) -> R<usize> {
     path_of(st, service, p)?;
-    let len = st.paths.get(&p).map(Vec::len).unwrap_or(0);
+    let len = st.paths.get(&p).map_or(0, Positions::len);
     if n < 1 || n as usize > len {
         return Err(fail(
             st,
@@ -80,9 +286,7 @@ pub fn delete_position(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<O
     let (p, n) = (a[0].int(), a[1].int());
     require_init(cx, st, "DeletePosition")?;
     let i = position_index(st, "DeletePosition", p, n)?;
-    if let Some(path) = st.paths.get_mut(&p) {
-        path.remove(i);
-    }
+    st.paths.delete(p, i);
     Ok(None)
 }
 
@@ -90,7 +294,9 @@ pub fn value_position(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Op
     let (p, n) = (a[0].int(), a[1].int());
     require_init(cx, st, "ValuePosition")?;
     let i = position_index(st, "ValuePosition", p, n)?;
-    let f = st.paths[&p][i];
+    let Some(&f) = st.paths.get(&p).and_then(|path| path.get(i)) else {
+        unreachable!("position_index checked path {p} position {n}")
+    };
     a[2] = frame_value(&Pose::from_rows(f));
     Ok(None)
 }
@@ -101,7 +307,13 @@ pub fn move_path(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<
     let o = opts(a, 1);
     require_motion(cx, st, "MovePath", &o)?;
     path_of(st, "MovePath", p)?;
-    let frames = st.paths[&p].clone();
+    let frames: Vec<Frame> = st
+        .paths
+        .get(&p)
+        .into_iter()
+        .flat_map(Positions::iter)
+        .copied()
+        .collect();
     if frames.is_empty() {
         return Err(fail(
             st,
@@ -155,7 +367,7 @@ pub fn save_path_system(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<
     let name = a[0].text();
     require_init(cx, st, "SavePathSystem")?;
     let mut text = String::from("adair-paths 1\n");
-    for (p, frames) in &st.paths {
+    for (p, frames) in st.paths.iter() {
         text.push_str(&format!("path {p}\n"));
         for (k, f) in frames.iter().enumerate() {
             text.push_str(&format!("pos {}", k + 1));
@@ -176,9 +388,9 @@ pub fn save_path_system(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<
 
 /// Parses a path file completely; nothing is loaded unless all of it is good.
 /// Paths read from a file: number and frames (rows).
-type PathList = Vec<(i64, Vec<[[f64; 4]; 3]>)>;
+pub type PathList = Vec<(i64, Vec<Frame>)>;
 
-fn parse(text: &str) -> Result<PathList, (usize, String)> {
+pub(crate) fn parse(text: &str) -> Result<PathList, (usize, String)> {
     let mut lines = text
         .lines()
         .enumerate()
@@ -195,7 +407,7 @@ fn parse(text: &str) -> Result<PathList, (usize, String)> {
         None => return Err((1, "the file is empty; expected `adair-paths 1`".into())),
     }
     let mut out: PathList = Vec::new();
-    let mut current: Option<(i64, Vec<[[f64; 4]; 3]>)> = None;
+    let mut current: Option<(i64, Vec<Frame>)> = None;
     for (n, l) in lines {
         let words: Vec<&str> = l.split_whitespace().collect();
         match words.as_slice() {
@@ -224,6 +436,12 @@ fn parse(text: &str) -> Result<PathList, (usize, String)> {
                 let k: usize = num
                     .parse()
                     .map_err(|_| (n, format!("`{num}` is not a position number")))?;
+                if k > MAX_POSITIONS {
+                    return Err((
+                        n,
+                        format!("position {k} is outside PosNo 1 .. {MAX_POSITIONS}"),
+                    ));
+                }
                 if k != frames.len() + 1 {
                     return Err((
                         n,
@@ -308,8 +526,9 @@ pub fn load_path_system(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<
             format!("{name} defines path {p}, which is already defined; nothing was loaded"),
         ));
     }
-    for (p, frames) in paths {
-        st.paths.insert(p, frames);
+    if let Err(msg) = st.paths.load(paths) {
+        let msg = format!("{name}: {msg}; nothing was loaded");
+        return Err(fail(st, "LoadPathSystem", Exc::PathMemOverflow, msg));
     }
     Ok(None)
 }

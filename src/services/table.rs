@@ -445,7 +445,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Paths,
         function: false,
         profile: "(PathNumber : in PathNo; PositionNumber : in PosNo; Position : in Frame)",
-        doc: "Inserts F before position N (beyond the end: appends). Raises PathNotDefined.\nExample:\n  CreatePath (1);\n  InsertPosition (1, 1, Trans (300.0, 0.0, 250.0) * RotY (Rad (180.0)));",
+        doc: "Inserts F before position N (beyond the end: appends). Raises PathNotDefined,\nPathMemOverflow (a path holds 65000 positions, all paths 1000000). Example:\n  CreatePath (1);\n  InsertPosition (1, 1, Trans (300.0, 0.0, 250.0) * RotY (Rad (180.0)));",
         body: Body::Robot(super::paths::insert_position),
     },
     Service {
@@ -495,7 +495,7 @@ pub const SERVICES: &[Service] = &[
         group: Group::Paths,
         function: false,
         profile: "(PathFileName : in String)",
-        doc: "Reads paths from a file: all or nothing. Raises Name_Error, Data_Error,\nPathAlreadyDefined. Example:\n  CreatePath (1);  SavePathSystem (\"paths.txt\");  DeletePath (1);\n  LoadPathSystem (\"paths.txt\");",
+        doc: "Reads paths from a file: all or nothing. Raises Name_Error, Data_Error,\nPathAlreadyDefined, PathMemOverflow. Example:\n  CreatePath (1);  SavePathSystem (\"paths.txt\");  DeletePath (1);\n  LoadPathSystem (\"paths.txt\");",
         body: Body::Robot(super::paths::load_path_system),
     },
     Service {

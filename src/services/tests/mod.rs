@@ -7,6 +7,7 @@
 mod bad_floats;
 mod file_kinds;
 mod gripper;
+mod path_memory;
 mod props;
 mod realtime;
 mod record_table;
