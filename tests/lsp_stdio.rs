@@ -32,13 +32,22 @@ impl Server {
     /// Starts `adair lsp` (its stdlib copy in a folder of its own) and does
     /// the handshake.
     fn start(name: &str) -> Server {
+        Server::start_env(name, |cmd, dir| {
+            cmd.env("XDG_CACHE_HOME", dir);
+        })
+    }
+
+    /// As `start`, with `env` setting the server's environment (given the
+    /// test's own folder).
+    fn start_env(name: &str, env: impl FnOnce(&mut Command, &std::path::Path)) -> Server {
         let dir =
             std::env::temp_dir().join(format!("adair-lsp-stdio-{}-{name}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
-        let mut child = Command::new(env!("CARGO_BIN_EXE_adair"))
+        let mut cmd = Command::new(env!("CARGO_BIN_EXE_adair"));
+        env(&mut cmd, &dir);
+        let mut child = cmd
             .arg("lsp")
-            .env("XDG_CACHE_HOME", &dir)
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())
@@ -212,4 +221,118 @@ fn an_oversized_message_is_skipped_and_the_server_goes_on() {
     assert!(text.contains("64 MiB"), "{log}");
     let (code, err) = s.finish();
     assert_eq!(code, Some(0), "{err}");
+}
+
+/// The file "go to definition" of `InitRobot` opens (the server's copy of
+/// the AdaIR package).
+fn adair_package_file(s: &mut Server) -> std::path::PathBuf {
+    let uri = "file:///work/def.air";
+    s.send(&open(uri, "InitRobot;\n"));
+    s.send(
+        &json!({"jsonrpc": "2.0", "id": 7, "method": "textDocument/definition",
+        "params": {"textDocument": {"uri": uri}, "position": {"line": 0, "character": 3}}}),
+    );
+    let r = s.response(7);
+    let loc = if r["result"].is_array() {
+        r["result"][0].clone()
+    } else {
+        r["result"].clone()
+    };
+    let target = loc["uri"].as_str().unwrap_or_else(|| panic!("{r}"));
+    std::path::PathBuf::from(target.strip_prefix("file://").unwrap())
+}
+
+/// The user id of this process (of a file it creates).
+fn my_uid() -> u32 {
+    use std::os::unix::fs::MetadataExt;
+    let probe = std::env::temp_dir().join(format!("adair-uid-probe-{}", std::process::id()));
+    std::fs::write(&probe, "").unwrap();
+    let u = std::fs::metadata(&probe).unwrap().uid();
+    std::fs::remove_file(&probe).unwrap();
+    u
+}
+
+/// Without `HOME` (and `XDG_CACHE_HOME`) the copy of the predefined library
+/// goes under the shared temporary folder, where another user may have
+/// planted a symbolic link by the name the server uses: it is not
+/// followed (the server wrote through `TMPDIR/adair` into the link's
+/// target). The server uses a folder of its own, created 0700 and ours,
+/// and "go to definition" still opens the AdaIR package there. As root,
+/// a real folder by that name that belongs to someone else is refused too.
+#[test]
+fn the_library_copy_never_follows_a_planted_link() {
+    use std::os::unix::fs::{MetadataExt, PermissionsExt};
+    let me = my_uid();
+    let mut planted = Vec::new();
+    let mut s = Server::start_env("planted", |cmd, dir| {
+        let tmp = dir.join("tmp");
+        let victim = dir.join("victim");
+        std::fs::create_dir_all(&tmp).unwrap();
+        std::fs::create_dir_all(&victim).unwrap();
+        for name in ["adair".to_string(), format!("adair-{me}")] {
+            std::os::unix::fs::symlink(&victim, tmp.join(&name)).unwrap();
+            planted.push(tmp.join(name));
+        }
+        cmd.env_remove("HOME")
+            .env_remove("XDG_CACHE_HOME")
+            .env("TMPDIR", &tmp);
+    });
+    let file = adair_package_file(&mut s);
+    let dir = s.dir.clone();
+    let victim: Vec<_> = std::fs::read_dir(dir.join("victim"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    let text = std::fs::read_to_string(&file).unwrap_or_default();
+    // The folder the server made for itself, under the temporary folder.
+    let own = file
+        .ancestors()
+        .find(|a| a.parent() == Some(&dir.join("tmp")))
+        .map(|a| a.to_path_buf());
+    let meta = own.as_ref().map(|o| std::fs::symlink_metadata(o).unwrap());
+    let links_kept = planted.iter().all(|p| {
+        std::fs::symlink_metadata(p)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    });
+    let (code, err) = s.finish();
+    assert!(victim.is_empty(), "the link was followed: {victim:?}");
+    assert!(links_kept);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        text.contains("package AdaIR"),
+        "{}: {text:.200}",
+        file.display()
+    );
+    let meta = meta.unwrap_or_else(|| panic!("{} is not under TMPDIR", file.display()));
+    assert!(meta.file_type().is_dir(), "{own:?}");
+    assert_eq!(meta.uid(), me);
+    assert_eq!(meta.permissions().mode() & 0o777, 0o700, "{own:?}");
+
+    if me != 0 {
+        println!("skipped: a folder owned by another user needs root (chown)");
+        return;
+    }
+    let mut s = Server::start_env("foreign", |cmd, dir| {
+        let tmp = dir.join("tmp");
+        let theirs = tmp.join("adair-0");
+        std::fs::create_dir_all(&theirs).unwrap();
+        std::fs::set_permissions(&theirs, std::fs::Permissions::from_mode(0o777)).unwrap();
+        std::os::unix::fs::chown(&theirs, Some(65534), Some(65534)).unwrap();
+        cmd.env_remove("HOME")
+            .env_remove("XDG_CACHE_HOME")
+            .env("TMPDIR", &tmp);
+    });
+    let file = adair_package_file(&mut s);
+    let dir = s.dir.clone();
+    let theirs = std::fs::read_dir(dir.join("tmp").join("adair-0"))
+        .unwrap()
+        .count();
+    let text = std::fs::read_to_string(&file).unwrap_or_default();
+    let (code, err) = s.finish();
+    assert_eq!(theirs, 0, "wrote into a folder of another user");
+    assert!(!file.starts_with(dir.join("tmp").join("adair-0")));
+    assert_eq!(code, Some(0), "{err}");
+    assert!(text.contains("package AdaIR"), "{}", file.display());
 }

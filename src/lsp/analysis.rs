@@ -50,18 +50,78 @@ impl Base {
     }
 
     /// Where the stdlib files go by default: a directory per adair version
-    /// under the user's cache directory (`$XDG_CACHE_HOME/adair`,
-    /// `~/.cache/adair`), or the temporary directory.
-    pub fn default_stdlib_dir() -> PathBuf {
-        let base = std::env::var_os("XDG_CACHE_HOME")
-            .map(PathBuf::from)
-            .filter(|p| p.is_absolute())
-            .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".cache")))
-            .unwrap_or_else(std::env::temp_dir);
-        base.join("adair")
-            .join(env!("CARGO_PKG_VERSION"))
-            .join("stdlib")
+    /// in a folder of the user's own, `adair` under the user's cache
+    /// directory (`$XDG_CACHE_HOME`, `~/.cache`), else `adair-UID` under the
+    /// temporary directory; each must be a directory (not a link) owned by
+    /// this user, and is made private (0700). When neither is, a fresh
+    /// private folder under the temporary directory (a name nobody had:
+    /// `mkdir` never follows a link); `None` when that fails too (the
+    /// stdlib is then served from memory only, and "go to definition" into
+    /// it finds nothing).
+    pub fn default_stdlib_dir() -> Option<PathBuf> {
+        let version = env!("CARGO_PKG_VERSION");
+        let absolute = |v: std::ffi::OsString| Some(PathBuf::from(v)).filter(|p| p.is_absolute());
+        let cache = std::env::var_os("XDG_CACHE_HOME")
+            .and_then(absolute)
+            .or_else(|| {
+                std::env::var_os("HOME")
+                    .and_then(absolute)
+                    .map(|h| h.join(".cache"))
+            });
+        if let Some(dir) = cache.and_then(|c| private_dir(&c.join("adair"), true)) {
+            return Some(dir.join(version).join("stdlib"));
+        }
+        let tmp = std::env::temp_dir();
+        let uid = nix::unistd::geteuid();
+        if let Some(dir) = private_dir(&tmp.join(format!("adair-{uid}")), false) {
+            return Some(dir.join(version).join("stdlib"));
+        }
+        fresh_private_dir(&tmp).map(|d| d.join("stdlib"))
     }
+}
+
+/// `path` as a private folder of this user: created 0700 if missing (and
+/// its parents, when `make_parents`: the user's own cache directory); an
+/// existing one must be a directory, not a symbolic link, and owned by
+/// this user, and loses any permission for others. `None` otherwise: it
+/// may be another user's, planted where a shared folder is expected.
+fn private_dir(path: &Path, make_parents: bool) -> Option<PathBuf> {
+    use std::os::unix::fs::{DirBuilderExt as _, MetadataExt as _, PermissionsExt as _};
+    if make_parents && let Some(parent) = path.parent() {
+        let _ = std::fs::create_dir_all(parent);
+    }
+    match std::fs::DirBuilder::new().mode(0o700).create(path) {
+        Ok(()) => {}
+        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {}
+        Err(_) => return None,
+    }
+    let m = std::fs::symlink_metadata(path).ok()?;
+    if !m.file_type().is_dir() || m.uid() != nix::unistd::geteuid().as_raw() {
+        return None;
+    }
+    if m.mode() & 0o077 != 0 {
+        std::fs::set_permissions(path, std::fs::Permissions::from_mode(0o700)).ok()?;
+    }
+    Some(path.to_path_buf())
+}
+
+/// A new folder under `tmp`, private (0700) from its creation, by a name
+/// that did not exist (`adair-UID-PID-N`).
+fn fresh_private_dir(tmp: &Path) -> Option<PathBuf> {
+    use std::os::unix::fs::DirBuilderExt as _;
+    let uid = nix::unistd::geteuid();
+    let pid = std::process::id();
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.subsec_nanos());
+    (0..100u32).find_map(|k| {
+        let path = tmp.join(format!("adair-{uid}-{pid}-{nanos:x}{k}"));
+        std::fs::DirBuilder::new()
+            .mode(0o700)
+            .create(&path)
+            .ok()
+            .map(|()| path)
+    })
 }
 
 /// A document as checked.

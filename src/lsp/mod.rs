@@ -84,8 +84,8 @@ pub fn run(conn: &Connection, config: Config) -> Result<(), String> {
         .pointer("/capabilities/textDocument/completion/completionItem/snippetSupport")
         .and_then(serde_json::Value::as_bool)
         .unwrap_or(false);
-    let stdlib_dir = config.stdlib_dir.unwrap_or_else(Base::default_stdlib_dir);
-    let base = Base::new(Some(&stdlib_dir));
+    let stdlib_dir = config.stdlib_dir.or_else(Base::default_stdlib_dir);
+    let base = Base::new(stdlib_dir.as_deref());
     let init = serde_json::json!({
         "capabilities": caps,
         "serverInfo": { "name": "adair", "version": env!("CARGO_PKG_VERSION") },
