@@ -205,9 +205,15 @@ impl Sources {
         // diagnostics stays linear in their number.
         match self.line_starts.get(id as usize) {
             Some(starts) => {
-                let start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
+                let line = starts.partition_point(|&x| x as usize <= offset);
+                let start = match starts.get(line.saturating_sub(1)) {
+                    Some(&x) if (x as usize) <= offset && text.is_char_boundary(x as usize) => {
+                        x as usize
+                    }
+                    _ => text[..offset].rfind('\n').map_or(0, |i| i + 1),
+                };
                 let col = text[start..offset].chars().count() + 1;
-                (starts.partition_point(|&x| x as usize <= offset), col)
+                (line, col)
             }
             None => line_col_in(text, offset),
         }
@@ -272,11 +278,31 @@ fn clamp(sources: &Sources, s: Span) -> (FileId, std::ops::Range<usize>) {
 }
 
 /// Renders diagnostics as ariadne reports, in colour only when asked.
+/// How many diagnostics [`render`] shows with their source snippet.
+pub const SHOWN_IN_FULL: usize = 100;
+/// How many it shows at all (the rest are counted).
+pub const SHOWN: usize = 1000;
+
 pub fn render(diags: &[Diagnostic], sources: &Sources, color: bool) -> String {
     use ariadne::{Color, Config, IndexType, Label, Report, ReportKind};
     let mut out = String::new();
     let mut cache = Cache(sources, std::collections::HashMap::new());
-    for d in diags {
+    for (i, d) in diags.iter().enumerate() {
+        // Past the first [`SHOWN_IN_FULL`], a diagnostic is its first line
+        // only, and past [`SHOWN`] a count: mistyped text of any length is
+        // reported in time and output linear in it.
+        if i >= SHOWN {
+            let _ = writeln!(
+                out,
+                "adair: {} more diagnostics not shown (fix the first ones: later ones often follow from them)",
+                diags.len() - SHOWN
+            );
+            break;
+        }
+        if i >= SHOWN_IN_FULL {
+            let _ = writeln!(out, "{}", one_line(d, sources));
+            continue;
+        }
         let primary = clamp(sources, d.span);
         let (line, col) = sources.line_col(d.span.context, d.span.lo());
         // The first line is `FILE:LINE:COL: error: message`, the form editors
@@ -338,6 +364,43 @@ pub fn one_line(d: &Diagnostic, sources: &Sources) -> String {
         col,
     );
     s
+}
+
+#[cfg(test)]
+mod render_tests {
+    use super::*;
+
+    /// Thousands of diagnostics (mistyped text) are shown in output
+    /// linear in their number: the first ones with their snippet, then
+    /// first lines, then a count.
+    #[test]
+    fn many_diagnostics_are_shown_in_bounded_form() {
+        let text = "x\n".repeat(3000);
+        let mut sources = Sources::default();
+        let id = sources.add("many.air", &text);
+        let diags: Vec<Diagnostic> = (0..1500u32)
+            .map(|i| {
+                Diagnostic::stray_char(
+                    Span {
+                        start: 2 * i,
+                        end: 2 * i + 1,
+                        context: id,
+                    },
+                    'x',
+                )
+            })
+            .collect();
+        let out = render(&diags, &sources, false);
+        let firsts = out.lines().filter(|l| l.starts_with("many.air:")).count();
+        assert_eq!(firsts, SHOWN, "{}", &out[..out.len().min(400)]);
+        assert_eq!(out.matches("╭─[").count(), SHOWN_IN_FULL);
+        assert!(out.contains("many.air:101:1: error: unexpected character `x`\n"));
+        assert!(
+            out.ends_with("adair: 500 more diagnostics not shown (fix the first ones: later ones often follow from them)\n"),
+            "{}",
+            &out[out.len().saturating_sub(300)..]
+        );
+    }
 }
 
 #[cfg(test)]

@@ -234,6 +234,22 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                 Ok(Raw::Ge) => Token::Ge,
                 Err(()) => {
                     let c = text.chars().next().unwrap_or('?');
+                    // A run of the same stray character is one mistake (a
+                    // pasted line of `@` or `#`): one diagnostic for it,
+                    // not one per character.
+                    if let Some(prev) = diags.last_mut()
+                        && prev.span.hi() == s
+                        && prev.span.context == file
+                        && prev.message.starts_with("unexpected character")
+                        && src[prev.span.lo()..].starts_with(c)
+                    {
+                        // (Only runs of one character are merged: its first
+                        // is enough to look at.)
+                        prev.span = span(file, prev.span.lo(), e);
+                        let n = (e - prev.span.lo()) / c.len_utf8();
+                        prev.message = format!("unexpected characters `{c}` ({n} of them)");
+                        continue;
+                    }
                     let mut d = Diagnostic::stray_char(sp, c);
                     if c == '@' {
                         d = d.with_hint("`@` (Ada 2022's target name) is not part of AdaIR: write the name again, as in `Count := Count + 1;`");
@@ -501,6 +517,42 @@ mod tests {
                 Token::Semi
             ]
         );
+    }
+
+    #[test]
+    fn a_run_of_one_stray_character_is_one_diagnostic() {
+        // 20,000 `@` pasted in used to be 20,000 diagnostics, each showing
+        // the whole line (minutes of output); a run is one mistake.
+        let src = format!("A {} B @ @ $$", "@".repeat(20_000));
+        let (t, d) = lex(&src, 0);
+        let got: Vec<(String, usize, usize)> = d
+            .iter()
+            .map(|d| {
+                (
+                    d.message.clone(),
+                    d.span.start as usize,
+                    d.span.end as usize,
+                )
+            })
+            .collect();
+        assert_eq!(
+            got,
+            [
+                (
+                    "unexpected characters `@` (20000 of them)".to_string(),
+                    2,
+                    20_002
+                ),
+                ("unexpected character `@`".to_string(), 20_005, 20_006),
+                ("unexpected character `@`".to_string(), 20_007, 20_008),
+                (
+                    "unexpected characters `$` (2 of them)".to_string(),
+                    20_009,
+                    20_011
+                ),
+            ]
+        );
+        assert_eq!(t.len(), 2);
     }
 
     #[test]
