@@ -612,6 +612,7 @@ fn adair_full(args: &[&str], input: &str, out_full: bool) -> Option<(i32, String
 /// end the process with a failure status (1, or 2 after a check error),
 /// never with a panic (101) or an internal error (3), and never with 0.
 #[test]
+#[allow(clippy::print_stdout)] // says when it is skipped
 fn a_full_stdout_or_stderr_is_an_error_exit_not_a_panic() {
     let ok = temp_file("full_ok.air", "Put_Line (\"hi\");\n");
     let raise = temp_file(

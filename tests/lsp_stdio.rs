@@ -260,6 +260,7 @@ fn my_uid() -> u32 {
 /// and "go to definition" still opens the AdaIR package there. As root,
 /// a real folder by that name that belongs to someone else is refused too.
 #[test]
+#[allow(clippy::print_stdout)] // says when it is skipped
 fn the_library_copy_never_follows_a_planted_link() {
     use std::os::unix::fs::{MetadataExt, PermissionsExt};
     let me = my_uid();

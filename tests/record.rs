@@ -178,6 +178,7 @@ fn a_check_error_leaves_an_existing_recording_alone() {
 /// `--record` to a FIFO or a directory is refused before the program runs
 /// (nothing is written into the pipe, and the run does not block on it).
 #[test]
+#[allow(clippy::print_stdout)] // says when it is skipped
 fn a_recording_to_a_fifo_is_refused_before_running() {
     let d = dir("fifo");
     let fifo = d.join("m.csv");

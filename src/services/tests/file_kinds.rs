@@ -197,6 +197,7 @@ fn is_root() -> bool {
 }
 
 #[test]
+#[allow(clippy::print_stdout)] // says when it is skipped
 fn a_device_is_a_use_error_and_stays_a_device() {
     if !is_root() {
         println!("skipped: making a device file (mknod) needs root");
