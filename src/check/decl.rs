@@ -183,6 +183,9 @@ impl Checker {
             }
             DeclKind::SubprogramDecl { spec, import } => {
                 let f = self.subprogram_decl(spec, true);
+                if let (Some(f), None) = (f, import) {
+                    self.elab_flag(f, false, d.span, out);
+                }
                 if let (Some(f), Some(name)) = (f, import) {
                     if !self.known_builtin(name) {
                         self.err(Diagnostic::name(
@@ -203,7 +206,11 @@ impl Checker {
                     self.imports[f as usize] = Some(name.clone());
                 }
             }
-            DeclKind::SubprogramBody(b) => self.subprogram_body(b),
+            DeclKind::SubprogramBody(b) => {
+                if let Some(f) = self.subprogram_body(b) {
+                    self.elab_flag(f, true, d.span, out);
+                }
+            }
             DeclKind::PackageSpec(p) => self.package_spec(p, out),
             DeclKind::PackageBody(p) => self.package_body(p, out),
             DeclKind::Use(names) => self.use_clause(names),
@@ -881,10 +888,56 @@ impl Checker {
         Some(id)
     }
 
-    fn subprogram_body(&mut self, b: &ast::SubprogramBody) {
-        let Some(f) = self.subprogram_decl(&b.spec, false) else {
-            return;
+    /// The elaboration of a subprogram declared apart from its body
+    /// (RM 3.11(14)): at the declaration (`body` false) a hidden Boolean
+    /// of the region, False; at the body, True. Nothing for a body
+    /// without an earlier declaration.
+    fn elab_flag(&mut self, f: FuncId, body: bool, span: Span, out: &mut Vec<Stmt>) {
+        let var = match self.elab_flags.get(&f) {
+            Some(v) => *v,
+            None if body => return,
+            None => {
+                let v = self.new_slot();
+                self.elab_flags.insert(f, v);
+                v
+            }
         };
+        let value = self.mk(ExKind::Int(body as i64), BOOLEAN, span);
+        out.push(Stmt {
+            kind: StmtKind::Init(var, value),
+            span,
+        });
+    }
+
+    /// The first statement of the body of `f` when it has an elaboration
+    /// flag: a call before the body was elaborated raises Program_Error
+    /// (RM 3.11(14)), before anything of the body runs, at the
+    /// declaration `span` (the report's call chain shows the call).
+    fn elab_check(&self, f: FuncId, span: Span) -> Option<Stmt> {
+        let var = *self.elab_flags.get(&f)?;
+        let flag = self.mk(ExKind::Var(var), BOOLEAN, span);
+        let name = &self.funcs[f as usize].name;
+        let msg = format!(
+            "access before elaboration: `{name}` was called before its body was elaborated"
+        );
+        let msg = self.mk(ExKind::Str(Rc::from(msg.as_str())), STRING, span);
+        Some(Stmt {
+            kind: StmtKind::If(
+                vec![(
+                    self.mk(ExKind::Not(Box::new(flag)), BOOLEAN, span),
+                    vec![Stmt {
+                        kind: StmtKind::Raise(PROGRAM_ERROR, Some(msg)),
+                        span,
+                    }],
+                )],
+                Vec::new(),
+            ),
+            span,
+        })
+    }
+
+    fn subprogram_body(&mut self, b: &ast::SubprogramBody) -> Option<FuncId> {
+        let f = self.subprogram_decl(&b.spec, false)?;
         if let Some((end, sp)) = &b.end_name {
             let name = b.spec.name.display();
             if end.eq_ignore_ascii_case(&name) {
@@ -927,6 +980,7 @@ impl Checker {
                 .with_hint("a function must return a value on every path: add `return Value;`"),
             );
         }
+        Some(f)
     }
 
     /// Checks the body of subprogram `f` (a subprogram, a task body, a
@@ -993,7 +1047,8 @@ impl Checker {
             };
         }
         self.masters.push(false);
-        let mut elab = Vec::new();
+        let decl_span = self.funcs[f as usize].span;
+        let mut elab: Vec<Stmt> = self.elab_check(f, decl_span).into_iter().collect();
         self.decls_completed(decls, &mut elab);
         self.parts_here = kind == BodyKind::Subprogram && main;
         let inner = self.block(body);

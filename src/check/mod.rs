@@ -210,6 +210,11 @@ pub struct Checker {
     library_tasks: bool,
     /// The devices address clauses bind to (`--devices`, or the default set).
     pub devices: Rc<crate::devices::Devices>,
+    /// Subprograms declared before their bodies: the hidden Boolean that
+    /// says whether the body has been elaborated (RM 3.11(14)), an object
+    /// of the declaration's declarative region, False from the declaration
+    /// on, True from the body on. The body begins by checking it.
+    elab_flags: HashMap<FuncId, Var>,
 }
 
 /// A node of the expression being checked: its source range and its kind.
@@ -282,6 +287,7 @@ impl Checker {
             prot_bodied: Vec::new(),
             library_tasks: false,
             devices: Rc::new(crate::devices::Devices::default_set()),
+            elab_flags: HashMap::new(),
         };
         c.standard();
         c
