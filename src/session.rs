@@ -667,6 +667,10 @@ pub fn rehearse(
     // The rehearsal must not eat the real run's input: it reads none.
     s.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
     s.set_driver(desc.clone(), Box::new(sim), None, false);
+    if let Some(st) = s.robot_state_mut() {
+        // A `TeachBox` cannot be rehearsed: it says so.
+        st.rehearsal = true;
+    }
     s.checker.simulator_only = crate::services::SIMULATOR_ONLY;
     let outcome = s.run_source(name, text);
     // A failed rehearsal ends the run before the real one is checked: its

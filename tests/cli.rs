@@ -386,7 +386,7 @@ fn warnings_stop_nothing_unless_strict() {
 fn the_repl_takes_robot_and_refuses_rehearse_without_a_port() {
     let (code, out, err) = adair_stdin(&["repl", "--strict", "--robot", "rm-501"], b":where\n");
     assert_eq!(code, 0, "{out}{err}");
-    assert!(out.starts_with("robot RM-501"), "{out}");
+    assert!(out.starts_with("robot: simulated RM-501"), "{out}");
     let (code, out, err) = adair_stdin(&["repl", "--robot", "bogus"], b"");
     assert_eq!(code, 2);
     assert!(out.is_empty(), "{out}");

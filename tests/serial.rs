@@ -1097,6 +1097,204 @@ end;
     assert_eq!(out, "TRUETRUE 60\n");
 }
 
+/// The REPL on a real arm says which arm is connected on which port (and
+/// `--rehearse` when it is on) in `:where`, as the banner does.
+fn the_repl_names_the_arm_and_its_port() {
+    for (robot, rehearse) in [("rv-m1", true), ("rm-501", false)] {
+        let Some(c) = controller(robot, &[]) else {
+            return;
+        };
+        let mut args = vec![
+            "repl",
+            "--robot",
+            robot,
+            "--serial-timeout",
+            "0.5",
+            "--port",
+            &c.path,
+        ];
+        if rehearse {
+            args.push("--rehearse");
+        }
+        let mut child = Command::new(BIN)
+            .args(&args)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        child
+            .stdin
+            .take()
+            .unwrap()
+            .write_all(b":where\nInitRobot\n:where\n")
+            .unwrap();
+        let out = child.wait_with_output().unwrap();
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        let name = robot.to_ascii_uppercase();
+        let arm = format!(
+            "robot: {name} on {} (serial, 9600 baud){}",
+            c.path,
+            if rehearse { ", --rehearse" } else { "" }
+        );
+        assert!(
+            stdout.contains(&format!("{arm} (not initialised)\n")),
+            "{stdout}"
+        );
+        assert!(stdout.contains(&format!("{arm}\n")), "{stdout}");
+    }
+}
+
+/// A stand-in for the operator at the screen pendant: jogs by each of
+/// `deltas` (degrees), reading the arm's pose first as the pendant does,
+/// and keeps what each jog answered.
+struct Operator {
+    deltas: Vec<[f64; 5]>,
+    answers: std::rc::Rc<std::cell::RefCell<Vec<Result<(), String>>>>,
+}
+
+impl adair::services::Pendant for Operator {
+    fn teach(
+        &mut self,
+        st: &mut adair::services::RobotState,
+        clock: &mut dyn adair::interp::Clock,
+        _text: &str,
+        _refresh: bool,
+        _clear: bool,
+    ) -> Result<(), String> {
+        for d in &self.deltas {
+            adair::services::fresh_pose(st)?;
+            let mut q = st.robot.joints();
+            for j in 0..5 {
+                q[j] += d[j].to_radians();
+            }
+            let r = adair::services::jog(st, clock, q);
+            self.answers.borrow_mut().push(r);
+        }
+        Ok(())
+    }
+}
+
+/// `adair repl --port --rehearse`: `:teach` is not rehearsed on the
+/// stand-in simulator (it failed there: the stand-in has no pendant); it
+/// runs on the arm, and each jog is checked against the limits before it
+/// is sent: the good ones move the arm (their `MJ` lines), the one beyond
+/// J3's lower limit sends nothing. The jogs are in `:record`. A `TeachBox`
+/// typed as an entry is refused in its rehearsal, saying why.
+fn the_repl_teaches_a_real_arm_with_rehearse() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let out = SharedBuf::default();
+    let o2 = out.clone();
+    let mut repl = adair::repl::Repl::new(
+        Box::new(move || Box::new(o2.clone()) as Box<dyn Write>),
+        false,
+    );
+    repl.drive(adair::repl::Drive {
+        port: Some(PortSettings {
+            path: c.path.clone(),
+            baud: 9600,
+            timeout: 0.5,
+        }),
+        rehearse: true,
+        ..Default::default()
+    })
+    .unwrap();
+    let r = repl.entry("InitRobot;");
+    assert!(!r.failed, "{}", r.text);
+    let answers = std::rc::Rc::new(std::cell::RefCell::new(Vec::new()));
+    repl.session.install_pendant(Box::new(Operator {
+        deltas: vec![
+            [10.0, 0.0, 0.0, 0.0, 0.0],
+            [0.0, 0.0, -5.0, 0.0, 0.0],
+            [0.0, 5.0, 0.0, 0.0, 0.0],
+        ],
+        answers: answers.clone(),
+    }));
+    let before = c.received().len();
+    let r = repl.entry("TeachBox (\"jog\");");
+    assert!(
+        r.failed && r.text.contains("the TeachBox cannot be rehearsed"),
+        "{}",
+        r.text
+    );
+    assert!(answers.borrow().is_empty());
+    let r = repl.entry(":teach");
+    assert!(!r.failed, "{}", r.text);
+    let a = answers.borrow().clone();
+    assert!(a[0].is_ok() && a[2].is_ok(), "{a:?}");
+    assert!(a[1].as_ref().is_err_and(|e| e.contains("joint 3")), "{a:?}");
+    let sent = c.received();
+    let moves: Vec<&String> = sent[before..]
+        .iter()
+        .filter(|l| l.starts_with("MJ"))
+        .collect();
+    assert_eq!(
+        moves,
+        [
+            "MJ +10.0,+0.0,+0.0,+0.0,+0.0",
+            "MJ +0.0,+5.0,+0.0,+0.0,+0.0"
+        ],
+        "{sent:?}"
+    );
+    let csv = std::env::temp_dir().join(format!("adair-teach-{}.csv", std::process::id()));
+    let r = repl.entry(&format!(":record {}", csv.display()));
+    assert!(!r.failed, "{}", r.text);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let _ = std::fs::remove_file(&csv);
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    // The J1 jog's way (0 to 10 degrees) and the J2 jog's end.
+    assert!(
+        rows.iter().any(|r| r[1] > 1.0 && r[1] < 9.0),
+        "the jog is not recorded: {text}"
+    );
+    let last = rows.last().unwrap();
+    assert!(
+        (last[1] - 10.0).abs() < 1e-6 && (last[2] - 5.0).abs() < 1e-6,
+        "{text}"
+    );
+}
+
+/// `adair run --rehearse` of a program that opens the `TeachBox`: its
+/// rehearsal says the box cannot be rehearsed (not that it needs a
+/// terminal), and no motion command is sent.
+fn a_teachbox_program_fails_its_rehearsal_saying_why() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let script =
+        std::env::temp_dir().join(format!("adair-teach-rehearse-{}.air", std::process::id()));
+    std::fs::write(&script, "InitRobot;\nTeachBox (\"jog\");\n").unwrap();
+    let out = Command::new(BIN)
+        .args([
+            "run",
+            "--port",
+            &c.path,
+            "--serial-timeout",
+            "0.5",
+            "--rehearse",
+        ])
+        .arg(&script)
+        .output()
+        .unwrap();
+    let _ = std::fs::remove_file(&script);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(err.contains("the TeachBox cannot be rehearsed"), "{err}");
+    assert!(err.contains("the arm was not moved"), "{err}");
+    let sent = c.received();
+    assert!(
+        sent.iter()
+            .all(|l| ["ER", "RS", "WH"].contains(&l.as_str()) || l.starts_with("TL")),
+        "{sent:?}"
+    );
+}
+
 fn main() {
     let tests: &[(&str, fn())] = &[
         (
@@ -1202,6 +1400,18 @@ fn main() {
             the_controller_speaks_the_units_language,
         ),
         ("the_repl_jogs_a_real_arm", the_repl_jogs_a_real_arm),
+        (
+            "the_repl_names_the_arm_and_its_port",
+            the_repl_names_the_arm_and_its_port,
+        ),
+        (
+            "the_repl_teaches_a_real_arm_with_rehearse",
+            the_repl_teaches_a_real_arm_with_rehearse,
+        ),
+        (
+            "a_teachbox_program_fails_its_rehearsal_saying_why",
+            a_teachbox_program_fails_its_rehearsal_saying_why,
+        ),
         ("sigint_stops_a_real_motion", sigint_stops_a_real_motion),
     ];
     let ptys = nix::pty::openpty(None, None).is_ok();

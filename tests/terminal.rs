@@ -240,6 +240,203 @@ fn repl_teach_opens_the_teachbox_and_the_repl_reads_the_new_pose() {
     t.wait_for("adair> Deg (ValueAxes (1))\n10.0\n");
 }
 
+/// The banner says which arm the REPL drives: here the simulated RM-501
+/// (it said "a simulated RV-M1" whatever the robot or the port).
+fn repl_banner_names_the_arm() {
+    let t = Tmux::start(
+        "adair-banner",
+        &format!(
+            "{} repl --robot rm-501; sleep 60",
+            env!("CARGO_BIN_EXE_adair")
+        ),
+    );
+    t.wait_for("AdaIR on a simulated RM-501.");
+    t.keys(&[":quit", "Enter"]);
+}
+
+/// A virtual controller (`adair sim-controller`) on a pseudo-terminal,
+/// killed by its own pid when dropped.
+struct Unit {
+    child: std::process::Child,
+    path: String,
+    log: std::path::PathBuf,
+}
+
+impl Unit {
+    fn start() -> Unit {
+        use std::io::BufRead;
+        let log = std::env::temp_dir().join(format!("adair-term-unit-{}.log", std::process::id()));
+        let mut child = Command::new(env!("CARGO_BIN_EXE_adair"))
+            .args(["sim-controller", "--time-scale", "0.02", "--log"])
+            .arg(&log)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("adair sim-controller");
+        let mut line = String::new();
+        let out = child.stdout.take().expect("stdout");
+        let _ = std::io::BufReader::new(out).read_line(&mut line);
+        assert!(line.starts_with("/dev/"), "sim-controller: {line:?}");
+        Unit {
+            child,
+            path: line.trim().to_string(),
+            log,
+        }
+    }
+    /// The lines the unit received.
+    fn received(&self) -> Vec<String> {
+        let text = std::fs::read_to_string(&self.log).unwrap_or_default();
+        let mut bytes = String::new();
+        for l in text.lines() {
+            if let Some(i) = l.find(" < ") {
+                bytes.push_str(&l[i + 3..]);
+            }
+        }
+        bytes
+            .split("\\r")
+            .filter(|s| !s.is_empty())
+            .map(str::to_string)
+            .collect()
+    }
+}
+
+impl Drop for Unit {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+        let _ = std::fs::remove_file(&self.log);
+    }
+}
+
+/// `adair repl --port P --rehearse` on a (virtual) arm: the banner names
+/// the arm and its port; `:teach` opens the pendant (it used to be refused:
+/// its rehearsal on the stand-in simulator had no pendant), and each jog
+/// moves the real arm, one `MJ` line each.
+fn repl_teach_moves_a_real_arm_with_rehearse() {
+    let unit = Unit::start();
+    let t = Tmux::start(
+        "adair-realteach",
+        &format!(
+            "{} repl --port {} --rehearse; sleep 60",
+            env!("CARGO_BIN_EXE_adair"),
+            unit.path
+        ),
+    );
+    t.wait_for(&format!(
+        "AdaIR on the RV-M1 on {} (serial, 9600 baud), --rehearse",
+        unit.path
+    ));
+    t.keys(&["InitRobot", "Enter"]);
+    t.keys(&[":teach jog the real arm", "Enter"]);
+    t.wait_for("jog the real arm");
+    t.keys(&["q"]);
+    t.wait_for("J1     5.00 [");
+    t.keys(&["q"]);
+    t.wait_for("J1    10.00 [");
+    t.keys(&["x"]);
+    t.keys(&[":where", "Enter"]);
+    let s = t.wait_for("TCP frame:");
+    assert!(s.contains("J1 =    0.1745 rad    10.000 deg"), "{s}");
+    let jogs: Vec<String> = unit
+        .received()
+        .into_iter()
+        .filter(|l| l.starts_with("MJ +5.0"))
+        .collect();
+    assert_eq!(
+        jogs,
+        ["MJ +5.0,+0.0,+0.0,+0.0,+0.0"; 2],
+        "{:?}",
+        unit.received()
+    );
+}
+
+/// `--trace` while the pendant is open: the jogs' trace lines are held and
+/// written when it closes; written over the pendant they corrupted its
+/// screen (seen: J1 shown as 0.00 while it was at 10.00). In the REPL (the
+/// trace on standard output) and in `adair run` (on standard error).
+fn trace_lines_never_overwrite_the_teachbox() {
+    let prog = script(
+        "teach_trace.air",
+        "InitRobot;\nTeachBox (\"traced jogs\");\nPut_Line (\"after the box\");\n",
+    );
+    for (name, cmd, open) in [
+        ("adair-tracerepl", "repl --trace".to_string(), true),
+        ("adair-tracerun", format!("run --trace {prog}"), false),
+    ] {
+        let t = Tmux::start(
+            name,
+            &format!("{} {cmd}; sleep 60", env!("CARGO_BIN_EXE_adair")),
+        );
+        if open {
+            t.wait_for("adair>");
+            t.keys(&["InitRobot", "Enter"]);
+            t.keys(&[":teach traced jogs", "Enter"]);
+        }
+        t.wait_for("traced jogs");
+        t.keys(&["q"]);
+        t.wait_for("J1     5.00 [");
+        t.keys(&["q"]);
+        let s = t.wait_for("J1    10.00 [");
+        // Give a trace line time to arrive, then look again.
+        std::thread::sleep(Duration::from_millis(300));
+        let s2 = t.screen();
+        for s in [&s, &s2] {
+            assert!(
+                !s.contains("TeachBox jog"),
+                "{cmd}: a trace line on the pendant:\n{s}"
+            );
+            assert!(s.contains("J1    10.00 ["), "{cmd}:\n{s}");
+        }
+        t.keys(&["x"]);
+        let s = t.wait_for("TeachBox jog: (5.00, 0.00, 0.00, 0.00, 0.00) -> (10.00,");
+        assert!(
+            s.contains("TeachBox jog: (0.00, 0.00, 0.00, 0.00, 0.00) -> (5.00,"),
+            "{s}"
+        );
+    }
+}
+
+/// tasks.md: another task that moves the arm while the TeachBox is open
+/// meets `RobotBusy` (it used to wait, then move); a motion after the box
+/// has closed works.
+fn another_tasks_motion_while_the_teachbox_is_open_is_robot_busy() {
+    let prog = script(
+        "teach_busy.air",
+        "task Other is\n   entry Go;\nend Other;\n\ntask body Other is\nbegin\n   accept Go;\n   delay 0.2;\n   begin\n      MoveAxesRelative ((Rad (1.0), 0.0, 0.0, 0.0, 0.0));\n      Put_Line (\"Other moved\");\n   exception\n      when RobotBusy => Put_Line (\"Other: RobotBusy\");\n   end;\n   delay 600.0;\n   MoveAxesRelative ((Rad (1.0), 0.0, 0.0, 0.0, 0.0));\n   Put_Line (\"Other moved later, J1 =\" & Integer'Image (Integer (Deg (ValueAxes (1)))));\nend Other;\n\nInitRobot;\nOther.Go;\nTeachBox (\"busy\");\nPut_Line (\"box closed\");\n",
+    );
+    let t = Tmux::start(
+        "adair-busy",
+        &format!("{} run {prog}; sleep 60", env!("CARGO_BIN_EXE_adair")),
+    );
+    t.wait_for("busy");
+    t.keys(&["q"]);
+    t.wait_for("J1     5.00 [");
+    // The operator keeps the box open for a while.
+    std::thread::sleep(Duration::from_millis(500));
+    t.keys(&["x"]);
+    let s = t.wait_for("Other moved later");
+    assert!(s.contains("Other: RobotBusy"), "{s}");
+    assert!(!s.contains("Other moved\n"), "{s}");
+    assert!(s.contains("Other moved later, J1 = 6"), "{s}");
+}
+
+/// Ctrl-C at the pendant leaves it, as `x` does, and moves nothing (it was
+/// taken as `c` and closed the hand, which on a real arm grips whatever is
+/// between the jaws).
+fn ctrl_c_leaves_the_teachbox_and_moves_nothing() {
+    let prog = script(
+        "teach_ctrl_c.air",
+        "InitRobot;\nTeachBox (\"press Ctrl-C\");\nPut_Line (\"left with the hand at\" & Integer'Image (Integer (ValueTool.CurrDist)));\n",
+    );
+    let t = Tmux::start(
+        "adair-teachctrlc",
+        &format!("{} run {prog}; sleep 60", env!("CARGO_BIN_EXE_adair")),
+    );
+    t.wait_for("press Ctrl-C");
+    t.keys(&["C-c"]);
+    t.wait_for("left with the hand at 60");
+}
+
 fn tmux_available() -> bool {
     Command::new("tmux")
         .arg("-V")
@@ -269,6 +466,23 @@ fn main() {
         (
             "repl_teach_opens_the_teachbox_and_the_repl_reads_the_new_pose",
             repl_teach_opens_the_teachbox_and_the_repl_reads_the_new_pose,
+        ),
+        ("repl_banner_names_the_arm", repl_banner_names_the_arm),
+        (
+            "repl_teach_moves_a_real_arm_with_rehearse",
+            repl_teach_moves_a_real_arm_with_rehearse,
+        ),
+        (
+            "trace_lines_never_overwrite_the_teachbox",
+            trace_lines_never_overwrite_the_teachbox,
+        ),
+        (
+            "another_tasks_motion_while_the_teachbox_is_open_is_robot_busy",
+            another_tasks_motion_while_the_teachbox_is_open_is_robot_busy,
+        ),
+        (
+            "ctrl_c_leaves_the_teachbox_and_moves_nothing",
+            ctrl_c_leaves_the_teachbox_and_moves_nothing,
         ),
     ];
     let have_tmux = tmux_available();

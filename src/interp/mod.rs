@@ -105,6 +105,16 @@ pub trait Services {
     fn busy_until(&self) -> f64 {
         0.0
     }
+    /// Until when (virtual time) the TeachBox was open: with tasks, a
+    /// motion service another task calls before then does not wait (it
+    /// raises `RobotBusy`), any other service waits for it.
+    fn teach_until(&self) -> f64 {
+        f64::NEG_INFINITY
+    }
+    /// Whether service `index` moves the arm or the hand.
+    fn moves_the_arm(&self, _index: u32) -> bool {
+        false
+    }
 }
 
 /// The narrow part of a run that a service may use: the clock, the place

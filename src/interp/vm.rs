@@ -2132,8 +2132,17 @@ impl<'a> Run<'a> {
     /// Until when the robot is busy for service `f`: another task's
     /// motion, or a `Control => True` motion still running (except for
     /// `EndRobot`, which raises ControlCommandActive then, services.md).
+    /// While the TeachBox is open a motion service does not wait: it
+    /// raises `RobotBusy` (tasks.md); any other service waits for the box.
     fn robot_free_at(&self, f: FuncId) -> f64 {
         let end_robot = self.c.imports[f as usize].as_deref() == Some("EndRobot");
+        if let Some(s) = self.svc.as_deref()
+            && let Some(Some(Binding::Service(i))) = self.m.natives.get(f as usize)
+            && s.moves_the_arm(*i)
+            && self.m.clock.now() < s.teach_until()
+        {
+            return f64::NEG_INFINITY;
+        }
         let busy = match self.svc.as_deref() {
             Some(s) if !end_robot => s.busy_until(),
             _ => 0.0,

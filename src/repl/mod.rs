@@ -448,6 +448,9 @@ impl Repl {
             },
             // `:teach [TEXT]` is the `TeachBox` service with the user's text,
             // run as an entry: the same pendant, limits, trace and clock.
+            // With `--rehearse` it is not rehearsed (the operator's jogs
+            // cannot be): it runs on the arm, and each jog is checked
+            // against the limits before it is sent, one by one.
             "teach" => {
                 let rest = cmd.trim_start().strip_prefix(head).unwrap_or("").trim();
                 let text = if rest.is_empty() {
@@ -455,7 +458,10 @@ impl Repl {
                 } else {
                     rest
                 };
-                self.entry(&format!("TeachBox (\"{}\");", text.replace('"', "\"\"")))
+                let rehearse = std::mem::replace(&mut self.rehearse, false);
+                let reply = self.entry(&format!("TeachBox (\"{}\");", text.replace('"', "\"\"")));
+                self.rehearse = rehearse;
+                reply
             }
             "devices" => match &self.session.machine.world {
                 Some(w) => ok(w.describe()),
@@ -637,14 +643,51 @@ impl Repl {
         Some(s)
     }
 
+    /// Which arm the REPL drives and how: `simulated RV-M1`, or `RV-M1 on
+    /// /dev/ttyUSB0 (serial, 9600 baud)` and `--rehearse` when it is on
+    /// (`long`: with what it means, for the banner).
+    pub fn arm(&self, long: bool) -> String {
+        let name = match self.session.robot_state() {
+            Some(st) => st.kin.description().name().to_string(),
+            None => self.robot.to_ascii_uppercase(),
+        };
+        match &self.port {
+            None => format!("simulated {name}"),
+            Some(p) => {
+                let rehearse = match (self.rehearse, long) {
+                    (false, _) => "",
+                    (true, false) => ", --rehearse",
+                    (true, true) => {
+                        ", --rehearse: each entry runs on the simulator first, and moves the arm only if that raises nothing"
+                    }
+                };
+                format!("{name} on {} (serial, {} baud){rehearse}", p.path, p.baud)
+            }
+        }
+    }
+
+    /// The first line of the interactive REPL.
+    pub fn banner(&self) -> String {
+        let arm = self.arm(true);
+        let on = if self.port.is_some() {
+            format!("the {arm}")
+        } else {
+            format!("a {arm}")
+        };
+        format!(
+            "adair {}: AdaIR on {on}. :help lists the services, :quit leaves.",
+            env!("CARGO_PKG_VERSION")
+        )
+    }
+
     fn where_text(&self) -> String {
         let Some(st) = self.session.robot_state() else {
             return "no robot\n".into();
         };
         let q = st.robot.read_joints();
         let mut s = format!(
-            "robot {}{}\n",
-            st.kin.description().name(),
+            "robot: {}{}\n",
+            self.arm(false),
             if st.initialized {
                 ""
             } else {
@@ -890,7 +933,10 @@ pub fn exception_doc(name: &str) -> Option<String> {
         ),
         ("PathMemOverflow", "the controller's path memory is full"),
         ("PathNotDefined", "a path number that was never created"),
-        ("RobotBusy", "the robot is busy with another command"),
+        (
+            "RobotBusy",
+            "a task calls a motion service while the TeachBox is open (another task has it)",
+        ),
         (
             "SystemNotInitialized",
             "a service called before InitRobot (or after EndRobot)",

@@ -10,7 +10,7 @@ use crate::kinematics::{Joints, Pose, deg, joints_to_deg, rad};
 use crate::services::{Pendant, RobotState};
 use ratatui::Terminal;
 use ratatui::backend::CrosstermBackend;
-use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind};
+use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind, KeyModifiers};
 use ratatui::crossterm::execute;
 use ratatui::crossterm::terminal::{
     EnterAlternateScreen, LeaveAlternateScreen, disable_raw_mode, enable_raw_mode,
@@ -56,7 +56,22 @@ const KEYS: [(char, char, &str, &str); 5] = [
 ];
 
 impl TermPendant {
+    /// The arm's pose now (a fresh `WH` on a real arm): false, with the
+    /// reason on the screen, when it cannot be read.
+    fn fresh(&mut self, st: &mut RobotState) -> bool {
+        match crate::services::fresh_pose(st) {
+            Ok(()) => true,
+            Err(e) => {
+                self.message = format!("cannot read the arm's pose: {e}");
+                false
+            }
+        }
+    }
+
     fn jog_joint(&mut self, st: &mut RobotState, clock: &mut dyn Clock, j: usize, sign: f64) {
+        if !self.fresh(st) {
+            return;
+        }
         let mut q = st.robot.joints();
         q[j] += sign * rad(STEPS[self.step]);
         let spec = &st.kin.description().joints()[j];
@@ -79,6 +94,9 @@ impl TermPendant {
         axis: usize,
         sign: f64,
     ) {
+        if !self.fresh(st) {
+            return;
+        }
         match cartesian_target(st, axis, sign * STEPS[self.step]) {
             Ok(q) => self.go(st, clock, q),
             Err(e) => {
@@ -132,17 +150,9 @@ impl TermPendant {
             KeyCode::Char('{') => self.position = self.position.saturating_sub(1),
             KeyCode::Char('p') => self.store(st),
             KeyCode::Char('o') | KeyCode::Char('c') => {
-                let g = *st.kin.description().gripper();
-                let r = if c == KeyCode::Char('o') {
-                    st.robot.move_gripper(g.opening_max, None)
-                } else {
-                    st.robot.move_gripper(g.opening_min, Some(st.force_setting))
-                };
-                self.message = match r {
-                    Ok(_) => {
-                        let s = crate::services::grip_reading(st);
-                        format!("hand: opening {:.1} mm, force {:.1} N", s.opening, s.force)
-                    }
+                let open = c == KeyCode::Char('o');
+                self.message = match crate::services::jog_hand(st, clock, open) {
+                    Ok(s) => format!("hand: opening {:.1} mm, force {:.1} N", s.opening, s.force),
                     Err(e) => format!("hand refused: {e}"),
                 };
             }
@@ -309,7 +319,7 @@ impl TermPendant {
 /// an 80-column terminal.
 const LEGEND: [&str; 2] = [
     "[ ] path  { } position  p store  m joint/Cartesian",
-    "+ - step  < > speed  x or Esc leave",
+    "+ - step  < > speed  x, Esc or Ctrl-C leave",
 ];
 
 /// The joints for a Cartesian jog by `amount` (mm, or degrees for pitch and
@@ -393,6 +403,16 @@ impl Pendant for TermPendant {
                 }
                 draw = true;
                 match event::read().map_err(|e| e.to_string())? {
+                    // Ctrl-C leaves, as x does (it is not `c`, which
+                    // closes the hand); other control keys do nothing.
+                    Event::Key(k)
+                        if k.kind == KeyEventKind::Press
+                            && k.modifiers.contains(KeyModifiers::CONTROL)
+                            && k.code == KeyCode::Char('c') =>
+                    {
+                        return Ok(());
+                    }
+                    Event::Key(k) if k.modifiers.contains(KeyModifiers::CONTROL) => {}
                     Event::Key(k)
                         if k.kind == KeyEventKind::Press && self.key(st, clock, k.code) =>
                     {

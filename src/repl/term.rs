@@ -288,11 +288,7 @@ pub fn interactive_on(color: bool, drive: super::Drive) -> i32 {
         let _ = editor.load_history(h);
     }
     let mut out = std::io::stdout();
-    let _ = writeln!(
-        out,
-        "adair {}: AdaIR on a simulated RV-M1. :help lists the services, :quit leaves.",
-        env!("CARGO_PKG_VERSION")
-    );
+    let _ = writeln!(out, "{}", repl.banner());
     // The lines of an entry that is not finished yet (an open `loop`, `if`,
     // `declare`, subprogram or package).
     let mut pending = String::new();

@@ -38,6 +38,7 @@ excs! {
     PathElementNotDefined = "ADAIR.PATHELEMENTNOTDEFINED",
     PathMemOverflow = "ADAIR.PATHMEMOVERFLOW",
     PathNotDefined = "ADAIR.PATHNOTDEFINED",
+    RobotBusy = "ADAIR.ROBOTBUSY",
     SystemNotInitialized = "ADAIR.SYSTEMNOTINITIALIZED",
     TimeInvalid = "ADAIR.TIMEINVALID",
     UserInfoInvalid = "ADAIR.USERINFOINVALID",

@@ -59,6 +59,12 @@ pub struct RobotState {
     pub stopped: Option<String>,
     /// The device object (tasks.md) between the simulated jaws.
     pub held: Option<String>,
+    /// The program's time at which the TeachBox last closed: it was open
+    /// until then, and another task's motion service called before then
+    /// raises `RobotBusy` (tasks.md "Robot services from several tasks").
+    pub teach_until: f64,
+    /// This state is a rehearsal's stand-in for a real arm.
+    pub rehearsal: bool,
 }
 
 /// How a service ends early: an exception, or the user's stop.
@@ -70,8 +76,19 @@ pub type ServiceFn = fn(&mut Cx, &mut RobotState, &mut [Value]) -> R<Option<Valu
 
 impl Services for RobotState {
     fn call(&mut self, index: u32, cx: &mut Cx, args: &mut [Value]) -> R<Option<Value>> {
-        match SERVICES.get(index as usize).map(|s| s.body) {
-            Some(table::Body::Robot(f)) => f(cx, self, args),
+        match SERVICES.get(index as usize).map(|s| (s.body, s.import)) {
+            // While the TeachBox is open, another task's motion is refused.
+            Some((_, name))
+                if MOVES_THE_ARM.contains(&name) && cx.clock.now() < self.teach_until =>
+            {
+                let msg = format!(
+                    "{name} while the TeachBox is open (until t = {:.3} s, now {:.3} s): the operator has the arm",
+                    self.teach_until,
+                    cx.clock.now()
+                );
+                Err(fail(self, name, Exc::RobotBusy, msg))
+            }
+            Some((table::Body::Robot(f), _)) => f(cx, self, args),
             _ => Err(ServiceFault::Raise(
                 crate::check::PROGRAM_ERROR,
                 format!("no robot service number {index}"),
@@ -81,7 +98,31 @@ impl Services for RobotState {
     fn busy_until(&self) -> f64 {
         self.busy_until
     }
+    fn teach_until(&self) -> f64 {
+        self.teach_until
+    }
+    fn moves_the_arm(&self, index: u32) -> bool {
+        SERVICES
+            .get(index as usize)
+            .is_some_and(|s| MOVES_THE_ARM.contains(&s.import))
+    }
 }
+
+/// The motion services (import names): the ones that move the arm or the
+/// hand. While the TeachBox is open, another task's call of one raises
+/// `RobotBusy` (tasks.md); any other service waits for the box to close.
+pub const MOVES_THE_ARM: &[&str] = &[
+    "InitRobot",
+    "EndRobot",
+    "CalibrateRobot",
+    "MoveTool",
+    "MoveAxesAbsolute",
+    "MoveAxesRelative",
+    "MoveFrameAbsolute",
+    "MoveFrameRelative",
+    "MovePath",
+    "TeachBox",
+];
 
 /// The screen teach pendant behind the `TeachBox` service. The terminal
 /// code lives in `repl::teach`; the services only call this trait.
@@ -140,6 +181,8 @@ impl RobotState {
             excs,
             stopped: None,
             held: None,
+            teach_until: f64::NEG_INFINITY,
+            rehearsal: false,
         }
     }
 }
@@ -169,6 +212,7 @@ impl RobotState {
         st.paths = self.paths.clone();
         st.error_status = self.error_status;
         st.force_setting = self.force_setting;
+        st.rehearsal = true;
         st
     }
 }
@@ -185,6 +229,20 @@ fn standard_tool(kin: &Kinematics) -> Tool {
 }
 
 pub use table::{Group, SERVICES, Service};
+
+/// The trace lines written while the teach pendant is open.
+#[derive(Clone, Default)]
+struct Held(Rc<std::cell::RefCell<Vec<u8>>>);
+
+impl Write for Held {
+    fn write(&mut self, b: &[u8]) -> std::io::Result<usize> {
+        self.0.borrow_mut().extend_from_slice(b);
+        Ok(b.len())
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
 
 /// The import names of the services only the simulator has: on a real arm,
 /// and in the rehearsal that stands in for it, they raise
@@ -255,6 +313,8 @@ fn wait_for_control(cx: &mut Cx, st: &mut RobotState, service: &str) -> R<()> {
                 st.busy_until = cx.clock.now();
                 let reached = interpolate(&before, &points, (st.busy_until - start) / duration);
                 let _ = st.robot.move_joints(&[reached], 0.0);
+                // Recorded whole when it started: it ends here.
+                record::cut(st, st.busy_until, reached);
                 return Err(stop(
                     cx,
                     st,
@@ -398,6 +458,10 @@ fn perform(
         if done < 1.0 {
             let reached = interpolate(&before, points, done);
             let _ = st.robot.move_joints(&[reached], duration * done);
+            // The recording holds the motion up to where the arm stopped.
+            let start = cx.clock.now();
+            record::motion(st, start, &before, points, duration);
+            record::cut(st, start + duration * done, reached);
             cx.clock.sleep(duration * done);
             let what = format!("after {:.3} of {duration:.3} s", duration * done);
             return Err(stop(cx, st, service, &what));
@@ -420,9 +484,14 @@ fn perform(
                 Ok(()) => {}
                 Err(crate::driver::DriverError::Interrupted) => {
                     let _ = st.robot.stop_motion();
+                    // Recorded up to the stop, ending at the target of the
+                    // line the unit finishes.
+                    let now = cx.clock.now();
+                    record::motion(st, start, &before, points, duration);
+                    record::cut(st, now, st.robot.joints());
                     let what = format!(
                         "{:.3} s into the motion; the unit finishes the line it has",
-                        cx.clock.now() - start
+                        now - start
                     );
                     return Err(stop(cx, st, service, &what));
                 }
@@ -453,8 +522,17 @@ fn perform(
     Ok(())
 }
 
-/// A jog of the teach pendant to `target`: checked against the limits,
-/// timed at the current velocity, driven, clocked and traced like a
+/// The arm's pose as it is now, before the teach pendant computes a jog:
+/// on a real arm that may have been moved by hand, a fresh `WH` (as every
+/// motion service reads it, robots.md "The arm moved outside the program").
+pub fn fresh_pose(st: &mut RobotState) -> Result<(), String> {
+    st.robot.refresh().map_err(|e| e.to_string())
+}
+
+/// A jog of the teach pendant to `target`: checked against the limits
+/// before anything is sent (on a real arm each jog is one motion, checked
+/// on its own), timed at the current velocity, driven, clocked, recorded
+/// (`--record`, `--plot`, the REPL's `:record`) and traced like a
 /// program's joint motion.
 pub fn jog(st: &mut RobotState, clock: &mut dyn Clock, target: Joints) -> Result<(), String> {
     let from = st.robot.joints();
@@ -470,6 +548,7 @@ pub fn jog(st: &mut RobotState, clock: &mut dyn Clock, target: Joints) -> Result
     if !st.robot.real_time() {
         clock.sleep(d);
     }
+    record::motion(st, start, &from, &[target], d);
     if st.trace.is_some() {
         let to = st.robot.joints();
         let (p, q) = (tcp_mm(st, &from), tcp_mm(st, &to));
@@ -483,6 +562,40 @@ pub fn jog(st: &mut RobotState, clock: &mut dyn Clock, target: Joints) -> Result
         }
     }
     Ok(())
+}
+
+/// The teach pendant's hand key: open fully, or close with the force
+/// setting; clocked, recorded and traced as `MoveTool` is. Returns the
+/// hand's reading.
+pub fn jog_hand(
+    st: &mut RobotState,
+    clock: &mut dyn Clock,
+    open: bool,
+) -> Result<crate::driver::GripperState, String> {
+    let g = *st.kin.description().gripper();
+    let before = st.robot.gripper();
+    let moved = if open {
+        st.robot.move_gripper(g.opening_max, None)
+    } else {
+        st.robot.move_gripper(g.opening_min, Some(st.force_setting))
+    }
+    .map_err(|e| e.to_string())?;
+    // The jaws move at 100 mm/s at full velocity (as `MoveTool`).
+    let d = (before.opening - moved.opening).abs() / (100.0 * st.velocity / 100.0).max(1e-6);
+    let start = clock.now();
+    if !st.robot.real_time() {
+        clock.sleep(d);
+    }
+    record::point(st, clock.now());
+    let reading = grip_reading(st);
+    if let Some(tr) = &mut st.trace {
+        let _ = writeln!(
+            tr,
+            "[t={start:9.3} s] TeachBox hand: opening {:.1} -> {:.1} mm, force {:.1} N",
+            before.opening, reading.opening, reading.force
+        );
+    }
+    Ok(reading)
 }
 
 /// Wall-clock time, for a real arm: motions take the time they take.
@@ -1099,7 +1212,9 @@ fn value_error_status_f(cx: &mut Cx, st: &mut RobotState, _a: &mut [Value]) -> R
 fn teach_box(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
     let text = a[0].text();
     let (refresh, clear) = (a[1].int() != 0, a[2].int() != 0);
-    require_init(cx, st, "TeachBox")?;
+    // The pendant shows the arm where it is (a real one may have been
+    // moved by hand).
+    require_fresh_pose(cx, st, "TeachBox")?;
     if text.chars().count() > 60 || text.chars().any(|c| c.is_control()) {
         let msg = match text.chars().position(|c| c.is_control()) {
             Some(i) => format!(
@@ -1113,6 +1228,14 @@ fn teach_box(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Valu
         };
         return Err(fail(st, "TeachBox", Exc::UserInfoInvalid, msg));
     }
+    if st.rehearsal {
+        return Err(fail(
+            st,
+            "TeachBox",
+            Exc::CommandNotSupported,
+            "the TeachBox cannot be rehearsed: its jogs are the operator's (the REPL's :teach runs on the arm without a rehearsal, each jog checked against the limits before it is sent)".into(),
+        ));
+    }
     let Some(mut p) = st.pendant.take() else {
         return Err(fail(
             st,
@@ -1121,8 +1244,31 @@ fn teach_box(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Valu
             "the TeachBox needs an interactive terminal (run the program from a terminal, or use the REPL's :teach)".into(),
         ));
     };
+    // Trace lines are held while the pendant has the screen, and written
+    // when it has closed: written over the pendant they would corrupt what
+    // it shows (a joint's value among them).
+    let held = Held::default();
+    let trace = st.trace.take();
+    if trace.is_some() {
+        st.trace = Some(Box::new(held.clone()));
+    }
+    let opened = cx.clock.now();
+    let wall = std::time::Instant::now();
     let result = p.teach(st, &mut *cx.clock, &text, refresh, clear);
     st.pendant = Some(p);
+    st.trace = trace;
+    if let Some(t) = &mut st.trace {
+        let _ = t.write_all(&held.0.borrow());
+        let _ = t.flush();
+    }
+    // The box was open, on the program's clock, for as long as the
+    // operator kept it open (and at least as long as its jogs take): with
+    // tasks, another task that moves the arm meanwhile meets `RobotBusy`.
+    let rest = wall.elapsed().as_secs_f64() - (cx.clock.now() - opened);
+    if rest > 0.0 {
+        cx.clock.sleep(rest);
+    }
+    st.teach_until = cx.clock.now();
     match result {
         Ok(()) => Ok(None),
         Err(msg) => Err(fail(st, "TeachBox", Exc::CommandNotSupported, msg)),

@@ -14,6 +14,7 @@ mod record_table;
 mod save_keeps_file;
 mod scripts;
 mod service_core;
+mod teachbox;
 
 /// A session driving the simulated RV-M1.
 fn rv_m1_session() -> crate::session::Session {
