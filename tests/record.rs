@@ -219,3 +219,102 @@ fn a_recording_to_a_fifo_is_refused_before_running() {
     use std::os::unix::fs::FileTypeExt;
     assert!(kind.is_fifo());
 }
+
+/// Runs `adair [GLOBAL] run SCRIPT --record OUT` on `text`.
+fn run_text(d: &Path, text: &str, out: &str, global: &[&str]) -> std::process::Output {
+    let script = d.join("long.air");
+    std::fs::write(&script, text).unwrap();
+    Command::new(env!("CARGO_BIN_EXE_adair"))
+        .args(global)
+        .arg("run")
+        .arg(&script)
+        .arg("--record")
+        .arg(d.join(out))
+        .output()
+        .unwrap()
+}
+
+/// A motion as long as `Duration'Last` (or at a velocity of 1.0E-6) is
+/// sampled at even intervals, at most a few thousand samples, its start
+/// and end kept: it was sampled every 20 ms, hundreds of billions of rows,
+/// and the run aborted allocating them.
+#[test]
+fn a_very_long_motion_is_thinned_not_sampled_for_ever() {
+    let d = dir("long_motion");
+    for (what, motion) in [
+        (
+            "Time => Duration'Last",
+            "MoveAxesRelative ((0.5, 0.0, 0.0, 0.0, 0.0), Time => Duration'Last);",
+        ),
+        (
+            "SetVelocity (1.0E-6)",
+            "SetVelocity (1.0E-6);\nMoveAxesRelative ((0.5, 0.0, 0.0, 0.0, 0.0));",
+        ),
+    ] {
+        let text = format!(
+            "A : AxesVector;\nInitRobot;\n{motion}\nA := ValueAxes;\n\
+             Put_Line (Float'Image (A (1)));\n"
+        );
+        let o = run_text(&d, &text, "m.csv", &[]);
+        assert_eq!(o.status.code(), Some(0), "{what}: {o:?}");
+        let csv = std::fs::read_to_string(d.join("m.csv")).unwrap();
+        let rows: Vec<Vec<f64>> = csv
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+            .collect();
+        assert!(
+            (100..=5_000).contains(&rows.len()),
+            "{what}: {} rows",
+            rows.len()
+        );
+        let j1 = floats(&String::from_utf8_lossy(&o.stdout))[0].to_degrees();
+        let last = rows.last().unwrap();
+        assert!(
+            close(last[1], j1, 0.01),
+            "{what}: ends at {last:?}, not {j1}"
+        );
+        assert!(last[0] > 1.0e6, "{what}: the end's time {}", last[0]);
+        // Evenly spaced in time (after the rows of InitRobot at 0 s).
+        let moving: Vec<f64> = rows.iter().map(|r| r[0]).filter(|t| *t > 0.0).collect();
+        let gaps: Vec<f64> = moving.windows(2).map(|w| w[1] - w[0]).collect();
+        let (lo, hi) = gaps
+            .iter()
+            .fold((f64::MAX, 0.0f64), |(lo, hi), g| (lo.min(*g), hi.max(*g)));
+        assert!(hi <= lo * 1.01 + 1e-3, "{what}: gaps from {lo} to {hi}");
+    }
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+/// The recording counts against `--max-memory`: 2,000 motions of 40 s
+/// (4 million samples, 320 MB) under a limit of 32M thin the recording
+/// (every other sample, the ends kept) instead of aborting the run.
+#[test]
+fn a_recording_past_max_memory_is_thinned_not_fatal() {
+    let d = dir("max_memory");
+    let text = "InitRobot;\nfor K in 1 .. 1_000 loop\n   \
+                MoveAxesRelative ((0.5, 0.0, 0.0, 0.0, 0.0), Time => 40.0);\n   \
+                MoveAxesRelative ((-0.5, 0.0, 0.0, 0.0, 0.0), Time => 40.0);\n\
+                end loop;\nPut_Line (\"done\");\n";
+    let o = run_text(&d, text, "m.csv", &["--max-memory", "32M"]);
+    assert_eq!(o.status.code(), Some(0), "{o:?}");
+    assert_eq!(String::from_utf8_lossy(&o.stdout), "done\n");
+    let csv = std::fs::read_to_string(d.join("m.csv")).unwrap();
+    let rows: Vec<Vec<f64>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    let _ = std::fs::remove_dir_all(&d);
+    assert!(rows.len() > 1_000, "{} rows", rows.len());
+    assert!(rows.len() < 2_000_000, "{} rows", rows.len());
+    assert_eq!(rows[0][0], 0.0);
+    assert!(
+        close(rows.last().unwrap()[0], 80_000.0, 1.0),
+        "{:?}",
+        rows.last()
+    );
+    for w in rows.windows(2) {
+        assert!(w[1][0] >= w[0][0], "time goes back: {w:?}");
+    }
+}

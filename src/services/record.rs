@@ -30,9 +30,88 @@ fn sample(st: &RobotState, t: f64, q: Joints) -> Sample {
     }
 }
 
+/// The most samples one motion adds, its ends included. A motion longer
+/// than `MAX_PER_MOTION / 2` steps of 20 ms (20 s) is sampled at even
+/// intervals of its duration instead (`Time => Duration'Last` was sampled
+/// every 20 ms: hundreds of billions of samples); more support points than
+/// half of it are thinned evenly, the first and the last kept.
+pub const MAX_PER_MOTION: usize = 2_000;
+
+/// The share of `--max-memory` a recording may take (an eighth): past it,
+/// and whenever the program has used the memory up to its limit, the
+/// recording keeps every other sample ([`thin`]), so it neither takes the
+/// program's memory nor ends the run.
+fn budget() -> usize {
+    crate::interp::memory::limit() / 8
+}
+
+/// Halves a recording: every other sample, the first and the last kept;
+/// the memory freed is given back.
+fn thin(r: &mut Vec<Sample>) {
+    let Some(&last) = r.last() else { return };
+    let mut k = 0usize;
+    r.retain(|_| {
+        k += 1;
+        k % 2 == 1
+    });
+    if r.last() != Some(&last) {
+        r.push(last);
+    }
+    r.shrink_to_fit();
+}
+
+/// Appends `new` to the recording, thinned first when it would pass its
+/// [`budget`] or the memory limit.
+fn add(st: &mut RobotState, new: Vec<Sample>) {
+    let Some(r) = &mut st.record else { return };
+    let size = std::mem::size_of::<Sample>();
+    loop {
+        let after = (r.len() + new.len()).saturating_mul(size);
+        // A vector may double when it grows.
+        let grows = if r.capacity() - r.len() >= new.len() {
+            0
+        } else {
+            after.saturating_mul(2)
+        };
+        let fits = after.saturating_mul(2) <= budget()
+            && crate::interp::memory::room_for(grows.saturating_add(1 << 20));
+        if fits || r.len() <= 2 {
+            break;
+        }
+        thin(r);
+    }
+    r.extend(new);
+}
+
+/// The fractions of a motion to sample: its `n` support points (thinned
+/// evenly when there are too many; the first and last kept) and every
+/// 20 ms of `duration` (at even intervals when the motion is long).
+fn fractions(n: usize, duration: f64) -> Vec<f64> {
+    let half = MAX_PER_MOTION / 2;
+    let mut fracs: Vec<f64> = if n < half {
+        (0..=n).map(|i| i as f64 / n as f64).collect()
+    } else {
+        (0..half)
+            .map(|k| (k * n / (half - 1)) as f64 / n as f64)
+            .collect()
+    };
+    if duration > 0.0 && duration.is_finite() {
+        let steps = (duration / STEP).floor();
+        if steps < half as f64 {
+            let steps = steps as usize;
+            fracs.extend((1..=steps).map(|k| (k as f64 * STEP / duration).min(1.0)));
+        } else {
+            fracs.extend((1..=half).map(|k| k as f64 / half as f64));
+        }
+    }
+    fracs.sort_by(f64::total_cmp);
+    fracs.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    fracs
+}
+
 /// Records a motion from `before` through `points` that starts at `start`
 /// and takes `duration`: sampled every 20 ms plus both ends, and at every
-/// support point.
+/// support point (at most [`MAX_PER_MOTION`] samples, evenly spread).
 pub(super) fn motion(
     st: &mut RobotState,
     start: f64,
@@ -43,15 +122,7 @@ pub(super) fn motion(
     if st.record.is_none() {
         return;
     }
-    let n = points.len().max(1);
-    let mut fracs: Vec<f64> = (0..=n).map(|i| i as f64 / n as f64).collect();
-    if duration > 0.0 {
-        let steps = (duration / STEP).floor() as usize;
-        fracs.extend((1..=steps).map(|k| (k as f64 * STEP / duration).min(1.0)));
-    }
-    fracs.sort_by(f64::total_cmp);
-    fracs.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
-    let new: Vec<Sample> = fracs
+    let new: Vec<Sample> = fractions(points.len().max(1), duration)
         .iter()
         .map(|&f| {
             sample(
@@ -61,9 +132,7 @@ pub(super) fn motion(
             )
         })
         .collect();
-    if let Some(r) = &mut st.record {
-        r.extend(new);
-    }
+    add(st, new);
 }
 
 /// Records the robot's pose now (e.g. after a gripper motion).
@@ -72,7 +141,20 @@ pub(super) fn point(st: &mut RobotState, t: f64) {
         return;
     }
     let s = sample(st, t, st.robot.joints());
+    add(st, vec![s]);
+}
+
+/// Ends a motion that was recorded whole where the arm stopped (Ctrl-C):
+/// the samples after `t` go, and the pose `q` at `t` is the last one.
+pub(super) fn cut(st: &mut RobotState, t: f64, q: Joints) {
+    if st.record.is_none() {
+        return;
+    }
+    let s = sample(st, t, q);
     if let Some(r) = &mut st.record {
+        while r.last().is_some_and(|x| x.t >= t) {
+            r.pop();
+        }
         r.push(s);
     }
 }
@@ -126,6 +208,39 @@ pub fn to_json(samples: &[Sample]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_long_motion_has_at_most_max_per_motion_fractions_evenly_spread() {
+        // A short motion: every 20 ms and each support point.
+        let f = fractions(3, 0.1);
+        assert_eq!(f.len(), 4 + 4, "{f:?}");
+        for (n, d) in [(1, 1.0e12), (1, f64::MAX), (100_000, 5.0), (100_000, 1.0e9)] {
+            let f = fractions(n, d);
+            assert!(f.len() <= MAX_PER_MOTION, "{n} {d}: {}", f.len());
+            assert!(f.len() >= MAX_PER_MOTION / 2, "{n} {d}: {}", f.len());
+            assert_eq!((f[0], *f.last().unwrap()), (0.0, 1.0));
+        }
+        // Not a number of steps: the support points only.
+        assert_eq!(fractions(2, f64::INFINITY), [0.0, 0.5, 1.0]);
+    }
+
+    #[test]
+    fn thinning_keeps_every_other_sample_and_both_ends() {
+        let s = |t: f64| Sample {
+            t,
+            joints: [0.0; 5],
+            tcp: [0.0; 3],
+            grip: 0.0,
+        };
+        let mut r: Vec<Sample> = (0..6).map(|k| s(k as f64)).collect();
+        thin(&mut r);
+        let ts: Vec<f64> = r.iter().map(|x| x.t).collect();
+        assert_eq!(ts, [0.0, 2.0, 4.0, 5.0]);
+        let mut r: Vec<Sample> = (0..5).map(|k| s(k as f64)).collect();
+        thin(&mut r);
+        let ts: Vec<f64> = r.iter().map(|x| x.t).collect();
+        assert_eq!(ts, [0.0, 2.0, 4.0]);
+    }
 
     #[test]
     fn csv_and_json_have_the_keys_in_order() {
