@@ -1295,8 +1295,55 @@ fn a_teachbox_program_fails_its_rehearsal_saying_why() {
     );
 }
 
+/// The REPL's rehearsal stands in for the real arm too: an entry that
+/// calls `PlaceObject` fails its rehearsal with `CommandNotSupported` and
+/// sends no motion line, though its first motion was fine.
+fn the_repl_rehearsal_refuses_a_simulator_only_service() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let mut child = Command::new(BIN)
+        .args([
+            "repl",
+            "--serial-timeout",
+            "0.5",
+            "--port",
+            &c.path,
+            "--rehearse",
+        ])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(
+            b"InitRobot;\nMoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0)); PlaceObject (30.0);\n",
+        )
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains("COMMANDNOTSUPPORTED")
+            && stdout.contains("rehearsal on the simulator failed: the arm was not moved"),
+        "{stdout}"
+    );
+    let sent = c.received();
+    assert!(
+        !sent.iter().any(|l| l.starts_with("MJ +10.0")),
+        "the refused entry moved the arm: {sent:?}"
+    );
+}
+
 fn main() {
     let tests: &[(&str, fn())] = &[
+        (
+            "the_repl_rehearsal_refuses_a_simulator_only_service",
+            the_repl_rehearsal_refuses_a_simulator_only_service,
+        ),
         (
             "a_control_motion_returns_at_once_and_the_next_service_waits",
             a_control_motion_returns_at_once_and_the_next_service_waits,
