@@ -103,10 +103,12 @@ struct Cli {
     #[arg(long, global = true, default_value = "auto", value_parser = ["auto", "always", "never"])]
     color: String,
     /// Memory a program may use (512M, 2G, ...): past it, building a value raises
-    /// Storage_Error where the program asked for it.
-    #[arg(long, global = true, value_name = "SIZE", default_value = "4G",
+    /// Storage_Error where the program asked for it. Default: what the process
+    /// can really have (the least of `ulimit -v`, the cgroup's memory.max and
+    /// the physical memory, less adair's share), at most 4G.
+    #[arg(long, global = true, value_name = "SIZE",
           value_parser = adair::interp::memory::parse_size)]
-    max_memory: usize,
+    max_memory: Option<usize>,
     /// The simulated devices: a TOML device file (see docs/tasks.md). Without it, the
     /// appendix C parallel port at 8#340#.
     #[arg(long, global = true, value_name = "FILE.toml")]
@@ -363,7 +365,10 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    adair::interp::memory::set_limit(cli.max_memory);
+    adair::interp::memory::set_limit(
+        cli.max_memory
+            .unwrap_or_else(adair::interp::memory::default_limit),
+    );
     let devices = match &cli.devices {
         None => None,
         Some(p) => match adair::devices::Devices::load(p) {

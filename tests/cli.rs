@@ -780,3 +780,33 @@ fn unclosed_nested_compound_statements_are_not_retried_exponentially() {
     assert_eq!(status.code(), Some(2), "{err}");
     assert!(err.contains("unclosed_compounds.air:"), "{err}");
 }
+
+/// Under an address-space limit (`ulimit -v`) smaller than the default
+/// 4G, the default `--max-memory` follows it: a program that doubles a
+/// string gets `Storage_Error` at its place; it aborted when an allocation
+/// failed past the real limit.
+#[test]
+fn the_default_memory_limit_follows_ulimit_v() {
+    let grow = temp_file(
+        "grow_ulimit.air",
+        "function Grow (S : String; N : Natural) return Natural is\n\
+         begin\n   if N = 0 then return S'Length; end if;\n   return Grow (S & S, N - 1);\nend Grow;\n\
+         Put_Line (Natural'Image (Grow (\"x\", 40)));\n",
+    );
+    for kib in [1 << 20, 2 << 20] {
+        let out = Command::new("sh")
+            .arg("-c")
+            .arg(format!("ulimit -v {kib} && exec \"$0\" run \"$1\""))
+            .arg(env!("CARGO_BIN_EXE_adair"))
+            .arg(&grow)
+            .env("NO_COLOR", "1")
+            .output()
+            .expect("sh");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "ulimit -v {kib}: {err}");
+        assert!(
+            err.contains("grow_ulimit.air:4:17: error: unhandled exception: raised STORAGE_ERROR : out of memory"),
+            "ulimit -v {kib}: {err}"
+        );
+    }
+}

@@ -14,8 +14,100 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 #[global_allocator]
 static ALLOC: cap::Cap<std::alloc::System> = cap::Cap::new(std::alloc::System, usize::MAX);
 
-/// The default limit: 4 GiB.
+/// The most the default limit is: 4 GiB (also the limit of library use,
+/// such as the tests).
 pub const DEFAULT_LIMIT: usize = 4 << 30;
+
+/// The default `--max-memory`: what the process can really have, less
+/// adair's own share, and at most [`DEFAULT_LIMIT`]. The real limits are the
+/// address-space limit (`ulimit -v`, `RLIMIT_AS`), the cgroup's
+/// `memory.max` (a container's) and the physical memory; past any of them
+/// an allocation fails or the process is killed, where the program should
+/// have had `Storage_Error`.
+pub fn default_limit() -> usize {
+    derive_limit(address_space(), cgroup_max(), physical())
+}
+
+/// The default limit from the real ones, in bytes (`None`: no such
+/// limit). The address space also holds the run's 512 MiB stack, the code
+/// and the allocator's arenas (1 GiB in all is kept for them); and the
+/// allocator's hard cap while a program runs is the limit plus a quarter
+/// plus 256 MiB ([`HardCap`]), which must stay within the real limit.
+pub fn derive_limit(
+    address_space: Option<u64>,
+    cgroup: Option<u64>,
+    physical: Option<u64>,
+) -> usize {
+    let from_as = address_space.map(|a| a.saturating_sub(1 << 30));
+    let Some(real) = [from_as, cgroup, physical].into_iter().flatten().min() else {
+        return DEFAULT_LIMIT;
+    };
+    let fit = real.saturating_sub(256 << 20) / 5 * 4;
+    usize::try_from(fit)
+        .unwrap_or(usize::MAX)
+        .clamp(16 << 20, DEFAULT_LIMIT)
+}
+
+/// The soft `RLIMIT_AS`, when there is one.
+fn address_space() -> Option<u64> {
+    use nix::sys::resource::{RLIM_INFINITY, Resource, getrlimit};
+    let (soft, _) = getrlimit(Resource::RLIMIT_AS).ok()?;
+    (soft != RLIM_INFINITY).then_some(soft)
+}
+
+/// A cgroup memory limit as its file holds it: bytes, or `max` (none).
+pub fn parse_cgroup_limit(text: &str) -> Option<u64> {
+    let t = text.trim();
+    // cgroup v1 writes "no limit" as a page-rounded i64::MAX.
+    t.parse::<u64>().ok().filter(|n| *n < 1 << 62)
+}
+
+/// The lowest `memory.max` of this process's cgroup and those above it
+/// (cgroup v2, from `/proc/self/cgroup`), or cgroup v1's
+/// `memory.limit_in_bytes`.
+fn cgroup_max() -> Option<u64> {
+    let root = std::path::Path::new("/sys/fs/cgroup");
+    let own = std::fs::read_to_string("/proc/self/cgroup")
+        .ok()
+        .and_then(|t| {
+            t.lines().find_map(|l| {
+                l.strip_prefix("0::")
+                    .map(|p| p.trim_start_matches('/').to_string())
+            })
+        })
+        .unwrap_or_default();
+    let mut dir = root.join(own);
+    let mut lowest: Option<u64> = None;
+    loop {
+        if let Some(n) = std::fs::read_to_string(dir.join("memory.max"))
+            .ok()
+            .and_then(|t| parse_cgroup_limit(&t))
+        {
+            lowest = Some(lowest.map_or(n, |l| l.min(n)));
+        }
+        if dir == root || !dir.pop() {
+            break;
+        }
+    }
+    let v1 = std::fs::read_to_string(root.join("memory/memory.limit_in_bytes"))
+        .ok()
+        .and_then(|t| parse_cgroup_limit(&t));
+    [lowest, v1].into_iter().flatten().min()
+}
+
+/// The machine's memory (`MemTotal` of `/proc/meminfo`).
+fn physical() -> Option<u64> {
+    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let kib: u64 = text
+        .lines()
+        .find_map(|l| l.strip_prefix("MemTotal:"))?
+        .trim()
+        .trim_end_matches("kB")
+        .trim()
+        .parse()
+        .ok()?;
+    kib.checked_mul(1024)
+}
 
 static LIMIT: AtomicUsize = AtomicUsize::new(DEFAULT_LIMIT);
 /// Whether runs are capped: set by [`set_limit`] (the command line), not in
@@ -93,7 +185,40 @@ pub fn parse_size(text: &str) -> Result<usize, String> {
 
 #[cfg(test)]
 mod tests {
-    use super::parse_size;
+    use super::{DEFAULT_LIMIT, derive_limit, parse_cgroup_limit, parse_size};
+
+    #[test]
+    fn the_default_limit_is_the_smallest_real_one_less_adairs_share() {
+        const G: u64 = 1 << 30;
+        // No limit anywhere: 4G.
+        assert_eq!(derive_limit(None, None, None), DEFAULT_LIMIT);
+        // A big machine: still 4G.
+        assert_eq!(derive_limit(None, None, Some(64 * G)), DEFAULT_LIMIT);
+        // 2 GiB of RAM: (2G - 256M) * 4/5.
+        assert_eq!(
+            derive_limit(None, None, Some(2 * G)),
+            ((2 * G - (256 << 20)) / 5 * 4) as usize
+        );
+        // The smallest wins, whichever it is.
+        let cg = derive_limit(Some(8 * G), Some(G), Some(16 * G));
+        assert_eq!(cg, derive_limit(None, Some(G), None));
+        assert!(cg < G as usize && cg > (G / 2) as usize, "{cg}");
+        // ulimit -v 2G: 1 GiB of it for stacks and code.
+        let v = derive_limit(Some(2 * G), None, Some(16 * G));
+        assert_eq!(v, ((G - (256 << 20)) / 5 * 4) as usize);
+        // The hard cap (limit + a quarter + 256 MiB) fits what is left.
+        assert!(v + v / 4 + (256 << 20) <= G as usize);
+        // Less than adair needs: the least --max-memory takes.
+        assert_eq!(derive_limit(Some(G), None, None), 16 << 20);
+    }
+
+    #[test]
+    fn cgroup_limits() {
+        assert_eq!(parse_cgroup_limit("max\n"), None);
+        assert_eq!(parse_cgroup_limit("536870912\n"), Some(512 << 20));
+        assert_eq!(parse_cgroup_limit("9223372036854771712\n"), None);
+        assert_eq!(parse_cgroup_limit(""), None);
+    }
 
     #[test]
     fn sizes() {
