@@ -58,3 +58,75 @@ fn sigint_during_a_motion_stops_it_and_exits_130() {
         .unwrap_or(-1.0);
     assert!(j1 > 0.0 && j1 < 60.0, "{stderr}");
 }
+
+/// `adair run --realtime --record r.csv` stopped by Ctrl-C in the middle of
+/// a motion: the CSV holds that motion up to where the arm stopped (its
+/// last row is the pose stderr names), not only the motions before it.
+#[test]
+fn sigint_during_a_recorded_motion_keeps_it_up_to_the_stop() {
+    let dir = std::env::temp_dir().join(format!("adair-sigint-rec-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = dir.join("long.air");
+    let csv = dir.join("r.csv");
+    std::fs::write(
+        &script,
+        "InitRobot;\nMoveAxesAbsolute ((0.2, 0.0, 0.0, 0.0, 0.0), Time => 0.5);\n\
+         Put_Line (\"started\");\n\
+         MoveAxesAbsolute ((2.0, 0.0, 0.0, 0.0, 0.0), Time => 30.0);\n\
+         Put_Line (\"went on (wrong)\");\n",
+    )
+    .unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_adair"))
+        .arg("run")
+        .arg("--realtime")
+        .arg("--record")
+        .arg(&csv)
+        .arg(&script)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Wait for the second motion to be under way.
+    let mut line = String::new();
+    std::io::BufRead::read_line(
+        &mut std::io::BufReader::new(child.stdout.as_mut().unwrap()),
+        &mut line,
+    )
+    .unwrap();
+    assert_eq!(line, "started\n");
+    std::thread::sleep(Duration::from_millis(1000));
+    let status = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(130), "{stderr}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    let stopped_j1: f64 = stderr
+        .split("stopped at (")
+        .nth(1)
+        .and_then(|r| r.split(',').next())
+        .and_then(|x| x.trim().parse().ok())
+        .unwrap_or_else(|| panic!("{stderr}"));
+    let last = rows.last().unwrap();
+    // t, j1 ...: the last row is the stop, about a second into the motion.
+    assert!((last[1] - stopped_j1).abs() < 0.01, "{last:?}\n{stderr}");
+    assert!(last[0] > 0.5 + 0.5 && last[0] < 0.5 + 10.0, "{last:?}");
+    assert!(stopped_j1 > 0.2f64.to_degrees() + 1.0, "{stderr}");
+    // The stopped motion is sampled all the way (a long one at even
+    // intervals of a few tens of ms), in order.
+    let during = rows.iter().filter(|r| r[0] > 0.5 + 1e-9).count();
+    assert!(during >= 10, "{during} rows for {} s", last[0] - 0.5);
+    for w in rows.windows(2) {
+        assert!(w[1][0] >= w[0][0], "time goes back: {w:?}");
+        assert!(w[1][0] - w[0][0] < 0.1, "a gap: {w:?}");
+    }
+}

@@ -351,3 +351,130 @@ fn a_stop_while_waiting_for_a_paced_control_motion_leaves_the_arm_where_it_had_g
     let q = j1(&s);
     assert!((q - 0.5 * t / 1.5).abs() < 0.5 * 0.002, "J1 {q} at {t} s");
 }
+
+/// `--record` of a motion the user stopped (Ctrl-C), paced to the wall
+/// clock or a `Control => True` one being waited for: the recording holds
+/// the motion up to where the arm stopped, every 20 ms, and nothing after
+/// it; its last sample is the arm's pose at the stop.
+#[test]
+fn a_stopped_motion_is_recorded_up_to_where_the_arm_stopped() {
+    for control in [false, true] {
+        let mut s = super::rv_m1_session();
+        s.robot_state_mut().unwrap().record = Some(Vec::new());
+        let setter = stop_after(&mut s, 300);
+        let opts = if control {
+            "Control => True, RealTime => True);\nPut (ValueAxes (1));\n"
+        } else {
+            "RealTime => True);\n"
+        };
+        // An unpaced motion of 0.4 s first, then the paced one of 1.5 s.
+        let text = format!(
+            "InitRobot;\nMoveAxesRelative ((0.0, 0.0, 0.2, 0.0, 0.0), Time => 0.4);\n\
+             MoveAxesRelative ((0.5, 0.0, 0.0, 0.0, 0.0), Time => 1.5, {opts}"
+        );
+        let o = s.run_source("rt.air", &text);
+        setter.join().unwrap();
+        assert!(matches!(o, Outcome::Ok), "{o:?}");
+        assert!(s.take_stopped().is_some(), "{control}: not stopped");
+        let t = s.machine.clock.now();
+        let st = s.robot_state().unwrap();
+        let r = st.record.as_ref().unwrap();
+        let last = r.last().unwrap();
+        assert!(
+            (last.t - t).abs() < 1e-9,
+            "{control}: ends at {} not {t}",
+            last.t
+        );
+        assert_eq!(last.joints, st.robot.joints(), "{control}");
+        assert!(last.joints[0] > 0.01 && last.joints[0] < 0.49, "{control}");
+        let during: Vec<_> = r.iter().filter(|x| x.t > 0.4 + 1e-9).collect();
+        assert!(
+            during.len() + 1 >= ((t - 0.4) / 0.02) as usize,
+            "{control}: {} samples in {} s",
+            during.len(),
+            t - 0.4
+        );
+        for w in r.windows(2) {
+            assert!(w[1].t >= w[0].t, "{control}: time goes back {w:?}");
+        }
+        for w in during.windows(2) {
+            assert!(w[1].joints[0] > w[0].joints[0], "{control}: {w:?}");
+        }
+    }
+}
+
+/// A stand-in real arm whose wait for a motion is interrupted (Ctrl-C).
+struct InterruptedArm(FakeArm);
+
+impl crate::driver::Robot for InterruptedArm {
+    fn description(&self) -> &RobotDescription {
+        self.0.description()
+    }
+    fn joints(&self) -> crate::kinematics::Joints {
+        self.0.joints()
+    }
+    fn read_joints(&self) -> crate::kinematics::Joints {
+        self.0.read_joints()
+    }
+    fn real_time(&self) -> bool {
+        true
+    }
+    fn start_motion(
+        &mut self,
+        points: &[crate::kinematics::Joints],
+        duration: f64,
+    ) -> Result<(), crate::driver::DriverError> {
+        self.0.start_motion(points, duration)
+    }
+    fn wait_motion(&mut self) -> Result<(), crate::driver::DriverError> {
+        self.0.wait_motion()?;
+        Err(crate::driver::DriverError::Interrupted)
+    }
+    fn motion_pending(&self) -> bool {
+        self.0.motion_pending()
+    }
+    fn calibrate(&mut self) -> Result<(), crate::driver::DriverError> {
+        self.0.calibrate()
+    }
+    fn gripper(&self) -> crate::driver::GripperState {
+        self.0.gripper()
+    }
+    fn move_gripper(
+        &mut self,
+        opening: f64,
+        force_limit: Option<f64>,
+    ) -> Result<crate::driver::GripperState, crate::driver::DriverError> {
+        self.0.move_gripper(opening, force_limit)
+    }
+}
+
+#[test]
+fn a_stopped_motion_of_a_real_arm_is_recorded_up_to_the_stop() {
+    let desc = RobotDescription::builtin("rv-m1").unwrap();
+    let arm = InterruptedArm(FakeArm {
+        sim: crate::driver::sim::Simulator::new(desc.clone()),
+        pending: false,
+        waits: Default::default(),
+    });
+    let mut s = Session::new(Box::new(std::io::sink()));
+    s.set_driver(desc, Box::new(arm), None, false);
+    let st = s.robot_state_mut().unwrap();
+    st.record = Some(Vec::new());
+    // InitRobot's own motion would be the one interrupted.
+    st.initialized = true;
+    let o = s.run_source(
+        "arm.air",
+        "MoveAxesRelative ((0.5, 0.0, 0.0, 0.0, 0.0), Time => 30.0);\n",
+    );
+    assert!(matches!(o, Outcome::Ok), "{o:?}");
+    let stopped = s.take_stopped().expect("stopped");
+    assert!(stopped.contains("into the motion"), "{stopped}");
+    let st = s.robot_state().unwrap();
+    let r = st.record.as_ref().unwrap();
+    assert!(!r.is_empty(), "nothing recorded");
+    let last = r.last().unwrap();
+    // Stopped at once: no sample of the 30 s plan after the stop, and the
+    // last is where the driver says the arm ends (its line's target).
+    assert!(last.t < 1.0, "{stopped}: recorded to {}", last.t);
+    assert_eq!(last.joints, st.robot.joints());
+}
