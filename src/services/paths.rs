@@ -601,11 +601,12 @@ fn resolve_links(name: &std::path::Path) -> Result<std::path::PathBuf, FileFault
 /// through (its target is replaced, the link stays); a directory, FIFO,
 /// device or socket is `Use_Error` before anything is written, and so is a
 /// file without write permission (also for root: a file with no write bit
-/// is read-only to adair). The new file keeps the old one's permissions.
+/// is read-only to adair). The new file keeps the old one's permissions,
+/// and its owner and group where this user may give them (root may).
 /// Used by `SavePathSystem`, `--record` and `--plot`.
 pub(crate) fn write_whole(name: &std::path::Path, bytes: &[u8]) -> Result<(), FileFault> {
     use std::io::Write as _;
-    use std::os::unix::fs::{OpenOptionsExt as _, PermissionsExt as _};
+    use std::os::unix::fs::{MetadataExt as _, OpenOptionsExt as _, PermissionsExt as _};
     if name.as_os_str().is_empty() || name.file_name().is_none() {
         return Err((
             Exc::NameError,
@@ -656,6 +657,7 @@ pub(crate) fn write_whole(name: &std::path::Path, bytes: &[u8]) -> Result<(), Fi
         }
     }
     let mode = old.as_ref().map(|m| m.permissions().mode() & 0o777);
+    let owner = old.as_ref().map(|m| (m.uid(), m.gid()));
     let tmp = tmp_path(&target);
     // A killed save's temporary (or anything else but a directory there)
     // is removed, never written through; the new one is created afresh.
@@ -671,6 +673,11 @@ pub(crate) fn write_whole(name: &std::path::Path, bytes: &[u8]) -> Result<(), Fi
             .open(&tmp)?;
         created = true;
         f.write_all(bytes)?;
+        if let Some((uid, gid)) = owner {
+            // The old file's owner and group, where this user may give them
+            // (root may: a file of another user stays theirs).
+            let _ = std::os::unix::fs::fchown(&f, Some(uid), Some(gid));
+        }
         if let Some(mode) = mode {
             // Created under the umask: the old file's bits exactly.
             f.set_permissions(std::fs::Permissions::from_mode(mode))?;

@@ -227,3 +227,25 @@ fn a_device_is_a_use_error_and_stays_a_device() {
     assert!(kind.is_char_device(), "the device was replaced: {kind:?}");
     assert_eq!(left, ["link.paths", "null"]);
 }
+
+/// As root, saving over another user's file leaves it theirs (the new file
+/// gets the old one's owner and group), with its permissions.
+#[test]
+#[allow(clippy::print_stdout)] // says when it is skipped
+fn a_save_as_root_keeps_the_owner_of_the_file() {
+    use std::os::unix::fs::MetadataExt;
+    if !is_root() {
+        println!("skipped: giving a file to another user (chown) needs root");
+        return;
+    }
+    let dir = temp("owner");
+    let f = dir.join("cell.paths");
+    std::fs::write(&f, "adair-paths 1\n").unwrap();
+    std::fs::set_permissions(&f, std::fs::Permissions::from_mode(0o664)).unwrap();
+    std::os::unix::fs::chown(&f, Some(65534), Some(65534)).unwrap();
+    let out = try_file(&dir, &f, false);
+    let m = std::fs::metadata(&f).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert_eq!(out, "done\n");
+    assert_eq!((m.uid(), m.gid(), m.mode() & 0o777), (65534, 65534, 0o664));
+}
