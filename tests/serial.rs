@@ -1338,8 +1338,36 @@ fn the_repl_rehearsal_refuses_a_simulator_only_service() {
     );
 }
 
+/// A pose whose tool elevation `p = 90 - (J2 + J3 + J4)` lies beyond -180
+/// degrees: the unit reports it wrapped by a turn, which is the same pose,
+/// so the fresh `WH` agrees and the joints stand.
+fn a_wrapped_tool_elevation_is_the_same_pose() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let script = "
+InitRobot;
+MoveAxesAbsolute ((0.0, Rad (100.0), Rad (110.0), Rad (90.0), Rad (30.0)));
+declare
+   A : constant AxesVector := ValueAxes;
+begin
+   for J in 1 .. 5 loop
+      Put (Integer'Image (Integer (Deg (A (J)))));
+   end loop;
+   New_Line;
+end;
+";
+    let (o, out, _) = run("rv-m1", Some(&c.path), script);
+    assert!(matches!(o, Outcome::Ok), "{o:?}\n{out}");
+    assert_eq!(out, " 0 100 110 90 30\n", "{:?}", c.received());
+}
+
 fn main() {
     let tests: &[(&str, fn())] = &[
+        (
+            "a_wrapped_tool_elevation_is_the_same_pose",
+            a_wrapped_tool_elevation_is_the_same_pose,
+        ),
         (
             "the_repl_rehearsal_refuses_a_simulator_only_service",
             the_repl_rehearsal_refuses_a_simulator_only_service,

@@ -490,7 +490,9 @@ impl Serial {
         let expected = wh::of_joints(&self.kin, &unit, tl);
         let agrees = (0..5).all(|i| {
             let mut d = (pose[i] - expected[i]).abs();
-            if i == 4 {
+            // The angles `p` and `r` may be reported wrapped by a turn.
+            if i >= 3 {
+                d %= 360.0;
                 d = d.min(360.0 - d);
             }
             d <= 0.1 + 1e-6
