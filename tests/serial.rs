@@ -1362,8 +1362,37 @@ end;
     assert_eq!(out, " 0 100 110 90 30\n", "{:?}", c.received());
 }
 
+/// The operator jogs the arm to a joint limit (the unit's teach box stops
+/// there): `WH`, rounded to 0.1 mm, gives a pose whose joints come out a
+/// rounding past the limit. That is the limit, not `MessageInvalid`.
+fn a_hand_jog_to_a_limit_reads_the_limit() {
+    // InitRobot is 11 lines, the motion WH MJ ER: jog after its ER.
+    let Some(c) = controller("rv-m1", &["--jog-after", "14:+0.0,+0.0,+0.0,+10.0,+0.0"]) else {
+        return;
+    };
+    let script = "
+InitRobot;
+MoveAxesAbsolute ((0.0, Rad (100.0), Rad (110.0), Rad (80.0), Rad (30.0)));
+declare
+   A : constant AxesVector := ValueAxes;
+begin
+   for J in 1 .. 5 loop
+      Put (Integer'Image (Integer (Deg (A (J)))));
+   end loop;
+   New_Line;
+end;
+";
+    let (o, out, _) = run("rv-m1", Some(&c.path), script);
+    assert!(matches!(o, Outcome::Ok), "{o:?}\n{out}");
+    assert_eq!(out, " 0 100 110 90 30\n", "{:?}", c.received());
+}
+
 fn main() {
     let tests: &[(&str, fn())] = &[
+        (
+            "a_hand_jog_to_a_limit_reads_the_limit",
+            a_hand_jog_to_a_limit_reads_the_limit,
+        ),
         (
             "a_wrapped_tool_elevation_is_the_same_pose",
             a_wrapped_tool_elevation_is_the_same_pose,

@@ -126,6 +126,10 @@ impl Link for SerialLink {
     }
 }
 
+/// How far past a limit a joint read from `WH` may come out (0.1 degree:
+/// the reply's rounding of 0.1 mm and 0.1 degree, at the arm's lengths).
+const WH_SLACK: f64 = 0.1 * std::f64::consts::PI / 180.0;
+
 /// A motion the unit has been sent and not yet waited for.
 struct Pending {
     /// Seconds the motion is expected to take (the reply may take as long).
@@ -144,6 +148,9 @@ pub type Opener = Box<dyn FnMut(Unit) -> Result<Box<dyn Link>, DriverError>>;
 /// The serial driver.
 pub struct Serial {
     kin: Kinematics,
+    /// The model with its limits widened by `WH`'s resolution, for reading
+    /// the arm's pose: an arm at a limit may read a rounding past it.
+    wh_kin: Kinematics,
     unit: Unit,
     settings: PortSettings,
     open: Opener,
@@ -193,6 +200,7 @@ impl Serial {
         let sent = desc.to_controller_deg(&nest);
         let opening = desc.gripper().opening_max;
         Serial {
+            wh_kin: Kinematics::new(desc.with_limits_widened(WH_SLACK)),
             kin: Kinematics::new(desc),
             unit,
             settings,
@@ -334,10 +342,17 @@ impl Serial {
         })
     }
 
-    /// Takes the joints of a `WH` pose (the branch nearest `near`).
+    /// Takes the joints of a `WH` pose (the branch nearest `near`); a joint
+    /// a rounding past its limit is the limit.
     fn take_pose(&mut self, pose: &[f64; 5], near: Joints) -> Result<Joints, DriverError> {
         let tl = self.kin.description().links().tool;
-        let q = wh::to_joints(&self.kin, pose, tl, &near).map_err(|e| {
+        let q = wh::to_joints(&self.wh_kin, pose, tl, &near).map(|mut q| {
+            for (x, spec) in q.iter_mut().zip(self.kin.description().joints()) {
+                *x = x.clamp(spec.min, spec.max);
+            }
+            q
+        });
+        let q = q.map_err(|e| {
             let shown: Vec<String> = pose.iter().map(|v| protocol::num(*v)).collect();
             DriverError::Invalid(format!(
                 "`WH` answered `{}`, a pose the model cannot take: {e}",

@@ -428,6 +428,18 @@ impl RobotDescription {
         &self.joints
     }
 
+    /// The same robot with every joint's limits widened by `by` radians:
+    /// for reading a pose the controller reports rounded (`WH`), where an
+    /// arm standing at a limit may come out a rounding past it.
+    pub fn with_limits_widened(&self, by: f64) -> RobotDescription {
+        let mut d = self.clone();
+        for j in d.joints.iter_mut() {
+            j.min -= by;
+            j.max += by;
+        }
+        d
+    }
+
     /// The standard hand's ranges.
     pub fn gripper(&self) -> &Gripper {
         &self.gripper
