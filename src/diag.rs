@@ -150,8 +150,12 @@ impl Diagnostic {
     fn severity_and_message(&self) -> (&'static str, String) {
         match self.phase {
             Phase::Warning => ("warning", self.message.clone()),
-            // A deadlock is no exception the program could handle.
-            Phase::Runtime if self.message.starts_with("deadlock:") => {
+            // A deadlock, or the user's stop, is no exception the program
+            // could handle.
+            Phase::Runtime
+                if self.message.starts_with("deadlock:")
+                    || self.message.starts_with(crate::interp::STOPPED_TASKS) =>
+            {
                 ("error", self.message.clone())
             }
             Phase::Runtime => ("error", format!("unhandled exception: {}", self.message)),

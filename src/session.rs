@@ -586,6 +586,15 @@ impl Session {
             }
             return d;
         }
+        if let Some(rest) = o.message.strip_prefix(crate::interp::STOPPED_TASKS) {
+            // Where the main program was, then one note per task.
+            let mut d = Diagnostic::new(Phase::Runtime, o.span, crate::interp::STOPPED_TASKS)
+                .with_label("the main program was here");
+            for (line, s) in rest.lines().skip(1).zip(&o.chain) {
+                d = d.with_note(*s, line.to_string());
+            }
+            return d;
+        }
         let name = &self.checker.excs[o.exc as usize].name;
         let msg = if o.message.is_empty() {
             format!("raised {name}")

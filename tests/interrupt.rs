@@ -130,3 +130,81 @@ fn sigint_during_a_recorded_motion_keeps_it_up_to_the_stop() {
         assert!(w[1][0] - w[0][0] < 0.1, "a gap: {w:?}");
     }
 }
+
+/// Runs `adair run --realtime` on `text`, waits for its first line of
+/// output, sends SIGINT `ms` later, and returns the exit status and stderr.
+fn interrupt_after_start(name: &str, text: &str, ms: u64) -> (Option<i32>, String) {
+    let dir = std::env::temp_dir().join(format!("adair-sigint-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = dir.join(format!("{name}.air"));
+    std::fs::write(&script, text).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_adair"))
+        .arg("run")
+        .arg("--realtime")
+        .arg(&script)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut line = String::new();
+    std::io::BufRead::read_line(
+        &mut std::io::BufReader::new(child.stdout.as_mut().unwrap()),
+        &mut line,
+    )
+    .unwrap();
+    assert_eq!(line, "go\n");
+    std::thread::sleep(Duration::from_millis(ms));
+    let status = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let out = child.wait_with_output().unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    (
+        out.status.code(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// Ctrl-C in a script whose library-level task runs on after the script's
+/// statements: the report names the user's file, where the main program
+/// waited (the end of its last statement) and where the task was, never
+/// the predefined library (it said `stdlib/ada.air:1:1`).
+#[test]
+fn sigint_with_tasks_names_where_the_main_program_was() {
+    let (code, stderr) = interrupt_after_start(
+        "tasks_end",
+        "task T;\ntask body T is\nbegin\n   loop\n      delay 0.1;\n   end loop;\nend T;\n\
+         Put_Line (\"go\");\n",
+        500,
+    );
+    assert_eq!(code, Some(130), "{stderr}");
+    assert!(!stderr.contains("stdlib"), "{stderr}");
+    assert!(
+        stderr.contains("tasks_end.air:8:17: error: interrupted (Ctrl-C): every task stopped"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("the main program was here"), "{stderr}");
+    assert!(
+        stderr.contains("main waits for its tasks to end"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("T runs"), "{stderr}");
+    // T was stopped at its loop's head (the loop is shown), not where it
+    // last waited (its delay).
+    assert!(stderr.contains("end loop;"), "{stderr}");
+    // In a block, the main program waits at the block's end.
+    let (code, stderr) = interrupt_after_start(
+        "tasks_block",
+        "Put_Line (\"go\");\ndeclare\n   task T;\n   task body T is\n   begin\n      loop\n         \
+         delay 0.1;\n      end loop;\n   end T;\nbegin\n   null;\nend;\n",
+        500,
+    );
+    assert_eq!(code, Some(130), "{stderr}");
+    assert!(
+        stderr.contains("tasks_block.air:12:1: error: interrupted (Ctrl-C): every task stopped"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("T runs"), "{stderr}");
+}

@@ -80,6 +80,10 @@ pub enum Binding {
 /// the caller asks the services where the robot stopped.
 pub const STOP_LABEL: u32 = u32::MAX;
 
+/// The first line of the report of a program with tasks that the user
+/// stopped (Ctrl-C); one line per task follows, its place in the chain.
+pub const STOPPED_TASKS: &str = "interrupted (Ctrl-C): every task stopped";
+
 /// How a service call ends early.
 #[derive(Debug)]
 pub enum ServiceFault {
@@ -337,6 +341,10 @@ impl Machine {
         })();
         let tasks = run.m.sched.active();
         let alive = run.m.sched.alive();
+        // The user's stop in a program with tasks (see `poll`): where each
+        // task was, the main program's place first.
+        let stopped = (tasks && matches!(r, Err(Flow::Exit(STOP_LABEL))))
+            .then(|| run.m.sched.describe(run.c.tasks, run.c.prots));
         if !(run.m.keep_tasks && alive) {
             // Any frames left by an exception are dropped; level-0 slots stay.
             run.m.stack.truncate(need);
@@ -349,15 +357,23 @@ impl Machine {
         }
         let _ = run.m.out.flush();
         match r {
-            // The user's stop in a program with tasks (see `poll`).
-            Err(Flow::Exit(STOP_LABEL)) if tasks => Err(Box::new(Occurrence {
-                exc: check::PROGRAM_ERROR,
-                message: "interrupted (Ctrl-C): every task stopped".into(),
-                span: crate::diag::span(0, 0, 0),
-                chain: Vec::new(),
-                reraised: Vec::new(),
-                chained: true,
-            })),
+            Err(Flow::Exit(STOP_LABEL)) if tasks => {
+                let lines = stopped.unwrap_or_default();
+                let mut message = String::from(STOPPED_TASKS);
+                for (_, l) in &lines {
+                    message.push('\n');
+                    message.push_str(l);
+                }
+                Err(Box::new(Occurrence {
+                    exc: check::PROGRAM_ERROR,
+                    message,
+                    span: lines.first().map_or(crate::diag::span(0, 0, 0), |l| l.0),
+                    // The chain is the tasks' places, not calls.
+                    chain: lines.iter().map(|l| l.0).collect(),
+                    reraised: Vec::new(),
+                    chained: true,
+                }))
+            }
             Ok(()) | Err(Flow::Return(_)) | Err(Flow::Exit(_)) => Ok(()),
             Err(Flow::Raise(o)) => Err(o),
         }
@@ -831,8 +847,11 @@ impl Run<'_> {
             && flag.swap(false, std::sync::atomic::Ordering::SeqCst)
         {
             // With tasks, the user's stop ends the whole program (an
-            // exception would end only the task that saw it).
+            // exception would end only the task that saw it); the report
+            // says where each task was.
             if self.m.sched.active() {
+                let me = self.m.sched.cur;
+                self.m.sched.threads[me].at = span;
                 return Err(Flow::Exit(STOP_LABEL));
             }
             return Err(self.raise(check::PROGRAM_ERROR, "interrupted (Ctrl-C)", span));

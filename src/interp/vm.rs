@@ -138,8 +138,9 @@ enum Op {
     /// An exception leaves a master region: wait for its tasks, then
     /// propagate it.
     MasterUnwind(Span),
-    /// Library-level tasks, at the end of the run.
-    AwaitAll,
+    /// Library-level tasks, at the end of the run: where the main program
+    /// ended (a deadlock or a Ctrl-C there names it).
+    AwaitAll(Span),
     /// The end of a REPL entry while tasks live on: the ready tasks run
     /// until every one has blocked.
     Settle,
@@ -389,7 +390,7 @@ fn relocate(op: &mut Op, by: u32) {
         | Op::MasterEnter
         | Op::MasterLeave(..)
         | Op::MasterUnwind(..)
-        | Op::AwaitAll
+        | Op::AwaitAll(..)
         | Op::Settle
         | Op::Accept(..)
         | Op::AcceptEnd(..)
@@ -1418,7 +1419,7 @@ impl<'r> Compiler<'r> {
                 | Op::MasterEnter
                 | Op::MasterLeave(..)
                 | Op::MasterUnwind(..)
-                | Op::AwaitAll
+                | Op::AwaitAll(..)
                 | Op::Settle
                 | Op::Accept(..)
                 | Op::AcceptEnd(..)
@@ -1656,7 +1657,7 @@ impl<'a> Run<'a> {
             let last = if self.m.keep_tasks {
                 Op::Settle
             } else {
-                Op::AwaitAll
+                Op::AwaitAll(self.program_end(stmts, main))
             };
             let code = arena.alloc(Code {
                 func: None,
@@ -1674,6 +1675,20 @@ impl<'a> Run<'a> {
             self.exec_code(&mut cache, code)?;
         }
         r
+    }
+
+    /// Where the main program ends, where the environment waits for the
+    /// library-level tasks: the end of the main subprogram's body, or of
+    /// the script's last statement (never the predefined library's text).
+    fn program_end(&self, stmts: &[Stmt], main: Option<FuncId>) -> Span {
+        let last = match main.and_then(|f| self.c.funcs[f as usize].body.as_ref()) {
+            Some(b) => b.stmts.last().map(|s| s.span),
+            None => stmts.last().map(|s| s.span),
+        };
+        last.map_or(crate::diag::span(0, 0, 0), |sp| Span {
+            start: sp.end,
+            ..sp
+        })
     }
 
     /// Pushes the frame of a call of `f` whose arguments are in `ops`.
@@ -2877,8 +2892,8 @@ impl<'a> Run<'a> {
                     }
                     Ok(())
                 }
-                Op::AwaitAll => {
-                    self.dependents_done(true, crate::diag::span(0, 0, 0));
+                Op::AwaitAll(span) => {
+                    self.dependents_done(true, *span);
                     Ok(())
                 }
                 Op::Accept(entry, params, span) => {
