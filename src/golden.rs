@@ -245,24 +245,23 @@ pub fn check_case_on(script: &Path, bless: bool, target: &Target) -> Verdict {
     }
 }
 
-/// All `.air` scripts under the given files and directories, sorted.
+/// All `.air` scripts under the given files and directories, sorted, each
+/// once. Directories are walked without looping: one reached again (a
+/// symbolic link to an ancestor, `up -> ..`, or to a folder walked
+/// already) is not walked again, and a script reached by two paths (a
+/// linked folder, a linked file, a folder named twice) counts once, under
+/// its path without links when it has one. Links to folders outside are
+/// followed, after the folders themselves.
 pub fn collect(paths: &[PathBuf]) -> std::io::Result<Vec<PathBuf>> {
-    let mut out = Vec::new();
+    // Scripts found, and whether a link led to them.
+    let mut found: Vec<(bool, PathBuf)> = Vec::new();
+    let mut real: Vec<PathBuf> = Vec::new();
+    let mut linked: Vec<PathBuf> = Vec::new();
     for p in paths {
         if p.is_dir() {
-            let mut stack = vec![p.clone()];
-            while let Some(d) = stack.pop() {
-                for e in std::fs::read_dir(&d)? {
-                    let e = e?.path();
-                    if e.is_dir() {
-                        stack.push(e);
-                    } else if e.extension().is_some_and(|x| x == "air") {
-                        out.push(e);
-                    }
-                }
-            }
+            real.push(p.clone());
         } else if p.exists() {
-            out.push(p.clone());
+            found.push((false, p.clone()));
         } else {
             return Err(std::io::Error::new(
                 std::io::ErrorKind::NotFound,
@@ -270,6 +269,51 @@ pub fn collect(paths: &[PathBuf]) -> std::io::Result<Vec<PathBuf>> {
             ));
         }
     }
+    let is_script = |p: &Path| p.extension().is_some_and(|x| x == "air");
+    let mut walked = std::collections::HashSet::new();
+    // The folders themselves first, then those reached through links.
+    while let Some((via_link, d)) = real
+        .pop()
+        .map(|d| (false, d))
+        .or_else(|| linked.pop().map(|d| (true, d)))
+    {
+        // A link that points nowhere is no folder.
+        let Ok(canonical) = std::fs::canonicalize(&d) else {
+            continue;
+        };
+        if !walked.insert(canonical) {
+            continue;
+        }
+        for e in std::fs::read_dir(&d)? {
+            let e = e?;
+            let path = e.path();
+            // The entry itself, not what a link points to.
+            let kind = e.file_type()?;
+            if kind.is_symlink() {
+                if path.is_dir() {
+                    linked.push(path);
+                } else if is_script(&path) && path.exists() {
+                    found.push((true, path));
+                }
+            } else if kind.is_dir() {
+                if via_link {
+                    linked.push(path);
+                } else {
+                    real.push(path);
+                }
+            } else if is_script(&path) {
+                found.push((via_link, path));
+            }
+        }
+    }
+    // Each script once: the path without links first.
+    found.sort();
+    let mut scripts = std::collections::HashSet::new();
+    let mut out: Vec<PathBuf> = found
+        .into_iter()
+        .filter(|(_, p)| scripts.insert(std::fs::canonicalize(p).unwrap_or_else(|_| p.clone())))
+        .map(|(_, p)| p)
+        .collect();
     out.sort();
     Ok(out)
 }

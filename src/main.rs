@@ -272,7 +272,9 @@ enum Command {
     Lsp,
     /// Golden tests: run each X.air and compare its output with X.out beside it.
     Test {
-        /// Scripts or directories (default: the current directory).
+        /// Scripts or directories (default: the current directory); each
+        /// script runs once, and no folder is walked twice (a link back to
+        /// one, `up -> ..`, is not followed again).
         paths: Vec<PathBuf>,
         /// Write the actual output into the .out files (with --port: what the arm did).
         #[arg(long)]

@@ -810,3 +810,56 @@ fn the_default_memory_limit_follows_ulimit_v() {
         );
     }
 }
+
+/// `adair test` on a folder with a symbolic link loop (`sub/up -> ..`), a
+/// link to a folder inside (`alias -> sub`) and a linked script (`c.air ->
+/// a.air`): each script is run and counted once (it followed the loop
+/// until the kernel's 40 links: one script counted 41 times).
+#[test]
+fn adair_test_walks_a_symlink_loop_once() {
+    let dir = std::env::temp_dir().join(format!("adair-cli-loop-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(dir.join("sub")).unwrap();
+    std::fs::write(dir.join("a.air"), "Put_Line (\"a\");\n").unwrap();
+    std::fs::write(dir.join("a.out"), "a\n").unwrap();
+    std::fs::write(dir.join("sub/b.air"), "Put_Line (\"b\");\n").unwrap();
+    std::fs::write(dir.join("sub/b.out"), "b\n").unwrap();
+    std::os::unix::fs::symlink("..", dir.join("sub/up")).unwrap();
+    std::os::unix::fs::symlink("sub", dir.join("alias")).unwrap();
+    std::os::unix::fs::symlink("a.air", dir.join("c.air")).unwrap();
+    // `adair test` in at most 30 s (the loop was walked 2^40 ways).
+    let adair = |args: &[&str]| {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_adair"))
+            .args(args)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .expect("run adair");
+        let start = std::time::Instant::now();
+        while child.try_wait().unwrap().is_none() {
+            if start.elapsed() > std::time::Duration::from_secs(30) {
+                let _ = child.kill();
+                panic!("adair {args:?} still runs after 30 s");
+            }
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+        let out = child.wait_with_output().unwrap();
+        (
+            out.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    let d = dir.to_string_lossy().into_owned();
+    let (code, out, err) = adair(&["test", &d]);
+    assert_eq!((code, out.as_str()), (0, "2 passed, 0 failed\n"), "{err}");
+    // Named twice, and through the link: still once each.
+    let sub = dir.join("sub").to_string_lossy().into_owned();
+    let alias = dir.join("alias").to_string_lossy().into_owned();
+    let (code, out, err) = adair(&["test", &d, &sub, &alias]);
+    assert_eq!((code, out.as_str()), (0, "2 passed, 0 failed\n"), "{err}");
+    // From inside the loop: it leads to the outer folder, each script once.
+    let (code, out, err) = adair(&["test", &sub]);
+    assert_eq!((code, out.as_str()), (0, "2 passed, 0 failed\n"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
