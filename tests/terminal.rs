@@ -16,6 +16,10 @@ struct Tmux {
 
 impl Tmux {
     fn start(name: &str, cmd: &str) -> Tmux {
+        // One session per test run: two runs at once (two checkouts, two
+        // engineers) share the tmux server, and a fixed name let each
+        // kill the other's session.
+        let name = &format!("{name}-{}", std::process::id());
         let _ = Command::new("tmux")
             .args(["kill-session", "-t", name])
             .output();
