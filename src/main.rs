@@ -493,7 +493,15 @@ fn real_main(
             let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
             let seen = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
             // A signal handler that sets the flags (no thread to start:
-            // start-up time counts for short scripts).
+            // start-up time counts for short scripts). Ctrl-C always wins:
+            // a second one ends the process at once with exit 130, whatever
+            // the program caught of the first (registered first, so it
+            // sees `seen` as the first Ctrl-C left it).
+            let _ = signal_hook::flag::register_conditional_shutdown(
+                signal_hook::consts::SIGINT,
+                130,
+                seen.clone(),
+            );
             for f in [&flag, &seen] {
                 let _ = signal_hook::flag::register(signal_hook::consts::SIGINT, f.clone());
             }

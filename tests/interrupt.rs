@@ -208,3 +208,105 @@ fn sigint_with_tasks_names_where_the_main_program_was() {
     );
     assert!(stderr.contains("T runs"), "{stderr}");
 }
+
+/// Starts `adair run` on `text` (its first line of output must be `go`),
+/// then sends SIGINT once per entry of `gaps` (waiting that many ms
+/// before each) and returns the exit status, stdout after `go`, stderr and
+/// the time from the last SIGINT to the end.
+fn interrupt_times(
+    name: &str,
+    text: &str,
+    gaps: &[u64],
+) -> (Option<i32>, String, String, Duration) {
+    let dir = std::env::temp_dir().join(format!("adair-sigint-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let script = dir.join(format!("{name}.air"));
+    std::fs::write(&script, text).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_adair"))
+        .arg("run")
+        .arg(&script)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdout = std::io::BufReader::new(child.stdout.take().unwrap());
+    let mut line = String::new();
+    std::io::BufRead::read_line(&mut stdout, &mut line).unwrap();
+    assert_eq!(line, "go\n");
+    let mut last = Instant::now();
+    for ms in gaps {
+        std::thread::sleep(Duration::from_millis(*ms));
+        if child.try_wait().unwrap().is_some() {
+            break;
+        }
+        let status = Command::new("kill")
+            .args(["-INT", &child.id().to_string()])
+            .status()
+            .unwrap();
+        assert!(status.success());
+        last = Instant::now();
+    }
+    // At most 10 s more: a run that does not end is killed and fails.
+    while child.try_wait().unwrap().is_none() {
+        if last.elapsed() > Duration::from_secs(10) {
+            let _ = child.kill();
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let took = last.elapsed();
+    let mut rest = String::new();
+    let _ = std::io::Read::read_to_string(&mut stdout, &mut rest);
+    let out = child.wait_with_output().unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    (
+        out.status.code(),
+        rest,
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+        took,
+    )
+}
+
+/// A recursion that recurses again from its `Storage_Error` handler polls
+/// no loop: Ctrl-C is seen at a call, and the `Program_Error` it raises
+/// passes the handlers for `Storage_Error`: the run ends (exit 130). It
+/// did not end at all.
+#[test]
+fn sigint_ends_a_recursion_that_recurses_again_from_its_handler() {
+    let (code, _, stderr, took) = interrupt_times(
+        "recurse",
+        "procedure P is\nbegin\n   P;\nexception\n   when Storage_Error => P;\nend P;\n\
+         Put_Line (\"go\");\nP;\n",
+        &[300],
+    );
+    assert_eq!(code, Some(130), "{stderr}");
+    assert!(took < Duration::from_secs(5), "took {took:?}");
+    assert!(
+        stderr.contains("PROGRAM_ERROR : interrupted (Ctrl-C)"),
+        "{stderr}"
+    );
+}
+
+/// Ctrl-C always wins: a program that catches the first one (its
+/// `Program_Error`) with `when others` and goes on, in a busy loop or in
+/// a recursion, ends at the second at once with exit 130.
+#[test]
+fn a_second_sigint_ends_the_run_at_once_whatever_it_catches() {
+    let (code, out, stderr, took) = interrupt_times(
+        "busy",
+        "Put_Line (\"go\");\nloop\n   begin\n      loop\n         null;\n      end loop;\n   \
+         exception\n      when others => Put_Line (\"caught\");\n   end;\nend loop;\n",
+        &[300, 500],
+    );
+    assert_eq!(code, Some(130), "{out}\n{stderr}");
+    assert!(out.starts_with("caught\n"), "the first was caught: {out}");
+    assert!(took < Duration::from_secs(2), "took {took:?}");
+    let (code, _, stderr, took) = interrupt_times(
+        "recurse_others",
+        "procedure P is\nbegin\n   P;\nexception\n   when others => P;\nend P;\n\
+         Put_Line (\"go\");\nP;\n",
+        &[300, 500],
+    );
+    assert_eq!(code, Some(130), "{stderr}");
+    assert!(took < Duration::from_secs(2), "took {took:?}");
+}

@@ -944,6 +944,15 @@ impl Run<'_> {
         for a in args {
             vals.push(self.eval(&a.value)?);
         }
+        // Ctrl-C, also in a recursion that polls no loop.
+        if self
+            .m
+            .interrupted
+            .as_ref()
+            .is_some_and(|f| f.load(std::sync::atomic::Ordering::Relaxed))
+        {
+            self.poll(span)?;
+        }
         let sub = &self.c.funcs[f as usize];
         if self.m.depth >= MAX_DEPTH {
             return Err(self.raise(
