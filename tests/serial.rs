@@ -639,31 +639,30 @@ fn sigint_stops_a_real_motion() {
     assert_eq!(&sent[mj + 1..], ["ER"], "{sent:?}");
 }
 
-fn the_repl_jogs_a_real_arm() {
-    let Some(c) = controller("rv-m1", &[]) else {
-        return;
-    };
+/// `adair repl` on the controller's port (`--serial-timeout 0.5` and
+/// `extra`), fed `input` on standard input; its whole output.
+fn piped_repl(c: &Controller, extra: &[&str], input: &[u8]) -> std::process::Output {
     let mut child = Command::new(BIN)
-        .args([
-            "repl",
-            "--strict",
-            "--serial-timeout",
-            "0.5",
-            "--port",
-            &c.path,
-        ])
+        .args(["repl", "--serial-timeout", "0.5", "--port", &c.path])
+        .args(extra)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(b"InitRobot;\nMoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0));\n")
-        .unwrap();
-    let out = child.wait_with_output().unwrap();
+    child.stdin.take().unwrap().write_all(input).unwrap();
+    child.wait_with_output().unwrap()
+}
+
+fn the_repl_jogs_a_real_arm() {
+    let Some(c) = controller("rv-m1", &[]) else {
+        return;
+    };
+    let out = piped_repl(
+        &c,
+        &["--strict"],
+        b"InitRobot;\nMoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0));\n",
+    );
     assert_eq!(
         out.status.code(),
         Some(0),
@@ -686,36 +685,14 @@ fn the_repl_rehearses_each_entry_before_the_arm_moves() {
     let Some(c) = controller("rv-m1", &[]) else {
         return;
     };
-    let mut child = Command::new(BIN)
-        .args([
-            "repl",
-            "--serial-timeout",
-            "0.5",
-            "--port",
-            &c.path,
-            "--rehearse",
-        ])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(
-            b"type Cell is access Integer;\n\
+    let out = piped_repl(&c, &["--rehearse"], b"type Cell is access Integer;\n\
 N : Integer := 0;\n\
 C : Cell := new Integer'(0);\n\
 InitRobot;\n\
 N := N + 1; C.all := 7; MoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0)); MoveAxesAbsolute ((Rad (170.0), 0.0, 0.0, 0.0, 0.0));\n\
 N\n\
 C.all\n\
-MoveAxesRelative ((Rad (-5.0), 0.0, 0.0, 0.0, 0.0));\n",
-        )
-        .unwrap();
-    let out = child.wait_with_output().unwrap();
+MoveAxesRelative ((Rad (-5.0), 0.0, 0.0, 0.0, 0.0));\n",);
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(
         stdout.contains("rehearsal on the simulator failed: the arm was not moved"),
@@ -1302,29 +1279,11 @@ fn the_repl_rehearsal_refuses_a_simulator_only_service() {
     let Some(c) = controller("rv-m1", &[]) else {
         return;
     };
-    let mut child = Command::new(BIN)
-        .args([
-            "repl",
-            "--serial-timeout",
-            "0.5",
-            "--port",
-            &c.path,
-            "--rehearse",
-        ])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(
-            b"InitRobot;\nMoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0)); PlaceObject (30.0);\n",
-        )
-        .unwrap();
-    let out = child.wait_with_output().unwrap();
+    let out = piped_repl(
+        &c,
+        &["--rehearse"],
+        b"InitRobot;\nMoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0)); PlaceObject (30.0);\n",
+    );
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(
         stdout.contains("COMMANDNOTSUPPORTED")
