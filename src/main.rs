@@ -292,7 +292,53 @@ enum Command {
         /// pose first; a script whose rehearsal fails does not move the arm.
         #[arg(long, requires = "port")]
         rehearse: bool,
+        /// Each script's time limit in seconds of wall clock (0: none); a
+        /// script's first line `-- adair: --timeout N` sets its own.
+        #[arg(long, value_name = "SECONDS", default_value_t = adair::golden::DEFAULT_TIMEOUT,
+              value_parser = adair::golden::timeout_seconds)]
+        timeout: f64,
+        /// Scripts run at once (default: the number of cores; 1 with --port).
+        #[arg(short = 'j', long, value_name = "N",
+              value_parser = clap::value_parser!(u16).range(1..))]
+        jobs: Option<u16>,
+        /// Also write a JUnit XML report (for CI and learning platforms).
+        #[arg(long, value_name = "FILE.xml")]
+        junit: Option<PathBuf>,
+        /// Run one script in this process and print its golden text (how
+        /// `adair test` runs each script, in the script's folder).
+        #[arg(long, hide = true)]
+        child: bool,
     },
+}
+
+/// What `adair test` passes on to the child process of each script (the
+/// global options), and whether its report is coloured.
+struct TestGlobals {
+    forward: Vec<std::ffi::OsString>,
+    paint: bool,
+}
+
+static TEST_GLOBALS: std::sync::OnceLock<TestGlobals> = std::sync::OnceLock::new();
+
+impl TestGlobals {
+    fn of(cli: &Cli) -> TestGlobals {
+        let mut forward = Vec::new();
+        if let Some(p) = &cli.devices {
+            // The child runs in the script's folder.
+            let abs = std::env::current_dir().map_or(p.clone(), |d| d.join(p));
+            forward.extend(["--devices".into(), abs.into_os_string()]);
+        }
+        if let Some(m) = cli.max_memory {
+            forward.extend(["--max-memory".into(), m.to_string().into()]);
+        }
+        // The report goes to standard output: colour when that is a terminal.
+        let paint = match cli.color.as_str() {
+            "always" => true,
+            "never" => false,
+            _ => std::env::var_os("NO_COLOR").is_none() && std::io::stdout().is_terminal(),
+        };
+        TestGlobals { forward, paint }
+    }
 }
 
 fn color(choice: &str) -> bool {
@@ -382,6 +428,7 @@ fn main() -> ExitCode {
         },
     };
     let color = color(&cli.color);
+    let _ = TEST_GLOBALS.set(TestGlobals::of(&cli));
     // Deep recursion in user programs needs a big stack for the tree walker.
     let child = std::thread::Builder::new()
         .stack_size(512 << 20)
@@ -693,15 +740,22 @@ fn real_main(
             trace,
             serial,
             rehearse,
+            timeout,
+            jobs,
+            junit,
+            child,
         }) => {
-            let target = adair::golden::Target {
+            let mut target = adair::golden::Target {
                 port: serial.settings(),
                 rehearse,
-                engine: None,
                 devices: devices.clone(),
-                robot,
+                robot: robot.clone(),
                 trace,
+                ..Default::default()
             };
+            if child {
+                return test_child(&paths, target, timeout);
+            }
             let paths = if paths.is_empty() {
                 vec![PathBuf::from(".")]
             } else {
@@ -714,34 +768,104 @@ fn real_main(
                     return 2;
                 }
             };
-            let (mut pass, mut fail) = (0, 0);
-            for s in &scripts {
-                match adair::golden::check_case_on(s, bless, &target) {
-                    adair::golden::Verdict::Pass => pass += 1,
-                    adair::golden::Verdict::Blessed => {
-                        println!("blessed {}", s.display());
-                        pass += 1;
-                    }
-                    adair::golden::Verdict::Missing => {
-                        println!(
-                            "FAIL {}: no {} (run with --bless to create it)",
-                            s.display(),
-                            adair::golden::expected_path(s).display()
-                        );
-                        fail += 1;
-                    }
-                    adair::golden::Verdict::Differs { expected, actual } => {
-                        println!(
-                            "FAIL {}\n{}",
-                            s.display(),
-                            adair::golden::diff(&expected, &actual)
-                        );
-                        fail += 1;
-                    }
+            let globals = TEST_GLOBALS.get();
+            let exe = match std::env::current_exe() {
+                Ok(e) => e,
+                Err(e) => {
+                    eprintln!("adair: cannot find the adair binary to run the scripts: {e}");
+                    return 2;
+                }
+            };
+            // What each script's child process is told.
+            let mut args: Vec<std::ffi::OsString> = Vec::new();
+            if let Some(r) = &robot {
+                args.extend(["--robot".into(), r.into()]);
+            }
+            if trace {
+                args.push("--trace".into());
+            }
+            if let Some(p) = target.port.take() {
+                args.extend([
+                    "--port".into(),
+                    p.path.into(),
+                    "--baud".into(),
+                    p.baud.to_string().into(),
+                    "--serial-timeout".into(),
+                    p.timeout.to_string().into(),
+                ]);
+                if rehearse {
+                    args.push("--rehearse".into());
                 }
             }
+            let runner = adair::golden::Isolated {
+                exe,
+                global: globals.map(|g| g.forward.clone()).unwrap_or_default(),
+                args,
+                env: Vec::new(),
+                timeout,
+            };
+            // One arm: one script at a time.
+            let jobs = if serial.port.is_some() {
+                1
+            } else {
+                jobs.map_or_else(adair::golden::default_jobs, usize::from)
+            };
+            let paint = globals.is_some_and(|g| g.paint);
+            let results = adair::golden::run_all(
+                &scripts,
+                jobs,
+                |s| runner.check(s, bless),
+                |r| {
+                    let _ = write!(Watched::out(), "{}", adair::golden::progress(r, paint));
+                    let _ = Watched::out().flush();
+                },
+            );
+            let pass = results.iter().filter(|r| r.verdict.passed()).count();
+            let fail = results.len() - pass;
             println!("{pass} passed, {fail} failed");
+            if let Some(f) = &junit
+                && let Err(e) = std::fs::write(f, adair::golden::junit(&results, "adair test"))
+            {
+                eprintln!("adair: --junit {}: {e}", f.display());
+                return 2;
+            }
             if fail > 0 { 1 } else { 0 }
+        }
+    }
+}
+
+/// `adair test --child FILE`: runs one script in this process (in the
+/// folder the parent chose) and prints its golden text; exit status 0, or
+/// 2 for a configuration error (printed as `adair run` prints it), or 124
+/// when the time limit stopped the program (what it printed until then).
+fn test_child(paths: &[PathBuf], mut target: adair::golden::Target, timeout: f64) -> u8 {
+    let [file] = paths else {
+        eprintln!("adair: test --child takes one script");
+        return 3;
+    };
+    let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let timed_out = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    if timeout > 0.0 {
+        let (flag, timed_out) = (flag.clone(), timed_out.clone());
+        std::thread::spawn(move || {
+            std::thread::sleep(std::time::Duration::from_secs_f64(timeout));
+            timed_out.store(true, std::sync::atomic::Ordering::SeqCst);
+            flag.store(true, std::sync::atomic::Ordering::SeqCst);
+        });
+    }
+    target.interrupt = Some(flag);
+    match adair::golden::run_case_checked(file, &target) {
+        Ok(text) => {
+            let _ = write!(Watched::out(), "{text}");
+            if timed_out.load(std::sync::atomic::Ordering::SeqCst) {
+                adair::golden::TIMED_OUT_STATUS as u8
+            } else {
+                0
+            }
+        }
+        Err(e) => {
+            eprintln!("{e}");
+            adair::golden::CONFIG_STATUS as u8
         }
     }
 }
