@@ -22,3 +22,4 @@ pub mod services;
 pub mod session;
 pub mod simctl;
 pub mod syntax;
+pub mod view;

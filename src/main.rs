@@ -183,6 +183,53 @@ impl RobotOpts {
     }
 }
 
+/// The 3D view's options (docs/view.md).
+#[derive(Args)]
+struct ViewOpts {
+    /// The run in 3D in a browser: `--view FILE.html` writes a replay page
+    /// (also after an exception); `--view` alone serves the page live on
+    /// 127.0.0.1, paced to the wall clock.
+    #[arg(long, value_name = "FILE.html", num_args = 0..=1, default_missing_value = "")]
+    view: Option<String>,
+    /// The live view's port on 127.0.0.1 (0: any free port).
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    view_port: u16,
+    /// Do not open the live view in a browser (print its address only).
+    #[arg(long)]
+    no_open: bool,
+}
+
+impl ViewOpts {
+    /// `--view` alone: the live view.
+    fn live(&self) -> bool {
+        self.view.as_deref() == Some("")
+    }
+    /// `--view FILE.html`.
+    fn file(&self) -> Option<PathBuf> {
+        self.view
+            .as_deref()
+            .filter(|v| !v.is_empty())
+            .map(PathBuf::from)
+    }
+    /// Starts the live view's server when asked; says where it listens.
+    fn serve(&self) -> Result<Option<adair::view::live::Server>, String> {
+        if !self.live() {
+            return Ok(None);
+        }
+        let sv = adair::view::live::Server::start(self.view_port)?;
+        eprintln!(
+            "adair: 3D view at {} (listening on the loopback interface 127.0.0.1 only)",
+            sv.url()
+        );
+        if !self.no_open
+            && let Err(e) = adair::view::live::open_browser(&sv.url())
+        {
+            eprintln!("adair: no browser opened ({e}): open the address above");
+        }
+        Ok(Some(sv))
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Check the whole program, then run it. Exit 0; 1 on an unhandled exception; 2 on a check error.
@@ -199,6 +246,8 @@ enum Command {
         /// above and from the side with the arm's reach (also after an exception).
         #[arg(long, value_name = "FILE.svg")]
         plot: Option<PathBuf>,
+        #[command(flatten)]
+        view: ViewOpts,
         /// Treat warnings as errors: nothing runs, exit 2.
         #[arg(long)]
         strict: bool,
@@ -229,6 +278,8 @@ enum Command {
         /// switches, device events and interrupts.
         #[arg(long)]
         trace: bool,
+        #[command(flatten)]
+        view: ViewOpts,
     },
     /// A virtual RV-M1 (or RM-501) controller on a pseudo-terminal; prints the device path to give to --port.
     SimController {
@@ -384,7 +435,8 @@ fn with_shorthand(mut args: Vec<std::ffi::OsString>) -> Vec<std::ffi::OsString> 
 }
 
 fn main() -> ExitCode {
-    let cli = match Cli::try_parse_from(with_shorthand(std::env::args_os().collect())) {
+    let args = adair::view::live::bare_view_flag(std::env::args_os().collect());
+    let cli = match Cli::try_parse_from(with_shorthand(args)) {
         Ok(c) => c,
         Err(e) => {
             if !e.use_stderr() {
@@ -461,10 +513,23 @@ fn real_main(
             serial,
             rehearse,
             trace,
+            view,
         }) => {
             if let Err(e) = adair::kinematics::RobotDescription::builtin(&robot) {
                 eprintln!("adair: --robot: {}", e.problems.join("; "));
                 return 2;
+            }
+            if view.file().is_some() {
+                eprintln!("adair: --view: the REPL writes a page with `:view FILE.html`");
+                return 2;
+            }
+            match view.serve() {
+                Ok(Some(sv)) => adair::repl::view::serve_live(sv.hub.clone()),
+                Ok(None) => {}
+                Err(e) => {
+                    eprintln!("adair: --view: {e}");
+                    return 2;
+                }
             }
             let drive = adair::repl::Drive {
                 robot: Some(robot),
@@ -491,8 +556,15 @@ fn real_main(
             robot,
             record,
             plot,
+            view,
             strict,
         }) => {
+            if let Some(p) = view.file()
+                && let Err(e) = adair::view::check_target(&p)
+            {
+                eprintln!("adair: --view {}: {e}", p.display());
+                return 2;
+            }
             if let Some(p) = &record
                 && let Err(e) = output_target(p, &["csv", "json"], ".csv or .json")
             {
@@ -553,8 +625,9 @@ fn real_main(
                 let _ = signal_hook::flag::register(signal_hook::consts::SIGINT, f.clone());
             }
             s.machine.interrupted = Some(flag.clone());
+            // The live view is paced to the wall clock.
             match robot.serial.settings() {
-                None => s.set_robot(desc, trace(), robot.realtime),
+                None => s.set_robot(desc, trace(), robot.realtime || view.live()),
                 Some(settings) => {
                     s.checker.simulator_only = adair::services::SIMULATOR_ONLY;
                     if robot.rehearse {
@@ -575,8 +648,22 @@ fn real_main(
             if std::io::stdin().is_terminal() && std::io::stdout().is_terminal() {
                 s.install_pendant(Box::new(adair::repl::teach::TermPendant::new()));
             }
-            if record.is_some() || plot.is_some() {
+            if record.is_some() || plot.is_some() || view.file().is_some() {
                 s.start_recording();
+            }
+            let title = file
+                .file_name()
+                .map(|n| n.to_string_lossy().into_owned())
+                .unwrap_or_default();
+            let live = match view.serve() {
+                Ok(sv) => sv,
+                Err(e) => {
+                    eprintln!("adair: --view: {e}");
+                    return 2;
+                }
+            };
+            if let Some(sv) = &live {
+                adair::view::live::attach(sv, &mut s, &title, !view.no_open);
             }
             let outcome = s.run_source(&file.to_string_lossy(), text.clone());
             let stopped = s.take_stopped();
@@ -596,6 +683,20 @@ fn real_main(
             {
                 eprintln!("adair: --plot {}: {e}", p.display());
                 return 2;
+            }
+            if let Some(st) = s.robot_state() {
+                let ending = adair::view::ending(&s, &outcome);
+                if let Some(p) = view.file().filter(|_| ran)
+                    && let Err(e) =
+                        adair::view::write_replay(&p, st, s.machine.world.as_ref(), &title, &ending)
+                {
+                    eprintln!("adair: --view {}: {e}", p.display());
+                    return 2;
+                }
+                if let Some(sv) = &live {
+                    adair::view::live::publish_state(&sv.hub, st, &ending, true);
+                    sv.hub.finish(std::time::Duration::from_secs(2));
+                }
             }
             if let Some(m) = stopped {
                 eprintln!("adair: {m}");

@@ -4,6 +4,7 @@
 
 pub mod teach;
 pub mod term;
+pub mod view;
 
 use crate::check::types::{self, TypeId, TypeKind};
 use crate::diag::{self, Diagnostic};
@@ -57,6 +58,8 @@ pub struct Repl {
     rehearse: bool,
     /// `--devices`, kept for `:reset`.
     devices: Option<crate::devices::Devices>,
+    /// The live 3D view (`--view`): every motion goes to its pages.
+    live: Option<std::sync::Arc<crate::view::live::Hub>>,
 }
 
 const COMMANDS: &[(&str, &str)] = &[
@@ -79,6 +82,10 @@ const COMMANDS: &[(&str, &str)] = &[
     (
         ":plot FILE.svg",
         "draw the motions since the start (or :reset): joints, TCP path",
+    ),
+    (
+        ":view FILE.html",
+        "a 3D page of the motions since the start (or :reset)",
     ),
     (
         ":devices",
@@ -123,6 +130,7 @@ impl Repl {
             port: None,
             rehearse: false,
             devices: None,
+            live: view::live_hub(),
         };
         r.install_robot();
         r.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
@@ -208,6 +216,7 @@ impl Repl {
             }
             // Kept for `:record` and `:plot`.
             self.session.start_recording();
+            self.rewatch();
         }
     }
 
@@ -260,8 +269,8 @@ impl Repl {
         diag::render(d, &self.session.sources, self.color)
     }
 
-    /// Checks and runs one entry.
-    pub fn entry(&mut self, text: &str) -> Reply {
+    /// Checks and runs one entry (`entry` in view.rs tells the live view).
+    fn entry_inner(&mut self, text: &str) -> Reply {
         let trimmed = text.trim();
         if trimmed.is_empty() {
             return Reply::default();
@@ -432,6 +441,13 @@ impl Repl {
                 },
                 None if head == "plot" => fail(":plot FILE.svg\n".into()),
                 None => fail(":record FILE.csv or :record FILE.json\n".into()),
+            },
+            "view" => match arg {
+                Some(path) => match self.save_view(std::path::Path::new(path)) {
+                    Ok(t) => ok(t),
+                    Err(e) => fail(format!(":view {path}: {e}\n")),
+                },
+                None => fail(":view FILE.html\n".into()),
             },
             "trace" => match arg {
                 Some("on") => {

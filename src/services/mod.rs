@@ -65,6 +65,11 @@ pub struct RobotState {
     pub teach_until: f64,
     /// This state is a rehearsal's stand-in for a real arm.
     pub rehearsal: bool,
+    /// Who sees each motion as it starts (the live 3D view, `--view`).
+    pub watch: Option<Box<dyn record::Watch>>,
+    /// The goal of the last motion refused (virtual time, TCP pose), for
+    /// the 3D view's red ghost; a motion that runs clears it.
+    pub refused: Option<(f64, Pose)>,
 }
 
 /// How a service ends early: an exception, or the user's stop.
@@ -183,6 +188,8 @@ impl RobotState {
             held: None,
             teach_until: f64::NEG_INFINITY,
             rehearsal: false,
+            watch: None,
+            refused: None,
         }
     }
 }
@@ -451,6 +458,8 @@ fn perform(
     if cx.interrupt_requested() {
         return Err(stop(cx, st, service, "before the motion started"));
     }
+    st.refused = None;
+    record::announce(st, cx.clock.now(), &before, points, duration);
     // Paced to the wall clock: the user can stop the motion (Ctrl-C); the
     // robot then stays where it had got to. A real arm takes its own time.
     if (o.realtime || st.realtime) && !o.control && !real {
@@ -542,6 +551,7 @@ pub fn jog(st: &mut RobotState, clock: &mut dyn Clock, target: Joints) -> Result
         .map_err(|e| e.to_string())?
         .duration();
     let start = clock.now();
+    record::announce(st, start, &from, &[target], d);
     st.robot
         .move_joints(&[target], d)
         .map_err(|e| e.to_string())?;
@@ -713,7 +723,10 @@ fn move_frame(
     let from = st.robot.joints();
     let points = match frame_motion(st, &from, &goal) {
         Ok(p) => p,
-        Err(e) => return Err(kin_fail(st, service, &e)),
+        Err(e) => {
+            st.refused = Some((cx.clock.now(), goal));
+            return Err(kin_fail(st, service, &e));
+        }
     };
     let duration = if st.straight {
         let d = path_duration(
@@ -1098,7 +1111,10 @@ fn move_axes_absolute(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Op
     require_motion(cx, st, "MoveAxesAbsolute", &o)?;
     let target = match st.kin.joint_target(&axes) {
         Ok(t) => t,
-        Err(e) => return Err(kin_fail(st, "MoveAxesAbsolute", &e)),
+        Err(e) => {
+            st.refused = Some((cx.clock.now(), st.kin.fk_tcp(&axes, &st.tool.trans)));
+            return Err(kin_fail(st, "MoveAxesAbsolute", &e));
+        }
     };
     let d = plan(st, "MoveAxesAbsolute", &target, &o)?;
     perform(cx, st, "MoveAxesAbsolute", &[target], d, &o)?;
@@ -1112,7 +1128,14 @@ fn move_axes_relative(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Op
     let current = st.robot.joints();
     let target = match st.kin.relative_joint_target(&current, &delta) {
         Ok(t) => t,
-        Err(e) => return Err(kin_fail(st, "MoveAxesRelative", &e)),
+        Err(e) => {
+            let mut goal = current;
+            for (g, d) in goal.iter_mut().zip(delta) {
+                *g += d;
+            }
+            st.refused = Some((cx.clock.now(), st.kin.fk_tcp(&goal, &st.tool.trans)));
+            return Err(kin_fail(st, "MoveAxesRelative", &e));
+        }
     };
     let d = plan(st, "MoveAxesRelative", &target, &o)?;
     perform(cx, st, "MoveAxesRelative", &[target], d, &o)?;

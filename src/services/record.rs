@@ -17,6 +17,15 @@ pub struct Sample {
     pub grip: f64,
 }
 
+/// Who sees each motion when it starts, before it is paced or driven: the
+/// live 3D view (`--view`). It gets the same samples the recording keeps.
+pub trait Watch {
+    /// The samples of a motion that starts now, or a gripper's new pose.
+    fn samples(&mut self, samples: &[Sample]);
+    /// The motion announced last ended early (Ctrl-C) with the pose `s`.
+    fn cut(&mut self, s: &Sample);
+}
+
 /// Seconds between the samples of a joint motion.
 const STEP: f64 = 0.02;
 
@@ -122,7 +131,19 @@ pub(super) fn motion(
     if st.record.is_none() {
         return;
     }
-    let new: Vec<Sample> = fractions(points.len().max(1), duration)
+    let new = samples_of(st, start, before, points, duration);
+    add(st, new);
+}
+
+/// The samples [`motion`] records for a motion.
+fn samples_of(
+    st: &RobotState,
+    start: f64,
+    before: &Joints,
+    points: &[Joints],
+    duration: f64,
+) -> Vec<Sample> {
+    fractions(points.len().max(1), duration)
         .iter()
         .map(|&f| {
             sample(
@@ -131,26 +152,48 @@ pub(super) fn motion(
                 super::interpolate(before, points, f),
             )
         })
-        .collect();
-    add(st, new);
+        .collect()
+}
+
+/// Shows a motion that starts now to the [`Watch`], when there is one.
+pub(super) fn announce(
+    st: &mut RobotState,
+    start: f64,
+    before: &Joints,
+    points: &[Joints],
+    duration: f64,
+) {
+    if st.watch.is_none() {
+        return;
+    }
+    let new = samples_of(st, start, before, points, duration);
+    if let Some(w) = &mut st.watch {
+        w.samples(&new);
+    }
 }
 
 /// Records the robot's pose now (e.g. after a gripper motion).
 pub(super) fn point(st: &mut RobotState, t: f64) {
-    if st.record.is_none() {
+    if st.record.is_none() && st.watch.is_none() {
         return;
     }
     let s = sample(st, t, st.robot.joints());
+    if let Some(w) = &mut st.watch {
+        w.samples(&[s]);
+    }
     add(st, vec![s]);
 }
 
 /// Ends a motion that was recorded whole where the arm stopped (Ctrl-C):
 /// the samples after `t` go, and the pose `q` at `t` is the last one.
 pub(super) fn cut(st: &mut RobotState, t: f64, q: Joints) {
-    if st.record.is_none() {
+    if st.record.is_none() && st.watch.is_none() {
         return;
     }
     let s = sample(st, t, q);
+    if let Some(w) = &mut st.watch {
+        w.cut(&s);
+    }
     if let Some(r) = &mut st.record {
         while r.last().is_some_and(|x| x.t >= t) {
             r.pop();

@@ -1,0 +1,360 @@
+//! `--view`, the 3D view, through the real binary, without a browser: the
+//! replay page carries what `--record` writes, the live stream carries
+//! every motion in order, bad paths are refused before the run.
+//! (The pages in a real browser: tests/view_browser.rs.)
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+/// Moves to a frame, stores two path positions, draws a 60 mm line, closes
+/// the jaws, then fails: an unreachable frame (unhandled exception).
+const SCRIPT: &str = r#"Put_Line ("started");
+InitRobot;
+MoveFrameAbsolute (((-1.0, 0.0, 0.0, 280.0), (0.0, 1.0, 0.0, 0.0), (0.0, 0.0, -1.0, 150.0)));
+CreatePath (1);
+InsertPosition (1, 1, ValueFrameAbsolute);
+SetMoveMode (StraightLine);
+MoveFrameAbsolute (((-1.0, 0.0, 0.0, 280.0), (0.0, 1.0, 0.0, 60.0), (0.0, 0.0, -1.0, 150.0)));
+InsertPosition (1, 2, ValueFrameAbsolute);
+MoveTool (20.0, 5.0);
+MoveFrameAbsolute (((-1.0, 0.0, 0.0, 5000.0), (0.0, 1.0, 0.0, 0.0), (0.0, 0.0, -1.0, 150.0)));
+"#;
+
+fn dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("adair-view-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn adair() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_adair"))
+}
+
+fn script(d: &Path) -> PathBuf {
+    let p = d.join("cell.air");
+    std::fs::write(&p, SCRIPT).unwrap();
+    p
+}
+
+/// The text of the page's `<script>` element with this id.
+fn element<'a>(page: &'a str, id: &str) -> &'a str {
+    let at = page
+        .find(&format!("id=\"{id}\">"))
+        .unwrap_or_else(|| panic!("no element {id}"));
+    let rest = &page[at..];
+    let open = rest.find('>').unwrap() + 1;
+    let close = rest.find("</script>").unwrap();
+    &rest[open..close]
+}
+
+#[test]
+fn the_replay_page_carries_what_record_writes() {
+    let d = dir("replay");
+    let s = script(&d);
+    for robot in ["rv-m1", "rm-501"] {
+        let (page, csv) = (
+            d.join(format!("{robot}.html")),
+            d.join(format!("{robot}.csv")),
+        );
+        let out = adair()
+            .args(["run", "--robot", robot, "--view"])
+            .arg(&page)
+            .arg("--record")
+            .arg(&csv)
+            .arg(&s)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(1), "{out:?}");
+        let page = std::fs::read_to_string(&page).unwrap();
+        let csv = std::fs::read_to_string(&csv).unwrap();
+        assert!(csv.lines().count() > 50, "{csv}");
+        assert_eq!(element(&page, "adair-record"), csv, "{robot}");
+        assert_eq!(adair::view::embedded_record(&page), Some(csv.as_str()));
+        // The scene: the robot, both path positions, the refused goal and
+        // the message at the time it was raised.
+        let scene: serde_json::Value = serde_json::from_str(element(&page, "adair-scene")).unwrap();
+        let name = if robot == "rv-m1" { "RV-M1" } else { "RM-501" };
+        assert_eq!(scene["robot"]["name"], name);
+        assert_eq!(scene["paths"].as_array().unwrap().len(), 2, "{scene}");
+        let end = &scene["end"];
+        assert!(
+            end["exception"].as_str().unwrap().contains("OUTOFREACH"),
+            "{end}"
+        );
+        assert_eq!(end["goal"][0][3], 5000.0, "{end}");
+        let last_t: f64 = csv
+            .lines()
+            .last()
+            .unwrap()
+            .split(',')
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert!(
+            (end["t"].as_f64().unwrap() - last_t).abs() < 1e-3,
+            "{end} {last_t}"
+        );
+        // Self-contained: three and the page's code are in it, nothing is
+        // loaded from elsewhere.
+        assert!(page.contains("var THREE="), "three is inlined");
+        assert!(page.contains("window.adairView"), "view.js is inlined");
+        for needle in ["src=\"http", "src='http", "import(", "href=\"http"] {
+            assert!(!page.contains(needle), "the page loads {needle}");
+        }
+    }
+}
+
+#[test]
+fn a_robot_file_is_drawn_with_its_own_links() {
+    let d = dir("robotfile");
+    let s = script(&d);
+    let text = adair::kinematics::RobotDescription::builtin_text("rv-m1")
+        .unwrap()
+        .replace("l2 = 250.0", "l2 = 270.0")
+        .replace("name = \"RV-M1\"", "name = \"Long arm\"");
+    let file = d.join("long.toml");
+    std::fs::write(&file, text).unwrap();
+    let page = d.join("long.html");
+    let out = adair()
+        .args(["run", "--robot-file"])
+        .arg(&file)
+        .arg("--view")
+        .arg(&page)
+        .arg(&s)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    let page = std::fs::read_to_string(&page).unwrap();
+    let scene: serde_json::Value = serde_json::from_str(element(&page, "adair-scene")).unwrap();
+    assert_eq!(scene["robot"]["name"], "Long arm");
+    assert_eq!(scene["robot"]["links"]["l2"], 270.0);
+}
+
+#[test]
+fn a_bad_view_path_is_exit_2_before_the_run() {
+    let d = dir("bad");
+    let s = script(&d);
+    let missing = d.join("no/such/dir/run.html");
+    let cases: [(PathBuf, &str); 3] = [
+        (missing, "does not exist"),
+        (d.join("run.txt"), ".html"),
+        (d.clone(), "must end in .html"),
+    ];
+    for (p, why) in cases {
+        let out = adair()
+            .args(["run", "--view"])
+            .arg(&p)
+            .arg(&s)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{p:?}: {out:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("--view") && err.contains(why), "{err}");
+        assert!(out.stdout.is_empty(), "the program ran: {out:?}");
+    }
+    // A directory named like a page is refused too.
+    let page_dir = d.join("dir.html");
+    std::fs::create_dir_all(&page_dir).unwrap();
+    let out = adair()
+        .args(["run", "--view"])
+        .arg(&page_dir)
+        .arg(&s)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    assert!(out.stdout.is_empty());
+}
+
+#[test]
+fn the_repl_writes_a_page_with_colon_view() {
+    let d = dir("repl");
+    let page = d.join("repl.html");
+    let csv = d.join("repl.csv");
+    let input = format!(
+        "InitRobot;\nMoveAxesAbsolute ((0.3, 0.2, 0.4, 0.1, 0.0));\n:view {}\n:record {}\n",
+        page.display(),
+        csv.display()
+    );
+    let mut child = adair()
+        .arg("repl")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(input.as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("wrote") && text.contains("repl.html"),
+        "{text}"
+    );
+    let page = std::fs::read_to_string(&page).unwrap();
+    let csv = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(element(&page, "adair-record"), csv);
+}
+
+/// The events of a live view's stream, as (name, data) pairs, read by a
+/// plain HTTP client over loopback until the program has ended.
+fn read_events(port: u16) -> Vec<(String, String)> {
+    let mut s = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
+    s.write_all(b"GET /events HTTP/1.1\r\nHost: 127.0.0.1\r\nAccept: text/event-stream\r\n\r\n")
+        .unwrap();
+    s.set_read_timeout(Some(std::time::Duration::from_secs(30)))
+        .unwrap();
+    let mut r = BufReader::new(s);
+    let mut status = String::new();
+    r.read_line(&mut status).unwrap();
+    assert!(status.starts_with("HTTP/1.1 200"), "{status}");
+    let mut line = String::new();
+    loop {
+        line.clear();
+        r.read_line(&mut line).unwrap();
+        if line == "\r\n" {
+            break;
+        }
+    }
+    let mut events = Vec::new();
+    let (mut name, mut data) = (String::new(), String::new());
+    loop {
+        line.clear();
+        if r.read_line(&mut line).unwrap_or(0) == 0 {
+            break;
+        }
+        let l = line.trim_end_matches('\n');
+        if let Some(n) = l.strip_prefix("event: ") {
+            name = n.to_string();
+        } else if let Some(x) = l.strip_prefix("data: ") {
+            data.push_str(x);
+            data.push('\n');
+        } else if l.is_empty() && !name.is_empty() {
+            let done = name == "state" && data.contains("\"done\":true");
+            events.push((std::mem::take(&mut name), std::mem::take(&mut data)));
+            if done {
+                break;
+            }
+        }
+    }
+    events
+}
+
+/// Starts `adair run --view --no-open` and returns it with its port.
+fn live_run(
+    args: &[&str],
+    s: &Path,
+) -> (
+    std::process::Child,
+    u16,
+    BufReader<std::process::ChildStderr>,
+) {
+    let mut child = adair()
+        .args(["run", "--view", "--no-open"])
+        .args(args)
+        .arg(s)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut err = BufReader::new(child.stderr.take().unwrap());
+    let mut line = String::new();
+    err.read_line(&mut line).unwrap();
+    assert!(line.contains("loopback"), "{line}");
+    let port: u16 = line
+        .split("http://127.0.0.1:")
+        .nth(1)
+        .and_then(|r| r.split('/').next())
+        .and_then(|p| p.parse().ok())
+        .unwrap_or_else(|| panic!("no port in {line}"));
+    (child, port, err)
+}
+
+#[test]
+fn the_live_stream_carries_every_motion_in_order() {
+    let d = dir("live");
+    let s = script(&d);
+    let csv = d.join("cell.csv");
+    let rec = adair()
+        .args(["run", "--record"])
+        .arg(&csv)
+        .arg(&s)
+        .output()
+        .unwrap();
+    assert_eq!(rec.status.code(), Some(1));
+    let recorded = std::fs::read_to_string(&csv).unwrap();
+    let started = std::time::Instant::now();
+    let (mut child, port, mut err) = live_run(&[], &s);
+    let events = read_events(port);
+    let status = child.wait().unwrap();
+    let mut rest = String::new();
+    err.read_to_string(&mut rest).unwrap();
+    assert_eq!(status.code(), Some(1), "{rest}");
+    // Paced to the wall clock as --realtime is: the arm's motions took
+    // their time (the jaws' 0.8 s are not paced, as with --realtime).
+    let last_t: f64 = recorded
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(
+        started.elapsed().as_secs_f64() >= last_t * 0.6,
+        "{:?} for {last_t} s of motion",
+        started.elapsed()
+    );
+    assert_eq!(events[0].0, "scene", "{events:?}");
+    let mut streamed = String::from("t,j1,j2,j3,j4,j5,x,y,z,grip\n");
+    for (name, data) in &events {
+        if name == "rows" {
+            streamed.push_str(data);
+        }
+    }
+    assert_eq!(streamed, recorded, "the stream and the recording differ");
+    let (last, data) = events.last().unwrap();
+    assert_eq!(last, "state");
+    assert!(
+        data.contains("OUTOFREACH") && data.contains("5000.0"),
+        "{data}"
+    );
+}
+
+#[test]
+fn the_live_view_says_it_listens_on_loopback_only_and_a_closed_page_does_not_disturb_the_run() {
+    let d = dir("closed");
+    let s = script(&d);
+    let (mut child, port, mut err) = live_run(&["--view-port", "0"], &s);
+    // A page that connects and goes at once, and one that stays.
+    {
+        let mut c = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
+        c.write_all(b"GET /events HTTP/1.1\r\nHost: x\r\n\r\n")
+            .unwrap();
+    }
+    let page = {
+        let mut c = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
+        c.write_all(b"GET / HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n")
+            .unwrap();
+        let mut text = String::new();
+        c.read_to_string(&mut text).unwrap();
+        text
+    };
+    assert!(page.contains("ADAIR_MODE = \"live\""), "{}", &page[..200]);
+    let events = read_events(port);
+    let out = child.wait().unwrap();
+    let mut rest = String::new();
+    err.read_to_string(&mut rest).unwrap();
+    assert_eq!(out.code(), Some(1), "{rest}");
+    assert!(
+        events.iter().filter(|e| e.0 == "rows").count() >= 4,
+        "{events:?}"
+    );
+    assert!(!rest.contains("panicked"), "{rest}");
+}
