@@ -373,8 +373,9 @@ pub fn judge(script: &Path, actual: String, bless: bool) -> Verdict {
 }
 
 /// Seconds a program gets, after its time limit interrupted it, to end and
-/// print what it printed; then its process is killed.
-const GRACE: Duration = Duration::from_secs(2);
+/// print what it printed; then its process is killed (a child whose parent
+/// is gone ends itself one more grace later).
+pub const GRACE: Duration = Duration::from_secs(2);
 
 /// The exit status of a child run stopped by its time limit (as `timeout(1)`).
 pub const TIMED_OUT_STATUS: i32 = 124;
@@ -620,8 +621,9 @@ pub fn progress(r: &CaseResult, paint: bool) -> String {
             indent(e).trim_end()
         ),
         Verdict::TimedOut { limit, partial } => format!(
-            "{} {shown}: still running after {} s (wall clock), stopped; a longer limit: \
-             --timeout SECONDS, or a first line `-- adair: --timeout SECONDS`{}",
+            "{} {shown}: still running after {} s (wall clock), stopped (as Ctrl-C stops a \
+             run); a longer limit: --timeout SECONDS, or a first line \
+             `-- adair: --timeout SECONDS`{}",
             p.wrap("1;31", "FAIL"),
             limit,
             match partial {

@@ -952,6 +952,10 @@ fn test_child(paths: &[PathBuf], mut target: adair::golden::Target, timeout: f64
             std::thread::sleep(std::time::Duration::from_secs_f64(timeout));
             timed_out.store(true, std::sync::atomic::Ordering::SeqCst);
             flag.store(true, std::sync::atomic::Ordering::SeqCst);
+            // A program that does not stop is killed by the parent after
+            // the grace; without a parent (killed itself), it ends here.
+            std::thread::sleep(2 * adair::golden::GRACE);
+            std::process::exit(adair::golden::TIMED_OUT_STATUS);
         });
     }
     target.interrupt = Some(flag);
