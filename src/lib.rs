@@ -23,3 +23,4 @@ pub mod session;
 pub mod simctl;
 pub mod syntax;
 pub mod view;
+pub mod work;

@@ -367,6 +367,7 @@ impl Checker {
     /// Memoised per node while an outermost expression is checked (see
     /// `Checker::memo`), which keeps overload resolution linear.
     pub(super) fn interps(&mut self, e: &ast::Expr) -> Vec<TypeId> {
+        crate::work::tick();
         let outer = self.memo.is_none();
         if outer {
             self.memo = Some(HashMap::new());
@@ -610,6 +611,15 @@ impl Checker {
                     .any(|s| s.name.as_deref() == Some(id.key.as_ref())) =>
             {
                 true
+            }
+            // Each prefix of an expanded name is a distinct package or
+            // enclosing scope, so a longer chain is a component selection:
+            // answering that without walking it keeps a dotted name of
+            // n parts linear (each level asks this of its prefix).
+            ExprKind::Select(..)
+                if select_depth_exceeds(p, self.packages.len() + self.scopes.len()) =>
+            {
+                false
             }
             ExprKind::Name(_) | ExprKind::Select(..) => {
                 matches!(self.denote(p, false).first(), Some(Entity::Package(_)))
@@ -1053,6 +1063,7 @@ impl Checker {
     /// Checks an expression; `want` is the type the context expects, if known.
     /// Checks an expression against the type it should have (if known).
     pub(super) fn expr(&mut self, e: &ast::Expr, want: Option<TypeId>) -> Ex {
+        crate::work::tick();
         if self.memo.is_some() {
             return self.expr_inner(e, want);
         }
@@ -3324,4 +3335,16 @@ pub(super) fn mode_text(m: ast::Mode) -> &'static str {
         ast::Mode::Out => "out ",
         ast::Mode::InOut => "in out ",
     }
+}
+
+/// Whether `e` is a chain of more than `limit` selections, walking at most
+/// `limit + 1` of them.
+fn select_depth_exceeds(mut e: &ast::Expr, limit: usize) -> bool {
+    for _ in 0..=limit {
+        match &e.kind {
+            ExprKind::Select(p, _) => e = p,
+            _ => return false,
+        }
+    }
+    true
 }

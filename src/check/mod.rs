@@ -944,6 +944,7 @@ impl Checker {
 
     /// Finds the entities a name (identifier or selected name) denotes.
     fn denote(&mut self, n: &ast::Expr, report: bool) -> Vec<Entity> {
+        crate::work::tick();
         match &n.kind {
             ast::ExprKind::Name(id) => {
                 let es = self.lookup(&id.key);

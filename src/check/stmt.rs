@@ -161,6 +161,7 @@ impl Checker {
     }
 
     pub(super) fn stmt(&mut self, s: &ast::Stmt, out: &mut Vec<Stmt>) {
+        crate::work::tick();
         let sp = s.span;
         if self.masters.is_empty() && !matches!(s.kind, S::Decl(_) | S::Null | S::Error) {
             self.activate_library_tasks(out, sp);

@@ -82,6 +82,19 @@ fn closing<'t, I: TokIn<'t>, O: Clone + Default + 't>(
             .then_ignore(just(Token::Kw(k)).not())
             .map_with(|_, e| (O::default(), Some(e.span())))
             .rewind(),
+        // The text ends first (an editor's unfinished text): the construct
+        // is reported as unclosed and taken as ended. Failing instead made
+        // the statement around it skip the rest of the text, level after
+        // level: time quadratic in the nesting.
+        end().map_with(|_, e| (O::default(), Some(e.span()))),
+        // Another word that ends a statement sequence (`else`, `when`,
+        // `exception`, ...): it belongs to what encloses the construct,
+        // which is reported unclosed and taken as ended there, as for
+        // `end Name` (failing made each enclosing level parse the rest again).
+        seq_end()
+            .and_is(just(Token::Kw(Kw::End)).not())
+            .map_with(|_, e| (O::default(), Some(e.span())))
+            .rewind(),
     ))
     .labelled(label)
 }
@@ -2242,7 +2255,10 @@ pub fn parse_with(
     if let Some(d) = too_deep(tokens) {
         return (None, vec![d]);
     }
-    let input = tokens.map(eoi, |(t, s)| (t, s));
+    let input = tokens.map(eoi, |(t, s)| {
+        crate::work::tick();
+        (t, s)
+    });
     let (out, errs) = compilation(lazy).parse(input).into_output_errors();
     let mut diags: Vec<Diagnostic> = errs.into_iter().map(|e| rich_to_diag(e, tokens)).collect();
     diags.dedup_by(|a, b| a.span == b.span);
@@ -2284,7 +2300,10 @@ pub fn parse_stmts(
     if let Some(d) = too_deep(tokens) {
         return (None, vec![d]);
     }
-    let input = tokens.map(eoi, |(t, s)| (t, s));
+    let input = tokens.map(eoi, |(t, s)| {
+        crate::work::tick();
+        (t, s)
+    });
     let (out, errs) = parsers(false)
         .stmt
         .repeated()
@@ -2500,7 +2519,10 @@ pub fn parse_expr_entry(tokens: &[(Token, Span)], file: FileId, src_len: usize) 
     if too_deep(tokens).is_some() {
         return None;
     }
-    let input = tokens.map(eoi, |(t, s)| (t, s));
+    let input = tokens.map(eoi, |(t, s)| {
+        crate::work::tick();
+        (t, s)
+    });
     let p = expr()
         .then_ignore(just(Token::Semi).or_not())
         .then_ignore(end());
@@ -2571,6 +2593,12 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
                 )),
                 _ => None,
             };
+            // The text ends before the construct's `end`: one diagnostic at
+            // the end of the input, which `explain_unclosed` words.
+            if ended.is_none() && !tokens.iter().any(|(_, s)| s.start >= span.start) {
+                return Diagnostic::syntax(span, format!("the text ends inside the `{word}`"))
+                    .with_label("end of input");
+            }
             if let Some((message, hint, note)) = ended {
                 let mut d = Diagnostic::syntax(span, format!("{message} at {OPENER_AT}"))
                     .with_label("end of input")
@@ -2585,7 +2613,17 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
                 .skip_while(|(_, s)| s.start < span.start)
                 .nth(1)
                 .is_some_and(|(t, _)| *t == Token::Semi);
-            let (label, hint) = if bare {
+            let other = tokens
+                .iter()
+                .find(|(_, s)| s.start >= span.start)
+                .filter(|(t, _)| *t != Token::Kw(Kw::End))
+                .map(|(t, _)| t.to_string());
+            let (label, hint) = if let Some(other) = other {
+                (
+                    format!("{other} comes before the `{word}` is closed"),
+                    format!("add `end {word};` before this line"),
+                )
+            } else if bare {
                 (
                     format!("this should be `end {word};`"),
                     format!("write `end {word};`"),
