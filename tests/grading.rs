@@ -464,3 +464,60 @@ fn junit_reports_every_script_in_well_formed_xml() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The processes running `adair test --child` in `dir`.
+fn children_in(dir: &Path) -> Vec<u32> {
+    let Ok(procs) = std::fs::read_dir("/proc") else {
+        return Vec::new();
+    };
+    procs
+        .flatten()
+        .filter_map(|e| e.file_name().to_str()?.parse::<u32>().ok())
+        .filter(|pid| {
+            let cmd = std::fs::read(format!("/proc/{pid}/cmdline")).unwrap_or_default();
+            let child = cmd.split(|b| *b == 0).any(|a| a == b"--child");
+            child
+                && std::fs::read_link(format!("/proc/{pid}/cwd"))
+                    .is_ok_and(|c| c == dir || std::fs::canonicalize(dir).is_ok_and(|d| c == d))
+        })
+        .collect()
+}
+
+/// `adair test` killed while a script runs that swallows every interrupt:
+/// the script's process does not run on for ever without its parent.
+#[test]
+fn a_script_does_not_outlive_a_killed_adair_test() {
+    let dir = class("orphan");
+    write(
+        &dir,
+        "stubborn.air",
+        "loop\n   begin\n      loop\n         null;\n      end loop;\n   exception\n      \
+         when others => null;\n   end;\nend loop;\n",
+    );
+    let mut parent = Command::new(BIN)
+        .args(["test", "--timeout", "1", "stubborn.air"])
+        .current_dir(&dir)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    let mut pids = Vec::new();
+    while pids.is_empty() && start.elapsed() < Duration::from_secs(10) {
+        std::thread::sleep(Duration::from_millis(20));
+        pids = children_in(&dir);
+    }
+    assert!(!pids.is_empty(), "no child process seen");
+    parent.kill().unwrap();
+    parent.wait().unwrap();
+    // The limit (1 s), then twice the grace (2 s), and a margin.
+    while !children_in(&dir).is_empty() && start.elapsed() < Duration::from_secs(12) {
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    let left = children_in(&dir);
+    for pid in &left {
+        let _ = Command::new("kill").args(["-9", &pid.to_string()]).status();
+    }
+    assert!(left.is_empty(), "still running after {:?}", start.elapsed());
+    let _ = std::fs::remove_dir_all(&dir);
+}
