@@ -599,10 +599,14 @@ pub fn progress(r: &CaseResult, paint: bool) -> String {
         Verdict::Pass => format!("{} {shown}{time}\n", p.wrap("32", "ok  ")),
         Verdict::Blessed => format!("{} {shown}{time}\n", p.wrap("33", "blessed")),
         Verdict::Missing { actual } => format!(
-            "{} {shown}: no {} (run with --bless to create it); it printed:\n{}",
+            "{} {shown}: no {} (run with --bless to create it); it printed{}",
             p.wrap("1;31", "FAIL"),
             exp.display(),
-            indent(actual)
+            if actual.is_empty() {
+                " nothing\n".to_string()
+            } else {
+                format!(":\n{}", indent(actual))
+            }
         ),
         Verdict::Differs { expected, actual } => format!(
             "{} {shown}{time}: the output differs from {exp_name}\n{}",
