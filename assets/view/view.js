@@ -218,7 +218,7 @@
     g.textBaseline = "middle";
     g.fillText(text, 64, 24);
     const s = new T.Sprite(new T.SpriteMaterial({ map: new T.CanvasTexture(c), depthTest: false }));
-    s.scale.set(80, 30, 1);
+    s.scale.set(120, 45, 1);
     return s;
   }
 
@@ -363,8 +363,12 @@
     draw();
   }, { passive: false });
 
+  // `#size=WxH` draws at that size whatever the window (reproducible
+  // screenshots: tests and docs/images).
+  const fixed = (new URLSearchParams(location.hash.slice(1)).get("size") || "").split("x").map(Number);
   function resize() {
-    const w = host.clientWidth || window.innerWidth, h = host.clientHeight || window.innerHeight;
+    let w = host.clientWidth || window.innerWidth, h = host.clientHeight || window.innerHeight;
+    if (fixed.length === 2 && fixed[0] > 0 && fixed[1] > 0) [w, h] = fixed;
     renderer.setSize(w, h);
     camera.aspect = w / h;
     camera.updateProjectionMatrix();
