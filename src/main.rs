@@ -898,18 +898,24 @@ fn real_main(
                     args.push("--rehearse".into());
                 }
             }
-            let runner = adair::golden::Isolated {
-                exe,
-                global: globals.map(|g| g.forward.clone()).unwrap_or_default(),
-                args,
-                env: Vec::new(),
-                timeout,
-            };
             // One arm: one script at a time.
             let jobs = if serial.port.is_some() {
                 1
             } else {
                 jobs.map_or_else(adair::golden::default_jobs, usize::from)
+            };
+            let mut global = globals.map(|g| g.forward.clone()).unwrap_or_default();
+            if jobs > 1 && !global.iter().any(|a| a == "--max-memory") {
+                // Scripts run at once share the memory: each has its part.
+                let part = adair::interp::memory::default_limit() / jobs;
+                global.extend(["--max-memory".into(), part.to_string().into()]);
+            }
+            let runner = adair::golden::Isolated {
+                exe,
+                global,
+                args,
+                env: Vec::new(),
+                timeout,
             };
             let paint = globals.is_some_and(|g| g.paint);
             let results = adair::golden::run_all(

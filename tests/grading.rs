@@ -521,3 +521,46 @@ fn a_script_does_not_outlive_a_killed_adair_test() {
     assert!(left.is_empty(), "still running after {:?}", start.elapsed());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The `--max-memory` each script's process was given, with `-j jobs`.
+fn memory_given(name: &str, jobs: &str) -> Option<u64> {
+    let dir = class(name);
+    write(&dir, "a.air", "loop\n   null;\nend loop;\n");
+    write(&dir, "b.air", "loop\n   null;\nend loop;\n");
+    let mut parent = Command::new(BIN)
+        .args(["test", "--timeout", "1", "-j", jobs])
+        .current_dir(&dir)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    let mut given = None;
+    while start.elapsed() < Duration::from_secs(10) {
+        if let Some(pid) = children_in(&dir).first() {
+            let cmd = std::fs::read(format!("/proc/{pid}/cmdline")).unwrap_or_default();
+            let args: Vec<String> = cmd
+                .split(|b| *b == 0)
+                .map(|a| String::from_utf8_lossy(a).into_owned())
+                .collect();
+            given = args
+                .iter()
+                .position(|a| a == "--max-memory")
+                .and_then(|i| args.get(i + 1)?.parse().ok());
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    parent.wait().unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    given
+}
+
+/// Scripts that run at once share the memory (a class of recursion bombs
+/// must not take the machine): each process gets its part.
+#[test]
+fn scripts_run_at_once_share_the_memory() {
+    assert_eq!(memory_given("memory1", "1"), None);
+    let part = memory_given("memory2", "2").expect("a limit with -j 2");
+    assert!(part > 0, "{part}");
+}
