@@ -802,6 +802,9 @@ pub fn diff_with(
         p.wrap("31", &format!("--- expected: {expected_name}")),
         p.wrap("32", &format!("+++ actual: {actual_name}"))
     );
+    if e != a && e.len() == a.len() && e.iter().zip(&a).all(|(x, y)| x.trim_end() == y.trim_end()) {
+        out.push_str("  (the lines differ only in spaces or tabs at their ends)\n");
+    }
     let ed = edits(&e, &a);
     // The edits to show: each change with its context.
     let changed: Vec<usize> = (0..ed.len())
@@ -1005,6 +1008,16 @@ mod tests {
              +    5 | X\n\
              \x20    5 | e\n     6 | f\n     7 | g\n"
         );
+    }
+
+    #[test]
+    fn a_diff_of_trailing_spaces_says_so() {
+        let d = diff("a\nb\n", "a \nb\n");
+        assert!(
+            d.contains("differ only in spaces or tabs at their ends"),
+            "{d}"
+        );
+        assert!(!diff("a\n", "b \n").contains("only in spaces"));
     }
 
     #[test]
