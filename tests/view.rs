@@ -358,3 +358,74 @@ fn the_live_view_says_it_listens_on_loopback_only_and_a_closed_page_does_not_dis
     );
     assert!(!rest.contains("panicked"), "{rest}");
 }
+
+#[test]
+fn the_repl_streams_each_entrys_motions_live() {
+    let mut child = adair()
+        .args(["repl", "--view", "--no-open"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut err = BufReader::new(child.stderr.take().unwrap());
+    let mut line = String::new();
+    err.read_line(&mut line).unwrap();
+    assert!(
+        line.contains("127.0.0.1") && line.contains("loopback"),
+        "{line}"
+    );
+    let port: u16 = line
+        .split("http://127.0.0.1:")
+        .nth(1)
+        .and_then(|r| r.split('/').next())
+        .and_then(|p| p.parse().ok())
+        .unwrap();
+    let mut s = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
+    s.write_all(b"GET /events HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")
+        .unwrap();
+    s.set_read_timeout(Some(std::time::Duration::from_secs(30)))
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    stdin
+        .write_all(b"InitRobot;\nMoveAxesRelative ((Rad (10.0), 0.0, 0.0, 0.0, 0.0));\nMoveFrameAbsolute (((-1.0, 0.0, 0.0, 5000.0), (0.0, 1.0, 0.0, 0.0), (0.0, 0.0, -1.0, 150.0)));\n")
+        .unwrap();
+    // The events up to the third entry's state: the scene, the motions of
+    // the first two entries, a state after each entry.
+    let mut r = BufReader::new(s);
+    let mut names = Vec::new();
+    let mut last_state = String::new();
+    let mut l = String::new();
+    while names.iter().filter(|n: &&String| *n == "state").count() < 3 {
+        l.clear();
+        assert!(
+            r.read_line(&mut l).unwrap() > 0,
+            "the stream ended: {names:?}"
+        );
+        if let Some(n) = l.strip_prefix("event: ") {
+            names.push(n.trim().to_string());
+        } else if names.last().is_some_and(|n| n == "state") && l.starts_with("data: ") {
+            last_state = l.clone();
+        }
+    }
+    // The third state's data line.
+    last_state.clear();
+    r.read_line(&mut last_state).unwrap();
+    drop(stdin);
+    let out = child.wait_with_output().unwrap();
+    assert!(
+        out.status.success() || out.status.code() == Some(1),
+        "{out:?}"
+    );
+    assert_eq!(names[0], "scene", "{names:?}");
+    let rows = names.iter().filter(|n| *n == "rows").count();
+    assert!(
+        rows >= 2,
+        "InitRobot's and the relative motion's rows: {names:?}"
+    );
+    // The refused goal of the third entry, with its message.
+    assert!(
+        last_state.contains("OUTOFREACH") && last_state.contains("5000.0"),
+        "{last_state}"
+    );
+}

@@ -525,8 +525,14 @@
   src.addEventListener("scene", (e) => {
     events++;
     const sc = JSON.parse(e.data);
-    if (!arm) start(sc);
-    else { scene.end = sc.end; buildPaths(sc.paths || []); }
+    if (!arm) { start(sc); return; }
+    // Another robot (the REPL's `:robot`): the same cell, the new arm.
+    world.remove(arm.root);
+    arm = buildArm(sc.robot);
+    scene.robot = sc.robot;
+    $("title").textContent = (sc.title ? sc.title + " on the " : "") + sc.robot.name;
+    toolCache.length = 0;
+    show();
   });
   src.addEventListener("rows", (e) => {
     events++;
