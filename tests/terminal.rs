@@ -189,6 +189,28 @@ fn repl_ctrl_c_stops_a_running_entry_and_keeps_state() {
     t.keys(&["C-d"]);
 }
 
+/// Ctrl-C always wins: an entry that catches the first Ctrl-C ends the
+/// REPL at the second (exit 130).
+fn repl_second_ctrl_c_ends_an_entry_that_caught_the_first() {
+    let t = Tmux::start(
+        "adair-ctrlc2",
+        &format!(
+            "{} repl; echo \"exit status $?\"; sleep 60",
+            env!("CARGO_BIN_EXE_adair")
+        ),
+    );
+    t.wait_for("adair>");
+    t.keys(&[
+        "loop begin loop null; end loop; exception when others => Put_Line (\"caught\"); end; end loop;",
+        "Enter",
+    ]);
+    std::thread::sleep(Duration::from_millis(500));
+    t.keys(&["C-c"]);
+    t.wait_for("caught");
+    t.keys(&["C-c"]);
+    t.wait_for("exit status 130");
+}
+
 fn repl_ctrl_c_stops_a_long_motion_where_it_is() {
     let t = Tmux::start(
         "adair-motion",
@@ -461,6 +483,10 @@ fn main() {
         (
             "repl_ctrl_c_stops_a_running_entry_and_keeps_state",
             repl_ctrl_c_stops_a_running_entry_and_keeps_state,
+        ),
+        (
+            "repl_second_ctrl_c_ends_an_entry_that_caught_the_first",
+            repl_second_ctrl_c_ends_an_entry_that_caught_the_first,
         ),
         (
             "repl_ctrl_c_stops_a_long_motion_where_it_is",

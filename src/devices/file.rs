@@ -195,7 +195,17 @@ impl Devices {
 
     /// Parses a device file; `path` names it in the error.
     pub fn from_toml(text: &str, path: &str) -> Result<Devices, DeviceFileError> {
-        let cx = Cx { text, path };
+        let newlines = text
+            .bytes()
+            .enumerate()
+            .filter(|(_, b)| *b == b'\n')
+            .map(|(i, _)| i)
+            .collect();
+        let cx = Cx {
+            text,
+            path,
+            newlines,
+        };
         let raw: RawFile = toml::from_str(text).map_err(|e| {
             let span = e.span().unwrap_or(0..0);
             let message = first_line(e.message());
@@ -332,6 +342,9 @@ type Field<'a> = &'a Option<Spanned<Value>>;
 struct Cx<'a> {
     text: &'a str,
     path: &'a str,
+    /// Where each `\n` is: a line number is a binary search (counting
+    /// them for each of 40,000 events took 44 s).
+    newlines: Vec<usize>,
 }
 
 impl Cx<'_> {
@@ -344,7 +357,7 @@ impl Cx<'_> {
     }
 
     fn line(&self, span: &Range<usize>) -> usize {
-        crate::diag::line_col_in(self.text, span.start).0
+        self.newlines.partition_point(|&n| n < span.start) + 1
     }
 
     /// A field the table must have; `table` is the table's span.

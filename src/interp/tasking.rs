@@ -229,6 +229,10 @@ pub(crate) struct Sched {
     /// While an allocator of an access type to tasks runs: the master of
     /// its tasks (see [`Run::master_code`]).
     pub alloc_master: Option<i64>,
+    /// How many tasks of each task type were created (names `Worker #2`,
+    /// ...): counting them for each new one took time quadratic in the
+    /// number of tasks.
+    pub created: HashMap<u32, usize>,
 }
 
 impl Default for Sched {
@@ -247,6 +251,7 @@ impl Default for Sched {
             robot_free_at: 0.0,
             floor: 0,
             alloc_master: None,
+            created: HashMap::new(),
         }
     }
 }
@@ -484,13 +489,11 @@ impl Run<'_> {
         let level = self.c.funcs[body as usize].level as usize;
         let display: Vec<usize> = self.m.display[..level.min(self.m.display.len())].to_vec();
         let tid = self.m.sched.threads.len();
-        let same = self
-            .m
-            .sched
-            .threads
-            .iter()
-            .filter(|t| t.ttype == Some(k))
-            .count();
+        let same = {
+            let n = self.m.sched.created.entry(k).or_default();
+            *n += 1;
+            *n - 1
+        };
         let name = if same == 0 {
             def.name.clone()
         } else {

@@ -271,9 +271,21 @@ pub fn interactive_on(color: bool, drive: super::Drive) -> i32 {
         };
     // After the editor: rustyline installs its own SIGINT handler when it
     // opens the terminal; while an entry runs, Ctrl-C must reach ours.
+    // Ctrl-C always wins: a second one while the same entry still runs
+    // (its program caught the first) ends the REPL at once, exit 130.
+    let seen = Arc::new(AtomicBool::new(false));
     {
-        let f = flag.clone();
-        let _ = ctrlc::set_handler(move || f.store(true, Ordering::SeqCst));
+        let (f, seen) = (flag.clone(), seen.clone());
+        let _ = ctrlc::set_handler(move || {
+            if seen.swap(true, Ordering::SeqCst) {
+                let _ = writeln!(
+                    std::io::stderr(),
+                    "\nadair: Ctrl-C twice: the entry did not stop at the first; leaving the REPL"
+                );
+                std::process::exit(130);
+            }
+            f.store(true, Ordering::SeqCst)
+        });
     }
     let mut helper = AdaHelper {
         names: Vec::new(),
@@ -310,6 +322,7 @@ pub fn interactive_on(color: bool, drive: super::Drive) -> i32 {
                 let line = std::mem::take(&mut pending);
                 let _ = editor.add_history_entry(line.as_str());
                 flag.store(false, Ordering::SeqCst);
+                seen.store(false, Ordering::SeqCst);
                 let reply = repl.entry(&line);
                 // End an unfinished output line, or the prompt would overwrite it.
                 if repl.session.machine.col != 0 {

@@ -341,3 +341,21 @@ proptest::proptest! {
         }
     }
 }
+
+/// Every event knows its line, in a file of many (lines are found by a
+/// binary search now; `bench/linear.sh` times 10,000 to 40,000 events).
+#[test]
+fn each_of_many_events_knows_its_line() {
+    let n = 3000;
+    let mut text = String::from(PARALLEL_ONLY);
+    let first = text.lines().count() + 1;
+    for i in 0..n {
+        text.push_str(&format!(
+            "[[event]]\nat = {i}.0\ndevice = \"parallel\"\ninterrupt = true\n"
+        ));
+    }
+    let d = Devices::from_toml(&text, "many.toml").expect("parses");
+    let lines: Vec<usize> = d.events().iter().map(|e| e.line).collect();
+    let want: Vec<usize> = (0..n).map(|i| first + 4 * i).collect();
+    assert_eq!(lines, want);
+}
