@@ -781,12 +781,13 @@ fn edits(e: &[&str], a: &[&str]) -> Vec<Edit> {
 /// A line diff of expected and actual text, for failure reports, without
 /// colour: see [`diff_with`].
 pub fn diff(expected: &str, actual: &str) -> String {
-    diff_with(expected, actual, "expected", "actual", false)
+    diff_with(expected, actual, "", "", false)
 }
 
 /// A line diff with a legend (`-` lines are the expected text, named
 /// `expected_name`, `+` lines the actual one) and three lines of context
-/// around each change, each line with its number in its own text; coloured
+/// around each change, each line with its number in its own text (names
+/// left empty: the legend is `--- expected` and `+++ actual`); coloured
 /// for a terminal when `paint` (expected red, actual green).
 pub fn diff_with(
     expected: &str,
@@ -797,10 +798,17 @@ pub fn diff_with(
 ) -> String {
     let p = Paint(paint);
     let (e, a): (Vec<&str>, Vec<&str>) = (expected.lines().collect(), actual.lines().collect());
+    let named = |side: &str, name: &str| {
+        if name.is_empty() {
+            side.to_string()
+        } else {
+            format!("{side}: {name}")
+        }
+    };
     let mut out = format!(
         "{}\n{}\n",
-        p.wrap("31", &format!("--- expected: {expected_name}")),
-        p.wrap("32", &format!("+++ actual: {actual_name}"))
+        p.wrap("31", &named("--- expected", expected_name)),
+        p.wrap("32", &named("+++ actual", actual_name))
     );
     if e != a && e.len() == a.len() && e.iter().zip(&a).all(|(x, y)| x.trim_end() == y.trim_end()) {
         out.push_str("  (the lines differ only in spaces or tabs at their ends)\n");
@@ -945,7 +953,7 @@ pub fn junit(results: &[CaseResult], suite: &str) -> String {
                         "the output differs from {}",
                         shown_name(&expected_path(&r.script))
                     ),
-                    &diff_with(expected, actual, "expected", "actual", false),
+                    &diff(expected, actual),
                 ),
                 Some(actual),
             ),
@@ -1002,7 +1010,7 @@ mod tests {
         let d = diff(e, a);
         assert_eq!(
             d,
-            "--- expected: expected\n+++ actual: actual\n\
+            "--- expected\n+++ actual\n\
              @@ expected line 2, actual line 2 @@\n\
              \x20    2 | b\n     3 | c\n     4 | d\n\
              +    5 | X\n\
