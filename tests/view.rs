@@ -429,3 +429,27 @@ fn the_repl_streams_each_entrys_motions_live() {
         "{last_state}"
     );
 }
+
+#[test]
+fn the_devices_of_the_cell_are_in_the_scene() {
+    let d = dir("devices");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let page = d.join("cell.html");
+    let out = adair()
+        .arg("run")
+        .arg("--devices")
+        .arg(root.join("examples/devices/cell.toml"))
+        .arg("--view")
+        .arg(&page)
+        .arg(root.join("examples/tasks/conveyor_cell.air"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let page = std::fs::read_to_string(&page).unwrap();
+    let scene: serde_json::Value = serde_json::from_str(element(&page, "adair-scene")).unwrap();
+    let dev = &scene["devices"];
+    assert_eq!(dev["belts"][0]["name"], "belt", "{dev}");
+    assert_eq!(dev["belts"][0]["end"][0], 250.0, "{dev}");
+    assert_eq!(dev["barriers"][0]["on"], "belt", "{dev}");
+    assert_eq!(dev["objects"][0]["name"], "box1", "{dev}");
+}

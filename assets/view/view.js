@@ -243,17 +243,20 @@
     world.add(pathGroup);
   }
 
-  // Belts run towards their end, which lies away from the base; the beam
-  // of a light barrier crosses its belt's end; objects are boxes.
+  // The device file gives a belt's end, not its direction: it is drawn
+  // passing the robot, square to the line from the base to its end (so it
+  // never runs through the arm). The beam of a light barrier crosses its
+  // belt's end; objects are boxes of their width.
   function buildDevices(dev) {
     if (!dev) return;
     const belts = {};
     for (const b of dev.belts) {
       const end = new T.Vector3(b.end[0], b.end[1], b.end[2]);
-      const dir = new T.Vector3(end.x, end.y, 0);
-      if (dir.length() < 1e-6) dir.set(1, 0, 0);
-      dir.normalize().negate();
+      const radial = new T.Vector3(end.x, end.y, 0);
+      if (radial.length() < 1e-6) radial.set(1, 0, 0);
+      radial.normalize();
       // dir points from the end back to the start.
+      const dir = new T.Vector3(-radial.y, radial.x, 0);
       const len = b.length;
       const g = new T.BoxGeometry(len, 90, 12);
       const mesh = new T.Mesh(g, mat(0x333333));
