@@ -159,13 +159,19 @@ fn work(text: &str) -> u64 {
 /// Fails when the growth from 8 to 16 copies is more than about twice the
 /// growth from 4 to 8.
 fn assert_linear(shape: &Shape) {
-    let texts: Vec<String> = [4, 8, 16].iter().map(|&k| shape.text(k)).collect();
+    assert_linear_at(shape, [4, 8, 16]);
+}
+
+/// [`assert_linear`] at `copies` (each twice the one before).
+fn assert_linear_at(shape: &Shape, copies: [usize; 3]) {
+    let texts: Vec<String> = copies.iter().map(|&k| shape.text(k)).collect();
     let w: Vec<u64> = texts.iter().map(|t| work(t)).collect();
     let (d1, d2) = (w[1].saturating_sub(w[0]), w[2].saturating_sub(w[1]));
     assert!(
         d2 <= d1 * 5 / 2 + 64,
-        "work at 4, 8, 16 copies: {w:?} (growth {d1} then {d2}: not linear)\n\
-         the program at 4 copies:\n{}",
+        "work at {copies:?} copies: {w:?} (growth {d1} then {d2}: not linear)\n\
+         the program at {} copies:\n{}",
+        copies[0],
         texts[0]
     );
 }
@@ -201,8 +207,11 @@ fn known_worst_shapes_are_linear() {
         "# # # $ $ ?",
         "X := R . A . B . A . B . A . B ;",
         "declare begin",
+        "for I in 1 .. 3 loop X := X + I ; if X > 0 then",
     ] {
-        assert_linear(&unit(s));
+        // Deep enough for a cost per level of nesting to show (each name
+        // looked up in every enclosing scope did).
+        assert_linear_at(&unit(s), [100, 200, 400]);
     }
 }
 

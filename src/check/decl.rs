@@ -1154,7 +1154,7 @@ impl Checker {
             idx
         };
         self.push_scope();
-        self.scopes.last_mut().expect("scope").package = Some((idx, false));
+        self.set_scope_package(idx, false);
         // Child units see their parents' declarations.
         if let Some((parent, _)) = full.rsplit_once('.')
             && let Some(pi) = self
@@ -1166,7 +1166,7 @@ impl Checker {
         }
         self.unit_path.extend(name.split('.').map(str::to_string));
         self.decls(&p.decls, out);
-        self.scopes.last_mut().expect("scope").package = Some((idx, true));
+        self.set_scope_package(idx, true);
         self.decls(&p.private, out);
         for _ in name.split('.') {
             self.unit_path.pop();
@@ -1190,7 +1190,7 @@ impl Checker {
             }
         };
         self.push_scope();
-        self.scopes.last_mut().expect("scope").package = Some((idx, true));
+        self.set_scope_package(idx, true);
         self.unit_path.extend(name.split('.').map(str::to_string));
         self.decls_completed(&p.decls, out);
         if let Some(init) = &p.init {

@@ -137,6 +137,12 @@ pub struct Checker {
     pub excs: Vec<Exception>,
     pub packages: Vec<Package>,
     scopes: Vec<Scope>,
+    /// For each name, the scopes (indices into `scopes`, ascending) that
+    /// declare it, and the scopes that are packages': a lookup visits
+    /// these only, not every scope of a deep nest (4,000 unclosed loops
+    /// made each lookup walk 4,000 scopes).
+    declared_in: HashMap<String, Vec<u32>>,
+    package_scopes: Vec<u32>,
     level: u16,
     ctx: Vec<FuncCtx>,
     loops: Vec<(Option<String>, u32)>,
@@ -248,6 +254,8 @@ impl Checker {
             excs: Vec::new(),
             packages: Vec::new(),
             scopes: vec![Scope::default()],
+            declared_in: HashMap::new(),
+            package_scopes: Vec::new(),
             level: 0,
             ctx: vec![FuncCtx {
                 func: None,
@@ -394,8 +402,31 @@ impl Checker {
             s.name = Some(key.to_string());
         }
     }
+    /// Makes the innermost scope the spec (`false`) or body of package `p`.
+    fn set_scope_package(&mut self, p: usize, body: bool) {
+        let i = self.scopes.len() as u32 - 1;
+        self.scopes.last_mut().expect("scope").package = Some((p, body));
+        if self.package_scopes.last() != Some(&i) {
+            self.package_scopes.push(i);
+        }
+    }
     fn pop_scope(&mut self) {
-        self.scopes.pop();
+        let i = self.scopes.len() as u32 - 1;
+        if let Some(s) = self.scopes.pop() {
+            for key in s.names.keys() {
+                if let Some(v) = self.declared_in.get_mut(key) {
+                    if v.last() == Some(&i) {
+                        v.pop();
+                    }
+                    if v.is_empty() {
+                        self.declared_in.remove(key);
+                    }
+                }
+            }
+        }
+        if self.package_scopes.last() == Some(&i) {
+            self.package_scopes.pop();
+        }
         let depth = self.scopes.len();
         for u in self.undeclared.values_mut().flatten() {
             u.1 = u.1.min(depth);
@@ -421,6 +452,12 @@ impl Checker {
                 .push(e.clone()),
             None => {}
         }
+        let i = self.scopes.len() as u32 - 1;
+        let v = self.declared_in.entry(key.clone()).or_default();
+        if v.last() != Some(&i) {
+            v.push(i);
+        }
+        let scope = self.scopes.last_mut().expect("scope");
         scope.names.entry(key).or_default().push(e);
     }
 
@@ -500,7 +537,24 @@ impl Checker {
     /// names collect from all levels).
     fn lookup(&self, key: &str) -> Vec<Entity> {
         let mut found: Vec<Entity> = Vec::new();
-        for s in self.scopes.iter().rev() {
+        // The scopes that declare `key` or are a package's, innermost
+        // first (the others add nothing).
+        let declaring: &[u32] = self.declared_in.get(key).map_or(&[], |v| &v[..]);
+        let (mut d, mut p) = (declaring.len(), self.package_scopes.len());
+        let candidates = std::iter::from_fn(|| {
+            let a = d.checked_sub(1).map(|k| declaring[k]);
+            let b = p.checked_sub(1).map(|k| self.package_scopes[k]);
+            let next = a.max(b)?;
+            if a == Some(next) {
+                d -= 1;
+            }
+            if b == Some(next) {
+                p -= 1;
+            }
+            Some(&self.scopes[next as usize])
+        });
+        for s in candidates {
+            crate::work::tick();
             if let Some(es) = s.names.get(key) {
                 let overloadable = es
                     .iter()
@@ -1086,9 +1140,14 @@ impl Checker {
             }
             None => {
                 // Library-level packages are visible in the outermost scope.
+                let key = full.to_lowercase();
+                let v = self.declared_in.entry(key.clone()).or_default();
+                if v.first() != Some(&0) {
+                    v.insert(0, 0);
+                }
                 self.scopes[0]
                     .names
-                    .entry(full.to_lowercase())
+                    .entry(key)
                     .or_default()
                     .push(Entity::Package(idx));
             }

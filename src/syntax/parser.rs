@@ -2563,9 +2563,12 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
             let word = words.next().unwrap_or("loop").to_string();
             let start: u32 = words.next().and_then(|w| w.parse().ok()).unwrap_or(0);
             // The construct's own keyword (after a label, `for ... `, `while ...`).
-            let opener = tokens
+            // (Tokens are in order: binary searches, not scans, as there
+            // may be one such error per level of a deep nest.)
+            let at = tokens.partition_point(|(_, s)| s.start < span.start);
+            let opener = tokens[tokens.partition_point(|(_, s)| s.start < start)..]
                 .iter()
-                .filter(|(_, s)| s.start >= start && s.start < span.start)
+                .take_while(|(_, s)| s.start < span.start)
                 .find(|(t, _)| match word.as_str() {
                     "if" => *t == Token::Kw(Kw::If),
                     "case" => *t == Token::Kw(Kw::Case),
@@ -2595,7 +2598,7 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
             };
             // The text ends before the construct's `end`: one diagnostic at
             // the end of the input, which `explain_unclosed` words.
-            if ended.is_none() && !tokens.iter().any(|(_, s)| s.start >= span.start) {
+            if ended.is_none() && at == tokens.len() {
                 return Diagnostic::syntax(span, format!("the text ends inside the `{word}`"))
                     .with_label("end of input");
             }
@@ -2608,14 +2611,9 @@ fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -> Diagnosti
             }
             // A bare `end;` was taken as the construct's end; `end Name`
             // belongs to the body around it.
-            let bare = tokens
-                .iter()
-                .skip_while(|(_, s)| s.start < span.start)
-                .nth(1)
-                .is_some_and(|(t, _)| *t == Token::Semi);
+            let bare = tokens.get(at + 1).is_some_and(|(t, _)| *t == Token::Semi);
             let other = tokens
-                .iter()
-                .find(|(_, s)| s.start >= span.start)
+                .get(at)
                 .filter(|(t, _)| *t != Token::Kw(Kw::End))
                 .map(|(t, _)| t.to_string());
             let (label, hint) = if let Some(other) = other {
