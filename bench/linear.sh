@@ -25,6 +25,9 @@ for k, n in (("1x", 1), ("2x", 2), ("4x", 4)):
         head + "for I in 1 .. 3 loop\n  X := X + I;\n  if X > 0 then\n" * (1000 * n))
     open(f"{w}/broken-{k}.air", "w").write(
         head + "X < 10 loop X := X + 1 ; exit when X = 5 ; loop ;\n" * (5000 * n) + "when")
+    open(f"{w}/assign-{k}.air", "w").write(
+        "procedure P is\n" + "".join(f"   V{i} : Integer := 0;\n" for i in range(3000 * n))
+        + "begin\n" + "".join(f"   V{i} := {i};\n" for i in range(3000 * n)) + "end P;\n")
     open(f"{w}/dotted-{k}.air", "w").write(
         head + "X := A" + ".A" * (20000 * n) + ";\nend P;\n")
     open(f"{w}/repl-{k}.txt", "w").write(
@@ -58,6 +61,7 @@ tasks() { secs "$adair" run "$work/tasks-$1.air"; }
 printf '%-34s %8s %8s %8s %6s %6s\n' shape '1x s' '2x s' '4x s' '2x/1x' '4x/2x'
 row "unclosed loops/ifs (1000 at 1x)" check unfinished
 row "broken statements (5000 at 1x)" check broken
+row "variables assigned (3000 at 1x)" check assign
 row "dotted name (20000 parts at 1x)" check dotted
 row "piped REPL (1000 decls at 1x)" repl
 row "device events (10000 at 1x)" devices

@@ -1046,18 +1046,8 @@ impl Checker {
     }
 
     fn var_info(&self, v: Var) -> Option<(String, bool)> {
-        for s in self.scopes.iter().rev() {
-            for (k, es) in &s.names {
-                for e in es {
-                    if let Entity::Var { var, constant, .. } = e
-                        && *var == v
-                    {
-                        return Some((k.clone(), *constant));
-                    }
-                }
-            }
-        }
-        None
+        crate::work::tick();
+        self.var_names.get(&v).cloned()
     }
 
     /// Checks an expression; `want` is the type the context expects, if known.

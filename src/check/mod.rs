@@ -143,6 +143,9 @@ pub struct Checker {
     /// made each lookup walk 4,000 scopes).
     declared_in: HashMap<String, Vec<u32>>,
     package_scopes: Vec<u32>,
+    /// The name and constancy of each variable of the scopes (a scan of
+    /// every scope's names for each assignment was quadratic).
+    var_names: HashMap<Var, (String, bool)>,
     level: u16,
     ctx: Vec<FuncCtx>,
     loops: Vec<(Option<String>, u32)>,
@@ -256,6 +259,7 @@ impl Checker {
             scopes: vec![Scope::default()],
             declared_in: HashMap::new(),
             package_scopes: Vec::new(),
+            var_names: HashMap::new(),
             level: 0,
             ctx: vec![FuncCtx {
                 func: None,
@@ -413,6 +417,11 @@ impl Checker {
     fn pop_scope(&mut self) {
         let i = self.scopes.len() as u32 - 1;
         if let Some(s) = self.scopes.pop() {
+            for e in s.names.values().flatten() {
+                if let Entity::Var { var, .. } = e {
+                    self.var_names.remove(var);
+                }
+            }
             for key in s.names.keys() {
                 if let Some(v) = self.declared_in.get_mut(key) {
                     if v.last() == Some(&i) {
@@ -457,6 +466,9 @@ impl Checker {
         if v.last() != Some(&i) {
             v.push(i);
         }
+        if let Entity::Var { var, constant, .. } = &e {
+            self.var_names.insert(*var, (key.clone(), *constant));
+        }
         let scope = self.scopes.last_mut().expect("scope");
         scope.names.entry(key).or_default().push(e);
     }
@@ -464,6 +476,9 @@ impl Checker {
     /// Replaces the latest meaning of `key` in the innermost scope (and in
     /// its package's table): an object that an address clause maps.
     fn redeclare(&mut self, key: &str, e: Entity) {
+        if let Entity::Var { var, constant, .. } = &e {
+            self.var_names.insert(*var, (key.to_string(), *constant));
+        }
         let scope = self.scopes.last_mut().expect("scope");
         if let Some(last) = scope.names.get_mut(key).and_then(|v| v.last_mut()) {
             *last = e.clone();
