@@ -216,15 +216,16 @@ impl ViewOpts {
         if !self.live() {
             return Ok(None);
         }
-        let sv = adair::view::live::Server::start(self.view_port)?;
+        let mut sv = adair::view::live::Server::start(self.view_port)?;
         eprintln!(
             "adair: 3D view at {} (listening on the loopback interface 127.0.0.1 only)",
             sv.url()
         );
-        if !self.no_open
-            && let Err(e) = adair::view::live::open_browser(&sv.url())
-        {
-            eprintln!("adair: no browser opened ({e}): open the address above");
+        if !self.no_open {
+            match adair::view::live::open_browser(&sv.url()) {
+                Ok(()) => sv.opened = true,
+                Err(e) => eprintln!("adair: no browser opened ({e}): open the address above"),
+            }
         }
         Ok(Some(sv))
     }
@@ -663,7 +664,7 @@ fn real_main(
                 }
             };
             if let Some(sv) = &live {
-                adair::view::live::attach(sv, &mut s, &title, !view.no_open);
+                adair::view::live::attach(sv, &mut s, &title, sv.opened);
             }
             let outcome = s.run_source(&file.to_string_lossy(), text.clone());
             let stopped = s.take_stopped();

@@ -104,6 +104,8 @@ impl Hub {
 pub struct Server {
     pub port: u16,
     pub hub: Arc<Hub>,
+    /// A browser was started on the page (`run` then waits for it).
+    pub opened: bool,
 }
 
 impl Server {
@@ -123,7 +125,11 @@ impl Server {
             .name("adair-view".into())
             .spawn(move || serve(http, h))
             .map_err(|e| format!("cannot start the view server: {e}"))?;
-        Ok(Server { port, hub })
+        Ok(Server {
+            port,
+            hub,
+            opened: false,
+        })
     }
 
     pub fn url(&self) -> String {
@@ -221,7 +227,8 @@ impl record::Watch for HubWatch {
 
 /// Makes the live view watch the run of `s`: each motion goes to the
 /// pages as it starts, and they draw its robot. With a browser just opened
-/// (`waits`), the run starts when that page is there (10 s at most).
+/// (`waits`), the run starts when that page is there (10 s at most); with
+/// `--no-open` or no browser to start, at once.
 pub fn attach(sv: &Server, s: &mut crate::session::Session, title: &str, waits: bool) {
     let world = s.machine.world.as_ref();
     if let Some(st) = s.robot.as_mut() {
