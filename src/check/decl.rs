@@ -1163,6 +1163,7 @@ impl Checker {
                 .position(|x| x.name.eq_ignore_ascii_case(parent))
         {
             self.scopes.last_mut().expect("scope").uses.push(pi);
+            self.mark_uses(self.scopes.len() - 1);
         }
         self.unit_path.extend(name.split('.').map(str::to_string));
         self.decls(&p.decls, out);

@@ -146,6 +146,8 @@ pub struct Checker {
     /// The name and constancy of each variable of the scopes (a scan of
     /// every scope's names for each assignment was quadratic).
     var_names: HashMap<Var, (String, bool)>,
+    /// The scopes with `use` or `use type` clauses (ascending).
+    use_scopes: Vec<u32>,
     level: u16,
     ctx: Vec<FuncCtx>,
     loops: Vec<(Option<String>, u32)>,
@@ -260,6 +262,7 @@ impl Checker {
             declared_in: HashMap::new(),
             package_scopes: Vec::new(),
             var_names: HashMap::new(),
+            use_scopes: Vec::new(),
             level: 0,
             ctx: vec![FuncCtx {
                 func: None,
@@ -414,6 +417,13 @@ impl Checker {
             self.package_scopes.push(i);
         }
     }
+    /// Notes that scope `i` has a `use` clause.
+    fn mark_uses(&mut self, i: usize) {
+        let i = i as u32;
+        if let Err(at) = self.use_scopes.binary_search(&i) {
+            self.use_scopes.insert(at, i);
+        }
+    }
     fn pop_scope(&mut self) {
         let i = self.scopes.len() as u32 - 1;
         if let Some(s) = self.scopes.pop() {
@@ -435,6 +445,9 @@ impl Checker {
         }
         if self.package_scopes.last() == Some(&i) {
             self.package_scopes.pop();
+        }
+        if self.use_scopes.last() == Some(&i) {
+            self.use_scopes.pop();
         }
         let depth = self.scopes.len();
         for u in self.undeclared.values_mut().flatten() {
@@ -608,7 +621,13 @@ impl Checker {
         // Use-visible declarations of packages (and, for an operator, of
         // the packages of `use type` clauses).
         let op = key.starts_with('"');
-        for s in self.scopes.iter().rev() {
+        for s in self
+            .use_scopes
+            .iter()
+            .rev()
+            .map(|&i| &self.scopes[i as usize])
+        {
+            crate::work::tick();
             let op_uses = if op { &s.op_uses[..] } else { &[] };
             for &p in s
                 .uses
@@ -970,6 +989,7 @@ impl Checker {
                     if !s.uses.contains(&p) {
                         s.uses.push(p);
                     }
+                    self.mark_uses(self.scopes.len() - 1);
                 }
                 None => {
                     // `use type T;`: the operators of the package that
@@ -988,6 +1008,7 @@ impl Checker {
                                 if !s.op_uses.contains(&p) {
                                     s.op_uses.push(p);
                                 }
+                                self.mark_uses(self.scopes.len() - 1);
                             }
                         }
                         Some(_) => {
@@ -1180,6 +1201,7 @@ impl Checker {
             && !self.scopes[0].uses.contains(&i)
         {
             self.scopes[0].uses.push(i);
+            self.mark_uses(0);
         }
     }
 
