@@ -433,6 +433,20 @@ pub fn piped_on(
                 continue;
             }
         };
+        // A `:` command is never Ada: it is taken whole on its line (its
+        // words, `:record`, `:load`, were counted as openers, and a command
+        // without its argument swallowed the next line).
+        if buf.trim().is_empty() && line.trim_start().starts_with(':') {
+            let reply = repl.entry(line);
+            buf.clear();
+            let _ = std::io::stdout().flush();
+            let _ = write!(out, "{}", reply.text);
+            failed |= reply.failed;
+            if reply.quit {
+                break;
+            }
+            continue;
+        }
         buf.push_str(line);
         buf.push('\n');
         balance.add_line(line);
