@@ -47,41 +47,12 @@ const HEADER: &str = "procedure P is
 begin
 ";
 
-/// Splits Ada text into tokens well enough to delete whole ones.
+/// The tokens of Ada text, by the project's own lexer.
 fn tokens(s: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let b: Vec<char> = s.chars().collect();
-    let mut i = 0;
-    while i < b.len() {
-        let c = b[i];
-        if c.is_whitespace() {
-            i += 1;
-        } else if c.is_alphanumeric() || c == '_' {
-            let st = i;
-            while i < b.len() && (b[i].is_alphanumeric() || b[i] == '_') {
-                i += 1;
-            }
-            out.push(b[st..i].iter().collect());
-        } else if c == '"' {
-            let st = i;
-            i += 1;
-            while i < b.len() && b[i] != '"' {
-                i += 1;
-            }
-            i = (i + 1).min(b.len());
-            out.push(b[st..i].iter().collect());
-        } else {
-            let two: String = b[i..(i + 2).min(b.len())].iter().collect();
-            if [":=", "..", "=>", "/=", "<=", ">="].contains(&two.as_str()) {
-                out.push(two);
-                i += 2;
-            } else {
-                out.push(c.to_string());
-                i += 1;
-            }
-        }
-    }
-    out
+    let (toks, _) = adair::syntax::lexer::lex(s, 0);
+    toks.iter()
+        .map(|(_, sp)| s[sp.start as usize..sp.end as usize].to_string())
+        .collect()
 }
 
 #[derive(Debug)]

@@ -436,25 +436,17 @@ pub fn piped_on(
         // A `:` command is never Ada: it is taken whole on its line (its
         // words, `:record`, `:load`, were counted as openers, and a command
         // without its argument swallowed the next line).
-        if buf.trim().is_empty() && line.trim_start().starts_with(':') {
-            let reply = repl.entry(line);
-            buf.clear();
-            let _ = std::io::stdout().flush();
-            let _ = write!(out, "{}", reply.text);
-            failed |= reply.failed;
-            if reply.quit {
-                break;
+        let command = buf.trim().is_empty() && line.trim_start().starts_with(':');
+        if !command {
+            buf.push_str(line);
+            buf.push('\n');
+            balance.add_line(line);
+            if balance.surely_open() || unfinished(&buf) {
+                continue;
             }
-            continue;
+            balance = Balance::default();
         }
-        buf.push_str(line);
-        buf.push('\n');
-        balance.add_line(line);
-        if balance.surely_open() || unfinished(&buf) {
-            continue;
-        }
-        balance = Balance::default();
-        let reply = repl.entry(&buf);
+        let reply = repl.entry(if command { line } else { &buf });
         buf.clear();
         let _ = std::io::stdout().flush();
         let _ = write!(out, "{}", reply.text);
