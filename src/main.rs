@@ -652,6 +652,12 @@ fn real_main(
             if record.is_some() || plot.is_some() || view.file().is_some() {
                 s.start_recording();
             }
+            // The replay page places the devices' objects by their moments.
+            if view.file().is_some()
+                && let Some(w) = s.machine.world.as_mut()
+            {
+                w.keep_timeline();
+            }
             let title = file
                 .file_name()
                 .map(|n| n.to_string_lossy().into_owned())

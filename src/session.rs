@@ -340,6 +340,10 @@ impl Session {
         // copies too.
         let tasks = self.machine.sched.clone();
         let world = self.machine.world.clone();
+        // The live view is not told what the rehearsal's devices do.
+        if let Some(w) = self.machine.world.as_mut() {
+            w.set_sink(None);
+        }
         let result = f(self);
         self.machine.world = world;
         self.machine.sched = tasks;

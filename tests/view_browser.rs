@@ -269,6 +269,165 @@ fn live_page_hook_matches_adairs_fk() {
     compare("rm-501", &rows, &answer);
 }
 
+/// The inputs a program gave the device world, read off its `--trace`:
+/// (time, what) with what a motor write (address, value), a pick or a
+/// put-down (object name).
+#[derive(Debug)]
+enum Input {
+    Write(u32, u16),
+    Pick(String),
+    PutDown(String),
+}
+
+fn inputs(trace: &str) -> Vec<(f64, Input)> {
+    let mut out = Vec::new();
+    for line in trace.lines() {
+        let Some(rest) = line.strip_prefix("[t=") else {
+            continue;
+        };
+        let Some((t, what)) = rest.split_once(" s] devices: ") else {
+            continue;
+        };
+        let t: f64 = t.trim().parse().unwrap();
+        if let Some(obj) = what.strip_prefix("gripper: ") {
+            if let Some(name) = obj.strip_suffix(" picked") {
+                out.push((t, Input::Pick(name.to_string())));
+            } else if let Some((name, _)) = obj.split_once(" put down at ") {
+                out.push((t, Input::PutDown(name.to_string())));
+            }
+        } else if let Some((_, reg)) = what.split_once(": motor register 8#") {
+            let (addr, value) = reg.split_once("# := 16#").unwrap();
+            let value = value.trim_end_matches('#');
+            out.push((
+                t,
+                Input::Write(
+                    u32::from_str_radix(addr, 8).unwrap(),
+                    u16::from_str_radix(value, 16).unwrap(),
+                ),
+            ));
+        }
+    }
+    out
+}
+
+/// Where adair's device world has each object at time `t`: the world of
+/// the device file run again with the program's inputs up to `t` (a
+/// held object is at the TCP, by adair's FK of the recorded joints), each
+/// belt position drawn where `adair::view::belt_point` puts it.
+fn simulated_objects(
+    devs: &adair::devices::Devices,
+    inputs: &[(f64, Input)],
+    tcp_at: &dyn Fn(f64) -> [f64; 3],
+    t: f64,
+) -> Vec<(String, [f64; 3])> {
+    use adair::devices::{DeviceKind, Place, World};
+    let mut w = World::new(devs.clone());
+    for (at, input) in inputs.iter().filter(|(at, _)| *at <= t) {
+        w.advance_to(*at);
+        match input {
+            Input::Write(a, v) => w.write(*a, *v).unwrap(),
+            Input::Pick(name) => drop(w.pick(name).unwrap()),
+            Input::PutDown(name) => w.put_down(name, tcp_at(*at)).unwrap(),
+        }
+    }
+    w.advance_to(t);
+    w.objects()
+        .into_iter()
+        .map(|o| {
+            let at = match o.place {
+                Place::OnBelt { belt, position, .. } => match devs.devices()[belt].kind {
+                    DeviceKind::Conveyor { length, end, .. } => {
+                        adair::view::belt_point(end, length, position)
+                    }
+                    _ => unreachable!("an object on a belt"),
+                },
+                Place::Held => tcp_at(t),
+                Place::At(p) => p,
+            };
+            (o.name, at)
+        })
+        .collect()
+}
+
+/// The page's objects move on the timeline as adair's device world moves
+/// them: `adairView.objectAt` (through `#probe`) at times while the boxes
+/// ride the belt, queue behind one another, ride in the gripper and lie
+/// where they were put down, within 0.1 mm of the world run again with the
+/// program's inputs; before an object is on the belt the page has none.
+fn replay_objects_move_as_the_device_world_says() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let d = dir("objects");
+    let (page, csv) = (d.join("belt.html"), d.join("belt.csv"));
+    let toml = root.join("tests/view/belt.toml");
+    let out = Command::new(env!("CARGO_BIN_EXE_adair"))
+        .arg("--devices")
+        .arg(&toml)
+        .args(["run", "--trace", "--view"])
+        .arg(&page)
+        .arg("--record")
+        .arg(&csv)
+        .arg(root.join("tests/view/belt.air"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let trace = String::from_utf8_lossy(&out.stderr);
+    let inputs = inputs(&trace);
+    assert_eq!(inputs.len(), 6, "{inputs:?}\n{trace}");
+    let rows = rows(&std::fs::read_to_string(&csv).unwrap());
+    let desc = RobotDescription::builtin("rv-m1").unwrap();
+    let tool = desc.standard_tool();
+    let kin = Kinematics::new(desc);
+    let tcp_at = |t: f64| adair::view::joint_points(&kin, &joints_at(&rows, t), &tool)[5];
+    let devs = adair::devices::Devices::load(&toml).unwrap();
+    let end = rows.last().unwrap()[0];
+    // Every 0.1 s, and times inside the belt's runs (box2 moving up to
+    // box1 until 2.75 s, moving again from 6.09 s), away from the inputs'
+    // times (the trace gives them to 1 ms).
+    let mut ts: Vec<f64> = (0..((end + 0.3) / 0.1) as usize)
+        .map(|k| k as f64 * 0.1 + 0.013)
+        .collect();
+    ts.extend([0.4, 0.75, 2.6, 2.74, 2.8, 6.2, 6.3, 6.5, end + 0.5]);
+    ts.retain(|t| inputs.iter().all(|(at, _)| (t - at).abs() > 0.01));
+    let list: Vec<String> = ts.iter().map(|t| format!("{t:.4}")).collect();
+    let url = format!("{}#probe={}", file_url(&page), list.join(","));
+    let answer = probe(&url, &["--virtual-time-budget=3000"]);
+    let (mut on_belt, mut held, mut compared) = (0, 0, 0);
+    for p in answer["times"].as_array().unwrap() {
+        let t = p["t"].as_f64().unwrap();
+        let want = simulated_objects(&devs, &inputs, &tcp_at, t);
+        let got = p["objects"].as_object().unwrap();
+        for name in ["box1", "box2"] {
+            let w = want.iter().find(|(n, _)| n == name).map(|x| x.1);
+            let g = got.get(name).filter(|v| !v.is_null());
+            match (w, g) {
+                (None, None) => {}
+                (Some(w), Some(g)) => {
+                    for k in 0..3 {
+                        let gk = g[k].as_f64().unwrap();
+                        assert!(
+                            (gk - w[k]).abs() <= 0.1,
+                            "t = {t}: the page has {name} at {g}, the device world at {w:?}"
+                        );
+                    }
+                    compared += 1;
+                    if name == "box1" && (3.8..5.8).contains(&t) {
+                        held += 1;
+                    }
+                    if (w[0] - 250.0).abs() > 1.0 && w[1] > 0.0 {
+                        on_belt += 1;
+                    }
+                }
+                _ => panic!("t = {t}: the page has {name} at {g:?}, the device world at {w:?}"),
+            }
+        }
+    }
+    assert!(compared > 100, "{compared} positions compared");
+    assert!(
+        held >= 10 && on_belt >= 20,
+        "held {held}, on the belt {on_belt}"
+    );
+}
+
 /// A decoded screenshot: width, height, RGB pixels.
 struct Shot {
     w: u32,
@@ -469,6 +628,10 @@ fn main() {
         (
             "live_page_hook_matches_adairs_fk",
             live_page_hook_matches_adairs_fk,
+        ),
+        (
+            "replay_objects_move_as_the_device_world_says",
+            replay_objects_move_as_the_device_world_says,
         ),
         (
             "a_screenshot_shows_the_arm_where_its_joints_project",

@@ -246,10 +246,11 @@
   // The device file gives a belt's end, not its direction: it is drawn
   // passing the robot, square to the line from the base to its end (so it
   // never runs through the arm). The beam of a light barrier crosses its
-  // belt's end; objects are boxes of their width.
+  // belt's end; objects are boxes of their width, placed at each time by
+  // the device moments (adair's device moments, see objectAt).
+  const belts = {}, beams = {}, objs = {}, objOrder = [], devLines = [];
   function buildDevices(dev) {
     if (!dev) return;
-    const belts = {};
     for (const b of dev.belts) {
       const end = new T.Vector3(b.end[0], b.end[1], b.end[2]);
       const radial = new T.Vector3(end.x, end.y, 0);
@@ -275,20 +276,87 @@
       const across = new T.Vector3(-b.dir.y, b.dir.x, 0).multiplyScalar(70);
       const a = b.end.clone().add(across), c = b.end.clone().sub(across);
       const g = new T.BufferGeometry().setFromPoints([a, c]);
-      world.add(new T.Line(g, new T.LineBasicMaterial({ color: 0xff0000 })));
+      const line = new T.Line(g, new T.LineBasicMaterial({ color: BEAM_CLEAR }));
+      world.add(line);
+      beams[l.name] = { line, changes: [] };
     }
-    for (const o of dev.objects) {
-      let at = null;
-      if (o.place.at) at = new T.Vector3(...o.place.at);
-      else if (o.place.belt && belts[o.place.belt]) {
-        const b = belts[o.place.belt];
-        at = b.end.clone().addScaledVector(b.dir, b.len - o.place.position);
+    for (const m of dev.events || []) addMoment(m);
+  }
+  const BEAM_CLEAR = 0xf0a0a0, BEAM_BROKEN = 0xff0000;
+
+  // One device moment: the objects whose course changed (a new object, a
+  // belt started or stopped, an arrival, a pick, a put-down), the beams
+  // that changed, and what happened (the --trace texts).
+  function addMoment(m) {
+    for (const o of m.objects || []) {
+      let ob = objs[o.name];
+      if (!ob) {
+        const mesh = new T.Mesh(new T.BoxGeometry(o.width, o.width, o.width), mat(0xc8a060));
+        mesh.visible = false;
+        world.add(mesh);
+        ob = objs[o.name] = { mesh, courses: [] };
+        objOrder.push(o.name);
       }
-      if (!at) continue;
-      const m = new T.Mesh(new T.BoxGeometry(o.width, o.width, o.width), mat(0xc8a060));
-      m.position.copy(at);
-      world.add(m);
+      ob.courses.push({ t: m.t, c: o });
     }
+    for (const b of m.beams || []) if (beams[b.name]) beams[b.name].changes.push({ t: m.t, broken: b.broken });
+    if (m.what && m.what.length) devLines.push({ t: m.t, text: m.what.join("; ") });
+  }
+
+  // The last entry of a time-ordered list at or before t (-1: none).
+  function lastAt(list, t) {
+    let lo = 0, hi = list.length - 1, found = -1;
+    while (lo <= hi) {
+      const mid = (lo + hi) >> 1;
+      if (list[mid].t <= t + 1e-9) { found = mid; lo = mid + 1; } else hi = mid - 1;
+    }
+    return found;
+  }
+
+  // A point `position` mm from a belt's start (its end is at `len`).
+  function beltPoint(b, position) {
+    return b.end.clone().addScaledVector(b.dir, b.len - position);
+  }
+
+  // Where object `name` is at time t (world mm), or null before it is
+  // there: on a belt, `min(position + speed * dt, stop)` from its last
+  // course (as adair's device world moves it); held, at the TCP at t
+  // (`tcp` when given, else the arm's at t); put down, where it lies.
+  function objectAt(name, at, tcp) {
+    const ob = objs[name];
+    if (!ob) return null;
+    const k = lastAt(ob.courses, at);
+    if (k < 0) return null;
+    const { t: t0, c } = ob.courses[k];
+    if (c.at) return new T.Vector3(c.at[0], c.at[1], c.at[2]);
+    if (c.held) {
+      if (tcp) return tcp.clone();
+      const s = poseAt(at);
+      const p = s ? arm.tcp.getWorldPosition(new T.Vector3()) : null;
+      poseAt(t);
+      return p;
+    }
+    const b = belts[c.belt];
+    if (!b) return null;
+    const p = Math.max(Math.min(c.position + c.speed * Math.max(at - t0, 0), c.stop), c.position);
+    return beltPoint(b, p);
+  }
+
+  // Objects and beams as they are at the time shown; the latest device
+  // happening in the readout.
+  function showDevices(tcp) {
+    for (const name of objOrder) {
+      const ob = objs[name];
+      const p = objectAt(name, t, tcp);
+      ob.mesh.visible = !!p;
+      if (p) ob.mesh.position.copy(p);
+    }
+    for (const b of Object.values(beams)) {
+      const k = lastAt(b.changes, t);
+      b.line.material.color.setHex(k >= 0 && b.changes[k].broken ? BEAM_BROKEN : BEAM_CLEAR);
+    }
+    const k = lastAt(devLines, t);
+    $("devices").textContent = k >= 0 ? "devices t = " + fmt(devLines[k].t, 3) + " s: " + devLines[k].text : "";
   }
 
   // The refused goal of a run that ended in an exception: a red frame.
@@ -398,8 +466,10 @@
       $("joints").textContent = s.q.map((x, k) => "J" + (k + 1) + " " + fmt(x, 2) + "°").join("  ");
       $("tcp").textContent = "TCP " + [p.x, p.y, p.z].map((x) => fmt(x, 1)).join(", ") + " mm   grip " + fmt(s.grip, 1) + " mm";
       trail.geometry.setDrawRange(0, s.i + 1);
+      showDevices(p);
     } else {
       $("joints").textContent = "no motion yet";
+      showDevices(null);
     }
     if (!slider.matches(":active")) slider.value = total > 0 ? Math.round((t / total) * 1000) : 0;
     const ended = scene && scene.end && scene.end.exception != null && t >= scene.end.t - 1e-9;
@@ -483,8 +553,19 @@
       return [(v.x + 1) / 2 * w, (1 - v.y) / 2 * h];
     });
   }
+  // Where each object is at time t (world mm; null before it is there).
+  function objectPositions(at) {
+    const out = {};
+    for (const name of objOrder) {
+      const p = objectAt(name, at, null);
+      out[name] = p ? [p.x, p.y, p.z] : null;
+    }
+    return out;
+  }
   window.adairView = Object.freeze({
     jointPositions,
+    objectAt: (name, at) => { const p = objectAt(name, at, null); return p ? [p.x, p.y, p.z] : null; },
+    objectPositions,
     joints: (at) => { const s = stateAt(at); return s ? s.q : null; },
     screenPoints,
     time: () => t,
@@ -506,7 +587,7 @@
     pre.textContent = JSON.stringify({
       rows: rows.length,
       events,
-      times: times.map((x) => ({ t: x, joints: stateAt(x) && stateAt(x).q, points: jointPositions(x) })),
+      times: times.map((x) => ({ t: x, joints: stateAt(x) && stateAt(x).q, points: jointPositions(x), objects: objectPositions(x) })),
       shown: t,
       screen: screenPoints(),
       size: [renderer.domElement.clientWidth, renderer.domElement.clientHeight],
@@ -568,6 +649,12 @@
     $("live").textContent = st.done ? "ended" : "live";
     show();
     if (st.done) probe(new URLSearchParams(location.hash.slice(1)));
+  });
+  // A device moment, in order with the motions.
+  src.addEventListener("devices", (e) => {
+    events++;
+    addMoment(JSON.parse(e.data));
+    show();
   });
   src.onerror = () => { $("live").textContent = "disconnected"; };
   requestAnimationFrame(tick);

@@ -52,6 +52,7 @@
 
 mod file;
 mod report;
+mod timeline;
 mod world;
 
 #[cfg(test)]
@@ -59,6 +60,7 @@ mod tests;
 
 pub use file::{Device, DeviceFileError, DeviceKind, Devices, Event, KINDS, ObjectSpec, Role};
 pub use report::{DeviceError, Happening, TimedHappening};
+pub use timeline::{Course, Moment, ObjectCourse, Sink};
 pub use world::{GRIP_TOLERANCE_MM, Interrupt, ObjectInfo, Place, World};
 
 /// A device address (`for X use at 8#342#;`), as written in the device file

@@ -116,6 +116,8 @@ pub struct World {
     /// The gripper is closing on an object: it is picked when the jaws
     /// close on it (time, name); see [`World::pick_at`].
     pub(super) closing_on: Option<(f64, String)>,
+    /// The moments of the run, for the 3D view (`timeline.rs`).
+    pub(super) timeline: Option<Box<super::timeline::Timeline>>,
 }
 
 impl World {
@@ -151,6 +153,7 @@ impl World {
             delivered: BTreeMap::new(),
             log: None,
             closing_on: None,
+            timeline: None,
         }
     }
 
@@ -174,6 +177,7 @@ impl World {
     }
 
     fn note(&mut self, time: f64, what: Happening) {
+        self.timeline_note(&what);
         if let Some(log) = &mut self.log {
             log.push(TimedHappening { time, what });
         }
@@ -223,12 +227,14 @@ impl World {
                 (Some((ta, belt)), te) if te.is_none_or(|te| ta <= te) => {
                     self.now = self.now.max(ta);
                     self.arrive(belt, &mut out);
+                    self.timeline_flush();
                 }
                 (_, Some(te)) => {
                     self.now = self.now.max(te);
                     let i = self.cursor;
                     self.cursor += 1;
                     self.apply_event(i, &mut out);
+                    self.timeline_flush();
                 }
                 _ => break,
             }
@@ -520,6 +526,7 @@ impl World {
                 },
             );
         }
+        self.timeline_flush();
         Ok(())
     }
 
@@ -573,6 +580,7 @@ impl World {
             }
             _ => self.set_beam(d, value == 1, &mut out),
         }
+        self.timeline_flush();
         Ok(out.pop())
     }
 
@@ -591,7 +599,9 @@ impl World {
                 role,
             });
         }
-        Ok(self.interrupt(d, address))
+        let r = self.interrupt(d, address);
+        self.timeline_flush();
+        Ok(r)
     }
 
     /// Interrupts at `address` dropped because they were disabled.
@@ -718,6 +728,7 @@ impl World {
                 object: name.to_string(),
             },
         );
+        self.timeline_flush();
         Ok(was)
     }
 
@@ -740,6 +751,7 @@ impl World {
                 at: position,
             },
         );
+        self.timeline_flush();
         Ok(())
     }
 }

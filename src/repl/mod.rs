@@ -214,8 +214,12 @@ impl Repl {
                 self.session
                     .install_pendant(Box::new(teach::TermPendant::new()));
             }
-            // Kept for `:record` and `:plot`.
+            // Kept for `:record` and `:plot`, and for `:view` the devices'
+            // moments.
             self.session.start_recording();
+            if let Some(w) = self.session.machine.world.as_mut() {
+                w.keep_timeline();
+            }
             self.rewatch();
         }
     }

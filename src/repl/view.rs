@@ -24,6 +24,9 @@ impl Repl {
     /// the wall clock, and the pages draw that robot.
     pub(super) fn rewatch(&mut self) {
         let Some(hub) = self.live.clone() else { return };
+        if let Some(w) = self.session.machine.world.as_mut() {
+            w.set_sink(Some(live::device_sink(hub.clone())));
+        }
         let world = self.session.machine.world.as_ref();
         let Some(st) = self.session.robot.as_mut() else {
             return;

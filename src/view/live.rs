@@ -10,9 +10,11 @@
 //!
 //! Events: `scene` (the robot, as a replay page's scene), `rows` (CSV rows
 //! as `--record` writes them, without the header), `cut` (one row: the
-//! motion announced last ended there, Ctrl-C), `state` (how the program or
-//! a REPL entry ended: time, exception, refused goal, path positions;
-//! `done` when the program has ended).
+//! motion announced last ended there, Ctrl-C), `devices` (a moment of the
+//! device world, as a replay page's `devices.events` entry, sent when the
+//! world makes it: in time order with the motions), `state` (how the
+//! program or a REPL entry ended: time, exception, refused goal, path
+//! positions; `done` when the program has ended).
 
 use crate::services::RobotState;
 use crate::services::record::{self, Sample};
@@ -230,6 +232,9 @@ impl record::Watch for HubWatch {
 /// (`waits`), the run starts when that page is there (10 s at most); with
 /// `--no-open` or no browser to start, at once.
 pub fn attach(sv: &Server, s: &mut crate::session::Session, title: &str, waits: bool) {
+    if let Some(w) = s.machine.world.as_mut() {
+        w.set_sink(Some(device_sink(sv.hub.clone())));
+    }
     let world = s.machine.world.as_ref();
     if let Some(st) = s.robot.as_mut() {
         st.watch = Some(sv.watch());
@@ -238,6 +243,13 @@ pub fn attach(sv: &Server, s: &mut crate::session::Session, title: &str, waits: 
     if waits {
         sv.hub.wait_for_page(Duration::from_secs(10));
     }
+}
+
+/// What the device world calls with each moment: a `devices` event.
+pub fn device_sink(hub: Arc<Hub>) -> crate::devices::Sink {
+    Arc::new(move |m: &crate::devices::Moment| {
+        hub.publish("devices", &super::moment_json(m).to_string())
+    })
 }
 
 /// The `scene` event: the robot and devices (no path positions yet).

@@ -62,9 +62,57 @@ pub fn paths_json(st: &RobotState) -> Value {
     Value::Array(out)
 }
 
+/// One moment of the device world (a `devices` event of the live view, an
+/// entry of a replay page's `devices.events`): its time, what happened
+/// (the `--trace` texts), the objects whose course changed and the beams
+/// that changed.
+pub fn moment_json(m: &crate::devices::Moment) -> Value {
+    use crate::devices::Course;
+    let objects: Vec<Value> = m
+        .objects
+        .iter()
+        .map(|o| match &o.course {
+            Course::Belt {
+                belt,
+                position,
+                speed,
+                stop,
+            } => json!({"name": o.name, "width": o.width, "belt": belt,
+                        "position": position, "speed": speed, "stop": stop}),
+            Course::Held => json!({"name": o.name, "width": o.width, "held": true}),
+            Course::At(p) => json!({"name": o.name, "width": o.width, "at": p}),
+        })
+        .collect();
+    let beams: Vec<Value> = m
+        .beams
+        .iter()
+        .map(|(name, broken)| json!({"name": name, "broken": broken}))
+        .collect();
+    json!({"t": m.time, "what": m.what, "objects": objects, "beams": beams})
+}
+
+/// Where the page draws the point `position` mm from the start of a belt
+/// of `length` mm that ends at `end`: the belt lies square to the line
+/// from the base to its end (seen from above), its start to the left of
+/// that line as seen from the base, at the height of its end.
+pub fn belt_point(end: [f64; 3], length: f64, position: f64) -> [f64; 3] {
+    let r = (end[0] * end[0] + end[1] * end[1]).sqrt();
+    let (rx, ry) = if r < 1e-6 {
+        (1.0, 0.0)
+    } else {
+        (end[0] / r, end[1] / r)
+    };
+    // From the end back to the start.
+    let (dx, dy) = (-ry, rx);
+    let back = length - position;
+    [end[0] + dx * back, end[1] + dy * back, end[2]]
+}
+
 /// The devices of `--devices` that have a place in the cell: belts (their
-/// end, length and speed), light barriers (the belt they sit on) and the
-/// objects where they are at the end of the run.
+/// end, length and speed), light barriers (the belt they sit on), the
+/// objects where they are at the end of the run, and the moments of the
+/// run (`events`, when the world kept them: [`crate::devices::World::keep_timeline`]),
+/// which the page places the objects by.
 pub fn devices_json(world: Option<&crate::devices::World>, st: &RobotState) -> Value {
     use crate::devices::{DeviceKind, Place};
     let Some(w) = world else { return Value::Null };
@@ -104,7 +152,8 @@ pub fn devices_json(world: Option<&crate::devices::World>, st: &RobotState) -> V
     if belts.is_empty() && barriers.is_empty() && objects.is_empty() {
         return Value::Null;
     }
-    json!({"belts": belts, "barriers": barriers, "objects": objects})
+    let events: Vec<Value> = w.timeline().iter().map(moment_json).collect();
+    json!({"belts": belts, "barriers": barriers, "objects": objects, "events": events})
 }
 
 /// The scene of a replay page (everything but the support points).
