@@ -51,12 +51,23 @@ fn close(a: f64, b: f64, tol: f64) -> bool {
 /// the script printed.
 fn check_csv(text: &str, stdout: &str) -> Vec<Vec<f64>> {
     let mut lines = text.lines();
-    assert_eq!(lines.next(), Some("t,j1,j2,j3,j4,j5,x,y,z,grip"));
+    // Each column with its unit (issue 37: the header had none).
+    assert_eq!(
+        lines.next(),
+        Some("t_s,j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,x_mm,y_mm,z_mm,grip_mm")
+    );
     let rows: Vec<Vec<f64>> = lines
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
         .collect();
     assert!(rows.len() > 10, "{} rows", rows.len());
     assert!(rows.iter().all(|r| r.len() == 10));
+    // No row repeats the one before it: InitRobot's motion takes no time
+    // and the next motion starts where it ended (it began with three equal
+    // rows at t = 0), nor does a motion repeat the end of the one before.
+    for w in rows.windows(2) {
+        assert_ne!(w[0], w[1], "a repeated row");
+    }
+    assert_eq!(rows.iter().filter(|r| r[0] == 0.0).count(), 1, "{rows:?}");
     for w in rows.windows(2) {
         assert!(
             w[1][0] >= w[0][0],

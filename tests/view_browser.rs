@@ -226,6 +226,37 @@ fn replay_hook_matches_adairs_fk_on_the_rm_501() {
     hook_matches_fk_on("rm-501");
 }
 
+/// The page reads its record with the header `--record` writes now (with
+/// units, `t_s,j1_deg,...`) and with the one it wrote before (`t,j1,...`):
+/// a header is never taken for a row of numbers.
+fn the_page_reads_the_record_header_with_and_without_units() {
+    use adair::services::record::{CSV_HEADER, OLD_CSV_HEADER};
+    let d = dir("headers");
+    let (page, rows) = replay(&d, "rv-m1");
+    let text = std::fs::read_to_string(&page).unwrap();
+    let record = adair::view::embedded_record(&text).unwrap();
+    assert!(
+        record.starts_with(&format!("{CSV_HEADER}\n")),
+        "{record:.200}"
+    );
+    let old = d.join("old-header.html");
+    std::fs::write(&old, text.replacen(CSV_HEADER, OLD_CSV_HEADER, 1)).unwrap();
+    for p in [&page, &old] {
+        let answer = probe(
+            &format!("{}#probe=0", file_url(p)),
+            &["--virtual-time-budget=3000"],
+        );
+        assert_eq!(
+            answer["rows"].as_u64().unwrap() as usize,
+            rows.len(),
+            "{}",
+            p.display()
+        );
+        let q = &answer["times"][0]["joints"];
+        assert!(q[0].as_f64().is_some(), "{}: {q}", p.display());
+    }
+}
+
 fn live_page_hook_matches_adairs_fk() {
     let d = dir("live");
     let s = d.join("cell.air");
@@ -632,6 +663,10 @@ fn main() {
         (
             "replay_objects_move_as_the_device_world_says",
             replay_objects_move_as_the_device_world_says,
+        ),
+        (
+            "the_page_reads_the_record_header_with_and_without_units",
+            the_page_reads_the_record_header_with_and_without_units,
         ),
         (
             "a_screenshot_shows_the_arm_where_its_joints_project",

@@ -16,7 +16,8 @@
 
   function parseRows(text) {
     for (const line of text.split("\n")) {
-      if (line === "" || line.startsWith("t,")) continue;
+      // The header: `t_s,j1_deg,...`, or `t,j1,...` from before units.
+      if (line === "" || /^t[,_]/.test(line)) continue;
       rows.push(line.split(",").map(Number));
     }
   }

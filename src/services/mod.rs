@@ -70,6 +70,9 @@ pub struct RobotState {
     /// The goal of the last motion refused (virtual time, TCP pose), for
     /// the 3D view's red ghost; a motion that runs clears it.
     pub refused: Option<(f64, Pose)>,
+    /// The last sample recorded or shown to the watch: a motion's samples
+    /// that repeat it are left out of both (`record::samples_of`).
+    pub last_sample: Option<record::Sample>,
 }
 
 /// How a service ends early: an exception, or the user's stop.
@@ -190,6 +193,7 @@ impl RobotState {
             rehearsal: false,
             watch: None,
             refused: None,
+            last_sample: None,
         }
     }
 }

@@ -128,14 +128,41 @@ pub(super) fn motion(
     points: &[Joints],
     duration: f64,
 ) {
-    if st.record.is_none() {
+    if st.record.is_none() && st.watch.is_none() {
         return;
     }
     let new = samples_of(st, start, before, points, duration);
+    if let Some(&s) = new.last() {
+        st.last_sample = Some(s);
+    }
     add(st, new);
 }
 
-/// The samples [`motion`] records for a motion.
+/// The sample a new one must not repeat: the recording's last (none when
+/// it has just started), or without a recording the last one shown.
+fn previous(st: &RobotState) -> Option<Sample> {
+    match &st.record {
+        Some(r) => r.last().copied(),
+        None => st.last_sample,
+    }
+}
+
+/// Whether `b` repeats `a`: the same time, pose and gripper (to far less
+/// than the four decimals a recording shows).
+fn repeats(a: &Sample, b: &Sample) -> bool {
+    let near = |x: f64, y: f64| (x - y).abs() <= 1e-9;
+    near(a.t, b.t)
+        && near(a.grip, b.grip)
+        && a.joints.iter().zip(&b.joints).all(|(x, y)| near(*x, *y))
+        && a.tcp.iter().zip(&b.tcp).all(|(x, y)| near(*x, *y))
+}
+
+/// The samples [`motion`] records for a motion, without the ones that
+/// repeat the sample before them: a motion that takes no time (`InitRobot`
+/// at the zero pose) has its two ends at one instant, and a motion that
+/// starts when the one before it ended starts where it ended (the first
+/// sample is compared with the recording's last). The recording and the
+/// [`Watch`] get the same samples.
 fn samples_of(
     st: &RobotState,
     start: f64,
@@ -143,16 +170,21 @@ fn samples_of(
     points: &[Joints],
     duration: f64,
 ) -> Vec<Sample> {
-    fractions(points.len().max(1), duration)
-        .iter()
-        .map(|&f| {
-            sample(
-                st,
-                start + f * duration,
-                super::interpolate(before, points, f),
-            )
-        })
-        .collect()
+    let mut last = previous(st);
+    let mut out = Vec::new();
+    for &f in &fractions(points.len().max(1), duration) {
+        let s = sample(
+            st,
+            start + f * duration,
+            super::interpolate(before, points, f),
+        );
+        if last.is_some_and(|l| repeats(&l, &s)) {
+            continue;
+        }
+        last = Some(s);
+        out.push(s);
+    }
+    out
 }
 
 /// Shows a motion that starts now to the [`Watch`], when there is one.
@@ -167,7 +199,9 @@ pub(super) fn announce(
         return;
     }
     let new = samples_of(st, start, before, points, duration);
-    if let Some(w) = &mut st.watch {
+    if let Some(w) = &mut st.watch
+        && !new.is_empty()
+    {
         w.samples(&new);
     }
 }
@@ -178,6 +212,10 @@ pub(super) fn point(st: &mut RobotState, t: f64) {
         return;
     }
     let s = sample(st, t, st.robot.joints());
+    if previous(st).is_some_and(|l| repeats(&l, &s)) {
+        return;
+    }
+    st.last_sample = Some(s);
     if let Some(w) = &mut st.watch {
         w.samples(&[s]);
     }
@@ -191,6 +229,7 @@ pub(super) fn cut(st: &mut RobotState, t: f64, q: Joints) {
         return;
     }
     let s = sample(st, t, q);
+    st.last_sample = Some(s);
     if let Some(w) = &mut st.watch {
         w.cut(&s);
     }
@@ -202,7 +241,16 @@ pub(super) fn cut(st: &mut RobotState, t: f64, q: Joints) {
     }
 }
 
+/// The JSON keys (the short names, whose units the CSV header spells).
 const KEYS: [&str; 10] = ["t", "j1", "j2", "j3", "j4", "j5", "x", "y", "z", "grip"];
+
+/// The CSV header row: each column with its unit (seconds, degrees, mm).
+/// Readers of a recording also take the header of earlier versions,
+/// [`OLD_CSV_HEADER`] (docs/record.md says which readers).
+pub const CSV_HEADER: &str = "t_s,j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,x_mm,y_mm,z_mm,grip_mm";
+
+/// The CSV header row without units that `--record` wrote before.
+pub const OLD_CSV_HEADER: &str = "t,j1,j2,j3,j4,j5,x,y,z,grip";
 
 fn values(s: &Sample) -> [f64; 10] {
     let d = |i: usize| s.joints[i].to_degrees() + 0.0;
@@ -222,7 +270,7 @@ fn values(s: &Sample) -> [f64; 10] {
 
 /// The samples as CSV with a header row.
 pub fn to_csv(samples: &[Sample]) -> String {
-    let mut out = KEYS.join(",");
+    let mut out = CSV_HEADER.to_string();
     out.push('\n');
     for s in samples {
         let v: Vec<String> = values(s).iter().map(|x| format!("{x:.4}")).collect();
@@ -296,7 +344,7 @@ mod tests {
         let c = to_csv(&[s]);
         assert_eq!(
             c,
-            "t,j1,j2,j3,j4,j5,x,y,z,grip\n0.5000,0.0000,90.0000,0.0000,0.0000,0.0000,1.0000,2.0000,3.0000,40.0000\n"
+            "t_s,j1_deg,j2_deg,j3_deg,j4_deg,j5_deg,x_mm,y_mm,z_mm,grip_mm\n0.5000,0.0000,90.0000,0.0000,0.0000,0.0000,1.0000,2.0000,3.0000,40.0000\n"
         );
         let j = to_json(&[s]);
         assert!(j.contains("\"j2\": 90.0000"), "{j}");
