@@ -453,3 +453,73 @@ fn the_devices_of_the_cell_are_in_the_scene() {
     assert_eq!(dev["barriers"][0]["on"], "belt", "{dev}");
     assert_eq!(dev["objects"][0]["name"], "box1", "{dev}");
 }
+
+/// The time an event of the live stream starts at: a motion's first row,
+/// a cut's row, a device moment's time (None for the others).
+fn starts_at(name: &str, data: &str) -> Option<f64> {
+    match name {
+        "rows" | "cut" => data.split(',').next().and_then(|t| t.trim().parse().ok()),
+        "devices" => serde_json::from_str::<serde_json::Value>(data).ok()?["t"].as_f64(),
+        _ => None,
+    }
+}
+
+/// The device world's moments reach the live page as `devices` events, in
+/// time order with the motions (a box that reaches the belt's end while
+/// the arm moves comes after that motion, before the next), and they are
+/// the moments a replay page of the same run carries.
+#[test]
+fn the_live_stream_carries_the_device_moments_in_order_with_the_motions() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let toml = root.join("tests/view/belt.toml");
+    let s = root.join("tests/view/belt.air");
+    let d = dir("live-devices");
+    let page = d.join("belt.html");
+    let out = adair()
+        .arg("--devices")
+        .arg(&toml)
+        .args(["run", "--view"])
+        .arg(&page)
+        .arg(&s)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let page = std::fs::read_to_string(&page).unwrap();
+    let scene: serde_json::Value = serde_json::from_str(element(&page, "adair-scene")).unwrap();
+    let replayed = scene["devices"]["events"].as_array().unwrap().clone();
+    assert!(replayed.len() >= 8, "{replayed:?}");
+    let (mut child, port, mut err) = live_run(&["--devices", &toml.to_string_lossy()], &s);
+    let events = read_events(port);
+    let status = child.wait().unwrap();
+    let mut rest = String::new();
+    err.read_to_string(&mut rest).unwrap();
+    assert_eq!(status.code(), Some(0), "{rest}");
+    let streamed: Vec<serde_json::Value> = events
+        .iter()
+        .filter(|e| e.0 == "devices")
+        .map(|e| serde_json::from_str(&e.1).unwrap())
+        .collect();
+    assert_eq!(streamed, replayed, "the stream's moments and the page's");
+    let mut last = f64::NEG_INFINITY;
+    let mut order = Vec::new();
+    for (name, data) in &events {
+        if let Some(t) = starts_at(name, data) {
+            order.push(format!("{name} {t:.3}"));
+            // Rows carry 4 decimals.
+            assert!(t >= last - 1e-4, "{name} at {t} after {last}: {order:?}");
+            last = t;
+        }
+    }
+    // box2 reaches the end (6.342 s) while the arm rises from the place
+    // (6.092 s to 6.609 s): after that motion's rows, before the program's end.
+    let arrival = order.iter().position(|e| e == "devices 6.342").unwrap();
+    let motion = order[..arrival]
+        .iter()
+        .rev()
+        .find_map(|e| e.strip_prefix("rows "))
+        .and_then(|t| t.parse::<f64>().ok());
+    assert!(
+        motion.is_some_and(|t| (6.09..6.2).contains(&t)),
+        "{order:?}"
+    );
+}
