@@ -523,3 +523,80 @@ fn the_live_stream_carries_the_device_moments_in_order_with_the_motions() {
         "{order:?}"
     );
 }
+
+/// With `--port`, the live page shows the pose the driver reports: the
+/// virtual controller (`adair sim-controller` on a pseudo-terminal) moves
+/// the arm by hand after the first motion (`--jog-after`), and the
+/// program's next read-back (`ValueAxes`, whose fresh `WH` sees the jog)
+/// sends the page the jogged pose, not the pose the arm was sent.
+#[test]
+fn the_live_view_of_a_real_arm_shows_the_pose_it_reports_after_a_hand_jog() {
+    // InitRobot is 11 lines, the motion WH MJ ER: the jog comes after its ER.
+    let mut ctl = adair()
+        .args(["sim-controller", "--robot", "rv-m1", "--time-scale", "0.02"])
+        .args(["--jog-after", "14:+10.0,+0.0,+0.0,-5.0,+0.0"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut path = String::new();
+    BufReader::new(ctl.stdout.take().unwrap())
+        .read_line(&mut path)
+        .unwrap();
+    let path = path.trim().to_string();
+    if path.is_empty() {
+        let mut e = String::new();
+        ctl.stderr.take().unwrap().read_to_string(&mut e).unwrap();
+        let _ = ctl.kill();
+        let _ = ctl.wait();
+        assert!(e.contains("no pseudo-terminal"), "sim-controller: {e}");
+        eprintln!("SKIPPED: this OS has no pseudo-terminals ({})", e.trim());
+        return;
+    }
+    let d = dir("port");
+    let s = d.join("jogged.air");
+    std::fs::write(
+        &s,
+        "InitRobot;
+MoveAxesAbsolute ((Rad (10.0), Rad (20.0), Rad (30.0), Rad (40.0), Rad (50.0)));
+declare
+   A : constant AxesVector := ValueAxes;
+begin
+   for J in 1 .. 5 loop
+      Put (Integer'Image (Integer (Deg (A (J)))));
+   end loop;
+   New_Line;
+end;
+",
+    )
+    .unwrap();
+    let (child, port, mut err) = live_run(&["--port", &path, "--serial-timeout", "0.5"], &s);
+    let events = read_events(port);
+    let out = child.wait_with_output().unwrap();
+    let mut rest = String::new();
+    err.read_to_string(&mut rest).unwrap();
+    let _ = ctl.kill();
+    let _ = ctl.wait();
+    assert!(out.status.success(), "{rest}");
+    assert_eq!(String::from_utf8_lossy(&out.stdout), " 20 20 30 35 50\n");
+    // The last row of each rows event: the pose shown after it.
+    let shown: Vec<Vec<f64>> = events
+        .iter()
+        .filter(|e| e.0 == "rows")
+        .map(|e| {
+            let last = e.1.lines().last().unwrap();
+            last.split(',').map(|x| x.parse().unwrap()).collect()
+        })
+        .collect();
+    let near = |row: &Vec<f64>, q: [f64; 5]| (0..5).all(|k| (row[k + 1] - q[k]).abs() < 0.05);
+    let sent = shown
+        .iter()
+        .position(|r| near(r, [10.0, 20.0, 30.0, 40.0, 50.0]))
+        .unwrap_or_else(|| panic!("no motion to the pose sent: {shown:?}"));
+    let reported = shown
+        .iter()
+        .position(|r| near(r, [20.0, 20.0, 30.0, 35.0, 50.0]))
+        .unwrap_or_else(|| panic!("the page never got the jogged pose: {shown:?}"));
+    assert!(sent < reported, "{shown:?}");
+    assert!(near(shown.last().unwrap(), [20.0, 20.0, 30.0, 35.0, 50.0]));
+}

@@ -304,8 +304,14 @@ fn require_init(cx: &mut Cx, st: &mut RobotState, service: &str) -> R<()> {
 /// every motion service starts here.
 fn require_fresh_pose(cx: &mut Cx, st: &mut RobotState, service: &str) -> R<()> {
     require_init(cx, st, service)?;
+    let before = st.robot.joints();
     if let Err(e) = st.robot.refresh() {
         return Err(driver_fail(st, service, e));
+    }
+    // The arm was moved by hand: the recording and the live view show
+    // where the driver reports it, from now on.
+    if st.robot.joints() != before {
+        record::reported(st, cx.clock.now(), before);
     }
     Ok(())
 }
@@ -508,7 +514,14 @@ fn perform(
                     );
                     return Err(stop(cx, st, service, &what));
                 }
-                Err(e) => return Err(driver_fail(st, service, e)),
+                Err(e) => {
+                    let fault = driver_fail(st, service, e);
+                    // The motion ends where the driver reports the arm
+                    // after the fault (it read `WH` again when it could).
+                    record::motion(st, start, &before, points, duration);
+                    record::cut(st, cx.clock.now(), st.robot.joints());
+                    return Err(fault);
+                }
             }
         }
     } else if o.control {

@@ -222,6 +222,29 @@ pub(super) fn point(st: &mut RobotState, t: f64) {
     add(st, vec![s]);
 }
 
+/// The driver reports the arm elsewhere than it was shown: a fresh read-back
+/// (a real arm's `WH`) after the arm was moved by hand. The pose `before`
+/// holds until `t`, and the reported one from `t` on: a jump at `t`, not a
+/// motion, since no one knows when the hand moved it. The recording and
+/// the live view get it as they get a motion (docs/view.md).
+pub(super) fn reported(st: &mut RobotState, t: f64, before: Joints) {
+    if st.record.is_none() && st.watch.is_none() {
+        return;
+    }
+    let was = sample(st, t, before);
+    let now = sample(st, t, st.robot.joints());
+    let mut new = Vec::with_capacity(2);
+    if !previous(st).is_some_and(|l| repeats(&l, &was)) {
+        new.push(was);
+    }
+    new.push(now);
+    st.last_sample = Some(now);
+    if let Some(w) = &mut st.watch {
+        w.samples(&new);
+    }
+    add(st, new);
+}
+
 /// Ends a motion that was recorded whole where the arm stopped (Ctrl-C):
 /// the samples after `t` go, and the pose `q` at `t` is the last one.
 pub(super) fn cut(st: &mut RobotState, t: f64, q: Joints) {
