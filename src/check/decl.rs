@@ -23,8 +23,10 @@ impl Checker {
             let DeclKind::SubprogramDecl { spec, import: None } = &d.kind else {
                 continue;
             };
-            let declared = self.funcs[before..]
+            let declared = self
+                .funcs
                 .iter()
+                .skip(before)
                 .position(|f| f.span == spec.span)
                 .map(|i| before + i);
             if let Some(f) = declared
@@ -244,9 +246,21 @@ impl Checker {
         }
     }
 
+    /// The literals of a completed incomplete type (declared just now, in
+    /// the current scope) become the literals of the type first declared.
     fn retarget_enum_lits(&mut self, from: TypeId, to: TypeId) {
-        for s in &mut self.scopes {
-            for es in s.names.values_mut() {
+        let Some(s) = self.scopes.last_mut() else {
+            return;
+        };
+        let is_lit = |e: &Entity| matches!(e, Entity::EnumLit(t, _) if *t == from);
+        let keys: Vec<String> = s
+            .names
+            .iter()
+            .filter(|(_, es)| es.iter().any(is_lit))
+            .map(|(k, _)| k.clone())
+            .collect();
+        for k in keys {
+            if let Some(es) = s.names.get_mut(&k) {
                 for e in es.iter_mut() {
                     if let Entity::EnumLit(t, _) = e
                         && *t == from
@@ -1145,8 +1159,8 @@ impl Checker {
             let idx = self.packages.len();
             self.packages.push(Package {
                 name: full.clone(),
-                names: HashMap::new(),
-                private: HashMap::new(),
+                names: PMap::new(),
+                private: PMap::new(),
             });
             if let ast::ExprKind::Name(id) = &p.name.kind {
                 self.declare_checked(id, Entity::Package(idx));

@@ -11,10 +11,9 @@
 
 use super::ir::{ExcId, FuncId, Var};
 use super::types::TypeId;
-use super::{Checker, Entity};
+use super::{Checker, Entity, PMap, PVec};
 use crate::diag::Offsets as _;
 use crate::diag::Span;
-use std::collections::HashMap;
 
 /// What a declaration declares.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -81,15 +80,15 @@ pub struct Index {
     /// server, the REPL); off for `adair run`/`check`/`test`, where they
     /// would only cost memory (about 16 bytes per byte of source).
     pub uses: bool,
-    pub defs: Vec<Def>,
-    pub refs: Vec<Ref>,
+    pub defs: PVec<Def>,
+    pub refs: PVec<Ref>,
     /// The type of each expression the checker checked (not errors), by
     /// its span: hover on an operator, a literal or a call shows it.
-    pub types: Vec<(Span, TypeId)>,
-    by_key: HashMap<Key, u32>,
+    pub types: PVec<(Span, TypeId)>,
+    by_key: PMap<Key, u32>,
     /// Named numbers and `for E of` element names have no identity but
     /// their name: the latest declaration of the name.
-    by_name: HashMap<String, u32>,
+    by_name: PMap<String, u32>,
 }
 
 impl Index {

@@ -2,6 +2,7 @@
 //! a type id or a builtin; every operator to its typed form. The interpreter
 //! runs this and never looks a name up by string.
 
+use super::PVec;
 use super::types::TypeId;
 use crate::diag::Span;
 use crate::syntax::ast::Mode;
@@ -476,13 +477,13 @@ pub struct Exception {
 /// `Checker` itself.
 #[derive(Clone, Copy)]
 pub struct ProgramRef<'a> {
-    pub funcs: &'a [Subprogram],
-    pub imports: &'a [Option<String>],
+    pub funcs: &'a PVec<Subprogram>,
+    pub imports: &'a PVec<Option<String>>,
     pub types: &'a crate::check::types::Types,
-    pub excs: &'a [Exception],
+    pub excs: &'a PVec<Exception>,
     pub globals: u32,
-    pub tasks: &'a [TaskDef],
-    pub prots: &'a [ProtDef],
+    pub tasks: &'a PVec<TaskDef>,
+    pub prots: &'a PVec<ProtDef>,
 }
 
 /// A whole checked program (or one REPL entry against kept state).

@@ -11,6 +11,7 @@ pub mod exact;
 mod expr;
 pub mod index;
 pub mod ir;
+mod persist;
 mod stmt;
 mod tasks;
 pub mod types;
@@ -19,6 +20,7 @@ use crate::diag::{Diagnostic, Span};
 use crate::syntax::ast;
 use ir::*;
 use std::collections::HashMap;
+pub use persist::{PMap, PVec};
 use std::rc::Rc;
 use types::*;
 
@@ -51,7 +53,7 @@ pub enum Entity {
 
 #[derive(Default, Debug, Clone)]
 struct Scope {
-    names: HashMap<String, Vec<Entity>>,
+    names: PMap<String, Vec<Entity>>,
     uses: Vec<usize>,
     /// Packages whose operators `use type` makes directly visible (those
     /// of the package that declares the type).
@@ -66,9 +68,9 @@ struct Scope {
 #[derive(Debug, Clone)]
 pub struct Package {
     pub name: String,
-    names: HashMap<String, Vec<Entity>>,
+    names: PMap<String, Vec<Entity>>,
     /// Names of the package body (and private part), visible inside it only.
-    private: HashMap<String, Vec<Entity>>,
+    private: PMap<String, Vec<Entity>>,
 }
 
 #[derive(Clone)]
@@ -131,21 +133,21 @@ pub struct Checker {
     /// that evaluate its non-static bounds once (`elaborating`).
     bounds_out: Option<Vec<Stmt>>,
     pub types: Types,
-    pub funcs: Vec<Subprogram>,
+    pub funcs: PVec<Subprogram>,
     /// Import name of each subprogram bound to a builtin.
-    pub imports: Vec<Option<String>>,
-    pub excs: Vec<Exception>,
-    pub packages: Vec<Package>,
+    pub imports: PVec<Option<String>>,
+    pub excs: PVec<Exception>,
+    pub packages: PVec<Package>,
     scopes: Vec<Scope>,
     /// For each name, the scopes (indices into `scopes`, ascending) that
     /// declare it, and the scopes that are packages': a lookup visits
     /// these only, not every scope of a deep nest (4,000 unclosed loops
     /// made each lookup walk 4,000 scopes).
-    declared_in: HashMap<String, Vec<u32>>,
+    declared_in: PMap<String, Vec<u32>>,
     package_scopes: Vec<u32>,
     /// The name and constancy of each variable of the scopes (a scan of
     /// every scope's names for each assignment was quadratic).
-    var_names: HashMap<Var, (String, bool)>,
+    var_names: PMap<Var, (String, bool)>,
     /// The scopes with `use` or `use type` clauses (ascending).
     use_scopes: Vec<u32>,
     level: u16,
@@ -165,7 +167,7 @@ pub struct Checker {
     pub(super) unread: Vec<HashMap<Var, (String, Span, bool)>>,
     /// Hashes of the diagnostics recorded (see `err`).
     diag_keys: std::collections::HashSet<u64>,
-    texts: HashMap<u32, Rc<str>>,
+    texts: PMap<u32, Rc<str>>,
     known_builtin: KnownBuiltin,
     import_profile: Option<ImportProfileOf>,
     /// Level-0 slot count so far.
@@ -175,7 +177,7 @@ pub struct Checker {
     /// Units named by a `with` that does not exist (reported once).
     missing_units: Vec<String>,
     /// Declared spelling of each name, for messages.
-    spelling: HashMap<String, String>,
+    spelling: PMap<String, String>,
     /// What each subexpression of the expression being checked can mean
     /// (`interps`), so that overload resolution visits every node once
     /// instead of once per candidate of each enclosing operator. It lives
@@ -187,8 +189,8 @@ pub struct Checker {
     /// The declaration being checked, for [`index::Def::decl`].
     cur_decl: Option<Span>,
     /// Task types and protected types.
-    pub tasks: Vec<TaskDef>,
-    pub prots: Vec<ProtDef>,
+    pub tasks: PVec<TaskDef>,
+    pub prots: PVec<ProtDef>,
     /// The task types whose bodies are being checked (innermost last).
     task_ctx: Vec<u32>,
     /// The entries whose accept bodies enclose the statement being checked
@@ -254,14 +256,14 @@ impl Checker {
             erred: false,
             bounds_out: None,
             types: Types::standard(),
-            funcs: Vec::new(),
-            imports: Vec::new(),
-            excs: Vec::new(),
-            packages: Vec::new(),
+            funcs: PVec::new(),
+            imports: PVec::new(),
+            excs: PVec::new(),
+            packages: PVec::new(),
             scopes: vec![Scope::default()],
-            declared_in: HashMap::new(),
+            declared_in: PMap::new(),
             package_scopes: Vec::new(),
-            var_names: HashMap::new(),
+            var_names: PMap::new(),
             use_scopes: Vec::new(),
             level: 0,
             ctx: vec![FuncCtx {
@@ -278,18 +280,18 @@ impl Checker {
             diags: Vec::new(),
             diag_keys: Default::default(),
             unread: Vec::new(),
-            texts: HashMap::new(),
+            texts: PMap::new(),
             known_builtin,
             import_profile: None,
             globals: 0,
             script: false,
             missing_units: Vec::new(),
-            spelling: HashMap::new(),
+            spelling: PMap::new(),
             memo: None,
             index: index::Index::recording(),
             cur_decl: None,
-            tasks: Vec::new(),
-            prots: Vec::new(),
+            tasks: PVec::new(),
+            prots: PVec::new(),
             task_ctx: Vec::new(),
             accepting: Vec::new(),
             prot_ctx: Vec::new(),
@@ -824,8 +826,9 @@ impl Checker {
         let (tasks0, prots0) = (self.tasks.len(), self.prots.len());
         let r = self.check_unit_items(unit);
         // Every task and protected type declared here has its body here.
-        let mut missing: Vec<Diagnostic> = self.tasks[tasks0..]
+        let mut missing: Vec<Diagnostic> = self.tasks
             .iter()
+            .skip(tasks0)
             .filter(|t| t.body.is_none())
             .map(|t| {
                 Diagnostic::name(t.span, format!("task `{}` has no body", t.name)).with_hint(format!(
@@ -1162,8 +1165,8 @@ impl Checker {
         let idx = self.packages.len();
         self.packages.push(Package {
             name: full.to_string(),
-            names: HashMap::new(),
-            private: HashMap::new(),
+            names: PMap::new(),
+            private: PMap::new(),
         });
         match full.rsplit_once('.') {
             Some((parent, last)) => {

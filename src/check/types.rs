@@ -98,7 +98,7 @@ pub const INT_LAST: i128 = i32::MAX as i128;
 
 #[derive(Clone, Debug, Default)]
 pub struct Types {
-    pub list: Vec<TypeInfo>,
+    pub list: super::PVec<TypeInfo>,
 }
 
 impl Types {

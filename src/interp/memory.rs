@@ -11,8 +11,11 @@
 
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
+/// The process's allocator. The tests build `cap` with its `stats` feature
+/// (a dev-dependency), so that they can count the bytes a piece of work
+/// allocates (`tests/repl_linear.rs`); adair's own build does not pay for it.
 #[global_allocator]
-static ALLOC: cap::Cap<std::alloc::System> = cap::Cap::new(std::alloc::System, usize::MAX);
+pub static ALLOC: cap::Cap<std::alloc::System> = cap::Cap::new(std::alloc::System, usize::MAX);
 
 /// The most the default limit is: 4 GiB (also the limit of library use,
 /// such as the tests).
