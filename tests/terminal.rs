@@ -46,7 +46,10 @@ impl Tmux {
         for k in keys {
             // Key names are sent as keys, everything else literally (a `;`
             // would otherwise end the tmux command).
-            let special = matches!(*k, "Enter" | "Tab" | "Escape" | "C-c" | "C-d");
+            let special = matches!(
+                *k,
+                "Enter" | "Tab" | "Escape" | "C-c" | "C-d" | "Up" | "Down" | "Left" | "Right"
+            );
             let mut args = vec!["send-keys", "-t", &self.name];
             if !special {
                 args.push("-l");
@@ -135,14 +138,64 @@ fn teachbox_jogs_refuses_at_limits_stores_and_returns() {
     assert!(s.contains("hand 60.0 mm, 10.0 N"), "{s}");
     // J3 is at its lower limit 0 deg: a jog down is refused and nothing moves.
     t.keys(&["d"]);
-    let s = t.wait_for("J3 at its limit");
+    let s = t.wait_for("J3 is at its lower limit 0.0 deg");
+    assert!(s.contains("J3 -5 deg refused"), "{s}");
     assert!(s.contains("J3     0.00 ["), "{s}");
+    // `p` says what it stored: where, the TCP and the joints.
     t.keys(&["p"]);
-    t.wait_for("stored as position 1 of path 1");
+    let s = t.wait_for("stored as position 1 of path 1:");
+    assert!(s.contains("TCP (0.0, 0.0, 889.0) mm"), "{s}");
+    assert!(s.contains("J (10.0, 0.0, 0.0, 0.0, 0.0) deg"), "{s}");
     t.keys(&["x"]);
     let s = t.wait_for("stored:");
     assert!(s.contains("after: J1 = 1.00000E+01"), "{s}");
     assert!(s.contains("stored: 8.89000E+02"), "{s}");
+}
+
+/// Issue 37: a refused jog says what the step would pass and what is
+/// left (it said "J3 at its limit" 4 degrees away); the arrow keys choose
+/// a joint and jog it; `}` never offers a position past the path's end
+/// (it offered position 4 of a 2-position path).
+fn teachbox_says_what_is_left_jogs_with_arrows_and_keeps_positions_in_the_path() {
+    let prog = script(
+        "teach_left.air",
+        "InitRobot;\nMoveAxesAbsolute ((0.0, 0.0, Rad (106.0), 0.0, 0.0));\nTeachBox (\"limits and arrows\");\nPut_Line (\"after: J3 =\" & Integer'Image (Integer (Deg (ValueAxes (3)))));\n",
+    );
+    let t = Tmux::start(
+        "adair-teachleft",
+        &format!("{} run {prog}; sleep 60", env!("CARGO_BIN_EXE_adair")),
+    );
+    t.wait_for("limits and arrows");
+    // Step 10 deg: J3 at 106 deg, its upper limit 110 deg.
+    t.keys(&["+", "e"]);
+    let s = t.wait_for("J3 +10 deg would pass its upper limit 110.0 deg:");
+    assert!(s.contains("4.0 deg left"), "{s}");
+    assert!(s.contains("J3   106.00 ["), "{s}");
+    // e chose J3; Down, Up move the choice (>), Left and Right jog it.
+    assert!(s.contains(">J3   106.00 ["), "{s}");
+    t.keys(&["Up", "Up"]);
+    t.wait_for(">J1     0.00 [");
+    t.keys(&["Right"]);
+    t.wait_for(">J1    10.00 [");
+    t.keys(&["Down", "Down", "Left"]);
+    t.wait_for(">J3    96.00 [");
+    // Two positions; `}` at the end stays at the end and says so; `{`
+    // goes back to position 2, `}` from there to the end again.
+    t.keys(&["p", "p"]);
+    t.wait_for("path 1: 2 positions, store at the end");
+    t.keys(&["}", "}"]);
+    let s = t.wait_for("store at the end already: path 1 has 2 positions");
+    assert!(s.contains("store at the end"), "{s}");
+    t.keys(&["{"]);
+    t.wait_for("store at position 2");
+    t.keys(&["}", "}", "}"]);
+    let s = t.wait_for("store at the end already");
+    assert!(!s.contains("store at position 3"), "{s}");
+    t.keys(&["{", "{", "{", "{"]);
+    let s = t.wait_for("store at position 1");
+    assert!(!s.contains("store at position 0"), "{s}");
+    t.keys(&["x"]);
+    t.wait_for("after: J3 = 96");
 }
 
 fn repl_multiline_completion_and_values() {
@@ -475,6 +528,10 @@ fn main() {
         (
             "teachbox_jogs_refuses_at_limits_stores_and_returns",
             teachbox_jogs_refuses_at_limits_stores_and_returns,
+        ),
+        (
+            "teachbox_says_what_is_left_jogs_with_arrows_and_keeps_positions_in_the_path",
+            teachbox_says_what_is_left_jogs_with_arrows_and_keeps_positions_in_the_path,
         ),
         (
             "repl_multiline_completion_and_values",

@@ -4,6 +4,7 @@
 //! TCP, roll about the approach axis), with the orientation kept reachable
 //! as `ValidFrame` does; open and close the hand, change step and speed, and
 //! store the current pose into a path. Limits are shown and never crossed.
+//! The arrow keys choose a joint (up, down) and jog it (left, right).
 
 use crate::interp::Clock;
 use crate::kinematics::{Joints, Pose, deg, joints_to_deg, rad};
@@ -29,8 +30,11 @@ pub struct TermPendant {
     cartesian: bool,
     step: usize,
     path: i64,
-    /// Position to store at (0 = after the last).
+    /// Position to store at (0 = after the last); never past the path's
+    /// last position.
     position: usize,
+    /// The joint (or Cartesian direction) the arrow keys jog, 0..5.
+    selected: usize,
     message: String,
 }
 
@@ -41,6 +45,7 @@ impl TermPendant {
             step: 2,
             path: 1,
             position: 0,
+            selected: 0,
             message: String::new(),
         }
     }
@@ -73,15 +78,11 @@ impl TermPendant {
             return;
         }
         let mut q = st.robot.joints();
+        let now = q[j];
         q[j] += sign * rad(STEPS[self.step]);
         let spec = &st.kin.description().joints()[j];
         if !spec.contains(q[j]) {
-            self.message = format!(
-                "J{} at its limit ({:.1} .. {:.1} deg): jog refused",
-                j + 1,
-                deg(spec.min),
-                deg(spec.max)
-            );
+            self.message = limit_message(j, sign * STEPS[self.step], deg(now), spec);
             return;
         }
         self.go(st, clock, q);
@@ -118,14 +119,90 @@ impl TermPendant {
         }
     }
 
+    /// Stores the pose into the path at the chosen position and says what
+    /// was stored: where, the TCP and the joints.
     fn store(&mut self, st: &mut RobotState) {
-        let f = st.kin.fk_tcp(&st.robot.joints(), &st.tool.trans).to_rows();
+        let q = st.robot.read_joints();
+        let f = st.kin.fk_tcp(&q, &st.tool.trans).to_rows();
         // As InsertPosition: before the chosen position, or after the last.
         let at = self.position.checked_sub(1).unwrap_or(usize::MAX);
         self.message = match st.paths.insert(self.path, at, f) {
-            Ok(at) => format!("stored as position {} of path {}", at + 1, self.path),
+            Ok(at) => {
+                // The next store goes before the same position as this one
+                // did: after the pose just stored.
+                if self.position != 0 {
+                    self.position = at + 2;
+                }
+                let d = joints_to_deg(&q);
+                format!(
+                    "stored as position {} of path {}:\n  TCP ({:.1}, {:.1}, {:.1}) mm\n  \
+                     J ({:.1}, {:.1}, {:.1}, {:.1}, {:.1}) deg",
+                    at + 1,
+                    self.path,
+                    f[0][3],
+                    f[1][3],
+                    f[2][3],
+                    d[0],
+                    d[1],
+                    d[2],
+                    d[3],
+                    d[4]
+                )
+            }
             Err(e) => format!("not stored (PathMemOverflow): {e}"),
         };
+    }
+
+    /// The number of positions of the chosen path.
+    fn path_len(&self, st: &RobotState) -> usize {
+        st.paths.get(&self.path).map_or(0, |p| p.len())
+    }
+
+    /// `}`: the next position to store at, up to the path's last one, then
+    /// the end (after the last); never past it.
+    fn next_position(&mut self, st: &RobotState) {
+        let n = self.path_len(st);
+        self.position = match self.position {
+            0 => {
+                self.message = format!(
+                    "store at the end already: path {} has {n} position{}",
+                    self.path,
+                    if n == 1 { "" } else { "s" }
+                );
+                0
+            }
+            k if k < n => k + 1,
+            _ => 0,
+        };
+    }
+
+    /// `{`: the position before, from the end to the path's last one.
+    fn previous_position(&mut self, st: &RobotState) {
+        let n = self.path_len(st);
+        self.position = match self.position {
+            0 if n == 0 => {
+                self.message = format!("path {} has no positions: store at the end", self.path);
+                0
+            }
+            0 => n,
+            k => (k - 1).max(1),
+        };
+    }
+
+    /// Another path chosen: a position past its end becomes the end.
+    fn keep_position_in_path(&mut self, st: &RobotState) {
+        if self.position > self.path_len(st) {
+            self.position = 0;
+        }
+    }
+
+    /// Jogs joint (or Cartesian direction) `j` by one step.
+    fn jog_by_key(&mut self, st: &mut RobotState, clock: &mut dyn Clock, j: usize, sign: f64) {
+        if self.cartesian {
+            self.jog_cartesian(st, clock, j, sign);
+        } else {
+            self.jog_joint(st, clock, j, sign);
+        }
     }
 
     /// Handles a key; true to leave.
@@ -144,11 +221,24 @@ impl TermPendant {
             KeyCode::Char('-') => self.step = self.step.saturating_sub(1),
             KeyCode::Char('>') => st.velocity = (st.velocity + 10.0).min(100.0),
             KeyCode::Char('<') => st.velocity = (st.velocity - 10.0).max(10.0),
-            KeyCode::Char(']') => self.path = (self.path + 1).min(65000),
-            KeyCode::Char('[') => self.path = (self.path - 1).max(1),
-            KeyCode::Char('}') => self.position = (self.position + 1).min(65000),
-            KeyCode::Char('{') => self.position = self.position.saturating_sub(1),
+            KeyCode::Char(']') => {
+                self.path = (self.path + 1).min(65000);
+                self.keep_position_in_path(st);
+            }
+            KeyCode::Char('[') => {
+                self.path = (self.path - 1).max(1);
+                self.keep_position_in_path(st);
+            }
+            KeyCode::Char('}') => self.next_position(st),
+            KeyCode::Char('{') => self.previous_position(st),
             KeyCode::Char('p') => self.store(st),
+            // The arrows: choose a joint (or direction), jog it.
+            KeyCode::Up => self.selected = self.selected.checked_sub(1).unwrap_or(KEYS.len() - 1),
+            KeyCode::Down => self.selected = (self.selected + 1) % KEYS.len(),
+            KeyCode::Left | KeyCode::Right => {
+                let sign = if c == KeyCode::Right { 1.0 } else { -1.0 };
+                self.jog_by_key(st, clock, self.selected, sign);
+            }
             KeyCode::Char('o') | KeyCode::Char('c') => {
                 let open = c == KeyCode::Char('o');
                 self.message = match crate::services::jog_hand(st, clock, open) {
@@ -165,11 +255,8 @@ impl TermPendant {
                     } else {
                         continue;
                     };
-                    if self.cartesian {
-                        self.jog_cartesian(st, clock, j, sign);
-                    } else {
-                        self.jog_joint(st, clock, j, sign);
-                    }
+                    self.selected = j;
+                    self.jog_by_key(st, clock, j, sign);
                 }
             }
             _ => {}
@@ -213,7 +300,8 @@ impl TermPendant {
             let (plus, minus, name, cart) = KEYS[j];
             let what = if self.cartesian { cart } else { name };
             lines.push(Line::from(format!(
-                "J{} {:>8.2} [{:>6.1} ..{:>6.1}] {plus}/{minus} {what}",
+                "{}J{} {:>8.2} [{:>6.1} ..{:>6.1}] {plus}/{minus} {what}",
+                if j == self.selected { '>' } else { ' ' },
                 j + 1,
                 d[j],
                 deg(spec.min),
@@ -224,7 +312,6 @@ impl TermPendant {
             "hand {:.1} mm, {:.1} N  o/c open/close",
             g.opening, g.force
         )));
-        lines.push(Line::from(""));
         lines.push(Line::from("TCP frame:"));
         for row in tcp {
             lines.push(Line::from(format!(
@@ -236,7 +323,7 @@ impl TermPendant {
         lines.push(Line::from(format!(
             "path {}: {} positions, store at {}",
             self.path,
-            st.paths.get(&self.path).map_or(0, |p| p.len()),
+            self.path_len(st),
             if self.position == 0 {
                 "the end".to_string()
             } else {
@@ -246,11 +333,12 @@ impl TermPendant {
         for legend in LEGEND {
             lines.push(Line::from(legend));
         }
-        lines.push(Line::from(""));
-        lines.push(Line::styled(
-            self.message.clone(),
-            Style::default().fg(Color::Yellow),
-        ));
+        for m in self.message.lines() {
+            lines.push(Line::styled(
+                m.to_string(),
+                Style::default().fg(Color::Yellow),
+            ));
+        }
         f.render_widget(
             Paragraph::new(lines).block(
                 Block::default()
@@ -317,10 +405,31 @@ impl TermPendant {
 
 /// The key legend below the pose; each line fits the panel (56 columns) of
 /// an 80-column terminal.
-const LEGEND: [&str; 2] = [
+const LEGEND: [&str; 3] = [
     "[ ] path  { } position  p store  m joint/Cartesian",
     "+ - step  < > speed  x, Esc or Ctrl-C leave",
+    "arrows: up/down choose the joint (>), left/right jog",
 ];
+
+/// Why a joint jog of `step` degrees from `now` degrees is refused: the
+/// limit it would pass and how far the joint is from it.
+fn limit_message(j: usize, step: f64, now: f64, spec: &crate::kinematics::JointSpec) -> String {
+    let (which, limit) = if step > 0.0 {
+        ("upper", deg(spec.max))
+    } else {
+        ("lower", deg(spec.min))
+    };
+    let left = (limit - now).abs();
+    let name = format!("J{}", j + 1);
+    if left < 0.05 {
+        format!("{name} {step:+} deg refused:\n  {name} is at its {which} limit {limit:.1} deg")
+    } else {
+        format!(
+            "{name} {step:+} deg would pass its {which} limit {limit:.1} deg:\n  \
+             {left:.1} deg left (a smaller step: -)"
+        )
+    }
+}
 
 /// The joints for a Cartesian jog by `amount` (mm, or degrees for pitch and
 /// roll) along `axis`: 0..2 moves the TCP along the base x, y, z; 3 turns
