@@ -134,6 +134,36 @@ pub struct Target {
     pub input: Vec<u8>,
     /// Set to stop the program as Ctrl-C does (the time limit of a child run).
     pub interrupt: Option<std::sync::Arc<std::sync::atomic::AtomicBool>>,
+    /// Write the run's replay page there (`adair test --view`; see
+    /// [`view_page`]).
+    pub view: Option<PathBuf>,
+}
+
+/// The replay page `adair test --view` writes for `script`: `X.view.html`
+/// for `X.air`, beside it (`folder` None) or in `folder`.
+pub fn view_page(script: &Path, folder: Option<&Path>) -> PathBuf {
+    let stem = script
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let name = format!("{stem}.view.html");
+    match folder {
+        Some(f) => f.join(name),
+        None => script.with_file_name(name),
+    }
+}
+
+/// Scripts whose pages would go to one file in `adair test --view=FOLDER`
+/// (scripts of one name in different folders): the first such pair.
+pub fn same_page(scripts: &[PathBuf]) -> Option<(&Path, &Path)> {
+    let mut seen: std::collections::HashMap<PathBuf, &Path> = Default::default();
+    for s in scripts {
+        let page = view_page(s, Some(Path::new("")));
+        if let Some(first) = seen.insert(page, s) {
+            return Some((first, s));
+        }
+    }
+    None
 }
 
 /// The name a script is shown under: its file name (a run happens in the
@@ -200,6 +230,9 @@ pub fn run_case_checked(path: &Path, target: &Target) -> Result<String, String> 
         ..target.clone()
     };
     let r = run_text_on(&name, &text, &robot, trace, &target);
+    if let (Some(e), Some(p)) = (r.view_error, &target.view) {
+        return Err(format!("adair: --view {}: {e}", p.display()));
+    }
     let mut out = r.output;
     if !r.diagnostics.is_empty() {
         out.push_str("-- stderr --\n");
@@ -228,6 +261,8 @@ pub struct RunText {
     pub output: String,
     pub diagnostics: String,
     pub code: i32,
+    /// Why the replay page ([`Target::view`]) could not be written.
+    pub view_error: Option<String>,
 }
 
 /// Runs `text` as the script `name` on the simulated `robot`, with no input.
@@ -266,6 +301,7 @@ pub fn run_text_on(name: &str, text: &str, robot: &str, trace: bool, target: &Ta
                         output: String::new(),
                         diagnostics,
                         code,
+                        view_error: None,
                     };
                 }
                 let driver = crate::driver::serial::Serial::new(
@@ -281,12 +317,27 @@ pub fn run_text_on(name: &str, text: &str, robot: &str, trace: bool, target: &Ta
                 output: String::new(),
                 diagnostics: format!("adair: {}: {}\n", e.source, e.problems.join("; ")),
                 code: 2,
+                view_error: None,
             };
+        }
+    }
+    if target.view.is_some() {
+        s.start_recording();
+        if let Some(w) = s.machine.world.as_mut() {
+            w.keep_timeline();
         }
     }
     let warned = SharedBuf::default();
     s.warnings_to = Some((Box::new(warned.clone()), false));
     let outcome = s.run_source(name, text);
+    // The page of a run (none when nothing ran: a check error).
+    let view_error = match (&target.view, s.robot_state()) {
+        (Some(p), Some(st)) if !matches!(outcome, Outcome::CheckFailed(_)) => {
+            let ending = crate::view::ending(&s, &outcome);
+            crate::view::write_replay(p, st, s.machine.world.as_ref(), name, &ending).err()
+        }
+        _ => None,
+    };
     let diagnostics = warned.take()
         + &match &outcome {
             Outcome::Ok => String::new(),
@@ -297,6 +348,7 @@ pub fn run_text_on(name: &str, text: &str, robot: &str, trace: bool, target: &Ta
         output: buf.take(),
         diagnostics,
         code: outcome.exit_code(),
+        view_error,
     }
 }
 

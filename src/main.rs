@@ -356,6 +356,12 @@ enum Command {
         /// Also write a JUnit XML report (for CI and learning platforms).
         #[arg(long, value_name = "FILE.xml")]
         junit: Option<PathBuf>,
+        /// Write each script's run in 3D, a replay page X.view.html for
+        /// X.air: `--view` beside each script, `--view=FOLDER` into FOLDER
+        /// (docs/view.md).
+        #[arg(long, value_name = "FOLDER", num_args = 0..=1, require_equals = true,
+              default_missing_value = "")]
+        view: Option<String>,
         /// Run one script in this process and print its golden text (how
         /// `adair test` runs each script, in the script's folder).
         #[arg(long, hide = true)]
@@ -851,6 +857,7 @@ fn real_main(
             timeout,
             jobs,
             junit,
+            view,
             child,
         }) => {
             let mut target = adair::golden::Target {
@@ -862,6 +869,12 @@ fn real_main(
                 ..Default::default()
             };
             if child {
+                // `--view=` (beside the script: the child runs in its
+                // folder) or `--view=/absolute/folder`.
+                if let (Some(v), [file]) = (&view, paths.as_slice()) {
+                    let folder = (!v.is_empty()).then(|| std::path::Path::new(v.as_str()));
+                    target.view = Some(adair::golden::view_page(file, folder));
+                }
                 return test_child(&paths, target, timeout);
             }
             let paths = if paths.is_empty() {
@@ -904,6 +917,31 @@ fn real_main(
                 if rehearse {
                     args.push("--rehearse".into());
                 }
+            }
+            // The replay pages: beside each script, or in one folder (made
+            // absolute: each child runs in its script's folder).
+            if let Some(v) = &view {
+                let folder = if v.is_empty() {
+                    String::new()
+                } else {
+                    let f = std::path::Path::new(v.as_str());
+                    if !f.is_dir() {
+                        eprintln!("adair: --view={v}: not a directory");
+                        return 2;
+                    }
+                    if let Some((a, b)) = adair::golden::same_page(&scripts) {
+                        eprintln!(
+                            "adair: --view={v}: {} and {} would write the same page; \
+                             write the pages beside the scripts with --view",
+                            a.display(),
+                            b.display()
+                        );
+                        return 2;
+                    }
+                    let abs = std::env::current_dir().map_or(f.to_path_buf(), |d| d.join(f));
+                    abs.to_string_lossy().into_owned()
+                };
+                args.push(format!("--view={folder}").into());
             }
             // One arm: one script at a time.
             let jobs = if serial.port.is_some() {

@@ -530,6 +530,7 @@ fn the_live_stream_carries_the_device_moments_in_order_with_the_motions() {
 /// program's next read-back (`ValueAxes`, whose fresh `WH` sees the jog)
 /// sends the page the jogged pose, not the pose the arm was sent.
 #[test]
+#[allow(clippy::print_stderr)] // a skipped test says so
 fn the_live_view_of_a_real_arm_shows_the_pose_it_reports_after_a_hand_jog() {
     // InitRobot is 11 lines, the motion WH MJ ER: the jog comes after its ER.
     let mut ctl = adair()
@@ -599,4 +600,80 @@ end;
         .unwrap_or_else(|| panic!("the page never got the jogged pose: {shown:?}"));
     assert!(sent < reported, "{shown:?}");
     assert!(near(shown.last().unwrap(), [20.0, 20.0, 30.0, 35.0, 50.0]));
+}
+
+/// `adair test --view`: each script's replay page, `X.view.html` beside
+/// `X.air` (or in the folder `--view=FOLDER` names), carrying what
+/// `adair run --record` writes of the same script; a script that does not
+/// check runs nothing and gets no page; the results are those without
+/// `--view`. A folder that is not one, or two scripts of one name going
+/// to one folder, are refused before anything runs (exit 2).
+#[test]
+fn adair_test_view_writes_a_replay_page_per_script() {
+    let d = dir("test-view");
+    let cell = script(&d);
+    std::fs::write(d.join("bad.air"), "Put_Line (Undeclared);\n").unwrap();
+    let run = |args: &[&str]| {
+        adair()
+            .arg("test")
+            .args(args)
+            .arg(&d)
+            .current_dir(&d)
+            .output()
+            .unwrap()
+    };
+    let out = run(&["--bless", "--view"]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let out = run(&["--view"]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let page = std::fs::read_to_string(d.join("cell.view.html")).expect("cell.view.html");
+    assert!(
+        !d.join("bad.view.html").exists(),
+        "a page of a run that never was"
+    );
+    let csv = d.join("cell.csv");
+    let rec = adair()
+        .args(["run", "--record"])
+        .arg(&csv)
+        .arg(&cell)
+        .current_dir(&d)
+        .output()
+        .unwrap();
+    assert_eq!(rec.status.code(), Some(1));
+    assert_eq!(
+        element(&page, "adair-record"),
+        std::fs::read_to_string(&csv).unwrap()
+    );
+    let scene: serde_json::Value = serde_json::from_str(element(&page, "adair-scene")).unwrap();
+    assert_eq!(scene["title"], "cell.air");
+    assert!(
+        scene["end"]["exception"]
+            .as_str()
+            .is_some_and(|e| e.contains("OUTOFREACH")),
+        "{scene}"
+    );
+    // Into a folder.
+    let pages = d.join("pages");
+    std::fs::create_dir_all(&pages).unwrap();
+    let out = run(&[&format!("--view={}", pages.display())]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    assert_eq!(
+        std::fs::read_to_string(pages.join("cell.view.html")).unwrap(),
+        page
+    );
+    // Refused before anything runs.
+    let out = run(&["--view=no-such-folder"]);
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    assert!(String::from_utf8_lossy(&out.stderr).contains("not a directory"));
+    std::fs::create_dir_all(d.join("again")).unwrap();
+    std::fs::copy(d.join("cell.air"), d.join("again/cell.air")).unwrap();
+    std::fs::copy(d.join("cell.out"), d.join("again/cell.out")).unwrap();
+    std::fs::remove_file(pages.join("cell.view.html")).unwrap();
+    let out = run(&[&format!("--view={}", pages.display())]);
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("the same page"),
+        "{out:?}"
+    );
+    assert!(!pages.join("cell.view.html").exists());
 }
