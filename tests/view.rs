@@ -600,6 +600,31 @@ end;
         .unwrap_or_else(|| panic!("the page never got the jogged pose: {shown:?}"));
     assert!(sent < reported, "{shown:?}");
     assert!(near(shown.last().unwrap(), [20.0, 20.0, 30.0, 35.0, 50.0]));
+    // Each motion ends when the unit reports its end (this controller
+    // moves 50 times faster than planned): the rows the page keeps, a
+    // cut dropping what comes after it, run forward in time.
+    let mut kept: Vec<f64> = Vec::new();
+    for (name, data) in &events {
+        let times = data
+            .lines()
+            .filter_map(|l| l.split(',').next()?.parse::<f64>().ok());
+        match name.as_str() {
+            "rows" => kept.extend(times),
+            "cut" => {
+                for t in times {
+                    while kept.last().is_some_and(|l| *l >= t) {
+                        kept.pop();
+                    }
+                    kept.push(t);
+                }
+            }
+            _ => {}
+        }
+    }
+    assert!(
+        kept.windows(2).all(|w| w[0] <= w[1]),
+        "time goes back: {kept:?}"
+    );
 }
 
 /// `adair test --view`: each script's replay page, `X.view.html` beside

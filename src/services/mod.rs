@@ -500,7 +500,18 @@ fn perform(
         // unless the program goes on computing (`Control => True`).
         if !o.control {
             match st.robot.wait_motion() {
-                Ok(()) => {}
+                Ok(()) => {
+                    // The unit reports the end (the RV-M1's `ER` reply)
+                    // before the end adair planned: the motion ends there,
+                    // at its target, for the recording and the live view.
+                    let now = cx.clock.now();
+                    if now < start + duration {
+                        record::motion(st, start, &before, points, duration);
+                        record::cut(st, now, st.robot.joints());
+                        trace_motion(cx, st, service, start, &before, duration);
+                        return Ok(());
+                    }
+                }
                 Err(crate::driver::DriverError::Interrupted) => {
                     let _ = st.robot.stop_motion();
                     // Recorded up to the stop, ending at the target of the
@@ -532,20 +543,32 @@ fn perform(
         cx.clock.sleep(duration);
     }
     record::motion(st, start, &before, points, duration);
+    trace_motion(cx, st, service, start, &before, duration);
+    Ok(())
+}
+
+/// The `--trace` line of a motion that ran.
+fn trace_motion(
+    cx: &mut Cx,
+    st: &mut RobotState,
+    service: &str,
+    start: f64,
+    before: &Joints,
+    duration: f64,
+) {
     if st.trace.is_some() {
         let after = st.robot.joints();
-        let (from, to) = (tcp_mm(st, &before), tcp_mm(st, &after));
+        let (from, to) = (tcp_mm(st, before), tcp_mm(st, &after));
         if let Some(t) = &mut st.trace {
             let _ = writeln!(
                 t,
                 "[t={start:9.3} s] {service} at {}: {} -> {} deg, TCP {from} -> {to} mm, {duration:.3} s",
                 cx.here(),
-                deg5(&before),
+                deg5(before),
                 deg5(&after)
             );
         }
     }
-    Ok(())
 }
 
 /// The arm's pose as it is now, before the teach pendant computes a jog:
