@@ -179,6 +179,10 @@ fn known_worst_shapes_are_linear() {
         "X := R . A . B . A . B . A . B ;",
         "declare begin",
         "for I in 1 .. 3 loop X := X + I ; if X > 0 then",
+        // Closed scopes and undeclared names: each closing looked at every
+        // "not declared" report so far.
+        "for I in 1 .. 3 loop X := Nowhere + I ; end loop ;",
+        "declare begin Nowhere ( X ) ; end ; if X > 0 then Y := Nope ; end if ;",
     ] {
         // Deep enough for a cost per level of nesting to show (each name
         // looked up in every enclosing scope did).

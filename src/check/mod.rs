@@ -206,9 +206,17 @@ pub struct Checker {
     /// unit, its formals, an instance): a use of one is no second error.
     unsupported_names: std::collections::HashSet<String>,
     /// "not declared" reports that a later declaration may explain, by
-    /// name: the report's index, and the depth of the scopes it was made in
-    /// that are still open (a declaration finds its own in one look-up).
-    undeclared: HashMap<String, Vec<(usize, usize)>>,
+    /// name: the report's index, the scope depth it was made at, and the
+    /// number of scopes closed before it (a declaration finds its own in one
+    /// look-up; see `lows` for the depth of its scopes still open).
+    undeclared: HashMap<String, Vec<(usize, usize, u64)>>,
+    /// Scopes closed so far, and the depths the scope stack came down to
+    /// after them: (closings so far, depth), both ascending. The lowest
+    /// depth reached since a report is the first entry after its count, so
+    /// closing a scope does not visit every report (that was quadratic for
+    /// deep nests full of undeclared names).
+    closed: u64,
+    lows: Vec<(u64, usize)>,
     /// Each protected type's subprograms: name, profile, real subprogram,
     /// whether it is a function.
     prot_members: Vec<Vec<(String, FuncId, FuncId, bool)>>,
@@ -298,6 +306,8 @@ impl Checker {
             prot_function_obj: None,
             unsupported_names: Default::default(),
             undeclared: HashMap::new(),
+            closed: 0,
+            lows: Vec::new(),
             prot_members: Vec::new(),
             prot_real: HashMap::new(),
             masters: Vec::new(),
@@ -452,9 +462,19 @@ impl Checker {
             self.use_scopes.pop();
         }
         let depth = self.scopes.len();
-        for u in self.undeclared.values_mut().flatten() {
-            u.1 = u.1.min(depth);
+        self.closed += 1;
+        while self.lows.last().is_some_and(|&(_, d)| d >= depth) {
+            crate::work::tick();
+            self.lows.pop();
         }
+        self.lows.push((self.closed, depth));
+    }
+
+    /// The depth of the scopes of a report made at `depth` after `closed`
+    /// closings that are still open: the lowest the stack has come since.
+    fn open_depth(&self, depth: usize, closed: u64) -> usize {
+        let after = self.lows.partition_point(|&(c, _)| c <= closed);
+        self.lows.get(after).map_or(depth, |&(_, d)| d.min(depth))
     }
 
     fn declare(&mut self, name: &str, e: Entity) {
@@ -533,14 +553,18 @@ impl Checker {
         let depth = self.scopes.len();
         let is_func = matches!(e, Entity::Func(_));
         let mut before = Vec::new();
-        if let Some(uses) = self.undeclared.get_mut(&*id.key) {
-            uses.retain(|&(i, d)| {
-                let here = depth <= d;
+        if let Some(mut uses) = self.undeclared.remove(&*id.key) {
+            uses.retain(|&(i, d, c)| {
+                crate::work::tick();
+                let here = depth <= self.open_depth(d, c);
                 if here {
                     before.push(i);
                 }
                 !here
             });
+            if !uses.is_empty() {
+                self.undeclared.insert(id.key.to_string(), uses);
+            }
         }
         for i in before {
             if let Some(d) = self.diags.get_mut(i) {
@@ -1062,7 +1086,7 @@ impl Checker {
                         self.undeclared
                             .entry(id.key.to_string())
                             .or_default()
-                            .push((n, depth));
+                            .push((n, depth, self.closed));
                     }
                 }
                 es
@@ -1212,6 +1236,7 @@ impl Checker {
     pub fn take_diags(&mut self) -> Vec<Diagnostic> {
         self.diag_keys.clear();
         self.undeclared.clear();
+        self.lows.clear();
         self.erred = false;
         std::mem::take(&mut self.diags)
     }
