@@ -19,8 +19,8 @@ pub mod types;
 use crate::diag::{Diagnostic, Span};
 use crate::syntax::ast;
 use ir::*;
-use std::collections::HashMap;
 pub use persist::{PMap, PVec};
+use std::collections::HashMap;
 use std::rc::Rc;
 use types::*;
 
