@@ -275,17 +275,25 @@ fn plot_draws_the_run_and_refuses_a_bad_path_first() {
         "stroke=\"#9467BD\"",
         "stroke=\"#FF7F0E\"",
         "\nJ1\n",
-        "\nJ5\n",
+        "\nJ4\n",
         // Start and end of the TCP path.
         "fill=\"#00FF00\"",
         "fill=\"#FF0000\"",
-        // The base plane in the side view.
-        "stroke=\"#8C564B\"",
+        // The hand's opening against time.
+        "Hand opening against time",
+        "stroke=\"#17BECF\"",
+        // J5 runs on J1 (the pen points straight down): dashed, and said.
+        "J5 dashed: on J1 all the run",
+        // The path from above fills its view: the reach is out of it, and
+        // a scale bar says how long 100 mm is.
+        "reach 589 mm: outside this view",
+        "\n100 mm\n",
     ] {
         assert!(text.contains(part), "missing {part}");
     }
-    // The reach, seen from above and from the side.
-    assert_eq!(text.matches("stroke=\"#969696\"").count(), 2);
+    // The reach, seen from the side (and named in both legends).
+    assert!(text.contains("stroke=\"#969696\""));
+    assert_eq!(text.matches("\nreach 589 mm").count(), 2);
     // The tutorial shows this picture: it must be what adair draws now
     // (BLESS=1 rewrites it).
     let shown = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/images/square.svg");
@@ -869,4 +877,70 @@ fn adair_test_walks_a_symlink_loop_once() {
     let (code, out, err) = adair(&["test", &sub]);
     assert!(code == 0 && once(&out), "{out}{err}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `adair sim-controller --time-scale inf` panicked: it, `nan`, `0` and
+/// `--slow nan`/`inf` are each one error line and exit 2 before any port is
+/// opened. (A finite huge scale such as `1e300` is taken as given: its
+/// times saturate, see `simctl::tests::faults_are_checked`.)
+#[test]
+fn sim_controller_refuses_non_finite_times() {
+    for args in [
+        ["--time-scale", "inf"],
+        ["--time-scale", "nan"],
+        ["--time-scale", "0"],
+        ["--slow", "nan"],
+        ["--slow", "inf"],
+    ] {
+        let mut all = vec!["sim-controller"];
+        all.extend(args);
+        let (code, out, err) = adair(&all);
+        assert_eq!(code, 2, "adair {all:?}: {out}{err}");
+        assert!(!err.contains("panicked"), "adair {all:?}: {err}");
+        assert!(err.contains(args[0]), "adair {all:?}: {err}");
+    }
+}
+
+/// `adair test --timeout nan` (or `inf`, `-1`) is refused as `--timeout`,
+/// before any script runs.
+#[test]
+fn test_timeout_refuses_nan_and_infinities() {
+    let ok = temp_file("timeout_ok.air", "Put_Line (\"ran\");\n");
+    for bad in ["nan", "inf", "-1"] {
+        let flag = format!("--timeout={bad}");
+        let (code, out, err) = adair(&["test", &flag, &ok]);
+        assert_eq!(code, 2, "{flag}: {out}{err}");
+        assert!(!out.contains("passed"), "{flag} ran: {out}");
+        assert!(err.contains("--timeout"), "{flag}: {err}");
+    }
+}
+
+/// Recursion with big frames under an address-space limit (`ulimit -v`)
+/// is `Storage_Error` that the program can handle, not an abort (the
+/// default `--max-memory` ignored the process's real limit).
+#[test]
+fn deep_recursion_with_big_frames_under_ulimit_v_is_storage_error() {
+    let deep = temp_file(
+        "deep_frames.air",
+        "type Block is array (1 .. 100_000) of Integer;\n\
+         function Down (N : Natural) return Natural is\n\
+            B : Block := (others => N);\n\
+         begin\n   return Down (N + 1) + B (1);\nend Down;\n\
+         begin\n   Put_Line (Natural'Image (Down (0)));\n\
+         exception\n   when Storage_Error => Put_Line (\"Storage_Error caught\");\nend;\n",
+    );
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -v 1048576 && exec \"$0\" run \"$1\"")
+        .arg(env!("CARGO_BIN_EXE_adair"))
+        .arg(&deep)
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("sh");
+    let (stdout, err) = (
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr),
+    );
+    assert_eq!(out.status.code(), Some(0), "{stdout}{err}");
+    assert_eq!(stdout, "Storage_Error caught\n", "{err}");
 }
