@@ -3,8 +3,11 @@
 //! - A fenced block ```` ```ada ```` is a script. The info string may add
 //!   `trace` (print the motion trace), `rm-501` (the other robot) and
 //!   `exit=N` (the exit status it must end with; default 0). The next fenced
-//!   block must be ```` ```text ````: exactly what the run prints, its output
-//!   (with the trace) and then its diagnostics, without colour.
+//!   block must be ```` ```text ````: the command that runs the snippet
+//!   (`$ adair run --trace snippet.air`, so a reader sees the options the
+//!   info string, which a rendered page hides, asks for), then exactly what
+//!   the run prints, its output (with the trace) and then its diagnostics,
+//!   without colour.
 //! - A fenced block ```` ```repl ```` is a REPL session: lines starting with
 //!   `adair> ` are entries (a line starting with `   ...> ` continues the
 //!   entry above it), every other line is what the REPL prints for the entry
@@ -12,6 +15,17 @@
 //!
 //! `BLESS=1 cargo test --test docs` rewrites the expected text in place; read
 //! the diff before committing.
+//!
+//! README.md is checked too (never blessed): its example (a ```` ```ada ````
+//! block whose first line is `-- NAME.air`) is written to `NAME.air` and the
+//! ```` ```text ```` transcript after it is replayed: each `$ adair ...` line
+//! runs the binary there (standard output and error together, as a
+//! terminal shows them), `$ echo $?` prints its exit status, and every
+//! other line is what they printed. Every command of its ```` ```sh ````
+//! blocks runs as well: one whose files all exist (the examples) for real,
+//! to exit status 0; one with a placeholder (`FILE.air`, `DIR`, a port)
+//! with `--help` added, so that clap accepts its subcommand and options.
+//! `cargo run --release -- X` is `adair X`; `cargo test` is this suite.
 #![allow(clippy::print_stderr)]
 
 use adair::golden::SharedBuf;
@@ -146,7 +160,10 @@ fn run(lines: &[&str], s: &Snippet) -> Result<Vec<Printed>, String> {
                     exit, r.code, r.output, r.diagnostics
                 ));
             }
-            Ok(vec![(*expect, r.output + &r.diagnostics)])
+            Ok(vec![(
+                *expect,
+                command_line(robot, *trace) + &r.output + &r.diagnostics,
+            )])
         }
         Snippet::Repl { body } => {
             let buf = SharedBuf::default();
@@ -183,6 +200,19 @@ fn run(lines: &[&str], s: &Snippet) -> Result<Vec<Printed>, String> {
             Ok(out)
         }
     }
+}
+
+/// The command a snippet's output is shown under.
+fn command_line(robot: &str, trace: bool) -> String {
+    format!(
+        "$ adair run{}{} snippet.air\n",
+        if robot == "rv-m1" {
+            String::new()
+        } else {
+            format!(" --robot {robot}")
+        },
+        if trace { " --trace" } else { "" }
+    )
 }
 
 fn expected(lines: &[&str], range: (usize, usize)) -> String {
@@ -268,5 +298,231 @@ fn main() {
             ));
         }
     }
+    trials.extend(readme_trials());
     libtest_mimic::run(&Arguments::from_args(), trials).exit();
+}
+
+/// A scratch folder of this test run.
+fn scratch(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("adair-docs-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).expect("scratch folder");
+    d
+}
+
+/// Runs adair with `args` in `dir`, standard output and error in one pipe
+/// (as a terminal shows them, in the order written): its exit status and
+/// what it printed.
+fn adair_in(dir: &Path, args: &[&str]) -> (i32, String) {
+    let out = std::process::Command::new("sh")
+        .arg("-c")
+        .arg("exec \"$0\" \"$@\" 2>&1")
+        .arg(env!("CARGO_BIN_EXE_adair"))
+        .args(args)
+        .current_dir(dir)
+        .env("NO_COLOR", "1")
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("adair runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+    )
+}
+
+/// README's example: the ```ada block named by its first line
+/// (`-- NAME.air`) and the ```text transcript after it.
+fn readme_example(text: &str) -> Result<(String, String, Vec<String>), String> {
+    let lines: Vec<&str> = text.lines().collect();
+    let bs = blocks(&lines)?;
+    for (k, b) in bs.iter().enumerate() {
+        if b.info != "ada" {
+            continue;
+        }
+        let code = &lines[b.range.0..b.range.1];
+        let Some(name) = code.first().and_then(|l| l.strip_prefix("-- ")) else {
+            continue;
+        };
+        let next = bs
+            .get(k + 1)
+            .filter(|n| n.info == "text")
+            .ok_or("README's example has no ```text block after it")?;
+        let transcript = lines[next.range.0..next.range.1]
+            .iter()
+            .map(|l| l.to_string())
+            .collect();
+        return Ok((name.trim().to_string(), code.join("\n") + "\n", transcript));
+    }
+    Err("README has no ```ada example whose first line is `-- NAME.air`".into())
+}
+
+/// Replays the transcript in `dir`: what each command printed, against
+/// what the transcript shows.
+fn replay(dir: &Path, transcript: &[String]) -> Result<(), String> {
+    let mut i = 0;
+    let mut status = None;
+    let mut commands = 0;
+    while i < transcript.len() {
+        let Some(cmd) = transcript[i].strip_prefix("$ ") else {
+            return Err(format!(
+                "transcript line {}: `{}` is not a `$ ` command",
+                i + 1,
+                transcript[i]
+            ));
+        };
+        let mut end = i + 1;
+        while end < transcript.len() && !transcript[end].starts_with("$ ") {
+            end += 1;
+        }
+        let want: String = transcript[i + 1..end]
+            .iter()
+            .map(|l| format!("{l}\n"))
+            .collect();
+        let got = if cmd.trim() == "echo $?" {
+            format!("{}\n", status.ok_or("`echo $?` before any command")?)
+        } else {
+            let args: Vec<&str> = cmd.split_whitespace().collect();
+            if args.first() != Some(&"adair") {
+                return Err(format!("`{cmd}`: only adair runs in a transcript"));
+            }
+            let (code, out) = adair_in(dir, &args[1..]);
+            status = Some(code);
+            out
+        };
+        if got != want {
+            return Err(format!(
+                "README: `{cmd}` printed other than shown (- README, + actual):\n{}",
+                adair::golden::diff(&want, &got)
+            ));
+        }
+        commands += 1;
+        i = end;
+    }
+    if commands == 0 {
+        return Err("README's example transcript has no command".into());
+    }
+    Ok(())
+}
+
+/// The adair arguments of each command line of README's ```sh blocks
+/// (`cargo run --release -- X` is `adair X`; `cargo test` is left out: it
+/// is this test suite), with the line it came from.
+fn readme_commands(text: &str) -> Result<Vec<(String, Vec<String>)>, String> {
+    let lines: Vec<&str> = text.lines().collect();
+    let mut out = Vec::new();
+    for b in blocks(&lines)?.iter().filter(|b| b.info == "sh") {
+        for line in &lines[b.range.0..b.range.1] {
+            let cmd = line.split(" #").next().unwrap_or("").trim();
+            if cmd.is_empty() || cmd == "cargo test" {
+                continue;
+            }
+            let args = if let Some(rest) = cmd.strip_prefix("cargo run --release -- ") {
+                rest
+            } else if let Some(rest) = cmd.strip_prefix("adair") {
+                rest
+            } else {
+                return Err(format!("README: `{cmd}` is neither adair nor cargo"));
+            };
+            out.push((
+                cmd.to_string(),
+                args.split_whitespace().map(str::to_string).collect(),
+            ));
+        }
+    }
+    Ok(out)
+}
+
+/// Whether a README command runs as written: every file it names (a word
+/// with an extension or a path) is in the repository, it reads no terminal
+/// and serves nothing (`repl`, `lsp`, `sim-controller`, a live `--view`).
+fn runs_as_written(root: &Path, args: &[String]) -> bool {
+    let serves = ["repl", "lsp", "sim-controller"];
+    let live_view = args
+        .iter()
+        .enumerate()
+        .any(|(k, a)| a == "--view" && args.get(k + 1).is_none_or(|n| !n.ends_with(".html")));
+    if args.is_empty() || live_view || args.iter().any(|a| serves.contains(&a.as_str())) {
+        return false;
+    }
+    // A placeholder: FILE, DIR, PATH..., a port, a redirection.
+    let placeholder = |a: &str| {
+        a.contains('<')
+            || a.starts_with("/dev/")
+            || a.as_bytes()
+                .windows(3)
+                .any(|w| w.iter().all(u8::is_ascii_uppercase))
+    };
+    args.iter().all(|a| !placeholder(a))
+        && args
+            .iter()
+            .filter(|a| !a.starts_with('-') && (a.contains('.') || a.contains('/')))
+            .all(|a| root.join(a).is_file())
+}
+
+fn readme_trials() -> Vec<Trial> {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let text = match std::fs::read_to_string(root.join("README.md")) {
+        Ok(t) => t,
+        Err(e) => {
+            let e = e.to_string();
+            return vec![Trial::test("README::read", move || Err(Failed::from(e)))];
+        }
+    };
+    let mut trials = Vec::new();
+    let example = readme_example(&text);
+    trials.push(Trial::test(
+        "README::example_prints_what_it_shows",
+        move || {
+            let (name, code, transcript) = example?;
+            let dir = scratch("readme");
+            std::fs::write(dir.join(&name), code).map_err(|e| e.to_string())?;
+            replay(&dir, &transcript)?;
+            let _ = std::fs::remove_dir_all(&dir);
+            Ok(())
+        },
+    ));
+    let commands = match readme_commands(&text) {
+        Ok(c) => c,
+        Err(e) => {
+            trials.push(Trial::test("README::commands", move || {
+                Err(Failed::from(e))
+            }));
+            return trials;
+        }
+    };
+    trials.push(Trial::test("README::has_commands", {
+        let n = commands.len();
+        move || {
+            if n < 10 {
+                return Err(Failed::from(format!("only {n} commands found in README")));
+            }
+            Ok(())
+        }
+    }));
+    for (k, (line, args)) in commands.into_iter().enumerate() {
+        let root = root.clone();
+        let real = runs_as_written(&root, &args);
+        let name = format!(
+            "README::command_{k:02}_{}",
+            if real { "runs" } else { "help" }
+        );
+        trials.push(Trial::test(name, move || {
+            let mut args: Vec<&str> = args.iter().map(String::as_str).collect();
+            if !real && !args.contains(&"--help") {
+                args.push("--help");
+            }
+            let (code, out) = adair_in(&root, &args);
+            if code != 0 || out.is_empty() {
+                return Err(Failed::from(format!(
+                    "README's `{line}` ({}): exit {code}, printed:\n{out}",
+                    if real {
+                        "run as written"
+                    } else {
+                        "with --help"
+                    }
+                )));
+            }
+            Ok(())
+        }));
+    }
+    trials
 }
