@@ -589,6 +589,17 @@ impl Checker {
 
     /// All entities a simple name denotes here (innermost first; overloadable
     /// names collect from all levels).
+    /// Whether `key` (lower case) is undeclared or denotes a procedure or
+    /// something other than functions: a REPL entry `F (X)` of functions
+    /// only is an expression, never a call statement.
+    pub fn may_name_a_procedure(&self, key: &str) -> bool {
+        let es = self.lookup(key);
+        es.is_empty()
+            || es
+                .iter()
+                .any(|e| !matches!(e, Entity::Func(f) if self.funcs[*f as usize].ret.is_some()))
+    }
+
     fn lookup(&self, key: &str) -> Vec<Entity> {
         let mut found: Vec<Entity> = Vec::new();
         // The scopes that declare `key` or are a package's, innermost

@@ -60,6 +60,9 @@ pub struct Repl {
     devices: Option<crate::devices::Devices>,
     /// The live 3D view (`--view`): every motion goes to its pages.
     live: Option<std::sync::Arc<crate::view::live::Hub>>,
+    /// The note that a one-line entry's missing `;` was added has been
+    /// given (it is given once a session).
+    semicolon_noted: bool,
 }
 
 const COMMANDS: &[(&str, &str)] = &[
@@ -131,6 +134,7 @@ impl Repl {
             rehearse: false,
             devices: None,
             live: view::live_hub(),
+            semicolon_noted: false,
         };
         r.install_robot();
         r.session.machine.input = Box::new(std::io::BufReader::new(std::io::empty()));
@@ -302,12 +306,22 @@ impl Repl {
             let ex = self.session.checker.check_expr(&e);
             let diags = self.session.checker.take_diags();
             // An expression that cannot be a procedure call: its errors are the ones to show.
-            let callable = matches!(
-                e.kind,
-                crate::syntax::ast::ExprKind::Name(_)
-                    | crate::syntax::ast::ExprKind::Select(..)
-                    | crate::syntax::ast::ExprKind::Apply(..)
-            );
+            // Nor can one whose name denotes functions only (`Trans (1, 2,
+            // 3)`: integers where floats are expected, not "its result must
+            // be used").
+            use crate::syntax::ast::ExprKind;
+            let callee = match &e.kind {
+                ExprKind::Name(id) => Some(id),
+                ExprKind::Apply(f, _) => match &f.kind {
+                    ExprKind::Name(id) => Some(id),
+                    _ => None,
+                },
+                _ => None,
+            };
+            let callable = match callee {
+                Some(id) => self.session.checker.may_name_a_procedure(&id.key),
+                None => matches!(e.kind, ExprKind::Select(..) | ExprKind::Apply(..)),
+            };
             if !diags.is_empty() && !callable {
                 self.session.checker = snapshot;
                 return Reply {
@@ -331,15 +345,32 @@ impl Repl {
             }
             self.session.checker = snapshot.clone();
         }
-        // Declarations and statements; a lone call may leave out its `;`.
+        // Declarations and statements; a lone call, and any one-line entry
+        // complete but for it, may leave out its `;` (said once).
         let owned;
-        let text = if text.trim_end().ends_with(';') || !is_expr {
-            text
-        } else {
+        let mut note = String::new();
+        let text = if is_expr && !text.trim_end().ends_with(';') {
             owned = format!("{};", text.trim_end());
             &owned
+        } else if term::missing_only_semicolon(text) {
+            if !self.semicolon_noted {
+                self.semicolon_noted = true;
+                note = "note: the `;` at the end of this entry was missing and is added (a one-line entry may leave it out)\n".into();
+            }
+            owned = format!("{};", text.trim_end());
+            &owned
+        } else {
+            text
         };
-        match self.session.check_source(&name, text, true) {
+        let mut reply = self.checked_entry(&name, text, snapshot);
+        reply.text.insert_str(0, &note);
+        reply
+    }
+
+    /// Checks and runs the declarations and statements of an entry; a
+    /// refused one leaves the checker as `snapshot` holds it.
+    fn checked_entry(&mut self, name: &str, text: &str, snapshot: crate::check::Checker) -> Reply {
+        match self.session.check_source(name, text, true) {
             Ok((stmts, _)) => {
                 let warnings = self.session.take_warnings();
                 let warned = if warnings.is_empty() {

@@ -224,6 +224,36 @@ pub fn unfinished(text: &str) -> bool {
     crate::syntax::parser::is_unfinished(&diags, text.len())
 }
 
+/// A one-line entry that is complete but for its final `;`
+/// (`X : Integer := 3`): it runs, with the `;` added, instead of waiting
+/// for more lines and gluing the next entry to it.
+pub fn missing_only_semicolon(text: &str) -> bool {
+    let t = text.trim();
+    if t.is_empty() || t.contains('\n') || t.ends_with(';') || t.starts_with(':') {
+        return false;
+    }
+    let with = format!("{t};");
+    let (tokens, lexd) = lex(&with, 0);
+    if !lexd.is_empty() {
+        return false;
+    }
+    let (_, diags) = crate::syntax::parser::parse(&tokens, 0, with.len());
+    diags.is_empty()
+}
+
+/// An unfinished entry that no further line can mend: the parser finds an
+/// error before the end of its text (`W : Integer := 1 begin`, a `;`
+/// missing in the middle). An empty line ends such a continuation.
+pub fn cannot_finish(text: &str) -> bool {
+    let (tokens, lexd) = lex(text, 0);
+    if !lexd.is_empty() {
+        return true;
+    }
+    let (_, diags) = crate::syntax::parser::parse(&tokens, 0, text.len());
+    let end = text.trim_end().len();
+    diags.iter().any(|d| (d.span.end as usize) < end)
+}
+
 fn history_path() -> Option<std::path::PathBuf> {
     let base = std::env::var_os("XDG_DATA_HOME")
         .map(std::path::PathBuf::from)
@@ -316,7 +346,8 @@ pub fn interactive_on(color: bool, drive: super::Drive) -> i32 {
                     pending.push('\n');
                 }
                 pending.push_str(&line);
-                if unfinished(&pending) {
+                let ends = line.trim().is_empty() && cannot_finish(&pending);
+                if unfinished(&pending) && !missing_only_semicolon(&pending) && !ends {
                     continue;
                 }
                 let line = std::mem::take(&mut pending);
@@ -441,7 +472,12 @@ pub fn piped_on(
             buf.push_str(line);
             buf.push('\n');
             balance.add_line(line);
-            if balance.surely_open() || unfinished(&buf) {
+            // An empty line ends a continuation that no further line can
+            // mend (an error before its end), or that only the count of
+            // openers keeps open: the entry is reported.
+            let ends = line.trim().is_empty() && (cannot_finish(&buf) || !unfinished(&buf));
+            let open = balance.surely_open() || unfinished(&buf);
+            if open && !ends && !missing_only_semicolon(&buf) {
                 continue;
             }
             balance = Balance::default();
