@@ -372,7 +372,11 @@ impl Sched {
     }
 
     /// What each living task waits for, for the deadlock diagnostic and `:tasks`.
-    pub fn describe(&self, tasks: &crate::check::PVec<TaskDef>, prots: &crate::check::PVec<ProtDef>) -> Vec<(Span, String)> {
+    pub fn describe(
+        &self,
+        tasks: &crate::check::PVec<TaskDef>,
+        prots: &crate::check::PVec<ProtDef>,
+    ) -> Vec<(Span, String)> {
         let entry_name = |t: Tid, e: u32| {
             self.threads[t]
                 .ttype
