@@ -2,6 +2,7 @@
 //! time, checked before it runs, against kept state. The terminal front end
 //! (`term.rs`, rustyline) and the piped mode only feed it lines.
 
+mod jog;
 pub mod teach;
 pub mod term;
 pub mod view;
@@ -76,6 +77,10 @@ const COMMANDS: &[(&str, &str)] = &[
         "show or switch the simulated robot (starts it afresh)",
     ),
     (":where", "the joints and the tool-centre-point frame"),
+    (
+        ":jog J1 +10 | :jog z -5",
+        "jog a joint (deg) or the TCP along x, y, z (mm) or pitch, roll (deg), as the TeachBox does",
+    ),
     (":trace on|off", "print every motion"),
     (":teach", "the teach pendant"),
     (
@@ -469,6 +474,10 @@ impl Repl {
                 },
             },
             "where" => ok(self.where_text()),
+            "jog" => {
+                let rest = cmd.trim_start().strip_prefix(head).unwrap_or("").trim();
+                self.jog_command(rest)
+            }
             "record" | "plot" => match arg {
                 Some(path) => match self.save_run(head == "plot", std::path::Path::new(path)) {
                     Ok(t) => ok(t),
