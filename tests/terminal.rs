@@ -226,6 +226,65 @@ fn repl_multiline_completion_and_values() {
     t.keys(&[":quit", "Enter"]);
 }
 
+/// `:load ex` + Tab completes a file name of the current folder, as a
+/// shell does (only Ada sources and folders: `extra.txt` is not offered).
+fn repl_load_completes_file_names() {
+    let dir = std::env::temp_dir().join(format!("adair-term-load-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    std::fs::write(
+        dir.join("example.air"),
+        "Put_Line (\"from the example\");\n",
+    )
+    .expect("script");
+    std::fs::write(dir.join("extra.txt"), "not Ada\n").expect("text");
+    let t = Tmux::start(
+        "adair-load",
+        &format!(
+            "cd '{}' && {} repl; sleep 60",
+            dir.display(),
+            env!("CARGO_BIN_EXE_adair")
+        ),
+    );
+    t.wait_for("adair>");
+    t.keys(&[":load ex", "Tab"]);
+    t.wait_for(":load example.air");
+    t.keys(&["Enter"]);
+    let s = t.wait_for_line(&["loaded example.air"]);
+    assert!(s.lines().any(|l| l.trim() == "from the example"), "{s}");
+    t.keys(&[":quit", "Enter"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A one-line entry without its final `;` runs at once; an open `loop`
+/// continues, and an empty line ends a continuation no line can mend.
+fn repl_forgiving_continuation() {
+    let t = Tmux::start(
+        "adair-forgive",
+        &format!("{} repl; sleep 60", env!("CARGO_BIN_EXE_adair")),
+    );
+    t.wait_for("adair>");
+    t.keys(&["X : Integer := 3", "Enter"]);
+    t.wait_for("added");
+    t.keys(&["X * 14", "Enter"]);
+    let s = t.wait_for_line(&["42"]);
+    assert!(!s.contains("...>"), "{s}");
+    let last = s.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("");
+    assert_eq!(last.trim_end(), "adair>", "{s}");
+    // An open loop continues at the continuation prompt.
+    t.keys(&["for I in 1 .. 2 loop", "Enter"]);
+    t.wait_for("   ...>");
+    t.keys(&["W : Integer := 1 begin", "Enter"]);
+    let s = t.screen();
+    assert!(!s.contains("error:"), "ended too early:\n{s}");
+    // An empty line ends it: the error is shown and the main prompt is back.
+    t.keys(&["Enter"]);
+    let s = t.wait_for("error:");
+    let last = s.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("");
+    assert_eq!(last.trim_end(), "adair>", "{s}");
+    t.keys(&[":quit", "Enter"]);
+}
+
 fn repl_ctrl_c_stops_a_running_entry_and_keeps_state() {
     let t = Tmux::start(
         "adair-ctrlc",
@@ -537,6 +596,11 @@ fn main() {
             "repl_multiline_completion_and_values",
             repl_multiline_completion_and_values,
         ),
+        (
+            "repl_load_completes_file_names",
+            repl_load_completes_file_names,
+        ),
+        ("repl_forgiving_continuation", repl_forgiving_continuation),
         (
             "repl_ctrl_c_stops_a_running_entry_and_keeps_state",
             repl_ctrl_c_stops_a_running_entry_and_keeps_state,

@@ -54,6 +54,9 @@ impl Completer for AdaHelper {
         pos: usize,
         _ctx: &Context<'_>,
     ) -> rustyline::Result<(usize, Vec<Pair>)> {
+        if let Some((start, sources_only)) = file_argument(line, pos) {
+            return Ok((start, complete_file(&line[start..pos], sources_only)));
+        }
         let start = line[..pos]
             .rfind(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':' || c == '.'))
             .map(|i| i + 1)
@@ -89,6 +92,80 @@ impl Completer for AdaHelper {
             .collect();
         Ok((start, cands))
     }
+}
+
+/// Where the file name argument of `:load`, `:record`, `:plot` or `:view`
+/// starts when the cursor is in it, and whether only Ada sources (and
+/// folders) are offered (`:load`).
+fn file_argument(line: &str, pos: usize) -> Option<(usize, bool)> {
+    let before = &line[..pos];
+    let rest = before.trim_start();
+    let lead = before.len() - rest.len();
+    let cmd_len = rest.find(char::is_whitespace)?;
+    let sources_only = match &rest[..cmd_len] {
+        ":load" => true,
+        ":record" | ":plot" | ":view" => false,
+        _ => return None,
+    };
+    let after = &rest[cmd_len..];
+    let arg = after.trim_start();
+    // One argument: past a second word, nothing is completed as a file.
+    if arg.contains(char::is_whitespace) {
+        return None;
+    }
+    Some((lead + cmd_len + (after.len() - arg.len()), sources_only))
+}
+
+/// File names that start with `word` (a path relative to the current
+/// folder, absolute, or under `~/`), as a shell completes them: folders
+/// with a trailing `/`, hidden entries only when `word`'s last part starts
+/// with `.`; with `sources_only`, files other than `.air`, `.adb` and
+/// `.ads` are left out.
+fn complete_file(word: &str, sources_only: bool) -> Vec<Pair> {
+    let (dir_part, prefix) = match word.rfind('/') {
+        Some(i) => (&word[..=i], &word[i + 1..]),
+        None => ("", word),
+    };
+    let dir = match dir_part.strip_prefix("~/") {
+        Some(rest) => match std::env::var_os("HOME") {
+            Some(h) => std::path::PathBuf::from(h).join(rest),
+            None => return Vec::new(),
+        },
+        None if dir_part.is_empty() => std::path::PathBuf::from("."),
+        None => std::path::PathBuf::from(dir_part),
+    };
+    let Ok(entries) = std::fs::read_dir(&dir) else {
+        return Vec::new();
+    };
+    let mut found: Vec<Pair> = entries
+        .filter_map(|e| {
+            let e = e.ok()?;
+            let name = e.file_name().into_string().ok()?;
+            if !name.starts_with(prefix) || (name.starts_with('.') && !prefix.starts_with('.')) {
+                return None;
+            }
+            // Follows symbolic links, as a shell does.
+            let is_dir = std::fs::metadata(e.path()).is_ok_and(|m| m.is_dir());
+            let shown = if is_dir {
+                format!("{name}/")
+            } else {
+                let source = std::path::Path::new(&name)
+                    .extension()
+                    .and_then(|x| x.to_str())
+                    .is_some_and(|x| matches!(x, "air" | "adb" | "ads"));
+                if sources_only && !source {
+                    return None;
+                }
+                name
+            };
+            Some(Pair {
+                replacement: format!("{dir_part}{shown}"),
+                display: shown,
+            })
+        })
+        .collect();
+    found.sort_by(|a, b| a.display.cmp(&b.display));
+    found
 }
 
 impl Hinter for AdaHelper {
@@ -547,5 +624,67 @@ mod balance_tests {
         ]));
         assert!(!open(&["type T is null record;"]));
         assert!(!open(&["Put_Line (\"begin loop if\"); -- case record"]));
+    }
+}
+
+#[cfg(test)]
+mod file_completion_tests {
+    use super::{complete_file, file_argument};
+
+    fn shown(word: &str, sources_only: bool) -> Vec<String> {
+        complete_file(word, sources_only)
+            .into_iter()
+            .map(|p| p.replacement)
+            .collect()
+    }
+
+    #[test]
+    fn file_commands_take_file_names_and_others_do_not() {
+        assert_eq!(file_argument(":load ", 6), Some((6, true)));
+        assert_eq!(file_argument("  :load  ex", 11), Some((9, true)));
+        assert_eq!(file_argument(":record out", 11), Some((8, false)));
+        assert_eq!(file_argument(":plot a/b", 9), Some((6, false)));
+        assert_eq!(file_argument(":view v", 7), Some((6, false)));
+        // The command itself, other commands, Ada text and a second word.
+        assert_eq!(file_argument(":load", 5), None);
+        assert_eq!(file_argument(":help Mo", 8), None);
+        assert_eq!(file_argument("X := 1", 6), None);
+        assert_eq!(file_argument(":load a b", 9), None);
+    }
+
+    #[test]
+    fn folders_get_a_slash_and_load_offers_only_sources() {
+        let dir = std::env::temp_dir().join(format!("adair-complete-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("exdir")).unwrap();
+        for f in [
+            "example.air",
+            "extra.txt",
+            "exb.adb",
+            "exs.ads",
+            ".exhidden.air",
+        ] {
+            std::fs::write(dir.join(f), "null;").unwrap();
+        }
+        let d = format!("{}/", dir.display());
+        let ex = format!("{d}ex");
+        assert_eq!(
+            shown(&ex, true),
+            [
+                format!("{d}example.air"),
+                format!("{d}exb.adb"),
+                format!("{d}exdir/"),
+                format!("{d}exs.ads"),
+            ]
+        );
+        assert_eq!(shown(&ex, false).len(), 5, "{:?}", shown(&ex, false));
+        assert!(shown(&ex, false).contains(&format!("{d}extra.txt")));
+        assert_eq!(
+            shown(&format!("{d}.ex"), true),
+            [format!("{d}.exhidden.air")]
+        );
+        assert!(shown(&format!("{d}nothing"), true).is_empty());
+        assert!(shown(&format!("{d}missing/ex"), true).is_empty());
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }
