@@ -79,7 +79,7 @@ const COMMANDS: &[(&str, &str)] = &[
     (":where", "the joints and the tool-centre-point frame"),
     (
         ":jog J1 +10 | :jog z -5",
-        "jog a joint (deg) or the TCP along x, y, z (mm) or pitch, roll (deg), as the TeachBox does",
+        "jog a joint (deg), or the TCP: x y z (mm), pitch roll (deg)",
     ),
     (":trace on|off", "print every motion"),
     (":teach", "the teach pendant"),
