@@ -69,12 +69,7 @@ impl Repl {
                 q[j] += rad(amount);
                 let spec = &st.kin.description().joints()[j];
                 if !spec.contains(q[j]) {
-                    let (which, limit) = if amount > 0.0 {
-                        ("upper", deg(spec.max))
-                    } else {
-                        ("lower", deg(spec.min))
-                    };
-                    let left = (limit - now).abs();
+                    let (which, limit, left) = super::teach::limit_ahead(amount, now, spec);
                     return fail(format!(
                         ":jog J{} {amount:+}: refused, it would pass the {which} limit {limit:.1} deg ({left:.1} deg left); the arm did not move\n",
                         j + 1

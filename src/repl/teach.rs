@@ -411,15 +411,25 @@ const LEGEND: [&str; 3] = [
     "arrows: up/down choose the joint (>), left/right jog",
 ];
 
-/// Why a joint jog of `step` degrees from `now` degrees is refused: the
-/// limit it would pass and how far the joint is from it.
-fn limit_message(j: usize, step: f64, now: f64, spec: &crate::kinematics::JointSpec) -> String {
+/// The limit a joint jog of `step` degrees from `now` degrees runs
+/// towards: which one, where (degrees) and how far the joint is from it.
+pub(super) fn limit_ahead(
+    step: f64,
+    now: f64,
+    spec: &crate::kinematics::JointSpec,
+) -> (&'static str, f64, f64) {
     let (which, limit) = if step > 0.0 {
         ("upper", deg(spec.max))
     } else {
         ("lower", deg(spec.min))
     };
-    let left = (limit - now).abs();
+    (which, limit, (limit - now).abs())
+}
+
+/// Why a joint jog of `step` degrees from `now` degrees is refused: the
+/// limit it would pass and how far the joint is from it.
+fn limit_message(j: usize, step: f64, now: f64, spec: &crate::kinematics::JointSpec) -> String {
+    let (which, limit, left) = limit_ahead(step, now, spec);
     let name = format!("J{}", j + 1);
     if left < 0.05 {
         format!("{name} {step:+} deg refused:\n  {name} is at its {which} limit {limit:.1} deg")

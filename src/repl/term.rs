@@ -552,9 +552,12 @@ pub fn piped_on(
             // An empty line ends a continuation that no further line can
             // mend (an error before its end), or that only the count of
             // openers keeps open: the entry is reported.
-            let ends = line.trim().is_empty() && (cannot_finish(&buf) || !unfinished(&buf));
-            let open = balance.surely_open() || unfinished(&buf);
-            if open && !ends && !missing_only_semicolon(&buf) {
+            let open = if line.trim().is_empty() {
+                unfinished(&buf) && !cannot_finish(&buf)
+            } else {
+                balance.surely_open() || unfinished(&buf)
+            };
+            if open && !missing_only_semicolon(&buf) {
                 continue;
             }
             balance = Balance::default();
