@@ -1,0 +1,933 @@
+//! Declarations: objects, types and subtypes, subprograms, packages,
+//! `use` and pragmas, the tasking units (tasks, protected units, entries)
+//! and the constructs AdaIR reads only to refuse (generics, representation
+//! clauses, separate bodies). `decl_grammar` chooses among the parts.
+
+use super::errors::{UNCLOSED, assign_or_eq, skip_to_semi, soft_semi};
+use super::{Common, Ex, TokIn, ident, mk, name, semi};
+use crate::diag::Span;
+use crate::syntax::ast::*;
+use crate::syntax::token::{Kw, Token};
+use chumsky::prelude::*;
+
+/// The declaration, over the shared parts.
+pub(super) fn decl_grammar<'t, I: TokIn<'t>>(
+    c: &Common<'t, I>,
+    decl: &Boxed<'t, 't, I, Decl, Ex<'t>>,
+) -> Boxed<'t, 't, I, Decl, Ex<'t>> {
+    choice((
+        separate_body(),
+        type_decl(c),
+        subtype_decl(c),
+        object_decl(c),
+        subprogram(c),
+        package(c),
+        use_decl(),
+        pragma(&c.expr),
+        task(c),
+        interrupt_use(&c.expr),
+        rep_clause(),
+        generic(decl),
+        protected(c),
+        entry_body(c),
+    ))
+    .map_with(|kind, e| Decl {
+        kind,
+        span: e.span(),
+    })
+    .labelled("declaration")
+    // Likewise a declaration, not past the `begin`, `end` or `private`
+    // that ends the declarative part.
+    .recover_with(via_parser(skip_to_semi().map(|_| Decl {
+        kind: DeclKind::Unsupported("<error>"),
+        span: Span {
+            start: 0,
+            end: 0,
+            context: 0,
+        },
+    })))
+    .boxed()
+}
+
+/// One or more names, separated by commas.
+fn names<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, Vec<Ident>, Ex<'t>> {
+    ident()
+        .separated_by(just(Token::Comma))
+        .at_least(1)
+        .collect::<Vec<_>>()
+        .boxed()
+}
+
+/// An initial value or a default, if there is one.
+fn init<'t, I: TokIn<'t>>(
+    expr: &Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> impl Parser<'t, I, Option<Expr>, Ex<'t>> + Clone + use<'t, I> {
+    assign_or_eq().ignore_then(expr.clone()).or_not()
+}
+
+/// `type T is ...;` (or `type T;`, a type completed later).
+fn type_decl<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    let Common { expr, .. } = c;
+    kw!(Type)
+        .ignore_then(ident())
+        .then_ignore(discriminants(expr))
+        .then(kw!(Is).ignore_then(type_def(c)).or_not())
+        .then_ignore(semi())
+        .map(|(name, def)| DeclKind::Type {
+            name,
+            def: def.unwrap_or(TypeDef::Incomplete),
+        })
+        .boxed()
+}
+
+/// What follows `type T is`.
+fn type_def<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, TypeDef, Ex<'t>> {
+    let Common { expr, st_ind, .. } = c;
+    let enum_lit = ident()
+        .map(EnumLit::Ident)
+        .or(select! { Token::Char(c) = e => EnumLit::Char(c, e.span()) });
+    let record_body = record_body(c);
+    choice((
+        enum_lit
+            .separated_by(just(Token::Comma))
+            .at_least(1)
+            .collect::<Vec<_>>()
+            .delimited_by(just(Token::LParen), just(Token::RParen))
+            .map(TypeDef::Enum),
+        kw!(Range)
+            .ignore_then(expr.clone())
+            .then_ignore(just(Token::DotDot))
+            .then(expr.clone())
+            .map(|(a, b)| TypeDef::IntRange(a, b)),
+        kw!(Digits)
+            .ignore_then(expr.clone())
+            .then(
+                kw!(Range)
+                    .ignore_then(expr.clone())
+                    .then_ignore(just(Token::DotDot))
+                    .then(expr.clone())
+                    .or_not(),
+            )
+            .map(|(digits, range)| TypeDef::Float { digits, range }),
+        // `new Shape with record ... end record` (or `with null record`,
+        // `with private`): an extension of a tagged type.
+        kw!(New)
+            .then(st_ind.clone())
+            .then(kw!(With))
+            .then(choice((
+                record_body.clone().ignored(),
+                kw!(Private).ignored(),
+            )))
+            .to(TypeDef::Unsupported(
+                "a type extension (`new T with record`)",
+            )),
+        kw!(New).ignore_then(st_ind.clone()).map(TypeDef::Derived),
+        array_def(c),
+        record_body.clone().map(TypeDef::Record),
+        kw!(Tagged)
+            .then(record_body.clone())
+            .to(TypeDef::Unsupported("a tagged type")),
+        kw!(Abstract)
+            .then(kw!(Tagged))
+            .then(record_body.clone())
+            .to(TypeDef::Unsupported("an abstract tagged type")),
+        kw!(Limited)
+            .then(kw!(Private))
+            .to(TypeDef::Unsupported("a private type")),
+        kw!(Private).to(TypeDef::Unsupported("a private type")),
+        kw!(Mod)
+            .ignore_then(expr.clone())
+            .to(TypeDef::Unsupported("a modular type")),
+        kw!(Delta)
+            .ignore_then(expr.clone())
+            .then(
+                kw!(Range)
+                    .then(expr.clone())
+                    .then(just(Token::DotDot))
+                    .then(expr.clone())
+                    .or_not(),
+            )
+            .to(TypeDef::Unsupported("a fixed-point type")),
+        kw!(Access)
+            .ignore_then(kw!(All).or(kw!(Constant)).or_not())
+            .ignore_then(st_ind.clone())
+            .map(TypeDef::Access),
+    ))
+    .boxed()
+}
+
+/// `array (...) of T`.
+fn array_def<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, TypeDef, Ex<'t>> {
+    let Common { drange, st_ind, .. } = c;
+    kw!(Array)
+        .ignore_then(
+            choice((
+                name()
+                    .then_ignore(kw!(Range))
+                    .then_ignore(just(Token::Box))
+                    .separated_by(just(Token::Comma))
+                    .at_least(1)
+                    .collect::<Vec<_>>()
+                    .map(ArrayIndex::Unconstrained),
+                drange
+                    .clone()
+                    .separated_by(just(Token::Comma))
+                    .at_least(1)
+                    .collect::<Vec<_>>()
+                    .map(ArrayIndex::Constrained),
+            ))
+            .delimited_by(just(Token::LParen), just(Token::RParen)),
+        )
+        .then_ignore(kw!(Of))
+        .then_ignore(kw!(Aliased).or_not())
+        .then(st_ind.clone())
+        .map(|(index, elem)| TypeDef::Array { index, elem })
+        .boxed()
+}
+
+/// `record ... end record` or `null record`: the components.
+fn record_body<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, Vec<Component>, Ex<'t>> {
+    let Common { expr, st_ind, .. } = c;
+    let component = names()
+        .then_ignore(just(Token::Colon))
+        .then_ignore(kw!(Aliased).or_not())
+        .then(st_ind.clone())
+        .then(init(expr))
+        .then_ignore(semi())
+        .map_with(|((names, ty), default), e| Component {
+            names,
+            ty,
+            default,
+            span: e.span(),
+        });
+    kw!(Null)
+        .then(semi())
+        .to(Vec::new())
+        .or(component.repeated().at_least(1).collect::<Vec<_>>())
+        .delimited_by(kw!(Record), kw!(End).then(kw!(Record)))
+        .or(kw!(Null).then(kw!(Record)).to(Vec::new()))
+        .boxed()
+}
+
+/// `type R (N : Integer) is ...`, `task type T (Id : Integer) is ...`:
+/// said once, and the rest of the declaration is read as without them.
+fn discriminants<'t, I: TokIn<'t>>(
+    expr: &Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, (), Ex<'t>> {
+    params(expr.clone())
+        .validate(|ps, e, emitter| {
+            if !ps.is_empty() {
+                emitter.emit(Rich::custom(
+                    e.span(),
+                    "discriminants are not supported by AdaIR (see docs/differences.md)",
+                ));
+            }
+        })
+        .boxed()
+}
+
+/// `subtype S is ...;`.
+fn subtype_decl<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    let Common { st_ind, .. } = c;
+    kw!(Subtype)
+        .ignore_then(ident())
+        .then_ignore(kw!(Is))
+        .then(st_ind.clone())
+        .then_ignore(semi())
+        .map(|(name, ind)| DeclKind::Subtype { name, ind })
+        .boxed()
+}
+
+/// Objects, numbers, exceptions and renamings: `X, Y : ...;`.
+fn object_decl<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    let Common { expr, st_ind, .. } = c;
+    #[derive(Clone)]
+    enum ObjTail {
+        Exception,
+        Number(Expr),
+        Object(bool, SubtypeInd, Option<Expr>),
+        AnonArray(bool, TypeDef, Span, Option<Expr>),
+        Renames,
+    }
+    names()
+        .then_ignore(just(Token::Colon))
+        .then(choice((
+            kw!(Exception).to(ObjTail::Exception),
+            kw!(Constant)
+                .ignore_then(just(Token::Assign))
+                .ignore_then(expr.clone())
+                .map(ObjTail::Number),
+            kw!(Constant)
+                .or_not()
+                .then_ignore(kw!(Aliased).or_not())
+                .then(array_def(c).map_with(|d, e| (d, e.span())))
+                .then(init(expr))
+                .map(|((c, (d, sp)), i)| ObjTail::AnonArray(c.is_some(), d, sp, i)),
+            kw!(Aliased)
+                .or_not()
+                .ignore_then(kw!(Constant).or_not())
+                .then_ignore(kw!(Aliased).or_not())
+                .then(st_ind.clone())
+                .then(kw!(Renames).then(expr.clone()).or_not())
+                .then(init(expr))
+                .map(|(((c, t), ren), i)| {
+                    if ren.is_some() {
+                        ObjTail::Renames
+                    } else {
+                        ObjTail::Object(c.is_some(), t, i)
+                    }
+                }),
+        )))
+        .then_ignore(soft_semi())
+        .map(|(names, tail)| match tail {
+            ObjTail::Exception => DeclKind::Exception { names },
+            ObjTail::Number(value) => DeclKind::Number { names, value },
+            ObjTail::Object(constant, ty, init) => DeclKind::Object {
+                names,
+                constant,
+                ty,
+                init,
+                anon: None,
+            },
+            ObjTail::AnonArray(constant, def, sp, init) => {
+                // An anonymous array type gets a hidden name of its own.
+                let tyname = Ident::new(&format!("{}'Type", names[0].name), sp);
+                DeclKind::Object {
+                    names,
+                    constant,
+                    ty: SubtypeInd {
+                        mark: mk(ExprKind::Name(tyname), sp),
+                        constraint: None,
+                        span: sp,
+                    },
+                    init,
+                    anon: Some(Box::new(def)),
+                }
+            }
+            ObjTail::Renames => DeclKind::Unsupported("a renaming declaration"),
+        })
+        .boxed()
+}
+
+/// A subprogram: its declaration, body, or what AdaIR refuses of it.
+fn subprogram<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    let Common { expr, .. } = c;
+    subprogram_spec(expr.clone())
+        .then(choice((
+            kw!(Is)
+                .ignore_then(kw!(Separate).or(kw!(Abstract)))
+                .then_ignore(semi())
+                .to(SubTail::Unsupported("a separate or abstract subprogram")),
+            kw!(Is)
+                .ignore_then(kw!(New))
+                .then(name())
+                .then(any().and_is(semi().not()).repeated())
+                .then_ignore(semi())
+                .to(SubTail::Unsupported("a generic instantiation")),
+            expression_function(expr),
+            subprogram_body(c),
+            import_aspect(expr)
+                .or_not()
+                .then_ignore(semi())
+                .map(|imp| SubTail::Decl(imp.flatten())),
+        )))
+        .validate(|(spec, rest), e, emitter| match rest {
+            SubTail::Unsupported(what) => DeclKind::UnsupportedNamed(
+                what,
+                match &spec.name {
+                    Designator::Ident(i) => vec![i.clone()],
+                    _ => Vec::new(),
+                },
+            ),
+            SubTail::Decl(import) => DeclKind::SubprogramDecl { spec, import },
+            SubTail::Body(decls, body, end_name, missing) => {
+                if let Some(at) = missing {
+                    let whole: Span = e.span();
+                    emitter.emit(Rich::custom(at, format!("{UNCLOSED}body {}", whole.start)));
+                }
+                DeclKind::SubprogramBody(Box::new(SubprogramBody {
+                    spec,
+                    decls,
+                    body,
+                    end_name,
+                }))
+            }
+        })
+        .boxed()
+}
+
+/// `procedure P (...)` or `function F (...) return T`.
+fn subprogram_spec<'t, I: TokIn<'t>>(
+    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, SubprogramSpec, Ex<'t>> {
+    let designator = ident()
+        .map(Designator::Ident)
+        .or(select! { Token::Str(s) = e => Designator::Op(s.to_string(), e.span()) });
+    let proc = kw!(Procedure)
+        .ignore_then(designator.clone())
+        .then(params(expr.clone()))
+        .map_with(|(name, params), e| SubprogramSpec {
+            name,
+            params,
+            ret: None,
+            span: e.span(),
+        });
+    let func = kw!(Function)
+        .ignore_then(designator)
+        .then(params(expr))
+        .then_ignore(kw!(Return))
+        .then(name())
+        .map_with(|((name, params), ret), e| SubprogramSpec {
+            name,
+            params,
+            ret: Some(ret),
+            span: e.span(),
+        });
+    proc.or(func).boxed()
+}
+
+/// A parameter list, if there is one (for subprograms, entries, accepts
+/// and discriminants).
+pub(super) fn params<'t, I: TokIn<'t>>(
+    expr: Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, Vec<Param>, Ex<'t>> {
+    let mode = choice((
+        kw!(In).then(kw!(Out)).to(Mode::InOut),
+        select! { Token::Ident(s) if s.eq_ignore_ascii_case("inout") => () }
+            .then(ident().rewind())
+            .validate(|_, e, emitter| {
+                emitter.emit(Rich::custom(
+                    e.span(),
+                    "`inout` is not a parameter mode: write `in out`",
+                ));
+            })
+            .to(Mode::InOut),
+        kw!(In).to(Mode::In),
+        kw!(Out).to(Mode::Out),
+    ))
+    .or_not()
+    .map(|m| m.unwrap_or(Mode::In));
+    ident()
+        .separated_by(just(Token::Comma))
+        .at_least(1)
+        .collect::<Vec<_>>()
+        .then_ignore(just(Token::Colon))
+        .then(mode)
+        .then(kw!(Access).or_not().ignore_then(name()))
+        .then(assign_or_eq().ignore_then(expr).or_not())
+        .map_with(|(((names, mode), ty), default), e| Param {
+            names,
+            mode,
+            ty,
+            default,
+            span: e.span(),
+        })
+        .separated_by(semi())
+        .at_least(1)
+        .collect::<Vec<_>>()
+        .delimited_by(just(Token::LParen), just(Token::RParen))
+        .or_not()
+        .map(|p| p.unwrap_or_default())
+        .boxed()
+}
+
+/// What follows a subprogram's specification.
+#[derive(Clone)]
+enum SubTail {
+    Unsupported(&'static str),
+    Decl(Option<String>),
+    /// Declarations, statements, the name after `end`, and where the
+    /// text ended when it ended before the body's `end`.
+    Body(Vec<Decl>, Block, Option<(String, Span)>, Option<Span>),
+}
+
+/// An expression function (Ada 2012): `is (Expression);`, a body
+/// that returns the parenthesized expression (or aggregate).
+fn expression_function<'t, I: TokIn<'t>>(
+    expr: &Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, SubTail, Ex<'t>> {
+    kw!(Is)
+        .ignore_then(just(Token::LParen).rewind())
+        .ignore_then(expr.clone())
+        .validate(|x: Expr, _, emitter| {
+            if !matches!(
+                x.kind,
+                ExprKind::Paren(_)
+                    | ExprKind::Aggregate(_)
+                    | ExprKind::If { .. }
+                    | ExprKind::Case { .. }
+            ) {
+                emitter.emit(Rich::custom(
+                    x.span,
+                    "the body of an expression function is one parenthesized expression: `is (...)`",
+                ));
+            }
+            x
+        })
+        .then_ignore(semi())
+        .map(|x: Expr| {
+            let span = x.span;
+            let ret = Stmt {
+                kind: StmtKind::Return(Some(Box::new(x))),
+                span,
+            };
+            SubTail::Body(
+                Vec::new(),
+                Block {
+                    stmts: vec![ret].into(),
+                    handlers: Vec::new(),
+                    span,
+                    lazy: None,
+                },
+                None,
+                None,
+            )
+        })
+        .boxed()
+}
+
+/// `is` declarations, `begin` statements, `end NAME;`: a body.
+fn subprogram_body<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, SubTail, Ex<'t>> {
+    let Common {
+        decls,
+        stmts,
+        handler,
+        body_block,
+        end_name,
+        ..
+    } = c;
+    kw!(Is)
+        .ignore_then(decls.clone())
+        .then(choice((
+            body_block
+                .clone()
+                .then(end_name.clone())
+                .then_ignore(semi())
+                .map(|(b, n)| (b, n, None)),
+            // The text ends before the body's `end`: reported once
+            // (by `subprogram`), and the body is taken as ended, so that what
+            // it holds is not parsed again as something else.
+            kw!(Begin)
+                .ignore_then(stmts.clone())
+                .then(
+                    kw!(Exception)
+                        .ignore_then(handler.clone().repeated().collect::<Vec<_>>())
+                        .or_not(),
+                )
+                .then(end().map_with(|_, e| e.span()))
+                .map_with(|((stmts, handlers), at), e| {
+                    let b = Block {
+                        stmts: stmts.into(),
+                        handlers: handlers.unwrap_or_default(),
+                        span: e.span(),
+                        lazy: None,
+                    };
+                    (b, None, Some(at))
+                }),
+        )))
+        .map(|(d, (b, n, missing))| SubTail::Body(d, b, n, missing))
+        .boxed()
+}
+
+/// `with Import, External_Name => "..."`: the external name, if given.
+fn import_aspect<'t, I: TokIn<'t>>(
+    expr: &Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, Option<String>, Ex<'t>> {
+    kw!(With)
+        .ignore_then(
+            ident()
+                .then(just(Token::Arrow).ignore_then(expr.clone()).or_not())
+                .separated_by(just(Token::Comma))
+                .at_least(1)
+                .collect::<Vec<_>>(),
+        )
+        .map(|aspects: Vec<(Ident, Option<Expr>)>| {
+            aspects
+                .into_iter()
+                .find_map(|(k, v)| match (k.key.as_ref(), v) {
+                    (
+                        "external_name",
+                        Some(Expr {
+                            kind: ExprKind::Str(s),
+                            ..
+                        }),
+                    ) => Some(s),
+                    _ => None,
+                })
+        })
+        .boxed()
+}
+
+/// A package specification or body.
+fn package<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    let Common {
+        stmts,
+        decls,
+        handler,
+        ..
+    } = c;
+    kw!(Package)
+        .ignore_then(choice((
+            kw!(Body)
+                .ignore_then(name())
+                .then_ignore(kw!(Is))
+                .then(decls.clone())
+                .then(
+                    kw!(Begin)
+                        .ignore_then(stmts.clone())
+                        .then(
+                            kw!(Exception)
+                                .ignore_then(handler.clone().repeated().collect::<Vec<_>>())
+                                .or_not(),
+                        )
+                        .map_with(|(stmts, handlers), e| Block {
+                            stmts: stmts.into(),
+                            handlers: handlers.unwrap_or_default(),
+                            span: e.span(),
+                            lazy: None,
+                        })
+                        .or_not(),
+                )
+                .then_ignore(kw!(End))
+                .then_ignore(name().or_not())
+                .then_ignore(semi())
+                .map_with(|((name, decls), init), e| {
+                    DeclKind::PackageBody(Box::new(PackageBody {
+                        name,
+                        decls,
+                        init,
+                        span: e.span(),
+                    }))
+                }),
+            ident()
+                .then_ignore(kw!(Is))
+                .then_ignore(kw!(New))
+                .then_ignore(any().and_is(semi().not()).repeated())
+                .then_ignore(semi())
+                .map(|n| DeclKind::UnsupportedNamed("a generic instantiation", vec![n])),
+            name()
+                .then_ignore(kw!(Is))
+                .then(decls.clone())
+                .then(kw!(Private).ignore_then(decls.clone()).or_not())
+                .then_ignore(kw!(End))
+                .then_ignore(name().or_not())
+                .then_ignore(semi())
+                .map_with(|((name, decls), private), e| {
+                    DeclKind::PackageSpec(Box::new(PackageSpec {
+                        name,
+                        decls,
+                        private: private.unwrap_or_default(),
+                        span: e.span(),
+                    }))
+                }),
+        )))
+        .boxed()
+}
+
+/// `use P;`, `use type T;`, `use all type T;`.
+fn use_decl<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    kw!(Use)
+        .ignore_then(
+            kw!(Type)
+                .or(kw!(All).then(kw!(Type)).to(Token::Semi))
+                .or_not(),
+        )
+        .ignore_then(
+            name()
+                .separated_by(just(Token::Comma))
+                .at_least(1)
+                .collect::<Vec<_>>(),
+        )
+        .then_ignore(semi())
+        .map(DeclKind::Use)
+        .boxed()
+}
+
+/// `pragma Name (Arguments);`.
+fn pragma<'t, I: TokIn<'t>>(
+    expr: &Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    kw!(Pragma)
+        .ignore_then(ident())
+        .then(
+            ident()
+                .then(just(Token::Arrow))
+                .or_not()
+                .ignore_then(expr.clone())
+                .separated_by(just(Token::Comma))
+                .collect::<Vec<_>>()
+                .delimited_by(just(Token::LParen), just(Token::RParen))
+                .or_not(),
+        )
+        .then_ignore(semi())
+        .map(|(name, args)| DeclKind::Pragma {
+            name,
+            args: args.unwrap_or_default(),
+        })
+        .boxed()
+}
+
+/// A task specification or body.
+fn task<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    let Common {
+        expr, decls, block, ..
+    } = c;
+    #[derive(Clone)]
+    enum TaskItem {
+        Entry(EntryDecl),
+        Address(DeclKind),
+        Pragma(DeclKind),
+    }
+    kw!(Task)
+        .ignore_then(choice((
+            kw!(Body)
+                .ignore_then(ident())
+                .then_ignore(kw!(Is))
+                .then(decls.clone())
+                .then(block.clone())
+                .then_ignore(ident().or_not())
+                .then_ignore(semi())
+                .map(|((name, decls), body)| {
+                    DeclKind::TaskBody(Box::new(TaskBody { name, decls, body }))
+                }),
+            kw!(Type)
+                .or_not()
+                .then(ident())
+                .then_ignore(discriminants(expr))
+                .then(
+                    kw!(Is)
+                        .ignore_then(
+                            choice((
+                                entry_decl(expr).map(TaskItem::Entry),
+                                interrupt_use(expr).map(TaskItem::Address),
+                                pragma(expr).map(TaskItem::Pragma),
+                            ))
+                            .repeated()
+                            .collect::<Vec<_>>(),
+                        )
+                        .then_ignore(kw!(End))
+                        .then_ignore(ident().or_not())
+                        .or_not(),
+                )
+                .then_ignore(semi())
+                .map(|((is_type, name), items)| {
+                    let mut spec = TaskSpec {
+                        name,
+                        entries: Vec::new(),
+                        is_type: is_type.is_some(),
+                        addresses: Vec::new(),
+                        priority: None,
+                    };
+                    for item in items.unwrap_or_default() {
+                        match item {
+                            TaskItem::Entry(e) => spec.entries.push(e),
+                            TaskItem::Address(DeclKind::InterruptUse { entry, address }) => {
+                                spec.addresses.push((entry, address))
+                            }
+                            TaskItem::Pragma(DeclKind::Pragma { name, mut args })
+                                if &*name.key == "priority" && args.len() == 1 =>
+                            {
+                                spec.priority = args.pop()
+                            }
+                            _ => {}
+                        }
+                    }
+                    DeclKind::TaskSpec(Box::new(spec))
+                }),
+        )))
+        .boxed()
+}
+
+/// An entry declaration of a task or protected unit.
+fn entry_decl<'t, I: TokIn<'t>>(
+    expr: &Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, EntryDecl, Ex<'t>> {
+    // `entry E (1 .. 3) (...)`: an entry family, parsed and refused.
+    let family = just(Token::LParen)
+        .ignore_then(expr.clone())
+        .then_ignore(just(Token::DotDot).then(expr.clone()).or_not())
+        .then_ignore(just(Token::RParen))
+        .validate(|_, e, emitter| {
+            emitter.emit(Rich::custom(
+                e.span(),
+                "an entry family is not supported by AdaIR (see docs/differences.md)",
+            ))
+        });
+    kw!(Entry)
+        .ignore_then(ident())
+        .then_ignore(family.or_not())
+        .then(params(expr.clone()))
+        .then_ignore(semi())
+        .map_with(|(name, params), e| EntryDecl {
+            name,
+            params,
+            span: e.span(),
+        })
+        .boxed()
+}
+
+/// `for E use at A;`: an entry bound to an interrupt.
+fn interrupt_use<'t, I: TokIn<'t>>(
+    expr: &Boxed<'t, 't, I, Expr, Ex<'t>>,
+) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    kw!(For)
+        .ignore_then(ident())
+        .then_ignore(kw!(Use))
+        .then_ignore(kw!(At))
+        .then(expr.clone())
+        .then_ignore(semi())
+        .map(|(entry, address)| DeclKind::InterruptUse { entry, address })
+        .boxed()
+}
+
+/// A protected unit's specification or body.
+fn protected<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    let Common { expr, decls, .. } = c;
+    let prot_op = choice((
+        entry_decl(expr).map(|e| Some(ProtOp::Entry(e))),
+        subprogram_spec(expr.clone())
+            .then_ignore(semi())
+            .map(|s| Some(ProtOp::Sub(s))),
+        pragma(expr).to(None),
+    ));
+    kw!(Protected)
+        .ignore_then(choice((
+            kw!(Body)
+                .ignore_then(ident())
+                .then_ignore(kw!(Is))
+                .then(decls.clone())
+                .then_ignore(kw!(End))
+                .then_ignore(ident().or_not())
+                .then_ignore(semi())
+                .map_with(|(name, decls), e| {
+                    DeclKind::ProtectedBody(Box::new(ProtectedBody {
+                        name,
+                        decls,
+                        span: e.span(),
+                    }))
+                }),
+            kw!(Type)
+                .or_not()
+                .then(ident())
+                .then_ignore(discriminants(expr))
+                .then_ignore(kw!(Is))
+                .then(prot_op.repeated().collect::<Vec<_>>())
+                .then(kw!(Private).ignore_then(decls.clone()).or_not())
+                .then_ignore(kw!(End))
+                .then_ignore(ident().or_not())
+                .then_ignore(semi())
+                .map_with(|(((is_type, name), ops), private), e| {
+                    DeclKind::ProtectedSpec(Box::new(ProtectedSpec {
+                        name,
+                        is_type: is_type.is_some(),
+                        ops: ops.into_iter().flatten().collect(),
+                        private: private.unwrap_or_default(),
+                        span: e.span(),
+                    }))
+                }),
+        )))
+        .boxed()
+}
+
+/// An entry body of a protected unit.
+fn entry_body<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    let Common {
+        expr, decls, block, ..
+    } = c;
+    kw!(Entry)
+        .ignore_then(ident())
+        .then(params(expr.clone()))
+        .then_ignore(kw!(When))
+        .then(expr.clone())
+        .then_ignore(kw!(Is))
+        .then(decls.clone())
+        .then(block.clone())
+        .then_ignore(ident().or_not())
+        .then_ignore(semi())
+        .map_with(|((((name, params), barrier), decls), body), e| {
+            DeclKind::EntryBody(Box::new(EntryBody {
+                name,
+                params,
+                barrier,
+                decls,
+                body,
+                span: e.span(),
+            }))
+        })
+        .boxed()
+}
+
+/// A generic unit: refused, with the names of its formal types and
+/// objects and of the unit itself kept (see `UnsupportedNamed`).
+fn generic<'t, I: TokIn<'t>>(
+    decl: &Boxed<'t, 't, I, Decl, Ex<'t>>,
+) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    kw!(Generic)
+        .ignore_then(
+            any()
+                .and_is(
+                    select! { Token::Kw(Kw::Procedure | Kw::Function | Kw::Package) => () }.not(),
+                )
+                .map_with(|t, e| (t, e.span()))
+                .repeated()
+                .collect::<Vec<(Token, Span)>>(),
+        )
+        .then(decl.clone())
+        .map(|(formals, unit)| {
+            let mut names = Vec::new();
+            for (k, w) in formals.windows(2).enumerate() {
+                let is_type = matches!(w[0].0, Token::Kw(Kw::Type));
+                let before_colon = matches!(w[1].0, Token::Colon)
+                    && !matches!(
+                        formals.get(k.wrapping_sub(1)),
+                        Some((Token::Kw(Kw::Type), _))
+                    );
+                let (t, sp) = if is_type { &w[1] } else { &w[0] };
+                if (is_type || before_colon)
+                    && let Token::Ident(n) = t
+                {
+                    names.push(Ident::new(n, *sp));
+                }
+            }
+            if let DeclKind::SubprogramDecl { spec, .. } = &unit.kind
+                && let Designator::Ident(i) = &spec.name
+            {
+                names.push(i.clone());
+            }
+            DeclKind::UnsupportedNamed("a generic unit", names)
+        })
+        .boxed()
+}
+
+/// Representation clauses other than `use at`: read whole (a record
+/// representation to its `end record;`) and refused.
+fn rep_clause<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    kw!(For)
+        .ignore_then(ident())
+        .then_ignore(just(Token::Tick).then(ident()).or_not())
+        .then_ignore(kw!(Use))
+        .then_ignore(kw!(At).not().rewind())
+        .then_ignore(choice((
+            kw!(Record)
+                .then(any().and_is(kw!(End).then(kw!(Record)).not()).repeated())
+                .then(kw!(End))
+                .then(kw!(Record))
+                .then(semi())
+                .ignored(),
+            skip_to_semi(),
+        )))
+        .to(DeclKind::Unsupported("a representation clause"))
+        .boxed()
+}
+
+/// `package body P is separate;` (and of a task or protected unit).
+fn separate_body<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    choice((kw!(Package), kw!(Task), kw!(Protected)))
+        .then(kw!(Body))
+        .then(ident().separated_by(just(Token::Dot)).at_least(1))
+        .then(kw!(Is))
+        .then(kw!(Separate))
+        .then(semi())
+        .to(DeclKind::Unsupported("a separate body"))
+        .boxed()
+}
