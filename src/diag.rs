@@ -184,6 +184,10 @@ impl Sources {
         self.files.push((name.into(), text));
         (self.files.len() - 1) as FileId
     }
+    /// The id the next source added gets.
+    pub fn next_id(&self) -> FileId {
+        self.files.len() as FileId
+    }
     pub fn name(&self, id: FileId) -> &str {
         self.files
             .get(id as usize)

@@ -292,7 +292,7 @@ pub fn run_text_on(name: &str, text: &str, robot: &str, trace: bool, target: &Ta
         Ok(desc) => match &target.port {
             None => s.set_robot(desc, tracer(), false),
             Some(settings) => {
-                s.checker.simulator_only = crate::services::SIMULATOR_ONLY;
+                s.front.checker.simulator_only = crate::services::SIMULATOR_ONLY;
                 if target.rehearse
                     && let Err((diagnostics, code)) =
                         crate::session::rehearse(&desc, settings, name, text, false)
@@ -341,8 +341,10 @@ pub fn run_text_on(name: &str, text: &str, robot: &str, trace: bool, target: &Ta
     let diagnostics = warned.take()
         + &match &outcome {
             Outcome::Ok => String::new(),
-            Outcome::CheckFailed(d) => crate::diag::render(d, &s.sources, false),
-            Outcome::Raised(d) => crate::diag::render(std::slice::from_ref(d), &s.sources, false),
+            Outcome::CheckFailed(d) => crate::diag::render(d, &s.front.sources, false),
+            Outcome::Raised(d) => {
+                crate::diag::render(std::slice::from_ref(d), &s.front.sources, false)
+            }
         };
     RunText {
         output: buf.take(),

@@ -604,7 +604,7 @@ fn real_main(
             };
             let mut s = Session::new(Box::new(std::io::LineWriter::new(Watched::out())));
             // No tool reads the uses and types of this run.
-            s.checker.index.uses = false;
+            s.front.checker.index.uses = false;
             // It runs once: a long body is compiled as it is checked.
             s.compile_as_checked();
             s.strict = strict;
@@ -636,7 +636,7 @@ fn real_main(
             match robot.serial.settings() {
                 None => s.set_robot(desc, trace(), robot.realtime || view.live()),
                 Some(settings) => {
-                    s.checker.simulator_only = adair::services::SIMULATOR_ONLY;
+                    s.front.checker.simulator_only = adair::services::SIMULATOR_ONLY;
                     if robot.rehearse {
                         let name = file.to_string_lossy();
                         match adair::session::rehearse(&desc, &settings, &name, &text, color) {
@@ -828,21 +828,24 @@ fn real_main(
                     continue;
                 };
                 let mut s = Session::new(Box::new(std::io::sink()));
-                s.checker.index.uses = false;
+                s.front.checker.index.uses = false;
                 // Nothing runs: a long program's checked form is not kept.
-                s.checker.diagnostics_only = true;
+                s.front.checker.diagnostics_only = true;
                 // A script may be meant for a real arm: say where it cannot be.
-                s.checker.simulator_only = adair::services::SIMULATOR_ONLY;
+                s.front.checker.simulator_only = adair::services::SIMULATOR_ONLY;
                 s.strict = strict;
                 if let Some(d) = &devices {
                     s.set_devices(d.clone());
                 }
                 match s.check_source(&f.to_string_lossy(), text.clone(), false) {
                     Err(d) => {
-                        eprint!("{}", adair::diag::render(&d, &s.sources, color));
+                        eprint!("{}", adair::diag::render(&d, &s.front.sources, color));
                         worst = 2;
                     }
-                    Ok(_) => eprint!("{}", adair::diag::render(&s.warnings, &s.sources, color)),
+                    Ok(_) => eprint!(
+                        "{}",
+                        adair::diag::render(&s.warnings, &s.front.sources, color)
+                    ),
                 }
             }
             worst
@@ -1029,10 +1032,10 @@ fn test_child(paths: &[PathBuf], mut target: adair::golden::Target, timeout: f64
 fn report(outcome: &Outcome, s: &Session, color: bool) {
     match outcome {
         Outcome::Ok => {}
-        Outcome::CheckFailed(d) => eprint!("{}", adair::diag::render(d, &s.sources, color)),
+        Outcome::CheckFailed(d) => eprint!("{}", adair::diag::render(d, &s.front.sources, color)),
         Outcome::Raised(d) => eprint!(
             "{}",
-            adair::diag::render(std::slice::from_ref(d), &s.sources, color)
+            adair::diag::render(std::slice::from_ref(d), &s.front.sources, color)
         ),
     }
 }

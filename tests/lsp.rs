@@ -870,7 +870,13 @@ fn analysis_and_features_never_panic_on_the_corpus_and_its_prefixes() {
                 cut -= 1;
             }
             let t = &text[..cut];
-            let a = analysis::Analysis::new(&base, "t.air", t);
+            let a = analysis::Analysis::new(
+                &base,
+                "t.air",
+                None,
+                t,
+                std::rc::Rc::new(adair::session::Disk),
+            );
             assert!(
                 a.crashed.is_none(),
                 "{}: the checker panicked on the first {cut} bytes: {:?}",
@@ -1156,4 +1162,95 @@ fn a_script_of_declarations_sees_the_adair_package_as_adair_check_does() {
     let (d, _) = c.diagnostics("s.air");
     assert!(d.is_empty(), "{d:?}");
     c.finish();
+}
+
+/// The text of `uri` opened in the editor.
+fn open_uri(c: &Client, uri: &Uri, text: &str) {
+    c.notify(
+        N::DidOpenTextDocument::METHOD,
+        json!({ "textDocument": { "uri": uri, "languageId": "adair", "version": 1, "text": text } }),
+    );
+}
+
+/// The next diagnostics published for `uri`.
+fn diagnostics_of(c: &mut Client, uri: &Uri) -> Vec<lsp_types::Diagnostic> {
+    loop {
+        let n = if c.pending.is_empty() {
+            match c.conn.receiver.recv_timeout(WAIT).unwrap() {
+                Message::Notification(n) => n,
+                m => panic!("unexpected {m:?}"),
+            }
+        } else {
+            c.pending.remove(0)
+        };
+        if n.method == N::PublishDiagnostics::METHOD {
+            let p: lsp_types::PublishDiagnosticsParams = serde_json::from_value(n.params).unwrap();
+            if p.uri == *uri {
+                return p.diagnostics;
+            }
+        }
+    }
+}
+
+const GEO: &str = "package Geo is\n   function Answer return Integer;\nend Geo;\n\npackage body Geo is\n   function Answer return Integer is\n   begin\n      return 42;\n   end Answer;\nend Geo;\n";
+const GEO_MAIN: &str = "with Ada.Text_IO; use Ada.Text_IO;\nwith Geo;\n\nprocedure Main is\nbegin\n   Put_Line (Integer'Image (Geo.Answer));\nend Main;\n";
+
+/// Issue 38: the editor checks a program as `adair run` does, with the
+/// packages it names from the files beside it, and an unsaved change to
+/// such a file is seen by the program's diagnostics.
+#[test]
+fn a_with_ed_unit_beside_the_file_is_read_and_its_unsaved_changes_seen() {
+    let dir = temp_dir();
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("geo.air"), GEO).unwrap();
+    std::fs::write(dir.join("main.adb"), GEO_MAIN).unwrap();
+    // The command line runs it.
+    let mut s = adair::session::Session::new(Box::new(std::io::sink()));
+    let main_path = dir.join("main.adb");
+    assert!(
+        s.check_source(&main_path.to_string_lossy(), GEO_MAIN, false)
+            .is_ok()
+    );
+    let file_uri =
+        |name: &str| Uri::from_str(&format!("file://{}", dir.join(name).display())).unwrap();
+    let (main, geo) = (file_uri("main.adb"), file_uri("geo.air"));
+    let mut c = Client::start();
+    open_uri(&c, &main, GEO_MAIN);
+    let d = diagnostics_of(&mut c, &main);
+    assert!(
+        d.is_empty(),
+        "the program checks as on the command line: {d:?}"
+    );
+    // Hover on `Answer` knows the package's function.
+    let p = pos(GEO_MAIN, "Answer", 0, 1);
+    let v = c.result(
+        R::HoverRequest::METHOD,
+        json!({ "textDocument": { "uri": main }, "position": p }),
+    );
+    assert!(v.to_string().contains("Answer"), "{v}");
+    // The package is opened and changed without saving: `Answer` is gone.
+    open_uri(&c, &geo, GEO);
+    assert!(diagnostics_of(&mut c, &geo).is_empty());
+    // Opened, its text is the editor's: the program is checked again.
+    assert!(diagnostics_of(&mut c, &main).is_empty());
+    c.notify(
+        N::DidChangeTextDocument::METHOD,
+        json!({
+            "textDocument": { "uri": geo, "version": 2 },
+            "contentChanges": [ { "text": GEO.replace("Answer", "Reply") } ]
+        }),
+    );
+    let d = diagnostics_of(&mut c, &main);
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert!(
+        d[0].message
+            .starts_with("`Answer` is not declared in `Geo`"),
+        "{}",
+        d[0].message
+    );
+    assert_eq!(d[0].range, range(GEO_MAIN, "Answer", 0));
+    // The disk still has the old text.
+    assert_eq!(std::fs::read_to_string(dir.join("geo.air")).unwrap(), GEO);
+    c.finish();
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -1453,9 +1453,10 @@ mod consume_tests {
         let bad = format!("{text}   X := \"late\";\nend Big;\n");
         let check = |src: &str, only: bool| {
             let mut s = crate::session::Session::new(Box::new(std::io::sink()));
-            s.checker.diagnostics_only = only;
+            s.front.checker.diagnostics_only = only;
             let r = s.check_source("big.adb", src, false);
             let body = s
+                .front
                 .checker
                 .funcs
                 .iter()

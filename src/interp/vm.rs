@@ -3379,6 +3379,7 @@ mod part_tests {
         }
         let outcome = s.run_source("big.adb", src);
         let kept = s
+            .front
             .checker
             .funcs
             .iter()
@@ -3534,6 +3535,7 @@ mod fused_tests {
         s.check_source("f.adb", src, false)
             .expect("the program checks");
         let f = s
+            .front
             .checker
             .funcs
             .iter()
@@ -3542,7 +3544,7 @@ mod fused_tests {
         let body = f.body.as_deref().expect("its body");
         let walker_calls = |_| false;
         let own = f.nslots.max(f.params.len() as u32);
-        let mut c = Compiler::new(f.level, own, &walker_calls, &s.checker.types);
+        let mut c = Compiler::new(f.level, own, &walker_calls, &s.front.checker.types);
         c.body(body);
         let code = c.finish(None, true, true);
         code.ops

@@ -6,15 +6,17 @@
 use crate::check::Checker;
 use crate::diag::Offsets as _;
 use crate::diag::{Diagnostic, FileId, Sources, Span};
+use crate::session::{Disk, Frontend, Loader, Mode, NoHost};
 use crate::syntax::ast;
 use std::path::{Path, PathBuf};
+use std::rc::Rc;
 
 /// The checker after the embedded stdlib, cloned for every analysis, and
 /// where the stdlib texts are readable by an editor.
 #[derive(Clone)]
 pub struct Base {
-    pub checker: Checker,
-    pub sources: Sources,
+    /// The pipeline after the stdlib (its sources and checker).
+    pub front: Frontend,
     /// The file each stdlib source is written to, by source id, so that
     /// "go to definition" can open the AdaIR package (see docs/editors.md).
     pub stdlib_files: Vec<(FileId, PathBuf)>,
@@ -25,8 +27,8 @@ impl Base {
     /// texts (as checked: with the service declarations generated from the
     /// table) are written for the editor; `None` writes nothing.
     pub fn new(stdlib_dir: Option<&Path>) -> Base {
-        let mut session = crate::session::Session::new(Box::new(std::io::sink()));
-        session.load_stdlib();
+        let mut front = Frontend::new(Rc::new(Disk), &mut NoHost);
+        front.load_stdlib(&mut NoHost);
         let mut stdlib_files = Vec::new();
         for (id, u) in crate::session::STDLIB.iter().enumerate() {
             let Some(dir) = stdlib_dir else { break };
@@ -43,8 +45,7 @@ impl Base {
             }
         }
         Base {
-            checker: session.checker,
-            sources: session.sources,
+            front,
             stdlib_files,
         }
     }
@@ -136,62 +137,50 @@ pub struct Analysis {
     pub lines: LineIndex,
     /// Whether the checker panicked (a bug; reported as a diagnostic).
     pub crashed: Option<String>,
+    /// The files of the `with`ed packages it checked, by source id.
+    pub with_files: Vec<(FileId, PathBuf)>,
 }
 
 impl Analysis {
-    /// Lexes, parses and checks `text` (named `name` in messages) as
-    /// `Session::check_source` does, on a copy of the base checker.
-    pub fn new(base: &Base, name: &str, text: &str) -> Analysis {
-        let mut sources = base.sources.clone();
-        let mut checker = base.checker.clone();
-        let file = sources.add(name, text);
-        checker.add_text(file, sources.shared(file));
+    /// Checks `text` (named `name` in messages, at `path` on disk) through
+    /// the one pipeline (`Session::check_source`'s), on a copy of the base:
+    /// `with`ed units are read through `loader` (the editor's open
+    /// documents before the disk).
+    pub fn new(
+        base: &Base,
+        name: &str,
+        path: Option<&Path>,
+        text: &str,
+        loader: Rc<dyn Loader>,
+    ) -> Analysis {
+        let mut front = base.front.clone();
+        front.set_loader(loader);
+        let id = front.sources.next_id();
         let checked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            let (parsed, mut diags) = crate::syntax::parse_source(text, file);
-            // Text that does not parse as a whole (typing at its end): the
-            // names come from what parses before the first error.
-            let partial = parsed.is_none();
-            let unit = parsed.or_else(|| parse_what_parses(text, file, &diags));
-            if let Some(unit) = &unit {
-                if crate::session::is_script_unit(unit, false) {
-                    for p in crate::session::SCRIPT_USES {
-                        checker.use_everywhere(p);
-                    }
-                }
-                checker.check_unit(unit);
-                let checked = checker.take_diags();
-                // The check of a cut text has errors of the cut, not the user's.
-                if !partial {
-                    diags.extend(checked);
-                }
-            }
-            (unit, diags)
+            front.check(name, text.into(), false, Mode::Editor, path, &mut NoHost)
         }));
-        let (unit, mut diags, crashed) = match checked {
-            Ok((u, d)) => (u, d, None),
+        let (file, unit, diags, crashed) = match checked {
+            Ok(c) => (c.file, c.unit, c.diags, None),
             Err(p) => {
                 let msg = p
                     .downcast_ref::<String>()
                     .cloned()
                     .or_else(|| p.downcast_ref::<&str>().map(|s| s.to_string()))
                     .unwrap_or_else(|| "panic".into());
-                (None, Vec::new(), Some(msg))
+                (id, None, Vec::new(), Some(msg))
             }
         };
-        diags.sort_by_key(|d| (d.span.context, d.span.start));
-        // As the command line: beside errors, no "never read" (often their echo).
-        if diags.iter().any(|d| !d.is_warning()) {
-            diags.retain(|d| !d.is_warning() || !d.message.ends_with(" is never read"));
-        }
+        let with_files = front.with_files().to_vec();
         Analysis {
             text: text.to_string(),
             file,
-            sources,
-            checker,
+            sources: front.sources,
+            checker: front.checker,
             unit,
             diags,
             lines: LineIndex::new(text),
             crashed,
+            with_files,
         }
     }
 
@@ -201,43 +190,16 @@ impl Analysis {
     }
 }
 
-/// The unit of the longest text before the first syntax error that parses:
-/// cut after one of the last `;` before it and, if the cut leaves a body
-/// open, closed by a few words (`begin null; end;`, `end;`). Only its names
-/// are used (hover, completion, definition); None when no cut parses.
-fn parse_what_parses(
-    text: &str,
-    file: FileId,
-    diags: &[Diagnostic],
-) -> Option<ast::CompilationUnit> {
-    use crate::syntax::token::Token;
-    let first = diags
-        .iter()
-        .filter(|d| !d.is_warning())
-        .map(|d| d.span.start)
-        .min()?;
-    let (tokens, _) = crate::syntax::lexer::lex(text, file);
-    let cuts: Vec<usize> = tokens
-        .iter()
-        .filter(|(t, s)| *t == Token::Semi && s.end <= first)
-        .map(|(_, s)| s.hi())
-        .collect();
-    const CLOSERS: [&str; 5] = [
-        "",
-        "\nbegin null; end;",
-        "\nnull; end;",
-        "\nend;",
-        "\nnull; end; end;",
-    ];
-    for &cut in cuts.iter().rev().take(4) {
-        for closer in CLOSERS {
-            let t = format!("{}{closer}", &text[..cut]);
-            if let (Some(u), _) = crate::syntax::parse_source(&t, file) {
-                return Some(u);
-            }
+/// The editor's open documents, by path, before the disk.
+pub struct Open(pub std::collections::HashMap<PathBuf, String>);
+
+impl Loader for Open {
+    fn read(&self, path: &Path) -> Option<std::io::Result<String>> {
+        match self.0.get(path) {
+            Some(t) => Some(Ok(t.clone())),
+            None => Disk.read(path),
         }
     }
-    None
 }
 
 /// Byte offsets <-> LSP positions (line, UTF-16 code units).

@@ -153,6 +153,13 @@ impl Server<'_> {
                     Message::Response(_) => {}
                 }
             }
+            for uri in changed.clone() {
+                for dep in self.dependents(&uri) {
+                    if !changed.contains(&dep) {
+                        changed.push(dep);
+                    }
+                }
+            }
             for uri in changed {
                 let _ =
                     std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.publish(&uri)));
@@ -225,9 +232,45 @@ impl Server<'_> {
             return Some(a.clone());
         }
         let name = uri_file_name(uri);
-        let a = Rc::new(Analysis::new(&self.base, &name, &doc.text));
-        doc.analysis = Some(a.clone());
+        let path = uri_to_path(uri);
+        let text = doc.text.clone();
+        // `with`ed units come from the open documents first (unsaved
+        // changes), then from the disk, as `adair run` would read them.
+        let open = analysis::Open(
+            self.docs
+                .iter()
+                .filter_map(|(u, d)| Some((uri_to_path(u)?, d.text.clone())))
+                .collect(),
+        );
+        let a = Rc::new(Analysis::new(
+            &self.base,
+            &name,
+            path.as_deref(),
+            &text,
+            Rc::new(open),
+        ));
+        self.docs.get_mut(uri)?.analysis = Some(a.clone());
         Some(a)
+    }
+
+    /// The open documents whose last analysis read the document `uri` as a
+    /// `with`ed unit: their diagnostics change with it.
+    fn dependents(&mut self, uri: &Uri) -> Vec<Uri> {
+        let Some(path) = uri_to_path(uri) else {
+            return Vec::new();
+        };
+        let mut out = Vec::new();
+        for (u, d) in self.docs.iter_mut() {
+            let reads = d
+                .analysis
+                .as_ref()
+                .is_some_and(|a| a.with_files.iter().any(|(_, p)| *p == path));
+            if u != uri && reads {
+                d.analysis = None;
+                out.push(u.clone());
+            }
+        }
+        out
     }
 
     fn publish(&mut self, uri: &Uri) {
@@ -312,6 +355,7 @@ impl Server<'_> {
             .base
             .stdlib_files
             .iter()
+            .chain(&a.with_files)
             .find(|(id, _)| *id == s.context)?;
         let text = a.sources.text(s.context);
         let lines = analysis::LineIndex::new(text);
@@ -494,6 +538,16 @@ fn signature_help(s: complete::Signatures) -> lsp_types::SignatureHelp {
 }
 
 /// The file name shown in messages for a document.
+/// The file of a `file:` URI, absolute (`None` for other schemes).
+fn uri_to_path(uri: &Uri) -> Option<std::path::PathBuf> {
+    let scheme = uri.scheme()?;
+    if !scheme.as_str().eq_ignore_ascii_case("file") {
+        return None;
+    }
+    let path = std::path::PathBuf::from(percent_decode(uri.path().as_str()));
+    path.is_absolute().then_some(path)
+}
+
 fn uri_file_name(uri: &Uri) -> String {
     let path = uri.path().as_str();
     let last = path.rsplit('/').next().unwrap_or(path);

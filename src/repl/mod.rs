@@ -154,7 +154,7 @@ impl Repl {
         // Entries may name any package of the stdlib without `with`.
         self.session.load_stdlib();
         for p in crate::session::SCRIPT_USES {
-            self.session.checker.use_everywhere(p);
+            self.session.front.checker.use_everywhere(p);
         }
     }
 
@@ -204,7 +204,7 @@ impl Repl {
             let trace = self.trace.then(|| (self.make_out)());
             // On a real arm a simulator-only call is a warning as it is
             // checked, and `CommandNotSupported` when it runs.
-            self.session.checker.simulator_only = match &self.port {
+            self.session.front.checker.simulator_only = match &self.port {
                 None => &[],
                 Some(_) => crate::services::SIMULATOR_ONLY,
             };
@@ -248,10 +248,11 @@ impl Repl {
             .collect();
         v.extend(
             self.session
+                .front
                 .checker
                 .completion_names()
                 .iter()
-                .map(|k| self.session.checker.spelled(k)),
+                .map(|k| self.session.front.checker.spelled(k)),
         );
         v.extend(
             COMMANDS
@@ -279,7 +280,7 @@ impl Repl {
     }
 
     fn render(&self, d: &[Diagnostic]) -> String {
-        diag::render(d, &self.session.sources, self.color)
+        diag::render(d, &self.session.front.sources, self.color)
     }
 
     /// Checks and runs one entry (`entry` in view.rs tells the live view).
@@ -294,12 +295,13 @@ impl Repl {
         self.entries += 1;
         let name = format!("<entry {}>", self.entries);
         // An expression: print its value.
-        let snapshot = self.session.checker.clone();
-        let id = self.session.sources.add(name.clone(), text);
+        let snapshot = self.session.front.checker.clone();
+        let id = self.session.front.sources.add(name.clone(), text);
         self.session.machine.add_source(id, &name, text);
         self.session
+            .front
             .checker
-            .add_text(id, self.session.sources.shared(id));
+            .add_text(id, self.session.front.sources.shared(id));
         let (tokens, lex_diags) = crate::syntax::lexer::lex(text, id);
         let expr = if lex_diags.is_empty() {
             crate::syntax::parser::parse_expr_entry(&tokens, id, text.len())
@@ -308,8 +310,8 @@ impl Repl {
         };
         let is_expr = expr.is_some();
         if let Some(e) = expr {
-            let ex = self.session.checker.check_expr(&e);
-            let diags = self.session.checker.take_diags();
+            let ex = self.session.front.checker.check_expr(&e);
+            let diags = self.session.front.checker.take_diags();
             // An expression that cannot be a procedure call: its errors are the ones to show.
             // Nor can one whose name denotes functions only (`Trans (1, 2,
             // 3)`: integers where floats are expected, not "its result must
@@ -324,11 +326,11 @@ impl Repl {
                 _ => None,
             };
             let callable = match callee {
-                Some(id) => self.session.checker.may_name_a_procedure(&id.key),
+                Some(id) => self.session.front.checker.may_name_a_procedure(&id.key),
                 None => matches!(e.kind, ExprKind::Select(..) | ExprKind::Apply(..)),
             };
             if !diags.is_empty() && !callable {
-                self.session.checker = snapshot;
+                self.session.front.checker = snapshot;
                 return Reply {
                     text: self.render(&diags),
                     failed: true,
@@ -348,7 +350,7 @@ impl Repl {
                     Err(o) => self.raised(&o),
                 };
             }
-            self.session.checker = snapshot.clone();
+            self.session.front.checker = snapshot.clone();
         }
         // Declarations and statements; a lone call, and any one-line entry
         // complete but for it, may leave out its `;` (said once).
@@ -387,7 +389,7 @@ impl Repl {
                     Ok(r) => r,
                     Err(mut reply) => {
                         // Nothing of a refused entry is kept.
-                        self.session.checker = snapshot;
+                        self.session.front.checker = snapshot;
                         reply.text.insert_str(0, &warned);
                         return reply;
                     }
@@ -409,7 +411,7 @@ impl Repl {
             }
             Err(d) => {
                 // Nothing of a failed entry is kept.
-                self.session.checker = snapshot;
+                self.session.front.checker = snapshot;
                 Reply {
                     text: self.render(&d),
                     failed: true,
@@ -596,7 +598,7 @@ impl Repl {
                 let t = self
                     .session
                     .machine
-                    .describe_tasks(self.session.checker.program());
+                    .describe_tasks(self.session.front.checker.program());
                 let t: Vec<&String> = t.iter().skip(1).collect();
                 if t.is_empty() {
                     ok("no tasks\n".into())
@@ -676,7 +678,7 @@ impl Repl {
     /// Signature, command code and the comment written above the declaration
     /// in `stdlib/adair.air` (the text lives next to the definition).
     pub fn help_on(&self, name: &str) -> Option<String> {
-        let c = &self.session.checker;
+        let c = &self.session.front.checker;
         let key = name.to_ascii_lowercase();
         let funcs: Vec<u32> = (0..c.funcs.len() as u32)
             .filter(|f| c.funcs[*f as usize].name.eq_ignore_ascii_case(&key))
@@ -779,7 +781,7 @@ impl Repl {
     /// circular list would print without end, in a recursion without end).
     fn show_in(&self, v: &Value, t: TypeId, accesses: usize) -> String {
         const SHOWN_ACCESSES: usize = 3;
-        let ty = &self.session.checker.types;
+        let ty = &self.session.front.checker.types;
         let name = ty.name(t).to_ascii_lowercase();
         match (v, ty.kind(t)) {
             (Value::Int(i), TypeKind::Enum(lits)) => {
@@ -787,7 +789,10 @@ impl Repl {
                     types::char_image(char::from_u32(*i as u32).unwrap_or('?'))
                 } else {
                     let lit = lits.get(*i as usize).cloned().unwrap_or_default();
-                    self.session.checker.spelled(&lit.to_ascii_lowercase())
+                    self.session
+                        .front
+                        .checker
+                        .spelled(&lit.to_ascii_lowercase())
                 }
             }
             (Value::Int(i), _) => i.to_string(),
@@ -851,7 +856,7 @@ impl Repl {
                 format!("access to {}", self.show_in(&p.borrow(), *d, accesses + 1))
             }
             (Value::Ptr(Some(_)), _) => "access".into(),
-            (Value::Occ(o), _) => self.session.checker.excs[o.exc as usize].name.clone(),
+            (Value::Occ(o), _) => self.session.front.checker.excs[o.exc as usize].name.clone(),
             (Value::Undef, _) => "(no value)".into(),
             _ => format!("{v:?}"),
         }

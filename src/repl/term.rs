@@ -30,7 +30,7 @@ pub struct AdaHelper {
 impl AdaHelper {
     fn refresh(&mut self, repl: &Repl) {
         self.names = repl.completions();
-        let c = &repl.session.checker;
+        let c = &repl.session.front.checker;
         self.fields.clear();
         for n in c.completion_names() {
             let f = c.record_fields_of(&n);

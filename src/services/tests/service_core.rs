@@ -49,6 +49,7 @@ fn the_adair_package_declares_every_service_of_the_table() {
     s.need_package("AdaIR");
     for svc in crate::services::SERVICES {
         let n = s
+            .front
             .checker
             .funcs
             .iter()
@@ -75,7 +76,8 @@ fn services_take_a_narrow_context_and_a_typed_state() {
         .filter(|p| p.extension().is_some_and(|x| x == "rs"))
         .collect();
     assert!(files.len() >= 5, "{files:?}");
-    files.push(root.join("src/session.rs"));
+    files.push(root.join("src/session/mod.rs"));
+    files.push(root.join("src/session/frontend.rs"));
     files.extend(
         std::fs::read_dir(root.join("src/interp"))
             .unwrap()
@@ -128,7 +130,10 @@ fn a_service_exception_is_raised_at_the_call_and_the_state_stays_with_the_sessio
                 d.message
             );
             assert_eq!(
-                s.sources.line_col(d.span.context, d.span.start as usize).0,
+                s.front
+                    .sources
+                    .line_col(d.span.context, d.span.start as usize)
+                    .0,
                 3,
                 "{}",
                 d.message

@@ -3,8 +3,11 @@
 
 use crate::check::Checker;
 use crate::check::ir::{FuncId, Stmt};
-use crate::diag::{Diagnostic, Phase, Sources, Span};
+use crate::diag::{Diagnostic, FileId, Phase, Span};
+
+mod frontend;
 use crate::interp::{Machine, Occurrence, builtins};
+pub use frontend::{Checked, Disk, Frontend, Host, Loader, Mode, NoHost};
 use std::io::Write;
 
 /// One file of the predefined library and the packages it declares.
@@ -23,32 +26,32 @@ pub struct StdUnit {
 pub const STDLIB: &[StdUnit] = &[
     StdUnit {
         name: "stdlib/ada.air",
-        text: include_str!("../stdlib/ada.air"),
+        text: include_str!("../../stdlib/ada.air"),
         provides: &["Ada", "Ada.Text_IO"],
     },
     StdUnit {
         name: "stdlib/text_io_numbers.air",
-        text: include_str!("../stdlib/text_io_numbers.air"),
+        text: include_str!("../../stdlib/text_io_numbers.air"),
         provides: &["Ada.Integer_Text_IO", "Ada.Float_Text_IO"],
     },
     StdUnit {
         name: "stdlib/numerics.air",
-        text: include_str!("../stdlib/numerics.air"),
+        text: include_str!("../../stdlib/numerics.air"),
         provides: &["Ada.Numerics", "Ada.Numerics.Elementary_Functions"],
     },
     StdUnit {
         name: "stdlib/exceptions.air",
-        text: include_str!("../stdlib/exceptions.air"),
+        text: include_str!("../../stdlib/exceptions.air"),
         provides: &["Ada.Exceptions"],
     },
     StdUnit {
         name: "stdlib/calendar.air",
-        text: include_str!("../stdlib/calendar.air"),
+        text: include_str!("../../stdlib/calendar.air"),
         provides: &["Ada.Calendar", "Ada.Real_Time"],
     },
     StdUnit {
         name: "stdlib/adair.air",
-        text: include_str!("../stdlib/adair.air"),
+        text: include_str!("../../stdlib/adair.air"),
         provides: &["AdaIR", "SERIAL_IO"],
     },
 ];
@@ -85,7 +88,7 @@ pub fn stdlib_text(text: &str) -> std::borrow::Cow<'_, str> {
     }
 }
 
-fn known(name: &str) -> bool {
+pub(crate) fn known(name: &str) -> bool {
     resolve(name).is_some()
 }
 
@@ -115,8 +118,8 @@ impl SourceText for std::rc::Rc<str> {
 }
 
 pub struct Session {
-    pub sources: Sources,
-    pub checker: Checker,
+    /// The sources, the checker and the units loaded: the one check pipeline.
+    pub front: Frontend,
     pub machine: Machine,
     /// Warnings of the last check that passed (tools.md: they never stop a
     /// run); the caller shows them, see [`Session::take_warnings`].
@@ -130,16 +133,29 @@ pub struct Session {
     /// (None until one is chosen: a service call then raises
     /// `Program_Error`, never drives a default robot).
     pub robot: Option<crate::services::RobotState>,
-    /// Which stdlib files are checked (see [`STDLIB`]).
-    loaded: Vec<bool>,
-    /// A stdlib file is being checked.
-    in_stdlib: bool,
-    /// Files of packages named by `with` that are loaded (or being loaded).
-    with_files: Vec<std::path::PathBuf>,
-    /// Their elaboration, to run before the program that names them.
-    elaboration: Vec<Stmt>,
-    /// Such a file is being checked (a library unit: never a script).
-    in_with_file: bool,
+}
+
+/// The engine's side of the pipeline: each source is shown to the
+/// machine, each unit of the predefined library elaborates on it.
+struct MachineHost<'a> {
+    machine: &'a mut Machine,
+    robot: &'a mut Option<crate::services::RobotState>,
+}
+
+impl Host for MachineHost<'_> {
+    fn source_added(&mut self, id: FileId, name: &str, text: &str) {
+        self.machine.add_source(id, name, text);
+    }
+    fn stdlib_checked(&mut self, checker: &Checker, stmts: &[Stmt], provides: &[&str]) {
+        let _ = self.machine.run(checker.program(), stmts, None, None);
+        // The robot's exceptions are the AdaIR package's.
+        if provides.contains(&"AdaIR")
+            && let Some(st) = self.robot
+            && let Ok(ids) = crate::services::ExcIds::bind(checker)
+        {
+            st.excs = ids;
+        }
+    }
 }
 
 /// How a run ended.
@@ -164,90 +180,55 @@ impl Outcome {
 
 impl Session {
     pub fn new(out: Box<dyn Write>) -> Session {
-        let mut s = Session {
-            sources: Sources::default(),
-            checker: Checker::new(known),
-            machine: Machine::new(out),
+        let mut machine = Machine::new(out);
+        machine.resolver = resolve;
+        let mut robot = None;
+        let front = Frontend::new(
+            std::rc::Rc::new(Disk),
+            &mut MachineHost {
+                machine: &mut machine,
+                robot: &mut robot,
+            },
+        );
+        Session {
+            front,
+            machine,
             warnings: Vec::new(),
             strict: false,
             warnings_to: None,
-            robot: None,
-            with_files: Vec::new(),
-            elaboration: Vec::new(),
-            in_with_file: false,
-            loaded: Vec::new(),
-            in_stdlib: false,
-        };
-        s.machine.resolver = resolve;
-        s.checker
-            .set_import_profiles(crate::services::import_profile);
-        s.load_unit(0);
-        s
+            robot,
+        }
     }
 
-    /// Checks and elaborates the stdlib file `i` (once).
-    fn load_unit(&mut self, i: usize) {
-        if self.loaded.len() <= i {
-            self.loaded.resize(STDLIB.len(), false);
-        }
-        if self.loaded[i] {
-            return;
-        }
-        self.loaded[i] = true;
-        let u = &STDLIB[i];
-        let outer = std::mem::replace(&mut self.in_stdlib, true);
-        let checked = self.check_source(u.name, &*stdlib_text(u.text), false);
-        self.in_stdlib = outer;
-        let stmts = match checked {
-            Ok((stmts, _)) => stmts,
-            // The embedded library is tested: it checks in a fresh session.
-            // Checked later in a session whose program clashes with it, it
-            // may not; the program then meets the missing names.
-            Err(_) if i > 0 => return,
-            Err(d) => panic!("stdlib does not check: {d:?}"),
-        };
-        let _ = self.machine.run(self.checker.program(), &stmts, None, None);
-        for pkg in u.provides {
-            if matches!(*pkg, "AdaIR" | "Ada.Text_IO") {
-                for e in ["Name_Error", "Use_Error", "Data_Error", "End_Error"] {
-                    self.checker.export(pkg, e, "Ada.IO_Exceptions");
-                }
-            }
-        }
-        // The robot's exceptions are the AdaIR package's.
-        if u.provides.contains(&"AdaIR")
-            && let Some(st) = &mut self.robot
-            && let Ok(ids) = crate::services::ExcIds::bind(&self.checker)
-        {
-            st.excs = ids;
-        }
+    /// Splits the session into its pipeline and the host that elaborates.
+    fn parts(&mut self) -> (&mut Frontend, MachineHost<'_>) {
+        (
+            &mut self.front,
+            MachineHost {
+                machine: &mut self.machine,
+                robot: &mut self.robot,
+            },
+        )
     }
 
     /// Makes the package `name` of the stdlib visible to later checks
     /// (nothing when no stdlib file declares it); whether one does.
     pub fn need_package(&mut self, name: &str) -> bool {
-        let Some(i) = STDLIB
-            .iter()
-            .position(|u| u.provides.iter().any(|p| p.eq_ignore_ascii_case(name)))
-        else {
-            return false;
-        };
-        self.load_unit(i);
-        true
+        let (front, mut host) = self.parts();
+        front.need_package(name, &mut host)
     }
 
-    /// Checks every stdlib file (the language server offers all of them).
+    /// Checks every stdlib file (a script or the REPL names any).
     pub fn load_stdlib(&mut self) {
-        for i in 0..STDLIB.len() {
-            self.load_unit(i);
-        }
+        let (front, mut host) = self.parts();
+        front.load_stdlib(&mut host)
     }
 
     /// Chooses the simulated devices (`--devices FILE.toml`; the default is
     /// the appendix C parallel port at 8#340#): address clauses are checked
     /// against them and programs run against a fresh world of them.
     pub fn set_devices(&mut self, d: crate::devices::Devices) {
-        self.checker.devices = std::rc::Rc::new(d.clone());
+        self.front.checker.devices = std::rc::Rc::new(d.clone());
         self.machine.world = Some(crate::devices::World::new(d));
     }
 
@@ -274,7 +255,7 @@ impl Session {
     ) {
         // Bound again when the AdaIR package is checked (`load_unit`): a
         // program without it calls no service.
-        let excs = crate::services::ExcIds::bind(&self.checker)
+        let excs = crate::services::ExcIds::bind(&self.front.checker)
             .unwrap_or_else(|_| crate::services::ExcIds::unbound());
         if driver.real_time() {
             self.machine.clock = Box::new(crate::services::WallClock::default());
@@ -366,7 +347,8 @@ impl Session {
             .robot
             .as_mut()
             .map(|r| r as &mut dyn crate::interp::Services);
-        self.machine.run(self.checker.program(), stmts, main, svc)
+        self.machine
+            .run(self.front.checker.program(), stmts, main, svc)
     }
 
     /// Evaluates a checked expression (a REPL entry) with the robot lent.
@@ -378,7 +360,7 @@ impl Session {
             .robot
             .as_mut()
             .map(|r| r as &mut dyn crate::interp::Services);
-        self.machine.eval_expr(self.checker.program(), e, svc)
+        self.machine.eval_expr(self.front.checker.program(), e, svc)
     }
 
     /// For a program that is checked and run once (`adair run`): a long
@@ -386,170 +368,27 @@ impl Session {
     /// that its checked form is never held whole (see
     /// `Checker::compile_parts`). Its code is then used up by its run.
     pub fn compile_as_checked(&mut self) {
-        self.checker.compile_parts = self.machine.part_compiler();
+        self.front.checker.compile_parts = self.machine.part_compiler();
     }
 
+    /// Checks a program (`script`: a REPL entry, statements at the top)
+    /// through the pipeline; its statements (after those of the packages
+    /// it names) and its main subprogram, or its diagnostics. Its warnings
+    /// are kept in [`Session::warnings`].
     pub fn check_source(
         &mut self,
         name: &str,
         text: impl SourceText,
         script: bool,
     ) -> Result<(Vec<Stmt>, Option<FuncId>), Vec<Diagnostic>> {
-        let shared = text.into_shared();
-        let text: &str = &shared;
-        let id = self.sources.add_shared(name, shared.clone());
-        self.machine.add_source(id, name, text);
-        self.checker.add_text(id, self.sources.shared(id));
-        // A long program's bodies are parsed as they are checked (the
-        // stdlib's are short).
-        let (unit, mut diags) = if self.in_stdlib {
-            crate::syntax::parse_source(text, id)
-        } else {
-            crate::syntax::parse_source_lazy(text, id)
-        };
-        let Some(unit) = unit else { return Err(diags) };
-        use crate::syntax::ast::TopItem;
-        let is_script = script || is_script_unit(&unit, self.in_stdlib || self.in_with_file);
-        // The stdlib files this unit names, and the files of the other
-        // packages it names (beside it, unless the unit declares them).
-        for item in &unit.items {
-            if let TopItem::With(names, _) = item {
-                for n in names {
-                    let pkg = crate::syntax::parser::expr_text(n);
-                    if !self.need_package(&pkg)
-                        && !self.in_stdlib
-                        && !declares_package(&unit, &pkg)
-                        && let Err(d) = self.load_with_file(name, &pkg, n.span)
-                    {
-                        diags.extend(d);
-                    }
-                }
-            }
+        let strict = self.strict;
+        let (front, mut host) = self.parts();
+        let checked = front.check(name, text.into_shared(), script, Mode::Run, None, &mut host);
+        if !checked.passes(strict) {
+            return Err(checked.diags);
         }
-        if is_script {
-            // A script names any stdlib package without `with`.
-            self.load_stdlib();
-            for p in SCRIPT_USES {
-                self.checker.use_everywhere(p);
-            }
-        }
-        // Only the program being run is compiled as it is checked: the
-        // walker may run a unit it names (from an expression it evaluates),
-        // and the walker runs checked statements.
-        let parts = if self.in_stdlib || self.in_with_file {
-            self.checker.compile_parts.take()
-        } else {
-            None
-        };
-        let (stmts, main) = self.checker.check_unit_consuming(&unit);
-        if parts.is_some() {
-            self.checker.compile_parts = parts;
-        }
-        diags.extend(self.checker.take_diags());
-        // A name from a stdlib package that was not checked (no `with`):
-        // check the rest of the stdlib to say where it is declared.
-        // (`X` is not declared; `X` is not declared in `P`: name X, prefix P.)
-        let undeclared = |d: &Diagnostic| {
-            // A guess from the names in view gives way to the package that
-            // declares the name.
-            let guessed = d
-                .hint
-                .as_ref()
-                .is_some_and(|h| h.starts_with("did you mean"));
-            let m = d
-                .message
-                .strip_prefix('`')
-                .filter(|_| d.hint.is_none() || guessed)?;
-            if let Some(n) = m.strip_suffix("` is not declared") {
-                return Some((n.to_string(), None));
-            }
-            let (n, p) = m.strip_suffix('`')?.split_once("` is not declared in `")?;
-            Some((n.to_string(), Some(p.to_string())))
-        };
-        if !self.in_stdlib
-            && self.loaded.iter().any(|l| !l)
-            && diags.iter().any(|d| undeclared(d).is_some())
-        {
-            // In a fresh session: this one's scope now holds the program's
-            // declarations, which the stdlib must not see.
-            let mut full = Session::new(Box::new(std::io::sink()));
-            full.load_stdlib();
-            for d in diags.iter_mut() {
-                let hint = match undeclared(d) {
-                    Some((n, None)) => full.checker.with_hint(&n),
-                    Some((n, Some(p))) => full.checker.qualified_with_hint(&p, &n),
-                    None => None,
-                };
-                if hint.is_some() {
-                    d.hint = hint;
-                }
-            }
-        }
-        diags.sort_by_key(|d| (d.span.context, d.span.start));
-        // With errors, every diagnostic but a variable "never read": that
-        // one is often their echo (its use did not check).
-        if diags.iter().any(|d| !d.is_warning()) {
-            diags.retain(|d| !d.is_warning() || !d.message.ends_with(" is never read"));
-            return Err(diags);
-        }
-        if self.strict && !diags.is_empty() {
-            return Err(diags);
-        }
-        self.warnings = diags;
-        // The packages this unit names elaborate first.
-        // (A stdlib file elaborates when loaded: not theirs.) In place: the
-        // program's statements may be many, theirs are few.
-        let mut stmts = stmts;
-        if !self.in_stdlib && !self.elaboration.is_empty() {
-            stmts.splice(0..0, std::mem::take(&mut self.elaboration));
-        }
-        Ok((stmts, if is_script { None } else { main }))
-    }
-
-    /// Checks the file of package `pkg` named by `with` in the program
-    /// `program`: `pkg.air` beside it (lower case, `-` for `.` as GNAT
-    /// names files), else GNAT's `pkg.ads` and `pkg.adb`. Its elaboration
-    /// joins [`Session::elaboration`]. No file: nothing (the checker says
-    /// that no such unit exists).
-    fn load_with_file(
-        &mut self,
-        program: &str,
-        pkg: &str,
-        at: Span,
-    ) -> Result<(), Vec<Diagnostic>> {
-        let dir = std::path::Path::new(program)
-            .parent()
-            .unwrap_or(std::path::Path::new(""));
-        let stem = pkg.to_lowercase().replace('.', "-");
-        let air = dir.join(format!("{stem}.air"));
-        let files: Vec<std::path::PathBuf> = if air.is_file() {
-            vec![air]
-        } else {
-            ["ads", "adb"]
-                .iter()
-                .map(|e| dir.join(format!("{stem}.{e}")))
-                .filter(|p| p.is_file())
-                .collect()
-        };
-        for f in files {
-            if self.with_files.contains(&f) {
-                continue;
-            }
-            self.with_files.push(f.clone());
-            let shown = f.to_string_lossy().replace('\\', "/");
-            let text = std::fs::read_to_string(&f).map_err(|e| {
-                vec![Diagnostic::syntax(
-                    at,
-                    format!("cannot read {shown} (the file of package {pkg}): {e}"),
-                )]
-            })?;
-            let outer = std::mem::replace(&mut self.in_with_file, true);
-            let checked = self.check_source(&shown, &text, false);
-            self.in_with_file = outer;
-            let (stmts, _) = checked?;
-            self.elaboration = stmts;
-        }
-        Ok(())
+        self.warnings = checked.diags;
+        Ok((checked.stmts, checked.main))
     }
 
     /// The warnings of the last successful check, taken.
@@ -566,7 +405,7 @@ impl Session {
         if !self.warnings.is_empty()
             && let Some((w, color)) = &mut self.warnings_to
         {
-            let text = crate::diag::render(&self.warnings, &self.sources, *color);
+            let text = crate::diag::render(&self.warnings, &self.front.sources, *color);
             let _ = w.write_all(text.as_bytes());
             let _ = w.flush();
         }
@@ -599,7 +438,7 @@ impl Session {
             }
             return d;
         }
-        let name = &self.checker.excs[o.exc as usize].name;
+        let name = &self.front.checker.excs[o.exc as usize].name;
         let msg = if o.message.is_empty() {
             format!("raised {name}")
         } else {
@@ -684,16 +523,16 @@ pub fn rehearse(
         // A `TeachBox` cannot be rehearsed: it says so.
         st.rehearsal = true;
     }
-    s.checker.simulator_only = crate::services::SIMULATOR_ONLY;
+    s.front.checker.simulator_only = crate::services::SIMULATOR_ONLY;
     let outcome = s.run_source(name, text);
     // A failed rehearsal ends the run before the real one is checked: its
     // warnings (a simulator-only service) are shown with its failure.
-    let warned = crate::diag::render(&s.take_warnings(), &s.sources, color);
+    let warned = crate::diag::render(&s.take_warnings(), &s.front.sources, color);
     let shown = match &outcome {
         Outcome::Ok => return Ok(()),
-        Outcome::CheckFailed(d) => crate::diag::render(d, &s.sources, color),
+        Outcome::CheckFailed(d) => crate::diag::render(d, &s.front.sources, color),
         Outcome::Raised(d) => {
-            warned + &crate::diag::render(std::slice::from_ref(d), &s.sources, color)
+            warned + &crate::diag::render(std::slice::from_ref(d), &s.front.sources, color)
         }
     };
     Err((
@@ -704,20 +543,6 @@ pub fn rehearse(
 
 /// What `adair run --rehearse` says on stderr before it moves the arm.
 pub const REHEARSED: &str = "adair: the rehearsal on the simulator ended without an unhandled exception; moving the arm now (a rehearsal cannot cover branches that depend on input)";
-
-/// Whether `unit` declares the package `name` itself.
-fn declares_package(unit: &crate::syntax::ast::CompilationUnit, name: &str) -> bool {
-    use crate::syntax::ast::{DeclKind, TopItem};
-    unit.items.iter().any(|i| match i {
-        TopItem::Decl(d) => match &d.kind {
-            DeclKind::PackageSpec(p) => {
-                crate::syntax::parser::expr_text(&p.name).eq_ignore_ascii_case(name)
-            }
-            _ => false,
-        },
-        _ => false,
-    })
-}
 
 /// Whether `unit` is a script: statements at the top, or (unless it is a
 /// `library` unit: the stdlib, a package file named by `with`) only
