@@ -320,6 +320,12 @@ enum Command {
     },
     /// List the serial ports of this machine.
     Ports,
+    /// Explain a diagnostic code (`adair explain E0201`): what it means, a
+    /// wrong and a right example. Without a code: the list of codes.
+    Explain {
+        /// A code as a diagnostic's first line shows it, e.g. E0201 or W0001.
+        code: Option<String>,
+    },
     /// A language server (LSP 3.17) on standard input and output, for editors (see docs/editors.md).
     Lsp,
     /// Golden tests: run each X.air and compare its output with X.out beside it.
@@ -801,6 +807,26 @@ fn real_main(
                 eprintln!("adair lsp: {e}");
                 1
             }
+        },
+        Some(Command::Explain { code }) => match code {
+            None => {
+                for e in adair::diag::codes::ALL {
+                    println!("{}  {}", e.code, e.title);
+                }
+                0
+            }
+            Some(c) => match adair::diag::codes::lookup(&c) {
+                Some(e) => {
+                    print!("{}", e.page);
+                    0
+                }
+                None => {
+                    eprintln!(
+                        "adair explain: no code `{c}`; `adair explain` lists them (E0201, W0001, ...)"
+                    );
+                    2
+                }
+            },
         },
         Some(Command::Ports) => match list_ports(std::path::Path::new(TTY_CLASS)) {
             Ok(lines) if lines.is_empty() => {

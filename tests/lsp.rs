@@ -274,6 +274,21 @@ fn diagnostics_on_open_and_change_are_the_checker_s_and_cleared_when_fixed() {
         "`Countt` is not declared\nHelp: did you mean `Count`?"
     );
     assert_eq!(d[0].severity, Some(lsp_types::DiagnosticSeverity::ERROR));
+    // Its code, and a link to its `adair explain` page.
+    assert_eq!(
+        d[0].code,
+        Some(lsp_types::NumberOrString::String("E0201".into()))
+    );
+    let href = d[0]
+        .code_description
+        .as_ref()
+        .expect("a link")
+        .href
+        .as_str();
+    assert!(
+        href.starts_with("file://") && href.ends_with("/errors/E0201.md"),
+        "{href}"
+    );
     // The label is a related location at the same place.
     let rel = d[0].related_information.as_ref().unwrap();
     assert_eq!(rel[0].message, "undefined name");

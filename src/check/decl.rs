@@ -34,12 +34,7 @@ impl Checker {
                 && self.imports[f].is_none()
             {
                 let name = spec.name.display();
-                self.err(
-                    Diagnostic::name(spec.span, format!("`{name}` is declared but has no body"))
-                        .with_hint(format!(
-                            "write the body of `{name}` in the same declarative part"
-                        )),
-                );
+                self.err(diagnostics::no_body(spec.span, &name));
             }
         }
         // A package whose spec declares a subprogram needs a body in the
@@ -76,15 +71,7 @@ impl Checker {
                     if crate::syntax::parser::expr_text(&b.name).eq_ignore_ascii_case(&name))
             });
             if needs_body && !has_body {
-                self.err(
-                    Diagnostic::name(
-                        p.name.span,
-                        format!("package `{name}` declares subprograms but has no body"),
-                    )
-                    .with_hint(format!(
-                        "write `package body {name} is ... end {name};` in the same declarative part"
-                    )),
-                );
+                self.err(diagnostics::package_without_body(p.name.span, &name));
             }
         }
     }
@@ -118,12 +105,7 @@ impl Checker {
                 let v = match self.static_value(&ex) {
                     Some(v) => v,
                     None => {
-                        self.err(
-                            Diagnostic::ty(value.span, "a named number needs a static value")
-                                .with_hint(
-                                    "give the constant a type: `K : constant Float := ...;`",
-                                ),
-                        );
+                        self.err(diagnostics::named_number_not_static(value.span));
                         Static::Int(0)
                     }
                 };
@@ -190,20 +172,12 @@ impl Checker {
                 }
                 if let (Some(f), Some(name)) = (f, import) {
                     if !self.known_builtin(name) {
-                        self.err(Diagnostic::name(
-                            spec.span,
-                            format!("no builtin named \"{name}\""),
-                        ));
+                        self.err(diagnostics::no_builtin(spec.span, &name));
                     } else if let Some(want) = self.import_mismatch(f, name) {
                         let declared = self.signature(f);
-                        self.err(Diagnostic::ty(
-                            spec.span,
-                            format!(
-                                "this profile does not match the import \"{name}\": declared `{declared}`, the service is `{}`",
-                                want.text
-                            ),
-                        )
-                        .with_label("the service's natives would read the wrong arguments"));
+                        self.err(diagnostics::import_profile_mismatch(
+                            spec.span, &name, &declared, &want.text,
+                        ));
                     }
                     self.imports[f as usize] = Some(name.clone());
                 }
@@ -220,16 +194,10 @@ impl Checker {
                 if *what == "<error>" || *what == "pragma" {
                     return;
                 }
-                let mut diag = Diagnostic::unsupported(d.span, what);
-                if *what == "a representation clause" {
-                    diag = diag.with_hint(
-                        "the representation clauses AdaIR reads are address clauses: `for Interrupt use at 8#340#;` binds an entry to an interrupt, `for Input use at 8#342#;` an object to a device register (tasks.md)",
-                    );
-                }
-                self.err(diag);
+                self.err(diagnostics::unsupported_declaration(d.span, what));
             }
             DeclKind::UnsupportedNamed(what, names) => {
-                self.err(Diagnostic::unsupported(d.span, what));
+                self.err(diagnostics::unsupported(d.span, what));
                 for n in names {
                     self.unsupported_names.insert(n.key.to_string());
                 }
@@ -287,13 +255,10 @@ impl Checker {
             self.coerce(ex, t)
         });
         if init_ex.is_none() && unconstrained_array {
-            self.err(
-                Diagnostic::ty(span, format!("an object of the unconstrained array type `{}` needs bounds or an initial value", self.types.name(t)))
-                    .with_hint(format!("write `{} (1 .. N)` or give an initial value", self.types.name(t))),
-            );
+            self.err(diagnostics::unconstrained_object(span, self.types.name(t)));
         }
         if constant && init_ex.is_none() {
-            self.err(Diagnostic::ty(span, "a constant needs an initial value"));
+            self.err(diagnostics::constant_without_value(span));
         }
         let static_v = if constant {
             init_ex
@@ -354,7 +319,7 @@ impl Checker {
             Some(Entity::Type(t)) => *t,
             Some(_) => {
                 let text = crate::syntax::parser::expr_text(n);
-                self.err(Diagnostic::ty(n.span, format!("`{text}` is not a type")));
+                self.err(diagnostics::not_a_type(n.span, &text));
                 ERROR
             }
             None => ERROR,
@@ -367,12 +332,9 @@ impl Checker {
             None => t,
             Some(ast::Constraint::Range(lo, hi)) => {
                 if !self.types.is_scalar(t) && t != ERROR {
-                    self.err(Diagnostic::ty(
+                    self.err(diagnostics::range_constraint_not_scalar(
                         ind.span,
-                        format!(
-                            "a range constraint needs a scalar type, not `{}`",
-                            self.types.name(t)
-                        ),
+                        self.types.name(t),
                     ));
                     return t;
                 }
@@ -386,32 +348,26 @@ impl Checker {
                     .map(|(i, e, b)| (i.to_vec(), e, b.is_some()))
                 else {
                     if t != ERROR {
-                        self.err(Diagnostic::ty(
+                        self.err(diagnostics::index_constraint_not_array(
                             ind.span,
-                            format!(
-                                "`{}` is not an array type and takes no index constraint",
-                                self.types.name(t)
-                            ),
+                            self.types.name(t),
                         ));
                     }
                     return t;
                 };
                 if bounds {
-                    self.err(Diagnostic::ty(
+                    self.err(diagnostics::already_constrained(
                         ind.span,
-                        format!("`{}` is already constrained", self.types.name(t)),
+                        self.types.name(t),
                     ));
                     return t;
                 }
                 if ranges.len() != index.len() {
-                    self.err(Diagnostic::ty(
+                    self.err(diagnostics::index_constraint_count(
                         ind.span,
-                        format!(
-                            "`{}` has {} index(es), the constraint gives {}",
-                            self.types.name(t),
-                            index.len(),
-                            ranges.len()
-                        ),
+                        self.types.name(t),
+                        index.len(),
+                        ranges.len(),
                     ));
                     return t;
                 }
@@ -515,25 +471,16 @@ impl Checker {
                 let h = self.expr(b, Some(t));
                 let h = self.coerce_base(h, t);
                 if !self.types.is_discrete(t) && t != ERROR {
-                    self.err(
-                        Diagnostic::ty(
-                            a.span,
-                            format!(
-                                "a discrete range is needed, `{}` is not discrete",
-                                self.types.name(t)
-                            ),
-                        )
-                        .with_hint("ranges of loops and indices are integers or enumerations"),
-                    );
+                    self.err(diagnostics::range_not_discrete(a.span, self.types.name(t)));
                 }
                 (l, h, t)
             }
             ast::DiscreteRange::Subtype(ind) => {
                 let t = self.subtype_ind(ind);
                 if !self.types.is_discrete(t) && t != ERROR {
-                    self.err(Diagnostic::ty(
+                    self.err(diagnostics::not_a_discrete_type(
                         ind.span,
-                        format!("`{}` is not a discrete type", self.types.name(t)),
+                        self.types.name(t),
                     ));
                 }
                 let sp = ind.span;
@@ -592,18 +539,12 @@ impl Checker {
                 match (self.static_value(&l), self.static_value(&h)) {
                     (Some(Static::Int(a)), Some(Static::Int(b))) => {
                         if a < INT_FIRST || b > INT_LAST {
-                            self.err(
-                                Diagnostic::ty(span, "integer types of AdaIR are 32-bit")
-                                    .with_hint(format!(
-                                        "the range must lie in {INT_FIRST} .. {INT_LAST}"
-                                    )),
-                            );
+                            self.err(diagnostics::integer_type_too_wide(
+                                span, INT_FIRST, INT_LAST,
+                            ));
                         }
                     }
-                    _ => self.err(Diagnostic::ty(
-                        span,
-                        "the range of an integer type must be static",
-                    )),
+                    _ => self.err(diagnostics::integer_range_not_static(span)),
                 }
                 let (l, h) = (Ex { ty: t, ..l }, Ex { ty: t, ..h });
                 self.set_range(t, l, h);
@@ -615,10 +556,7 @@ impl Checker {
                     Some(Static::Int(v)) => u32::try_from(v).ok(),
                     Some(_) => None,
                     None => {
-                        self.err(Diagnostic::ty(
-                            digits.span,
-                            "`digits` needs a static integer",
-                        ));
+                        self.err(diagnostics::digits_not_static(digits.span));
                         None
                     }
                 };
@@ -672,10 +610,7 @@ impl Checker {
             TypeDef::Array { index, elem } => {
                 let et = self.subtype_ind(elem);
                 if matches!(self.types.array(et), Some((_, _, None))) {
-                    self.err(
-                        Diagnostic::ty(elem.span, "array components must have a constrained type")
-                            .with_hint("give the component type bounds, e.g. `String (1 .. 10)`"),
-                    );
+                    self.err(diagnostics::array_component_unconstrained(elem.span));
                 }
                 match index {
                     ast::ArrayIndex::Unconstrained(marks) => {
@@ -718,10 +653,7 @@ impl Checker {
                 for c in components {
                     let t = self.subtype_ind(&c.ty);
                     if matches!(self.types.array(t), Some((_, _, None))) {
-                        self.err(Diagnostic::ty(
-                            c.ty.span,
-                            "record components must have a constrained type",
-                        ));
+                        self.err(diagnostics::record_component_unconstrained(c.ty.span));
                     }
                     let default = c.default.as_ref().map(|d| {
                         let ex = self.expr(d, Some(t));
@@ -729,10 +661,7 @@ impl Checker {
                     });
                     for n in &c.names {
                         if fields.iter().any(|f| *f.key == *n.key) {
-                            self.err(Diagnostic::name(
-                                n.span,
-                                format!("component `{}` is declared twice", n.name),
-                            ));
+                            self.err(diagnostics::component_declared_twice(n.span, &n.name));
                         }
                         fields.push(Field {
                             name: n.name.to_string(),
@@ -756,7 +685,7 @@ impl Checker {
             }
             TypeDef::Incomplete => self.types.add(&name.name, TypeKind::Incomplete),
             TypeDef::Unsupported(what) => {
-                self.err(Diagnostic::unsupported(span, what));
+                self.err(diagnostics::unsupported(span, what));
                 // The error type itself: what uses the name says nothing more.
                 ERROR
             }
@@ -796,10 +725,7 @@ impl Checker {
                 self.coerce(ex, t)
             });
             if default.is_some() && p.mode != ast::Mode::In {
-                self.err(Diagnostic::ty(
-                    p.span,
-                    "only `in` parameters can have default values",
-                ));
+                self.err(diagnostics::default_on_non_in_parameter(p.span));
             }
             for n in &p.names {
                 out.push(Param {
@@ -842,10 +768,7 @@ impl Checker {
                 "or", "xor", "mod", "rem",
             ];
             if !ok.contains(&op.to_ascii_lowercase().as_str()) {
-                self.err(Diagnostic::syntax(
-                    *sp,
-                    format!("\"{op}\" is not an operator symbol"),
-                ));
+                self.err(diagnostics::not_an_operator_symbol(*sp, &op));
             }
         }
         // A body completes an earlier declaration with the same profile.
@@ -864,12 +787,9 @@ impl Checker {
             let sub = &self.funcs[f as usize];
             if self.same_profile(sub, &params, ret) {
                 if declare_only || sub.body.is_some() || self.imports[f as usize].is_some() {
-                    self.err(Diagnostic::name(
+                    self.err(diagnostics::declared_with_same_profile(
                         spec.span,
-                        format!(
-                            "`{}` is already declared with this profile",
-                            spec.name.display()
-                        ),
+                        &spec.name.display(),
                     ));
                 }
                 return Some(f);
@@ -957,10 +877,7 @@ impl Checker {
             if end.eq_ignore_ascii_case(&name) {
                 self.index_ref(*sp, &end.to_lowercase(), &Entity::Func(f));
             } else {
-                self.err(
-                    Diagnostic::syntax(*sp, format!("`end {end};` does not match `{name}`"))
-                        .with_hint(format!("write `end {name};`")),
-                );
+                self.err(diagnostics::end_name_mismatch(*sp, &end, &name));
             }
         }
         let written: Vec<&ast::Ident> = b.spec.params.iter().flat_map(|p| p.names.iter()).collect();
@@ -983,16 +900,10 @@ impl Checker {
         );
         let ret = self.funcs[f as usize].ret;
         if ret.is_some() && !saw_return && !unreadable {
-            self.err(
-                Diagnostic::ty(
-                    b.spec.span,
-                    format!(
-                        "function `{}` has no `return` statement",
-                        b.spec.name.display()
-                    ),
-                )
-                .with_hint("a function must return a value on every path: add `return Value;`"),
-            );
+            self.err(diagnostics::function_without_return(
+                b.spec.span,
+                &b.spec.name.display(),
+            ));
         }
         Some(f)
     }
@@ -1194,13 +1105,7 @@ impl Checker {
         let idx = match self.denote(&p.name, false).first() {
             Some(Entity::Package(i)) => *i,
             _ => {
-                self.err(
-                    Diagnostic::name(
-                        p.name.span,
-                        format!("package body `{name}` has no package spec"),
-                    )
-                    .with_hint(format!("declare `package {name} is ... end {name};` first")),
-                );
+                self.err(diagnostics::package_body_without_spec(p.name.span, &name));
                 return;
             }
         };
@@ -1235,10 +1140,7 @@ impl Checker {
             })
             .collect();
         for m in missing {
-            self.err(Diagnostic::name(
-                p.span,
-                format!("package body `{name}` lacks a body for `{m}`"),
-            ));
+            self.err(diagnostics::package_body_lacks(p.span, &name, &m));
         }
     }
 

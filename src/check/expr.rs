@@ -49,15 +49,12 @@ impl Checker {
             return ex;
         }
         if !self.types.compatible(ex.ty, t) {
-            let mut d = Diagnostic::ty(
+            let mut d = diagnostics::type_mismatch(
                 ex.span,
-                format!(
-                    "expected `{}`, found {}",
-                    self.tname(t),
-                    self.found_desc(ex.ty)
-                ),
-            )
-            .with_label(format!("this has type `{}`", self.tname(ex.ty)));
+                &self.tname(t),
+                &self.found_desc(ex.ty),
+                &self.tname(ex.ty),
+            );
             let (tf, ti) = (self.types.is_float(t), self.types.is_integer(t));
             if tf && self.types.is_integer(ex.ty) {
                 d = match &ex.kind {
@@ -153,23 +150,11 @@ impl Checker {
             && !self.types.is_universal(t)
             && i32::try_from(v).is_err()
         {
-            self.err(
-                Diagnostic::ty(
-                    ex.span,
-                    format!(
-                        "the static value {v} is not in range of {} ({} .. {})",
-                        match self.tname(t) {
-                            n if n == "Integer" => "`Integer`".to_string(),
-                            n => format!("`Integer`, the base type of `{n}`"),
-                        },
-                        i32::MIN,
-                        i32::MAX
-                    ),
-                )
-                .with_hint(
-                    "a static expression is computed exactly, and its value must fit its type",
-                ),
-            );
+            self.err(diagnostics::static_outside_integer(
+                ex.span,
+                v,
+                &self.tname(t),
+            ));
             ex.ty = ERROR;
             return ex;
         }
@@ -195,20 +180,13 @@ impl Checker {
                 s if s.len() <= 40 => s,
                 _ => "the static value".to_string(),
             };
-            self.err(
-                Diagnostic::ty(
-                    ex.span,
-                    format!(
-                        "{shown} is not in range of `{}` ({} .. {})",
-                        self.tname(self.types.base(t)),
-                        e(lo),
-                        e(hi)
-                    ),
-                )
-                .with_hint(
-                    "a static expression is computed exactly, and its value must fit its type",
-                ),
-            );
+            self.err(diagnostics::static_outside_float(
+                ex.span,
+                &shown,
+                &self.tname(self.types.base(t)),
+                &e(lo),
+                &e(hi),
+            ));
             ex.ty = ERROR;
             return ex;
         }
@@ -276,14 +254,9 @@ impl Checker {
                 };
                 if let Some((v, l, h)) = outside {
                     let tn = self.tname(t);
-                    self.err(
-                        Diagnostic::new(
-                            crate::diag::Phase::Warning,
-                            ex.span,
-                            format!("the value {v} is not in range of `{tn}` ({l} .. {h})"),
-                        )
-                        .with_label("Constraint_Error will be raised here at run time"),
-                    );
+                    self.err(diagnostics::will_raise_constraint_error(
+                        ex.span, &v, &tn, &l, &h,
+                    ));
                 }
                 let span = ex.span;
                 return self.mk(ExKind::RangeCheck(bx(ex), t), t, span);
@@ -693,7 +666,8 @@ impl Checker {
         &self,
         f: FuncId,
         args: &'a [ast::Arg],
-    ) -> Result<Vec<Option<&'a ast::Arg>>, String> {
+    ) -> Result<Vec<Option<&'a ast::Arg>>, diagnostics::ArgsMismatch> {
+        use diagnostics::ArgsMismatch as Why;
         let sub = &self.funcs[f as usize];
         let mut slots: Vec<Option<&ast::Arg>> = vec![None; sub.params.len()];
         let mut named = false;
@@ -701,14 +675,13 @@ impl Checker {
             match &a.name {
                 None => {
                     if named {
-                        return Err("a positional argument cannot follow a named one".into());
+                        return Err(Why::PositionalAfterNamed);
                     }
                     if i >= slots.len() {
-                        return Err(format!(
-                            "`{}` takes {} argument(s), {} given",
-                            sub.name,
+                        return Err(Why::TooMany(
+                            sub.name.to_string(),
                             sub.params.len(),
-                            args.len()
+                            args.len(),
                         ));
                     }
                     slots[i] = Some(a);
@@ -721,17 +694,14 @@ impl Checker {
                         .position(|p| p.name.eq_ignore_ascii_case(&n.name))
                     {
                         Some(j) if slots[j].is_some() => {
-                            return Err(format!("parameter `{}` is given twice", n.name));
+                            return Err(Why::GivenTwice(n.name.to_string()));
                         }
                         Some(j) => slots[j] = Some(a),
                         None => {
-                            let names: Vec<&str> =
-                                sub.params.iter().map(|p| p.name.as_str()).collect();
-                            return Err(format!(
-                                "`{}` has no parameter named `{}` (its parameters: {})",
-                                sub.name,
-                                n.name,
-                                names.join(", ")
+                            return Err(Why::NoSuchParameter(
+                                sub.name.to_string(),
+                                n.name.to_string(),
+                                sub.params.iter().map(|p| p.name.to_string()).collect(),
                             ));
                         }
                     }
@@ -740,10 +710,7 @@ impl Checker {
         }
         for (s, p) in slots.iter().zip(&sub.params) {
             if s.is_none() && p.default.is_none() {
-                return Err(format!(
-                    "missing argument for parameter `{}` of `{}`",
-                    p.name, sub.name
-                ));
+                return Err(Why::Missing(p.name.to_string(), sub.name.to_string()));
             }
         }
         Ok(slots)
@@ -776,17 +743,11 @@ impl Checker {
             .filter(|f| self.funcs[*f as usize].ret.is_none() == procedure)
             .collect();
         if kind_ok.is_empty() {
-            let msg = if procedure {
-                format!("`{name}` is a function: its result must be used")
+            self.err(if procedure {
+                diagnostics::function_result_unused(span, name)
             } else {
-                format!("`{name}` is a procedure and has no value")
-            };
-            let hint = if procedure {
-                "assign the result: `X := F (...);`"
-            } else {
-                "call it as a statement: `P (...);`"
-            };
-            self.err(Diagnostic::ty(span, msg).with_hint(hint));
+                diagnostics::procedure_has_no_value(span, name)
+            });
             return None;
         }
         let mut fitting: Vec<FuncId> = kind_ok
@@ -834,32 +795,15 @@ impl Checker {
         });
         if fitting.len() > 1 && !erroneous {
             let sigs: Vec<String> = fitting.iter().map(|f| self.signature(*f)).collect();
-            self.err(
-                Diagnostic::ty(
-                    span,
-                    format!(
-                        "ambiguous call: {} versions of `{name}` match these arguments",
-                        fitting.len()
-                    ),
-                )
-                .with_hint(format!(
-                    "qualify an argument with its type, like `T'(X)`; the candidates are:\n  {}",
-                    sigs.join("\n  ")
-                )),
-            );
+            self.err(diagnostics::ambiguous_call(span, name, &sigs));
             return None;
         }
         let f = match fitting.first() {
             Some(f) => *f,
             None if kind_ok.len() == 1 => kind_ok[0],
             None => {
-                let mut d = Diagnostic::ty(
-                    span,
-                    format!("no version of `{name}` accepts these arguments"),
-                );
                 let sigs: Vec<String> = kind_ok.iter().map(|f| self.signature(*f)).collect();
-                d = d.with_hint(format!("the candidates are:\n  {}", sigs.join("\n  ")));
-                self.err(d);
+                self.err(diagnostics::no_version_accepts(span, name, &sigs));
                 for a in args {
                     self.expr(&a.value, None);
                 }
@@ -870,7 +814,7 @@ impl Checker {
             Ok(s) => s,
             Err(msg) => {
                 let sig = self.signature(f);
-                self.err(Diagnostic::ty(span, msg).with_hint(format!("`{sig}`")));
+                self.err(diagnostics::arguments_rejected(span, &msg, &sig));
                 return None;
             }
         };
@@ -973,11 +917,7 @@ impl Checker {
                         && constant
                     {
                         let name = self.snippet(e.span);
-                        self.err(
-                            Diagnostic::ty(span, format!("`{name}` is a constant or an `in` parameter and cannot be assigned"))
-                                .with_label(format!("used as {what}"))
-                                .with_hint("declare it as a variable, or make the parameter `in out`"),
-                        );
+                        self.err(diagnostics::assigned_constant_or_in(span, &name, what));
                     }
                     return;
                 }
@@ -986,14 +926,7 @@ impl Checker {
                 ExKind::Deref(p) if matches!(p.kind, ExKind::Var(v) if Some(v) == self.prot_function_obj) =>
                 {
                     let name = self.snippet(span);
-                    self.err(
-                        Diagnostic::ty(
-                            span,
-                            format!("`{name}` is a component of the protected object: a protected function cannot change it"),
-                        )
-                        .with_label(format!("used as {what}"))
-                        .with_hint("change it in a protected procedure or entry (a function only reads the object)"),
-                    );
+                    self.err(diagnostics::protected_function_changes(span, &name, what));
                     return;
                 }
                 ExKind::Deref(_) | ExKind::Error => return,
@@ -1003,16 +936,13 @@ impl Checker {
                     {
                         let name = self.snippet(e.span);
                         let dev = self.devices.devices()[d].name.clone();
-                        self.err(
-                            Diagnostic::ty(
-                                span,
-                                format!(
-                                    "`{name}` is the {} of device `{dev}`: the outside world sets it, the program only reads it",
-                                    role.describe()
-                                ),
-                            )
-                            .with_label(format!("used as {what}")),
-                        );
+                        self.err(diagnostics::device_input_assigned(
+                            span,
+                            &name,
+                            role.describe(),
+                            &dev,
+                            what,
+                        ));
                     }
                     return;
                 }
@@ -1023,22 +953,12 @@ impl Checker {
                         .starts_with(|c: char| c.is_ascii_alphabetic()) =>
                 {
                     let name = self.snippet(e.span);
-                    self.err(
-                        Diagnostic::ty(
-                            span,
-                            format!("`{name}` is a constant and cannot be assigned"),
-                        )
-                        .with_label(format!("used as {what}"))
-                        .with_hint("declare it as a variable to change it"),
-                    );
+                    self.err(diagnostics::assigned_constant(span, &name, what));
                     return;
                 }
                 _ if ex.ty == ERROR => return,
                 _ => {
-                    self.err(
-                        Diagnostic::ty(span, format!("{what} must be a variable"))
-                            .with_label("this is a value, not a variable"),
-                    );
+                    self.err(diagnostics::not_a_variable(span, what));
                     return;
                 }
             }
@@ -1077,7 +997,7 @@ impl Checker {
             ExprKind::Int(v) => match i64::try_from(v.get()) {
                 Ok(v) => self.mk(ExKind::Int(v), UNIV_INT, sp),
                 Err(_) => {
-                    self.err(Diagnostic::ty(sp, "integer literal too large"));
+                    self.err(diagnostics::integer_literal_too_large(sp));
                     self.err_ex(sp)
                 }
             },
@@ -1161,13 +1081,7 @@ impl Checker {
                     Some(d) => self.mk(ExKind::Deref(bx(pe)), d, sp),
                     None => {
                         if pe.ty != ERROR {
-                            self.err(Diagnostic::ty(
-                                sp,
-                                format!(
-                                    "`.all` needs an access value, this is `{}`",
-                                    self.tname(pe.ty)
-                                ),
-                            ));
+                            self.err(diagnostics::all_needs_access(sp, &self.tname(pe.ty)));
                         }
                         self.err_ex(sp)
                     }
@@ -1235,25 +1149,19 @@ impl Checker {
                                 // `X in A'Range`, `X in A'Range (N)`
                                 let (l, h, rt) = self.range_attr(prefix, args, x.span);
                                 if rt != ERROR && !self.types.compatible(rt, s.ty) {
-                                    self.err(Diagnostic::ty(
+                                    self.err(diagnostics::range_of_other_type(
                                         x.span,
-                                        format!(
-                                            "this range is of `{}`, not `{}`",
-                                            self.types.name(rt),
-                                            self.tname(s.ty)
-                                        ),
+                                        self.types.name(rt),
+                                        &self.tname(s.ty),
                                     ));
                                 }
                                 ranges.push((l, h));
                             } else if let Some(tt) = self.denote_quiet_type(x) {
                                 if !self.types.compatible(tt, s.ty) {
-                                    self.err(Diagnostic::ty(
+                                    self.err(diagnostics::not_a_subtype_of(
                                         x.span,
-                                        format!(
-                                            "`{}` is not a subtype of `{}`",
-                                            self.types.name(tt),
-                                            self.tname(s.ty)
-                                        ),
+                                        self.types.name(tt),
+                                        &self.tname(s.ty),
                                     ));
                                 }
                                 ranges.push((
@@ -1266,10 +1174,7 @@ impl Checker {
                                 ranges.push((v.clone(), v));
                             }
                         }
-                        Choice::Others(os) => self.err(Diagnostic::syntax(
-                            *os,
-                            "`others` is not allowed in a membership test",
-                        )),
+                        Choice::Others(os) => self.err(diagnostics::others_in_membership(*os)),
                     }
                 }
                 self.mk(
@@ -1284,10 +1189,7 @@ impl Checker {
                 }
                 Some(_) => self.err_ex(sp),
                 None => {
-                    self.err(
-                        Diagnostic::ty(sp, "the type of this aggregate cannot be determined")
-                            .with_hint("qualify it with its type: `T'(...)`"),
-                    );
+                    self.err(diagnostics::aggregate_type_unknown(sp));
                     self.err_ex(sp)
                 }
             },
@@ -1316,10 +1218,7 @@ impl Checker {
                     }
                     None => {
                         if self.types.base(t) != BOOLEAN {
-                            self.err(Diagnostic::ty(
-                                sp,
-                                "an `if` expression needs an `else` part unless it is Boolean",
-                            ));
+                            self.err(diagnostics::if_expression_without_else(sp));
                         }
                         self.mk(ExKind::Int(1), BOOLEAN, sp)
                     }
@@ -1360,27 +1259,18 @@ impl Checker {
             ExprKind::Allocator(tm, init) => {
                 let Some(w) = want.filter(|w| self.types.is_access(*w)) else {
                     if want != Some(ERROR) {
-                        self.err(
-                            Diagnostic::ty(
-                                sp,
-                                "an allocator needs an access type from its context",
-                            )
-                            .with_hint("assign it to a variable of an access type"),
-                        );
+                        self.err(diagnostics::allocator_without_access_type(sp));
                     }
                     return self.err_ex(sp);
                 };
                 let d = self.types.designated(w).unwrap_or(ERROR);
                 let t = self.type_mark(tm);
                 if !self.types.compatible(t, d) {
-                    self.err(Diagnostic::ty(
+                    self.err(diagnostics::designates_other_type(
                         tm.span,
-                        format!(
-                            "`{}` designates `{}`, not `{}`",
-                            self.types.name(w),
-                            self.types.name(d),
-                            self.types.name(t)
-                        ),
+                        self.types.name(w),
+                        self.types.name(d),
+                        self.types.name(t),
                     ));
                 }
                 let init = init.as_ref().map(|x| {
@@ -1482,27 +1372,15 @@ impl Checker {
             }
             Entity::Type(t) => {
                 let n = self.types.name(*t).to_string();
-                self.err(
-                    Diagnostic::ty(sp, format!("the type `{n}` is not a value")).with_hint(
-                        format!(
-                            "convert a value with `{n} (X)` or use an attribute like `{n}'First`"
-                        ),
-                    ),
-                );
+                self.err(diagnostics::type_is_not_a_value(sp, &n));
                 self.err_ex(sp)
             }
             Entity::Exc(_) => {
-                self.err(
-                    Diagnostic::ty(sp, format!("the exception `{text}` is not a value"))
-                        .with_hint(format!("raise it with `raise {text};`")),
-                );
+                self.err(diagnostics::exception_is_not_a_value(sp, &text));
                 self.err_ex(sp)
             }
             Entity::Package(_) => {
-                self.err(Diagnostic::ty(
-                    sp,
-                    format!("the package `{text}` is not a value"),
-                ));
+                self.err(diagnostics::package_is_not_a_value(sp, &text));
                 self.err_ex(sp)
             }
         }
@@ -1528,28 +1406,20 @@ impl Checker {
                 }
                 None => {
                     let names: Vec<&str> = fields.iter().map(|f| f.name.as_str()).collect();
-                    self.err(
-                        Diagnostic::name(
-                            id.span,
-                            format!(
-                                "`{}` has no component `{}`",
-                                self.types.name(pe.ty),
-                                id.name
-                            ),
-                        )
-                        .with_hint(format!("its components are: {}", names.join(", "))),
-                    );
+                    self.err(diagnostics::no_component(
+                        id.span,
+                        self.types.name(pe.ty),
+                        &id.name,
+                        &names,
+                    ));
                     self.err_ex(sp)
                 }
             },
             None => {
-                self.err(Diagnostic::ty(
+                self.err(diagnostics::selection_needs_record(
                     id.span,
-                    format!(
-                        "`.{}` needs a record, this is `{}`",
-                        id.name,
-                        self.tname(pe.ty)
-                    ),
+                    &id.name,
+                    &self.tname(pe.ty),
                 ));
                 self.err_ex(sp)
             }
@@ -1578,13 +1448,7 @@ impl Checker {
             Some(Entity::Type(t)) => {
                 let t = *t;
                 if args.len() != 1 || args[0].name.is_some() {
-                    self.err(Diagnostic::ty(
-                        sp,
-                        format!(
-                            "a conversion to `{}` takes exactly one value",
-                            self.types.name(t)
-                        ),
-                    ));
+                    self.err(diagnostics::conversion_arity(sp, self.types.name(t)));
                     return self.err_ex(sp);
                 }
                 self.conversion(t, &args[0].value, sp)
@@ -1642,12 +1506,9 @@ impl Checker {
                 }
             }
             Some(Entity::Exc(_) | Entity::Package(_)) => {
-                self.err(Diagnostic::ty(
+                self.err(diagnostics::cannot_call_or_index(
                     sp,
-                    format!(
-                        "`{}` cannot be called or indexed",
-                        crate::syntax::parser::expr_text(p)
-                    ),
+                    &crate::syntax::parser::expr_text(p),
                 ));
                 self.err_ex(sp)
             }
@@ -1668,7 +1529,11 @@ impl Checker {
                     .array(pe.ty)
                     .map(|(i, e, b)| (i.to_vec(), e, b.is_some()))
                 else {
-                    self.err(Diagnostic::ty(sp, format!("`{}` is neither an array nor a subprogram and cannot be indexed or called", self.snippet(p.span))).with_label(format!("this has type `{}`", self.tname(pe.ty))));
+                    self.err(diagnostics::neither_array_nor_subprogram(
+                        sp,
+                        &self.snippet(p.span),
+                        &self.tname(pe.ty),
+                    ));
                     return self.err_ex(sp);
                 };
                 if args.len() == 1 && is_range_arg(&args[0].value) {
@@ -1686,21 +1551,18 @@ impl Checker {
                     return self.mk(ExKind::Slice(bx(pe), Box::new([l, h])), t, sp);
                 }
                 if args.len() != idx.len() {
-                    self.err(Diagnostic::ty(
+                    self.err(diagnostics::index_count(
                         sp,
-                        format!(
-                            "`{}` has {} dimension(s), {} index(es) given",
-                            self.types.name(pe.ty),
-                            idx.len(),
-                            args.len()
-                        ),
+                        self.types.name(pe.ty),
+                        idx.len(),
+                        args.len(),
                     ));
                     return self.err_ex(sp);
                 }
                 let mut ix = Vec::new();
                 for (a, it) in args.iter().zip(&idx) {
                     if let Some(n) = &a.name {
-                        self.err(Diagnostic::syntax(n.span, "array indices cannot be named"));
+                        self.err(diagnostics::named_array_index(n.span));
                     }
                     let v = self.expr(&a.value, Some(*it));
                     ix.push(self.coerce_base(v, *it));
@@ -1751,27 +1613,18 @@ impl Checker {
                 };
                 return self.mk(ExKind::ArrayConvert(bx(ex), tt), t, sp);
             }
-            self.err(Diagnostic::ty(
+            self.err(diagnostics::cannot_convert_arrays(
                 sp,
-                format!(
-                    "cannot convert `{}` to `{}`",
-                    self.tname(ex.ty),
-                    self.types.name(t)
-                ),
+                &self.tname(ex.ty),
+                self.types.name(t),
             ));
             return self.err_ex(sp);
         } else {
-            self.err(
-                Diagnostic::ty(
-                    sp,
-                    format!(
-                        "cannot convert `{}` to `{}`",
-                        self.tname(ex.ty),
-                        self.types.name(t)
-                    ),
-                )
-                .with_hint("Ada converts only between numeric types, and between related types"),
-            );
+            self.err(diagnostics::cannot_convert(
+                sp,
+                &self.tname(ex.ty),
+                self.types.name(t),
+            ));
             return self.err_ex(sp);
         };
         let mut inner = inner;
@@ -1956,13 +1809,11 @@ impl Checker {
                         .array(t)
                         .is_some_and(|(i, e, _)| i.len() == 1 && self.types.is_discrete(e));
                 if !ordered && t != ERROR {
-                    self.err(
-                        Diagnostic::ty(
-                            sp,
-                            format!("`{}` is not defined for `{}`", op.symbol(), self.tname(t)),
-                        )
-                        .with_hint("ordering is defined for scalars and strings"),
-                    );
+                    self.err(diagnostics::ordering_undefined(
+                        sp,
+                        op.symbol(),
+                        &self.tname(t),
+                    ));
                 }
                 let c = match op {
                     BinOp::Lt => CmpOp::Lt,
@@ -2037,11 +1888,7 @@ impl Checker {
 
     fn mismatch(&mut self, op: BinOp, x: &Ex, y: &Ex, a: &ast::Expr, b: &ast::Expr, sp: Span) {
         let (xt, yt) = (self.tname(x.ty), self.tname(y.ty));
-        let mut d = Diagnostic::ty(
-            sp,
-            format!("`{}` cannot combine `{}` and `{}`", op.symbol(), xt, yt),
-        )
-        .with_label("Ada does not mix types implicitly");
+        let mut d = diagnostics::operands_mixed(sp, op.symbol(), &xt, &yt);
         let (xi, yi) = (self.types.is_integer(x.ty), self.types.is_integer(y.ty));
         let (xf, yf) = (self.types.is_float(x.ty), self.types.is_float(y.ty));
         let fname = |this: &Self, t: TypeId| {
@@ -2365,13 +2212,10 @@ impl Checker {
             return x;
         }
         if !self.types.is_numeric(x.ty) {
-            self.err(Diagnostic::ty(
+            self.err(diagnostics::operator_needs_number(
                 sp,
-                format!(
-                    "`{}` needs a number, this is `{}`",
-                    op.symbol(),
-                    self.tname(x.ty)
-                ),
+                op.symbol(),
+                &self.tname(x.ty),
             ));
             return self.err_ex(sp);
         }
@@ -2408,13 +2252,7 @@ impl Checker {
         sp: Span,
     ) -> (Vec<Vec<(i64, i64)>>, Option<usize>) {
         if !self.types.is_discrete(t) && t != ERROR {
-            self.err(Diagnostic::ty(
-                sp,
-                format!(
-                    "a `case` needs a discrete value, this is `{}`",
-                    self.tname(t)
-                ),
-            ));
+            self.err(diagnostics::case_needs_discrete(sp, &self.tname(t)));
         }
         let mut out = Vec::new();
         let mut others = None;
@@ -2425,10 +2263,7 @@ impl Checker {
                 let (lo, hi, csp) = match c {
                     Choice::Others(s) => {
                         if i + 1 != arms.len() || choices.len() != 1 {
-                            self.err(Diagnostic::syntax(
-                                *s,
-                                "`others` must be the only choice of the last alternative",
-                            ));
+                            self.err(diagnostics::others_not_last(*s));
                         }
                         others = Some(i);
                         continue;
@@ -2478,26 +2313,18 @@ impl Checker {
                                 }
                                 _ => v.to_string(),
                             };
-                            self.err(
-                                Diagnostic::ty(
-                                    csp,
-                                    format!(
-                                        "this `case` choice is outside `{name}` ({} .. {})",
-                                        show(lo),
-                                        show(hi)
-                                    ),
-                                )
-                                .with_label("no value of the selector is here"),
-                            );
+                            self.err(diagnostics::case_choice_outside(
+                                csp,
+                                name,
+                                &show(lo),
+                                &show(hi),
+                            ));
                         }
                         let (l, h) = (l as i64, h as i64);
                         if l <= h {
                             if let Some(prev) = all.iter().find(|(a, b, _)| l <= *b && *a <= h) {
                                 let prev_sp = prev.2;
-                                self.err(
-                                    Diagnostic::ty(csp, "this `case` choice is covered twice")
-                                        .with_note(prev_sp, "covered here already"),
-                                );
+                                self.err(diagnostics::case_choice_twice(csp, prev_sp));
                             }
                             all.push((l, h, csp));
                         }
@@ -2505,7 +2332,7 @@ impl Checker {
                     }
                     _ => {
                         if t != ERROR {
-                            self.err(Diagnostic::ty(csp, "a `case` choice must be static").with_hint("use literals, named numbers or constants with static values; use `if` for run-time values"));
+                            self.err(diagnostics::case_choice_not_static(csp));
                         }
                     }
                 }
@@ -2548,23 +2375,10 @@ impl Checker {
                                 }
                             })
                             .collect();
-                        self.err(
-                            Diagnostic::ty(
-                                sp,
-                                format!(
-                                    "this `case` does not cover every value of `{}`: missing {}",
-                                    self.types.name(t),
-                                    text.join(", ")
-                                ),
-                            )
-                            .with_hint("add the missing choices or a `when others =>` alternative"),
-                        );
+                        self.err(diagnostics::case_missing(sp, self.types.name(t), &text));
                     }
                 }
-                None => self.err(Diagnostic::ty(
-                    sp,
-                    format!("a `case` on `{}` needs `when others`", self.types.name(t)),
-                )),
+                None => self.err(diagnostics::case_needs_others(sp, self.types.name(t))),
             }
         }
         (out, others)
@@ -2577,13 +2391,10 @@ impl Checker {
             for it in items {
                 if it.choices.is_empty() {
                     if pos >= fields.len() {
-                        self.err(Diagnostic::ty(
+                        self.err(diagnostics::aggregate_too_many(
                             it.span,
-                            format!(
-                                "too many components for `{}` ({} expected)",
-                                self.types.name(t),
-                                fields.len()
-                            ),
+                            self.types.name(t),
+                            fields.len(),
                         ));
                         continue;
                     }
@@ -2606,22 +2417,16 @@ impl Checker {
                                 vec![i]
                             }
                             None => {
-                                self.err(Diagnostic::name(
+                                self.err(diagnostics::aggregate_no_component(
                                     n.span,
-                                    format!(
-                                        "`{}` has no component `{}`",
-                                        self.types.name(t),
-                                        n.name
-                                    ),
+                                    self.types.name(t),
+                                    &n.name,
                                 ));
                                 vec![]
                             }
                         },
                         Choice::Expr(x) | Choice::Range(x, _) => {
-                            self.err(Diagnostic::syntax(
-                                x.span,
-                                "a record aggregate names its components",
-                            ));
+                            self.err(diagnostics::record_aggregate_unnamed(x.span));
                             vec![]
                         }
                     };
@@ -2646,13 +2451,10 @@ impl Checker {
                 match v {
                     Some(v) => out.push(v),
                     None => {
-                        self.err(Diagnostic::ty(
+                        self.err(diagnostics::aggregate_lacks(
                             sp,
-                            format!(
-                                "the aggregate lacks component `{}` of `{}`",
-                                fields[i].name,
-                                self.types.name(t)
-                            ),
+                            &fields[i].name,
+                            self.types.name(t),
                         ));
                         out.push(self.err_ex(sp));
                     }
@@ -2665,10 +2467,7 @@ impl Checker {
             .array(t)
             .map(|(i, e, b)| (i.to_vec(), e, b.cloned()))
         else {
-            self.err(Diagnostic::ty(
-                sp,
-                format!("an aggregate cannot have type `{}`", self.tname(t)),
-            ));
+            self.err(diagnostics::aggregate_wrong_type(sp, &self.tname(t)));
             return self.err_ex(sp);
         };
         // For several dimensions, components are rows of the remaining dimensions.
@@ -2733,10 +2532,7 @@ impl Checker {
             }
         }
         if !positional.is_empty() && !named.is_empty() {
-            self.err(Diagnostic::syntax(
-                sp,
-                "an array aggregate is either positional or named, not both",
-            ));
+            self.err(diagnostics::aggregate_mixed(sp));
         }
         // RM 4.3.3(18): static choices never cover an index twice.
         let mut seen: Vec<(i128, i128, Span)> = Vec::new();
@@ -2765,26 +2561,12 @@ impl Checker {
                 } else {
                     (sp2, prev_sp)
                 };
-                self.err(
-                    Diagnostic::ty(
-                        second,
-                        "this aggregate choice covers an index a choice before it covers",
-                    )
-                    .with_note(first, "covered here already")
-                    .with_hint("each index of a named array aggregate is given once"),
-                );
+                self.err(diagnostics::aggregate_choice_twice(second, first));
                 break;
             }
         }
         if others.is_some() && bounds.is_none() {
-            self.err(
-                Diagnostic::ty(sp, "`others` needs the bounds from the context").with_hint(
-                    format!(
-                        "use a constrained subtype, e.g. `{} (1 .. 3)'(others => ...)`",
-                        self.types.name(t)
-                    ),
-                ),
-            );
+            self.err(diagnostics::others_needs_bounds(sp, self.types.name(t)));
         }
         // A static length check for positional aggregates of constrained types.
         if let Some(b) = &bounds
@@ -2795,14 +2577,11 @@ impl Checker {
         {
             let len = (h - l + 1).max(0) as usize;
             if positional.len() != len {
-                self.err(Diagnostic::ty(
+                self.err(diagnostics::aggregate_length(
                     sp,
-                    format!(
-                        "`{}` needs {} components in this dimension, the aggregate has {}",
-                        self.types.name(t),
-                        len,
-                        positional.len()
-                    ),
+                    self.types.name(t),
+                    len,
+                    positional.len(),
                 ));
             }
         }
@@ -2839,10 +2618,7 @@ impl Checker {
                     }
                 }
                 None => {
-                    this.err(Diagnostic::ty(
-                        sp,
-                        format!("`'{}` needs an argument", a.name),
-                    ));
+                    this.err(diagnostics::attribute_needs_argument(sp, &a.name));
                     this.err_ex(sp)
                 }
             }
@@ -2855,10 +2631,7 @@ impl Checker {
                     match this.static_value(&v) {
                         Some(Static::Int(n)) if n >= 1 => n as u8,
                         _ => {
-                            this.err(Diagnostic::ty(
-                                x.span,
-                                "the dimension must be a static positive integer",
-                            ));
+                            this.err(diagnostics::dimension_not_static(x.span));
                             1
                         }
                     }
@@ -2887,7 +2660,7 @@ impl Checker {
                         .map(|(i, _, b)| (i.to_vec(), b.cloned().unwrap_or_default()))
                         .unwrap_or_default();
                     let Some((lo, hi)) = bounds.get(d - 1).cloned() else {
-                        self.err(Diagnostic::ty(sp, "no such dimension"));
+                        self.err(diagnostics::no_such_dimension(sp));
                         return self.err_ex(sp);
                     };
                     let it = idx[d - 1];
@@ -2952,7 +2725,7 @@ impl Checker {
                         x
                     };
                     if !self.types.is_integer(x.ty) && x.ty != ERROR {
-                        self.err(Diagnostic::ty(x.span, "`'Val` needs an integer"));
+                        self.err(diagnostics::val_needs_integer(x.span));
                     }
                     // `S'Val` is a function of S's base type (RM 3.5.5): a
                     // position outside a subtype's range is no error.
@@ -2960,16 +2733,13 @@ impl Checker {
                         (self.static_value(&x), self.types.discrete_bounds(base))
                         && (v < l || v > h)
                     {
-                        self.err(
-                            Diagnostic::ty(
-                                x.span,
-                                format!(
-                                    "{v} is not a position of `{}` (its positions are {l} .. {h})",
-                                    self.types.name(base)
-                                ),
-                            )
-                            .with_label("static value out of range"),
-                        );
+                        self.err(diagnostics::not_a_position(
+                            x.span,
+                            v,
+                            self.types.name(base),
+                            l,
+                            h,
+                        ));
                     }
                     let v = self.mk(ExKind::Attr(AttrOp::Val, Box::new(vec![x])), base, sp);
                     return self.coerce_force_check(v, base);
@@ -2992,16 +2762,12 @@ impl Checker {
                         } else {
                             ("first", "Pred")
                         };
-                        self.err(
-                            Diagnostic::ty(
-                                x.span,
-                                format!(
-                                    "`'{which}` of the {end} value of `{}` has no value",
-                                    self.types.name(base)
-                                ),
-                            )
-                            .with_label("static value out of range"),
-                        );
+                        self.err(diagnostics::no_successor(
+                            x.span,
+                            which,
+                            end,
+                            self.types.name(base),
+                        ));
                     }
                     let v = self.mk(ExKind::Attr(op, Box::new(vec![x])), base, sp);
                     return self.coerce_force_check(v, base);
@@ -3031,11 +2797,15 @@ impl Checker {
                     return self.mk(ExKind::Int(self.types.digits(t) as i64), UNIV_INT, sp);
                 }
                 "range" => {
-                    self.err(Diagnostic::ty(sp, "`'Range` can only be used as a range (in `for` loops, memberships and constraints)"));
+                    self.err(diagnostics::range_outside_range_context(sp));
                     return self.err_ex(sp);
                 }
                 _ => {
-                    self.err(Diagnostic::ty(a.span, format!("`'{}` is not supported for the type `{}`", a.name, self.types.name(t))).with_hint("AdaIR supports First Last Range Length Image Value Pos Val Succ Pred Min Max"));
+                    self.err(diagnostics::attribute_unsupported_for_type(
+                        a.span,
+                        &a.name,
+                        self.types.name(t),
+                    ));
                     return self.err_ex(sp);
                 }
             }
@@ -3058,13 +2828,10 @@ impl Checker {
         {
             let d = dim(self);
             if d as usize > idx.len() {
-                self.err(Diagnostic::ty(
+                self.err(diagnostics::too_few_dimensions(
                     sp,
-                    format!(
-                        "`{}` has only {} dimension(s)",
-                        self.types.name(pe.ty),
-                        idx.len()
-                    ),
+                    self.types.name(pe.ty),
+                    idx.len(),
                 ));
                 return self.err_ex(sp);
             }
@@ -3082,13 +2849,12 @@ impl Checker {
                     sp,
                 ),
                 "range" => {
-                    self.err(Diagnostic::ty(sp, "`'Range` can only be used as a range (in `for` loops, memberships and constraints)"));
+                    self.err(diagnostics::range_outside_range_context(sp));
                     self.err_ex(sp)
                 }
                 _ => {
-                    self.err(Diagnostic::ty(
-                        a.span,
-                        format!("`'{}` is not supported on arrays", a.name),
+                    self.err(diagnostics::attribute_unsupported_on_arrays(
+                        a.span, &a.name,
                     ));
                     self.err_ex(sp)
                 }
@@ -3107,11 +2873,7 @@ impl Checker {
             return self.image(pe, t, sp);
         }
         let _ = want;
-        self.err(
-            Diagnostic::ty(a.span, format!("`'{}` is not supported here", a.name)).with_hint(
-                "AdaIR supports First Last Range Length Image Value Pos Val Succ Pred Min Max",
-            ),
-        );
+        self.err(diagnostics::attribute_unsupported_here(a.span, &a.name));
         self.err_ex(sp)
     }
 
@@ -3172,12 +2934,9 @@ impl Checker {
             {
                 return (l.clone(), h.clone(), idx[d as usize - 1]);
             }
-            self.err(Diagnostic::ty(
+            self.err(diagnostics::range_needs_scalar_or_array(
                 sp,
-                format!(
-                    "`{}'Range` needs a scalar or constrained array type",
-                    self.types.name(t)
-                ),
+                self.types.name(t),
             ));
             return (self.err_ex(sp), self.err_ex(sp), ERROR);
         }
@@ -3201,10 +2960,7 @@ impl Checker {
             }
             _ => {
                 if pe.ty != ERROR {
-                    self.err(Diagnostic::ty(
-                        sp,
-                        format!("`'Range` needs an array, this is `{}`", self.tname(pe.ty)),
-                    ));
+                    self.err(diagnostics::range_needs_array(sp, &self.tname(pe.ty)));
                 }
                 (self.err_ex(sp), self.err_ex(sp), ERROR)
             }
@@ -3262,17 +3018,7 @@ impl Checker {
             return;
         }
         let name = self.funcs[f as usize].name.clone();
-        self.err(
-            Diagnostic::new(
-                crate::diag::Phase::Warning,
-                span,
-                format!(
-                    "`{name}` exists only on the simulator: this script cannot finish on a real arm"
-                ),
-            )
-            .with_label("raises CommandNotSupported with --port, in the rehearsal too")
-            .with_hint("keep simulator-only calls in scripts that never drive the arm".to_string()),
-        );
+        self.err(diagnostics::simulator_only(span, &name));
     }
 
     /// A literal over 2 pi where AdaIR expects radians (an angle of `RotX`,
@@ -3304,15 +3050,7 @@ impl Checker {
                 && v.abs() > std::f64::consts::TAU
             {
                 let text = self.snippet(e.span);
-                self.err(
-                    Diagnostic::new(
-                        crate::diag::Phase::Warning,
-                        e.span,
-                        format!("{text} radians is more than a full turn; did you mean degrees?"),
-                    )
-                    .with_label("AdaIR angles are in radians")
-                    .with_hint(format!("write `Rad ({text})` for {text} degrees")),
-                );
+                self.err(diagnostics::degrees_for_radians(e.span, &text));
             }
         }
     }

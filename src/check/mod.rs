@@ -7,6 +7,7 @@
 
 use crate::diag::Offsets as _;
 mod decl;
+mod diagnostics;
 pub mod exact;
 mod expr;
 pub mod index;
@@ -541,10 +542,7 @@ impl Checker {
             if clash
                 && !matches!(prev.last(), Some(Entity::Type(t)) if matches!(self.types.kind(*t), TypeKind::Incomplete))
             {
-                self.err(Diagnostic::name(
-                    id.span,
-                    format!("`{}` is already declared in this scope", id.name),
-                ));
+                self.err(diagnostics::declared_twice(id.span, &id.name));
             }
         }
         self.index_def(&id.name, id.span, &e, None);
@@ -568,20 +566,7 @@ impl Checker {
         }
         for i in before {
             if let Some(d) = self.diags.get_mut(i) {
-                d.message = format!("`{}` is used before its declaration", id.name);
-                d.label = "used here before it is declared".into();
-                d.hint = Some(if is_func {
-                    format!(
-                        "declare `{}`'s specification before its first use (Ada resolves names in declaration order)",
-                        id.name
-                    )
-                } else {
-                    format!(
-                        "move the declaration of `{}` above its first use (Ada resolves names in declaration order)",
-                        id.name
-                    )
-                });
-                d.notes.push((id.span, "declared here".into()));
+                *d = diagnostics::used_before_declaration(d.span, &id.name, id.span, is_func);
             }
         }
         self.declare(&id.name, e);
@@ -861,16 +846,12 @@ impl Checker {
         let (tasks0, prots0) = (self.tasks.len(), self.prots.len());
         let r = self.check_unit_items(unit);
         // Every task and protected type declared here has its body here.
-        let mut missing: Vec<Diagnostic> = self.tasks
+        let mut missing: Vec<Diagnostic> = self
+            .tasks
             .iter()
             .skip(tasks0)
             .filter(|t| t.body.is_none())
-            .map(|t| {
-                Diagnostic::name(t.span, format!("task `{}` has no body", t.name)).with_hint(format!(
-                    "write `task body {} is ... begin ... end {};` in the same declarative part (in the REPL: in the same entry)",
-                    t.name, t.name
-                ))
-            })
+            .map(|t| diagnostics::task_without_body(t.span, &t.name))
             .collect();
         for (k, p) in self.prots.iter().enumerate().skip(prots0) {
             let unfinished = p.entries.iter().any(|e| e.body.is_none())
@@ -878,12 +859,7 @@ impl Checker {
                     .iter()
                     .any(|(_, _, real, _)| self.funcs[*real as usize].body.is_none());
             if unfinished && !self.prot_bodied.contains(&(k as u32)) {
-                missing.push(
-                    Diagnostic::name(p.span, format!("protected `{}` has no body", p.name)).with_hint(format!(
-                        "write `protected body {} is ... end {};` in the same declarative part (in the REPL: in the same entry)",
-                        p.name, p.name
-                    )),
-                );
+                missing.push(diagnostics::protected_without_body(p.span, &p.name));
             }
         }
         for d in missing {
@@ -1007,10 +983,7 @@ impl Checker {
         if self.package_of(n, false).is_none() {
             let text = crate::syntax::parser::expr_text(n);
             self.missing_units.push(text.to_lowercase());
-            self.err(
-                Diagnostic::name(n.span, format!("no library unit named `{text}`"))
-                    .with_hint("AdaIR provides Ada.Text_IO, Ada.Integer_Text_IO, Ada.Float_Text_IO, Ada.Numerics, Ada.Numerics.Elementary_Functions, Ada.Calendar, Ada.Real_Time, Ada.Exceptions and AdaIR"),
-            );
+            self.err(diagnostics::no_library_unit(n.span, &text));
         }
     }
 
@@ -1051,10 +1024,7 @@ impl Checker {
                         }
                         Some(_) => {
                             let text = crate::syntax::parser::expr_text(n);
-                            self.err(Diagnostic::name(
-                                n.span,
-                                format!("`{text}` is not a package"),
-                            ));
+                            self.err(diagnostics::not_a_package(n.span, &text));
                         }
                         None => {}
                     }
@@ -1080,15 +1050,14 @@ impl Checker {
                     self.index_use(id, &es);
                 }
                 if es.is_empty() && report && !self.unsupported_names.contains(&*id.key) {
-                    let mut d = Diagnostic::name(id.span, format!("`{}` is not declared", id.name))
-                        .with_label("undefined name");
+                    let mut d = diagnostics::not_declared(id.span, &id.name);
                     if let Some(pkg) = self.package_declaring(&id.key) {
                         d = d.with_hint(format!(
                             "`{}` is declared in `{pkg}`: add `with {pkg}; use {pkg};` at the top of the file",
                             id.name
                         ));
                     } else if let Some(s) = self.suggest(&id.key) {
-                        d = d.with_hint(format!("did you mean `{s}`?"));
+                        d = d.with_guess(format!("did you mean `{s}`?"));
                     }
                     let n = self.diags.len();
                     self.err(d);
@@ -1116,10 +1085,7 @@ impl Checker {
                         self.index_use(id, &es);
                     }
                     if es.is_empty() && report {
-                        self.err(Diagnostic::name(
-                            id.span,
-                            format!("`{}` is not declared in `{}`", id.name, pn.name),
-                        ));
+                        self.err(diagnostics::not_declared_in(id.span, &id.name, &pn.name));
                     }
                     return es;
                 }
@@ -1150,10 +1116,7 @@ impl Checker {
                         }
                         if es.is_empty() && report {
                             let pname = self.packages[pk].name.clone();
-                            let mut d = Diagnostic::name(
-                                id.span,
-                                format!("`{}` is not declared in `{pname}`", id.name),
-                            );
+                            let mut d = diagnostics::not_declared_in(id.span, &id.name, &pname);
                             let cands: Vec<String> =
                                 self.packages[pk].names.keys().cloned().collect();
                             if let Some(best) = cands
@@ -1161,7 +1124,7 @@ impl Checker {
                                 .filter(|c| edit_distance(&id.key, c) <= 2)
                                 .min_by_key(|c| edit_distance(&id.key, c))
                             {
-                                d = d.with_hint(format!(
+                                d = d.with_guess(format!(
                                     "did you mean `{pname}.{}`?",
                                     self.spelled(best)
                                 ));
@@ -1382,15 +1345,7 @@ impl Checker {
             .collect();
         never.sort_by_key(|e| e.1.start);
         for (name, span) in never {
-            self.err(
-                Diagnostic::new(
-                    crate::diag::Phase::Warning,
-                    span,
-                    format!("variable `{name}` is never read"),
-                )
-                .with_label("declared here")
-                .with_hint("remove it, or use it; a value that is only assigned is lost"),
-            );
+            self.err(diagnostics::never_read(span, &name));
         }
     }
 }

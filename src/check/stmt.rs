@@ -103,10 +103,7 @@ impl Checker {
                         }
                         Some(_) => {
                             let t = crate::syntax::parser::expr_text(n);
-                            self.err(Diagnostic::name(
-                                n.span,
-                                format!("`{t}` is not an exception"),
-                            ));
+                            self.err(diagnostics::not_an_exception(n.span, &t));
                         }
                         None => {}
                     },
@@ -141,20 +138,10 @@ impl Checker {
     fn cond(&mut self, e: &ast::Expr) -> Ex {
         let c = self.expr(e, Some(BOOLEAN));
         if c.ty != ERROR && self.types.base(c.ty) != BOOLEAN {
-            self.err(
-                Diagnostic::ty(
-                    e.span,
-                    format!(
-                        "a condition must be Boolean, this is {}",
-                        if self.types.is_universal(c.ty) {
-                            "a number".to_string()
-                        } else {
-                            format!("`{}`", self.types.name(c.ty))
-                        }
-                    ),
-                )
-                .with_hint("compare it: `X /= 0`"),
-            );
+            self.err(diagnostics::condition_not_boolean(
+                e.span,
+                (!self.types.is_universal(c.ty)).then(|| self.types.name(c.ty)),
+            ));
             return c;
         }
         self.coerce(c, BOOLEAN)
@@ -255,19 +242,10 @@ impl Checker {
                 if let (Some(l), Some(e)) = (label, end_label)
                     && l.key != e.key
                 {
-                    self.err(Diagnostic::syntax(
-                        e.span,
-                        format!(
-                            "`end loop {}` does not match the loop name `{}`",
-                            e.name, l.name
-                        ),
-                    ));
+                    self.err(diagnostics::end_loop_mismatch(e.span, &e.name, &l.name));
                 }
                 if let (None, Some(e)) = (label, end_label) {
-                    self.err(Diagnostic::syntax(
-                        e.span,
-                        format!("the loop has no name, but its end says `{}`", e.name),
-                    ));
+                    self.err(diagnostics::end_loop_unnamed(e.span, &e.name));
                 }
                 let id = self.new_loop();
                 self.loops
@@ -350,17 +328,14 @@ impl Checker {
                             .find(|x| x.0.as_deref() == Some(l.key.as_ref()))
                             .map(|x| x.1);
                         if f.is_none() {
-                            self.err(Diagnostic::name(
-                                l.span,
-                                format!("no enclosing loop is named `{}`", l.name),
-                            ));
+                            self.err(diagnostics::no_loop_named(l.span, &l.name));
                             return;
                         }
                         f
                     }
                 };
                 let Some(id) = id else {
-                    self.err(Diagnostic::syntax(sp, "`exit` outside a loop"));
+                    self.err(diagnostics::exit_outside_loop(sp));
                     return;
                 };
                 let c = cond.as_ref().map(|c| self.cond(c));
@@ -378,23 +353,17 @@ impl Checker {
                     }
                     (None, None) if is_sub => StmtKind::Return(None),
                     (None, None) => {
-                        self.err(Diagnostic::syntax(sp, "`return` outside a subprogram"));
+                        self.err(diagnostics::return_outside_subprogram(sp));
                         return;
                     }
                     (Some(v), None) => {
-                        self.err(
-                            Diagnostic::ty(v.span, "a procedure cannot return a value")
-                                .with_hint("make it a function, or write `return;`"),
-                        );
+                        self.err(diagnostics::procedure_returns_value(v.span));
                         return;
                     }
                     (None, Some(t)) => {
-                        self.err(Diagnostic::ty(
+                        self.err(diagnostics::function_returns_nothing(
                             sp,
-                            format!(
-                                "a function must return a value of type `{}`",
-                                self.types.name(t)
-                            ),
+                            self.types.name(t),
                         ));
                         return;
                     }
@@ -444,7 +413,7 @@ impl Checker {
                 match name {
                     None => {
                         if self.in_handler == 0 {
-                            self.err(Diagnostic::syntax(sp, "`raise;` re-raises, so it can only stand in an exception handler").with_hint("name the exception: `raise Constraint_Error;`"));
+                            self.err(diagnostics::reraise_outside_handler(sp));
                             return;
                         }
                         StmtKind::Reraise
@@ -453,10 +422,7 @@ impl Checker {
                         Some(Entity::Exc(e)) => StmtKind::Raise(*e, msg),
                         Some(_) => {
                             let t = crate::syntax::parser::expr_text(n);
-                            self.err(Diagnostic::name(
-                                n.span,
-                                format!("`{t}` is not an exception"),
-                            ));
+                            self.err(diagnostics::not_an_exception(n.span, &t));
                             return;
                         }
                         None => return,
@@ -516,10 +482,7 @@ impl Checker {
                 .is_some_and(|x| !matches!(x, Entity::Package(_)))
         {
             let t = crate::syntax::parser::expr_text(prefix);
-            self.err(
-                Diagnostic::ty(e.span, format!("`{t}` is not a procedure or entry"))
-                    .with_hint("a statement is an assignment `X := ...;` or a procedure call"),
-            );
+            self.err(diagnostics::not_a_procedure_or_entry(e.span, &t));
             for a in args {
                 self.expr(&a.value, None);
             }
@@ -538,18 +501,12 @@ impl Checker {
         if fs.is_empty() {
             if !es.is_empty() {
                 let t = crate::syntax::parser::expr_text(prefix);
-                self.err(
-                    Diagnostic::ty(e.span, format!("`{t}` is not a procedure"))
-                        .with_hint("a statement is an assignment `X := ...;` or a procedure call"),
-                );
+                self.err(diagnostics::not_a_procedure(e.span, &t));
             } else if !matches!(
                 prefix.kind,
                 ast::ExprKind::Name(_) | ast::ExprKind::Select(..)
             ) {
-                self.err(Diagnostic::syntax(
-                    e.span,
-                    "this expression is not a statement",
-                ));
+                self.err(diagnostics::not_a_statement(e.span));
             }
             for a in args {
                 self.expr(&a.value, None);
@@ -581,16 +538,10 @@ impl Checker {
         let arr = self.expr(array, None);
         let Some(index) = self.types.array(arr.ty).map(|(i, _, _)| i.to_vec()) else {
             if arr.ty != ERROR {
-                self.err(
-                    Diagnostic::ty(
-                        array.span,
-                        format!(
-                            "`for ... of` needs an array, and this is of type `{}`",
-                            self.tname(arr.ty)
-                        ),
-                    )
-                    .with_hint("to count, write `for I in A .. B loop`"),
-                );
+                self.err(diagnostics::for_of_needs_array(
+                    array.span,
+                    &self.tname(arr.ty),
+                ));
             }
             let body = self.scoped_stmts(body);
             return StmtKind::Loop { id, body };

@@ -47,10 +47,7 @@ impl Checker {
             Some(Static::Int(v)) => i64::try_from(v).ok(),
             _ => {
                 if x.ty != ERROR {
-                    self.err(Diagnostic::ty(
-                        e.span,
-                        format!("{what} must be a static integer"),
-                    ));
+                    self.err(diagnostics::not_static_integer(e.span, what));
                 }
                 None
             }
@@ -67,10 +64,7 @@ impl Checker {
                 .iter()
                 .any(|x: &EntryDef| x.name.eq_ignore_ascii_case(&e.name.name))
             {
-                self.err(
-                    Diagnostic::name(e.name.span, format!("entry `{}` is declared twice", e.name.name))
-                        .with_hint("entry families and overloaded entries are not supported: give each entry its own name"),
-                );
+                self.err(diagnostics::entry_declared_twice(e.name.span, &e.name.name));
             }
             let params = self.params(&e.params);
             let f = self.new_func(format!("{name}.{}", e.name.name), params, None, e.name.span);
@@ -85,34 +79,25 @@ impl Checker {
                 .iter()
                 .position(|x| x.name.eq_ignore_ascii_case(&id.name))
             else {
-                self.err(Diagnostic::name(
-                    id.span,
-                    format!("`{}` is not an entry of task `{name}`", id.name),
-                ));
+                self.err(diagnostics::not_an_entry_of_task(id.span, &id.name, &name));
                 continue;
             };
             if !self.funcs[entries[i].profile as usize].params.is_empty() {
-                self.err(
-                    Diagnostic::ty(id.span, format!("the interrupt entry `{}` has parameters", id.name))
-                        .with_hint("an interrupt carries no data: declare `entry Interrupt;` and read the device's registers"),
-                );
+                self.err(diagnostics::interrupt_entry_with_parameters(
+                    id.span, &id.name,
+                ));
             }
             if let Some(a) = self.static_int(addr, "an address") {
                 match u32::try_from(a).ok().and_then(|x| self.devices.lookup(x)) {
                     None => self.err(self.no_device(addr.span, a)),
                     Some((d, role)) if role != crate::devices::Role::Interrupt => {
                         let dname = self.devices.devices()[d].name.clone();
-                        self.err(
-                            Diagnostic::ty(
-                                addr.span,
-                                format!(
-                                    "{} is the {} of device `{dname}`, not an interrupt",
-                                    crate::devices::ada_address(a as u32),
-                                    role.describe()
-                                ),
-                            )
-                            .with_hint("an entry is bound to an interrupt address; map a register to an object: `R : Word; for R use at ...;`"),
-                        );
+                        self.err(diagnostics::address_not_an_interrupt(
+                            addr.span,
+                            &crate::devices::ada_address(a as u32),
+                            role.describe(),
+                            &dname,
+                        ));
                     }
                     Some(_) => entries[i].interrupt = Some(a),
                 }
@@ -152,23 +137,14 @@ impl Checker {
 
     pub(super) fn task_body(&mut self, b: &ast::TaskBody, span: Span) {
         let Some(TypeKind::Task(k)) = self.body_target(&b.name) else {
-            self.err(
-                Diagnostic::name(
-                    b.name.span,
-                    format!("task body `{}` has no task declaration", b.name.name),
-                )
-                .with_hint(format!(
-                    "declare `task {} is ... end {};` (or `task type`) before its body",
-                    b.name.name, b.name.name
-                )),
-            );
+            self.err(diagnostics::task_body_without_spec(
+                b.name.span,
+                &b.name.name,
+            ));
             return;
         };
         if self.tasks[k as usize].body.is_some() {
-            self.err(Diagnostic::name(
-                b.name.span,
-                format!("task `{}` already has a body", b.name.name),
-            ));
+            self.err(diagnostics::task_body_twice(b.name.span, &b.name.name));
             return;
         }
         let f = self.new_func(b.name.name.to_string(), Vec::new(), None, span);
@@ -220,13 +196,7 @@ impl Checker {
                     }
                 }
                 ast::DeclKind::Pragma { .. } => {}
-                _ => self.err(
-                    Diagnostic::unsupported(
-                        d.span,
-                        "this declaration in a protected type's private part",
-                    )
-                    .with_hint("the private part holds the components: `Count : Natural := 0;`"),
-                ),
+                _ => self.err(diagnostics::unsupported_in_protected_private(d.span)),
             }
         }
         let rec = self
@@ -295,12 +265,9 @@ impl Checker {
 
     pub(super) fn protected_body(&mut self, b: &ast::ProtectedBody) {
         let Some(TypeKind::Protected(k)) = self.body_target(&b.name) else {
-            self.err(Diagnostic::name(
+            self.err(diagnostics::protected_body_without_spec(
                 b.name.span,
-                format!(
-                    "protected body `{}` has no protected declaration",
-                    b.name.name
-                ),
+                &b.name.name,
             ));
             return;
         };
@@ -317,12 +284,7 @@ impl Checker {
                 ast::DeclKind::SubprogramBody(sb) => self.prot_op_body(k, sb),
                 ast::DeclKind::EntryBody(eb) => self.entry_body_of(k, eb),
                 ast::DeclKind::Pragma { .. } => {}
-                _ => self.err(
-                    Diagnostic::unsupported(d.span, "this declaration in a protected body")
-                        .with_hint(
-                            "a protected body holds the bodies of its subprograms and entries",
-                        ),
-                ),
+                _ => self.err(diagnostics::unsupported_in_protected_body(d.span)),
             }
         }
         self.pop_scope();
@@ -330,21 +292,20 @@ impl Checker {
         for (key, profile, real, _) in &members {
             if self.funcs[*real as usize].body.is_none() {
                 let what = self.spelled(key);
-                self.err(Diagnostic::name(
+                self.err(diagnostics::protected_body_lacks(
                     b.span,
-                    format!("protected body `{}` lacks a body for `{what}`", b.name.name),
+                    &b.name.name,
+                    &what,
                 ));
                 let _ = profile;
             }
         }
         for e in self.prots[k as usize].entries.clone() {
             if e.body.is_none() {
-                self.err(Diagnostic::name(
+                self.err(diagnostics::protected_body_lacks_entry(
                     b.span,
-                    format!(
-                        "protected body `{}` lacks a body for entry `{}`",
-                        b.name.name, e.name
-                    ),
+                    &b.name.name,
+                    &e.name,
                 ));
             }
         }
@@ -361,21 +322,15 @@ impl Checker {
             })
             .map(|(_, _, r, _)| *r);
         let Some(real) = found else {
-            self.err(Diagnostic::name(
+            self.err(diagnostics::not_in_protected_with_profile(
                 b.spec.span,
-                format!(
-                    "`{}` is not declared in protected `{}` with this profile",
-                    b.spec.name.display(),
-                    self.prots[k as usize].name
-                ),
+                &b.spec.name.display(),
+                &self.prots[k as usize].name,
             ));
             return;
         };
         if self.funcs[real as usize].body.is_some() {
-            self.err(Diagnostic::name(
-                b.spec.span,
-                format!("`{}` already has a body", b.spec.name.display()),
-            ));
+            self.err(diagnostics::body_twice(b.spec.span, &b.spec.name.display()));
             return;
         }
         let written: Vec<&ast::Ident> = b.spec.params.iter().flat_map(|p| p.names.iter()).collect();
@@ -389,12 +344,9 @@ impl Checker {
             BodyKind::Protected(k),
         );
         if ret.is_some() && !saw {
-            self.err(Diagnostic::ty(
+            self.err(diagnostics::protected_function_without_return(
                 b.spec.span,
-                format!(
-                    "function `{}` has no `return` statement",
-                    b.spec.name.display()
-                ),
+                &b.spec.name.display(),
             ));
         }
     }
@@ -405,10 +357,7 @@ impl Checker {
                 let k = *k;
                 self.entry_body_of(k, b)
             }
-            None => self.err(Diagnostic::syntax(
-                b.span,
-                "an entry body stands only in a protected body",
-            )),
+            None => self.err(diagnostics::entry_body_outside_protected(b.span)),
         }
     }
 
@@ -418,32 +367,24 @@ impl Checker {
             .iter()
             .position(|e| e.name.eq_ignore_ascii_case(&b.name.name))
         else {
-            self.err(Diagnostic::name(
+            self.err(diagnostics::not_an_entry_of_protected(
                 b.name.span,
-                format!(
-                    "`{}` is not an entry of protected `{}`",
-                    b.name.name, self.prots[k as usize].name
-                ),
+                &b.name.name,
+                &self.prots[k as usize].name,
             ));
             return;
         };
         let entry = self.prots[k as usize].entries[i].clone();
         if entry.body.is_some() {
-            self.err(Diagnostic::name(
-                b.name.span,
-                format!("entry `{}` already has a body", b.name.name),
-            ));
+            self.err(diagnostics::entry_body_twice(b.name.span, &b.name.name));
             return;
         }
         let params = self.params(&b.params);
         let profile = self.funcs[entry.profile as usize].clone();
         if !self.same_profile(&profile, &params, None) {
-            self.err(Diagnostic::ty(
+            self.err(diagnostics::entry_body_params_differ(
                 b.name.span,
-                format!(
-                    "the parameters of entry body `{}` differ from its declaration",
-                    b.name.name
-                ),
+                &b.name.name,
             ));
         }
         let access = self.prot_access(k);
@@ -557,13 +498,7 @@ impl Checker {
                 // it may not call a procedure of it.
                 if Some(obj) == self.prot_function_obj && self.funcs[real as usize].ret.is_none() {
                     let name = self.funcs[real as usize].name.clone();
-                    self.err(
-                        Diagnostic::ty(
-                            span,
-                            format!("a protected function cannot call `{name}`, a protected procedure of its object"),
-                        )
-                        .with_hint("call it from a protected procedure or entry (a function only reads the object)"),
-                    );
+                    self.err(diagnostics::protected_function_calls_procedure(span, &name));
                 }
                 let access = self.prot_access(k);
                 args.push(Arg {
@@ -672,18 +607,11 @@ impl Checker {
             .map(|(_, p, _, _)| *p)
             .collect();
         if fs.is_empty() {
-            self.err(Diagnostic::name(
+            self.err(diagnostics::not_a_protected_operation(
                 id.span,
-                format!(
-                    "`{}` is not a {} of protected `{}`",
-                    id.name,
-                    if procedure {
-                        "procedure or entry"
-                    } else {
-                        "function"
-                    },
-                    self.prots[k as usize].name
-                ),
+                &id.name,
+                procedure,
+                &self.prots[k as usize].name,
             ));
             return None;
         }
@@ -706,13 +634,7 @@ impl Checker {
             TypeKind::Task(_) => Some(x),
             TypeKind::Error => None,
             _ => {
-                self.err(Diagnostic::ty(
-                    e.span,
-                    format!(
-                        "a task is expected here, this is `{}`",
-                        self.types.name(x.ty)
-                    ),
-                ));
+                self.err(diagnostics::task_expected(e.span, self.types.name(x.ty)));
                 None
             }
         }
@@ -776,10 +698,7 @@ impl Checker {
                     .position(|e| e.name.eq_ignore_ascii_case(&id.name))
                 else {
                     let names: Vec<String> = def.entries.iter().map(|e| e.name.clone()).collect();
-                    let mut d = Diagnostic::name(
-                        id.span,
-                        format!("`{}` is not an entry of task `{}`", id.name, def.name),
-                    );
+                    let mut d = diagnostics::not_an_entry_of_task(id.span, &id.name, &def.name);
                     if !names.is_empty() {
                         d = d.with_hint(format!("its entries: {}", names.join(", ")));
                     }
@@ -837,15 +756,12 @@ impl Checker {
             .and_then(|c| c.func)
             .map(|f| format!("procedure {}", self.funcs[f as usize].name))
             .unwrap_or_else(|| "the main program".into());
-        let misplaced = format!(
-            "an accept statement may only appear in the body of the task that declares the entry, not in {here}"
-        );
         let Some(&k) = self.task_ctx.last() else {
-            self.err(Diagnostic::syntax(sp, misplaced));
+            self.err(diagnostics::misplaced_accept(sp, &here));
             return None;
         };
         if self.ctx.last().and_then(|c| c.func) != self.tasks[k as usize].body {
-            self.err(Diagnostic::syntax(sp, misplaced));
+            self.err(diagnostics::misplaced_accept(sp, &here));
             return None;
         }
         let def = self.tasks[k as usize].clone();
@@ -855,19 +771,12 @@ impl Checker {
             .position(|e| e.name.eq_ignore_ascii_case(&entry.name))
         else {
             let names: Vec<&str> = def.entries.iter().map(|e| e.name.as_str()).collect();
-            self.err(
-                Diagnostic::name(
-                    entry.span,
-                    format!(
-                        "no entry `{}` is declared for task `{}`",
-                        entry.name, def.name
-                    ),
-                )
-                .with_hint(format!(
-                    "the accept statement must name one of its entries ({})",
-                    names.join(", ")
-                )),
-            );
+            self.err(diagnostics::no_such_entry(
+                entry.span,
+                &entry.name,
+                &def.name,
+                &names,
+            ));
             return None;
         };
         if let Some(&(_, _, outer)) = self
@@ -875,17 +784,7 @@ impl Checker {
             .iter()
             .find(|(t, e, _)| *t == k && *e == i as u32)
         {
-            self.err(
-                Diagnostic::syntax(
-                    sp,
-                    format!(
-                        "an accept statement for `{}` inside the body of an accept of the same entry",
-                        entry.name
-                    ),
-                )
-                .with_note(outer, "the enclosing accept")
-                .with_hint("Ada forbids it (RM 9.5.2(15)): the entry's caller is still in the rendezvous"),
-            );
+            self.err(diagnostics::nested_accept(sp, &entry.name, outer));
             return None;
         }
         let profile = self.funcs[def.entries[i].profile as usize].clone();
@@ -904,25 +803,13 @@ impl Checker {
                 })
                 .collect();
             let decl = self.declared_at(def.entries[i].profile);
-            let what = match (ps.len(), want.len()) {
-                (0, 1) => format!(
-                    "`accept {}` has no parameters but the entry {}{decl} has one, `{}`",
-                    entry.name, entry.name, want[0]
-                ),
-                _ => format!(
-                    "the parameters of `accept {}` differ from those of the entry {}{decl}",
-                    entry.name, entry.name
-                ),
-            };
-            let with = if want.is_empty() {
-                String::new()
-            } else {
-                format!(" ({})", want.join("; "))
-            };
-            self.err(Diagnostic::ty(sp, what).with_hint(format!(
-                "accept {}{with} do ... end {};",
-                entry.name, entry.name
-            )));
+            self.err(diagnostics::accept_params_differ(
+                sp,
+                &entry.name,
+                &decl,
+                ps.len(),
+                &want,
+            ));
             return None;
         }
         self.push_scope();
@@ -955,16 +842,10 @@ impl Checker {
         if until {
             let e = self.expr(d, None);
             if e.ty != ERROR && !matches!(self.types.kind(e.ty), TypeKind::Time) {
-                self.err(
-                    Diagnostic::ty(
-                        d.span,
-                        format!(
-                            "`delay until` needs a time, this is `{}`",
-                            self.types.name(e.ty)
-                        ),
-                    )
-                    .with_hint("`delay until Clock + 1.0;` (Ada.Calendar or Ada.Real_Time)"),
-                );
+                self.err(diagnostics::delay_until_needs_time(
+                    d.span,
+                    self.types.name(e.ty),
+                ));
             }
             e
         } else {
@@ -986,10 +867,7 @@ impl Checker {
         if let Some(K::Call(call, then)) = alts.first().map(|a| &a.kind) {
             let call_stmt = self.call_stmt(call)?;
             let StmtKind::EntryCall(ec) = call_stmt else {
-                self.err(Diagnostic::ty(
-                    call.span,
-                    "a timed or conditional call must call an entry",
-                ));
+                self.err(diagnostics::timed_call_not_entry(call.span));
                 return None;
             };
             let then = self.scoped(then);
@@ -999,13 +877,7 @@ impl Checker {
                 }
                 Some(K::Else(s)) if alts.len() == 2 => (None, self.scoped(s)),
                 _ => {
-                    self.err(
-                        Diagnostic::syntax(
-                            sp,
-                            "an entry call in `select` takes one `or delay ...;` or one `else`",
-                        )
-                        .with_hint("`select T.E; or delay 1.0; Put_Line (\"late\"); end select;`"),
-                    );
+                    self.err(diagnostics::entry_call_select_alternatives(sp));
                     return None;
                 }
             };
@@ -1043,10 +915,7 @@ impl Checker {
                 K::Delay(until, d, then) => {
                     let guard = self.guard(&a.guard);
                     if out.delay.is_some() || out.terminate.is_some() {
-                        self.err(Diagnostic::syntax(
-                            a.span,
-                            "a `select` has at most one `delay` or `terminate` alternative here",
-                        ));
+                        self.err(diagnostics::select_one_delay_or_terminate(a.span));
                         continue;
                     }
                     let d = self.delay_amount(*until, d);
@@ -1056,36 +925,24 @@ impl Checker {
                 K::Terminate => {
                     let guard = self.guard(&a.guard);
                     if out.delay.is_some() || out.terminate.is_some() {
-                        self.err(Diagnostic::syntax(
-                            a.span,
-                            "a `select` cannot have both `terminate` and `delay`, nor two of them",
-                        ));
+                        self.err(diagnostics::select_terminate_and_delay(a.span));
                         continue;
                     }
                     out.terminate = Some(guard);
                 }
                 K::Else(s) => {
                     if out.delay.is_some() || out.terminate.is_some() {
-                        self.err(Diagnostic::syntax(
-                            a.span,
-                            "a `select` with `else` has no `delay` or `terminate` alternative",
-                        ));
+                        self.err(diagnostics::select_else_with_delay(a.span));
                     }
                     out.els = Some(self.scoped(s));
                 }
                 K::Call(c, _) => {
-                    self.err(Diagnostic::syntax(
-                        c.span,
-                        "an entry call stands only first in a timed or conditional call",
-                    ));
+                    self.err(diagnostics::entry_call_not_first(c.span));
                 }
             }
         }
         if out.alts.is_empty() {
-            self.err(Diagnostic::syntax(
-                sp,
-                "a selective accept needs at least one `accept` alternative",
-            ));
+            self.err(diagnostics::select_without_accept(sp));
             return None;
         }
         Some(StmtKind::Select(Box::new(out)))
@@ -1135,13 +992,7 @@ impl Checker {
                     sp,
                 ));
             }
-            self.err(Diagnostic::name(
-                id.span,
-                format!(
-                    "`{}'Count` needs an entry of the enclosing task or protected body",
-                    id.name
-                ),
-            ));
+            self.err(diagnostics::count_needs_entry(id.span, &id.name));
             return Some(self.err_ex(sp));
         }
         let t = self.task_value(p)?;
@@ -1169,13 +1020,11 @@ impl Checker {
         };
         let dname = self.devices.devices()[dev].name.clone();
         if role == crate::devices::Role::Interrupt {
-            self.err(
-                Diagnostic::ty(
-                    address.span,
-                    format!("{here} is the interrupt of device `{dname}`: an object cannot be mapped to it"),
-                )
-                .with_hint(format!("bind an entry to it in a task: `entry Interrupt; for Interrupt use at {here};`")),
-            );
+            self.err(diagnostics::object_at_interrupt(
+                address.span,
+                &here,
+                &dname,
+            ));
             return;
         }
         let Some(Entity::Var { ty, var, .. }) = self
@@ -1184,12 +1033,8 @@ impl Checker {
             .and_then(|s| s.names.get(&*name.key))
             .and_then(|es| es.last().cloned())
         else {
-            self.err(Diagnostic::name(
-                name.span,
-                format!(
-                    "`{}` is not an object declared in this declarative part",
-                    name.name
-                ),
+            self.err(diagnostics::address_clause_not_object(
+                name.span, &name.name,
             ));
             return;
         };
@@ -1204,13 +1049,7 @@ impl Checker {
             })
         });
         if !self.types.is_integer(ty) && !bits {
-            self.err(
-                Diagnostic::ty(
-                    span,
-                    format!("a register is 16 bits: `{}` must be of an integer type or an array (0 .. 15) of Boolean", name.name),
-                )
-                .with_hint("declare it as `type Word is array (0 .. 15) of Boolean;` or an integer type"),
-            );
+            self.err(diagnostics::register_type(span, &name.name));
             return;
         }
         // The device reads and writes it: no "never read" warning.
@@ -1245,13 +1084,7 @@ impl Checker {
                 )
             })
             .collect();
-        let mut d = Diagnostic::name(
-            sp,
-            format!(
-                "no device has the address {here} in {}",
-                self.devices.source()
-            ),
-        );
+        let mut d = diagnostics::no_device_at(sp, &here, self.devices.source());
         let default = *self.devices == crate::devices::Devices::default_set();
         d = if known.is_empty() {
             d.with_hint("the device file declares no devices: give one with `--devices FILE.toml`")

@@ -7,6 +7,7 @@
 //! name up by string.
 
 pub mod builtins;
+pub mod diagnostics;
 pub mod memory;
 mod stack;
 pub mod tasking;
@@ -21,7 +22,7 @@ use crate::syntax::ast::Mode;
 use std::cell::RefCell;
 use std::io::Write;
 use std::rc::Rc;
-pub use value::{Array, Obj, Occurrence, Value};
+pub use value::{Array, Ending, Obj, Occurrence, Value};
 
 /// Why evaluation stopped early: an exception, a `return` or an `exit`.
 #[derive(Debug)]
@@ -311,6 +312,7 @@ impl Machine {
                     chain: Vec::new(),
                     reraised: Vec::new(),
                     chained: true,
+                    ending: crate::interp::Ending::Exception,
                 }));
             }
             self.reset_main();
@@ -372,6 +374,7 @@ impl Machine {
                     chain: lines.iter().map(|l| l.0).collect(),
                     reraised: Vec::new(),
                     chained: true,
+                    ending: crate::interp::Ending::Stopped,
                 }))
             }
             Ok(()) | Err(Flow::Return(_)) | Err(Flow::Exit(_)) => Ok(()),
@@ -609,6 +612,7 @@ impl Run<'_> {
             chain,
             reraised: Vec::new(),
             chained: false,
+            ending: crate::interp::Ending::Exception,
         }))
     }
 

@@ -694,6 +694,7 @@ impl Run<'_> {
                 chain: Vec::new(),
                 reraised: Vec::new(),
                 chained: true,
+                ending: crate::interp::Ending::Exception,
             };
             self.m.sched.threads[c].outcome = Outcome::Error(Box::new(occ));
             self.m.sched.make_ready(c);
@@ -1023,6 +1024,7 @@ impl Run<'_> {
             reraised: Vec::new(),
             // The chain is the tasks' places, not calls.
             chained: true,
+            ending: crate::interp::Ending::Deadlock,
         }))
     }
 }

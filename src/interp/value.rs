@@ -240,6 +240,20 @@ pub struct Occurrence {
     /// runs holds only the walker's calls until the engine adds its own
     /// frames' calls (it keeps them in its frames, not in `Machine::calls`).
     pub chained: bool,
+    /// How the run ends if nothing handles it.
+    pub ending: Ending,
+}
+
+/// What an occurrence that leaves the program is.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Ending {
+    /// An exception no handler caught.
+    #[default]
+    Exception,
+    /// Every task blocked (the message names each and what it waits for).
+    Deadlock,
+    /// The user stopped the run (Ctrl-C) while tasks ran.
+    Stopped,
 }
 
 /// `Integer'Image`: a leading blank for non-negative values.

@@ -1651,7 +1651,7 @@ impl<'a> Run<'a> {
         // exception (which then ends the run).
         // (Not after a deadlock: that diagnostic already names every task.)
         let deadlocked =
-            matches!(&r, Err(Flow::Raise(o)) if o.message.starts_with(tasking::DEADLOCK));
+            matches!(&r, Err(Flow::Raise(o)) if o.ending == crate::interp::Ending::Deadlock);
         if self.m.sched.active() && !deadlocked && !matches!(r, Err(Flow::Exit(_))) {
             // The REPL keeps its tasks: the entry ends when no task is ready.
             let last = if self.m.keep_tasks {

@@ -20,6 +20,15 @@ pub struct Base {
     /// The file each stdlib source is written to, by source id, so that
     /// "go to definition" can open the AdaIR package (see docs/editors.md).
     pub stdlib_files: Vec<(FileId, PathBuf)>,
+    /// The `adair explain` page of each code, written for the editor.
+    pub error_pages: std::collections::HashMap<&'static str, PathBuf>,
+}
+
+/// Writes `text` to `path` in `dir` unless it holds it already (an editor
+/// may have it open); whether the file holds it now.
+fn write_if_changed(dir: &Path, path: &Path, text: &str) -> bool {
+    std::fs::read_to_string(path).is_ok_and(|t| t == text)
+        || (std::fs::create_dir_all(dir).is_ok() && std::fs::write(path, text.as_bytes()).is_ok())
 }
 
 impl Base {
@@ -34,19 +43,25 @@ impl Base {
             let Some(dir) = stdlib_dir else { break };
             let file = Path::new(u.name).file_name().unwrap_or_default();
             let path = dir.join(file);
-            let text = crate::session::stdlib_text(u.text);
-            // Written only when it changed: an editor may have it open.
-            let same = std::fs::read_to_string(&path).is_ok_and(|t| t == text);
-            let ok = same
-                || (std::fs::create_dir_all(dir).is_ok()
-                    && std::fs::write(&path, text.as_bytes()).is_ok());
-            if ok {
+            if write_if_changed(dir, &path, &crate::session::stdlib_text(u.text)) {
                 stdlib_files.push((id as FileId, path));
+            }
+        }
+        // The pages of `adair explain`, beside it: a diagnostic's code links
+        // to its page.
+        let mut error_pages = std::collections::HashMap::new();
+        if let Some(dir) = stdlib_dir.and_then(Path::parent).map(|d| d.join("errors")) {
+            for e in crate::diag::codes::ALL {
+                let path = dir.join(format!("{}.md", e.code));
+                if write_if_changed(&dir, &path, e.page) {
+                    error_pages.insert(e.code.0, path);
+                }
             }
         }
         Base {
             front,
             stdlib_files,
+            error_pages,
         }
     }
 

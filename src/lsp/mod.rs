@@ -340,6 +340,13 @@ impl Server<'_> {
             range,
             severity: Some(severity),
             source: Some("adair".into()),
+            code: Some(lsp_types::NumberOrString::String(d.code.to_string())),
+            code_description: self
+                .base
+                .error_pages
+                .get(d.code.0)
+                .and_then(|p| path_to_uri(p))
+                .map(|href| lsp_types::CodeDescription { href }),
             message,
             related_information: (!related.is_empty()).then_some(related),
             ..Default::default()

@@ -15,7 +15,7 @@
 use super::{SCRIPT_USES, STDLIB, stdlib_text};
 use crate::check::Checker;
 use crate::check::ir::{FuncId, Stmt};
-use crate::diag::{Diagnostic, FileId, Sources, Span};
+use crate::diag::{Diagnostic, FileId, Sources, Span, codes};
 use crate::syntax::ast;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
@@ -293,7 +293,7 @@ impl Frontend {
         // With errors, every diagnostic but a variable "never read": that
         // one is often their echo (its use did not check).
         if diags.iter().any(|d| !d.is_warning()) {
-            diags.retain(|d| !d.is_warning() || !d.message.ends_with(" is never read"));
+            diags.retain(|d| d.code != codes::W0001);
         }
         checked.diags = diags;
         checked.main = if is_script { None } else { main };
@@ -319,19 +319,14 @@ impl Frontend {
         let undeclared = |d: &Diagnostic| {
             // A guess from the names in view gives way to the package that
             // declares the name.
-            let guessed = d
-                .hint
-                .as_ref()
-                .is_some_and(|h| h.starts_with("did you mean"));
-            let m = d
-                .message
-                .strip_prefix('`')
-                .filter(|_| d.hint.is_none() || guessed)?;
-            if let Some(n) = m.strip_suffix("` is not declared") {
-                return Some((n.to_string(), None));
+            if d.code != codes::E0201 || (d.hint.is_some() && !d.guessed) {
+                return None;
             }
-            let (n, p) = m.strip_suffix('`')?.split_once("` is not declared in `")?;
-            Some((n.to_string(), Some(p.to_string())))
+            match d.names.as_slice() {
+                [n] => Some((n.clone(), None)),
+                [n, p] => Some((n.clone(), Some(p.clone()))),
+                _ => None,
+            }
         };
         if !self.loaded.iter().any(|l| !l) || !diags.iter().any(|d| undeclared(d).is_some()) {
             return;
@@ -382,7 +377,8 @@ impl Frontend {
             self.with_files.push(f.clone());
             let shown = shown_path(&f);
             let text = text.map_err(|e| {
-                vec![Diagnostic::syntax(
+                vec![Diagnostic::new(
+                    crate::diag::codes::E0203,
                     at,
                     format!("cannot read {shown} (the file of package {pkg}): {e}"),
                 )]

@@ -3,7 +3,7 @@
 
 use crate::check::Checker;
 use crate::check::ir::{FuncId, Stmt};
-use crate::diag::{Diagnostic, FileId, Phase, Span};
+use crate::diag::{Diagnostic, FileId};
 
 mod frontend;
 use crate::interp::{Machine, Occurrence, builtins};
@@ -419,76 +419,8 @@ impl Session {
 
     /// The diagnostic for an exception that left the program.
     pub fn exception_diag(&self, o: &Occurrence) -> Diagnostic {
-        if let Some(rest) = o.message.strip_prefix(crate::interp::tasking::DEADLOCK) {
-            // One note per task: what it waits for, where.
-            let mut d = Diagnostic::new(Phase::Runtime, o.span, crate::interp::tasking::DEADLOCK)
-                .with_label("blocked here")
-                .with_hint("a task waits forever when nobody calls the entry it accepts, or calls an entry nobody accepts: check that every call has its accept");
-            for (line, s) in rest.lines().skip(1).zip(&o.chain) {
-                d = d.with_note(*s, line.to_string());
-            }
-            return d;
-        }
-        if let Some(rest) = o.message.strip_prefix(crate::interp::STOPPED_TASKS) {
-            // Where the main program was, then one note per task.
-            let mut d = Diagnostic::new(Phase::Runtime, o.span, crate::interp::STOPPED_TASKS)
-                .with_label("the main program was here");
-            for (line, s) in rest.lines().skip(1).zip(&o.chain) {
-                d = d.with_note(*s, line.to_string());
-            }
-            return d;
-        }
         let name = &self.front.checker.excs[o.exc as usize].name;
-        let msg = if o.message.is_empty() {
-            format!("raised {name}")
-        } else {
-            format!("raised {name} : {}", o.message)
-        };
-        let mut d =
-            Diagnostic::new(Phase::Runtime, o.span, msg).with_label(format!("{name} raised here"));
-        for s in &o.reraised {
-            d = d.with_note(*s, "re-raised here by `raise;`");
-        }
-        let real = |s: &Span| !(s.start == 0 && s.end == 0);
-        // Consecutive calls from one place (recursion) are one note.
-        let mut runs: Vec<(Span, usize)> = Vec::new();
-        for s in o.chain.iter().filter(|s| real(s) && **s != o.span) {
-            match runs.last_mut() {
-                Some((last, n)) if last == s => *n += 1,
-                _ => runs.push((*s, 1)),
-            }
-        }
-        let note = |(s, n): (Span, usize), more: usize| {
-            let mut text = if n == 1 {
-                "called from here".to_string()
-            } else {
-                format!("called from here {n} times in a row")
-            };
-            if more > 0 {
-                text.push_str(&format!(", and {more} more calls not shown"));
-            }
-            (s, text)
-        };
-        // A deep chain shows its innermost and outermost places only (an
-        // exception 20,000 calls deep is one screen, built in linear time).
-        const INNER: usize = 6;
-        const OUTER: usize = 3;
-        let notes: Vec<(Span, String)> = if runs.len() > INNER + OUTER + 1 {
-            let hidden: usize = runs[INNER + 1..runs.len() - OUTER]
-                .iter()
-                .map(|r| r.1)
-                .sum();
-            let mut v: Vec<(Span, String)> = runs[..INNER].iter().map(|r| note(*r, 0)).collect();
-            v.push(note(runs[INNER], hidden));
-            v.extend(runs[runs.len() - OUTER..].iter().map(|r| note(*r, 0)));
-            v
-        } else {
-            runs.iter().map(|r| note(*r, 0)).collect()
-        };
-        for (s, text) in notes {
-            d = d.with_note(s, text);
-        }
-        d
+        crate::interp::diagnostics::left_the_program(o, name)
     }
 }
 

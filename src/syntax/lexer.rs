@@ -2,6 +2,7 @@
 //! ambiguity, evaluates literals and turns lexical errors into diagnostics
 //! while lexing goes on.
 
+use super::diagnostics::{self as D, NumberFault};
 use super::token::{IntLit, Kw, Token};
 use crate::diag::Offsets as _;
 use crate::diag::{Diagnostic, FileId, Span, span};
@@ -105,14 +106,7 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                 Ok(Raw::Word) => {
                     let lower = text.to_ascii_lowercase();
                     if text.ends_with('_') || text.contains("__") {
-                        diags.push(
-                            Diagnostic::new(
-                                crate::diag::Phase::Lexical,
-                                sp,
-                                format!("identifier `{text}` has a misplaced underscore"),
-                            )
-                            .with_hint("an underscore must stand between two letters or digits"),
-                        );
+                        diags.push(D::misplaced_underscore_in_name(sp, text));
                     }
                     match Kw::from_lower(&lower) {
                         Some(k) => Token::Kw(k),
@@ -121,26 +115,20 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                 }
                 Ok(Raw::Decimal) => match decimal(text) {
                     Ok(t) => t,
-                    Err(why) => {
-                        diags.push(number_error(sp, why, text));
+                    Err(fault) => {
+                        diags.push(D::bad_number(sp, text, &fault));
                         Token::Error
                     }
                 },
                 Ok(Raw::Based) => match based(text) {
                     Ok(t) => t,
-                    Err(why) => {
-                        diags.push(number_error(sp, why, text));
+                    Err(fault) => {
+                        diags.push(D::bad_number(sp, text, &fault));
                         Token::Error
                     }
                 },
                 Ok(Raw::BadExponent) => {
-                    diags.push(
-                        Diagnostic::bad_number(
-                            sp,
-                            format!("the exponent of `{text}` has no digits"),
-                        )
-                        .with_hint("write an exponent like `E3` or `E-3`, or leave it out"),
-                    );
+                    diags.push(D::bad_number(sp, text, &NumberFault::BadExponent));
                     Token::Error
                 }
                 Ok(Raw::Str) => Token::Str(text[1..text.len() - 1].replace("\"\"", "\"").into()),
@@ -154,7 +142,7 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                         .filter(|k| k.len() > 1);
                     let keep = cut.unwrap_or(text);
                     let sp = span(file, s, s + keep.len());
-                    diags.push(Diagnostic::unterminated_string(sp));
+                    diags.push(D::unterminated_string(sp));
                     let tok = Token::Str(keep[1..].replace("\"\"", "\"").into());
                     if cut.is_some() {
                         toks.push((tok, sp));
@@ -189,21 +177,12 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                                 if let Some(close) = rest[..line_end].find('\'') {
                                     let inner = &rest[..close];
                                     let end = e + close + 1;
-                                    diags.push(Diagnostic::single_quoted_string(
-                                        span(file, s, end),
-                                        inner,
-                                    ));
+                                    diags.push(D::single_quoted_string(span(file, s, end), inner));
                                     toks.push((Token::Str(inner.into()), span(file, s, end)));
                                     base = end;
                                     continue 'restart;
                                 }
-                                diags.push(
-                                    Diagnostic::new(crate::diag::Phase::Lexical, sp, "stray `'`")
-                                        .with_label(
-                                            "neither a character literal nor an attribute mark",
-                                        )
-                                        .with_hint("a character literal is written 'c'"),
-                                );
+                                diags.push(D::stray_tick(sp));
                                 Token::Error
                             }
                         }
@@ -240,17 +219,19 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                     if let Some(prev) = diags.last_mut()
                         && prev.span.hi() == s
                         && prev.span.context == file
-                        && prev.message.starts_with("unexpected character")
+                        && prev.code == crate::diag::codes::E0001
                         && src[prev.span.lo()..].starts_with(c)
                     {
                         // (Only runs of one character are merged: its first
                         // is enough to look at.)
-                        prev.span = span(file, prev.span.lo(), e);
-                        let n = (e - prev.span.lo()) / c.len_utf8();
-                        prev.message = format!("unexpected characters `{c}` ({n} of them)");
+                        let run = span(file, prev.span.lo(), e);
+                        let n = (e - run.lo()) / c.len_utf8();
+                        let hint = prev.hint.take();
+                        *prev = D::stray_chars(run, c, n);
+                        prev.hint = hint;
                         continue;
                     }
-                    let mut d = Diagnostic::stray_char(sp, c);
+                    let mut d = D::stray_char(sp, c);
                     if c == '@' {
                         d = d.with_hint("`@` (Ada 2022's target name) is not part of AdaIR: write the name again, as in `Count := Count + 1;`");
                     } else if c == '$' {
@@ -293,7 +274,7 @@ fn digits_ok(s: &str) -> bool {
     !s.is_empty() && !s.starts_with('_') && !s.ends_with('_') && !s.contains("__")
 }
 
-fn decimal(text: &str) -> Result<Token, String> {
+fn decimal(text: &str) -> Result<Token, NumberFault> {
     let (mant, exp) = match text.find(['e', 'E']) {
         Some(i) => (&text[..i], Some(&text[i + 1..])),
         None => (text, None),
@@ -302,19 +283,19 @@ fn decimal(text: &str) -> Result<Token, String> {
         Some(e) => {
             let digits = e.trim_start_matches(['+', '-']);
             if !digits_ok(digits) {
-                return Err(format!("bad exponent in `{text}`"));
+                return Err(NumberFault::BadExponent);
             }
             let v: i32 = digits
                 .replace('_', "")
                 .parse()
-                .map_err(|_| format!("exponent too large in `{text}`"))?;
+                .map_err(|_| NumberFault::ExponentTooLarge)?;
             if e.starts_with('-') { -v } else { v }
         }
         None => 0,
     };
     if let Some((ip, fp)) = mant.split_once('.') {
         if !digits_ok(ip) || !digits_ok(fp) {
-            return Err(format!("misplaced `_` in `{text}`"));
+            return Err(NumberFault::MisplacedUnderscore);
         }
         let s = format!(
             "{}.{}e{}",
@@ -322,91 +303,41 @@ fn decimal(text: &str) -> Result<Token, String> {
             fp.replace('_', ""),
             exp_val
         );
-        s.parse::<f64>().map(Token::Real).map_err(|e| e.to_string())
+        s.parse::<f64>()
+            .map(Token::Real)
+            .map_err(|e| NumberFault::Other(e.to_string()))
     } else {
         if !digits_ok(mant) {
-            return Err(format!("misplaced `_` in `{text}`"));
+            return Err(NumberFault::MisplacedUnderscore);
         }
         if exp_val < 0 {
-            return Err(format!(
-                "an integer literal cannot have a negative exponent: `{text}`"
-            ));
+            return Err(NumberFault::NegativeExponent);
         }
         let mut v: i128 = mant
             .replace('_', "")
             .parse()
-            .map_err(|_| format!("`{text}` is too large"))?;
+            .map_err(|_| NumberFault::TooLarge)?;
         for _ in 0..exp_val {
-            v = v
-                .checked_mul(10)
-                .ok_or_else(|| format!("`{text}` is too large"))?;
+            v = v.checked_mul(10).ok_or(NumberFault::TooLarge)?;
         }
         Ok(Token::Int(IntLit::new(v)))
     }
 }
 
-/// A malformed numeric literal's diagnostic, with the fix when there is
-/// one.
-fn number_error(sp: Span, why: String, text: &str) -> Diagnostic {
-    let hint = if why.contains("negative exponent") {
-        // `2E-3` -> `2.0E-3`
-        let cut = text.find(['e', 'E']).unwrap_or(text.len());
-        Some(format!(
-            "for a Float, write `{}.0{}`",
-            &text[..cut],
-            &text[cut..]
-        ))
-    } else if why.starts_with("misplaced `_`") {
-        let mut fixed = String::new();
-        for c in text.chars() {
-            if c == '_' && (fixed.is_empty() || fixed.ends_with(['_', '.', '#'])) {
-                continue;
-            }
-            fixed.push(c);
-        }
-        let fixed = fixed
-            .trim_end_matches('_')
-            .replace("_.", ".")
-            .replace("_#", "#");
-        Some(format!("a `_` stands between two digits: `{fixed}`"))
-    } else if let Some(b) = why.split("of base ").nth(1) {
-        let base: u32 = b
-            .split(' ')
-            .next()
-            .and_then(|b| b.parse().ok())
-            .unwrap_or(10);
-        Some(if base <= 10 {
-            format!("the digits of base {base} are 0 .. {}", base - 1)
-        } else {
-            format!(
-                "the digits of base {base} are 0 .. 9 and A .. {}",
-                char::from(b'A' + (base - 11) as u8)
-            )
-        })
-    } else {
-        None
-    };
-    let d = Diagnostic::bad_number(sp, why);
-    match hint {
-        Some(h) => d.with_hint(h),
-        None => d,
-    }
-}
-
-fn based(text: &str) -> Result<Token, String> {
+fn based(text: &str) -> Result<Token, NumberFault> {
     let mut parts = text.splitn(3, '#');
     let base_s = parts.next().unwrap_or("");
     let body = parts.next().unwrap_or("");
     let tail = match parts.next() {
         Some(t) => t,
-        None => return Err(format!("based literal `{text}` lacks its closing `#`")),
+        None => return Err(NumberFault::NoClosingHash),
     };
     let base: u32 = base_s
         .replace('_', "")
         .parse()
-        .map_err(|_| format!("bad base in `{text}`"))?;
+        .map_err(|_| NumberFault::BadBase)?;
     if !(2..=16).contains(&base) {
-        return Err(format!("base {base} is not between 2 and 16"));
+        return Err(NumberFault::BaseOutOfRange(base));
     }
     let exp_val: i32 = if tail.is_empty() {
         0
@@ -414,31 +345,28 @@ fn based(text: &str) -> Result<Token, String> {
         let e = &tail[1..];
         let digits = e.trim_start_matches(['+', '-']);
         if !digits_ok(digits) {
-            return Err(format!("bad exponent in `{text}`"));
+            return Err(NumberFault::BadExponent);
         }
         let v: i32 = digits
             .replace('_', "")
             .parse()
-            .map_err(|_| format!("bad exponent in `{text}`"))?;
+            .map_err(|_| NumberFault::BadExponent)?;
         if e.starts_with('-') { -v } else { v }
     };
     let (ip, fp) = match body.split_once('.') {
         Some((a, b)) => (a, Some(b)),
         None => (body, None),
     };
-    let digit = |c: char| -> Result<u32, String> {
-        c.to_digit(base)
-            .ok_or_else(|| format!("`{c}` is not a digit of base {base} in `{text}`"))
+    let digit = |c: char| -> Result<u32, NumberFault> {
+        c.to_digit(base).ok_or(NumberFault::NotADigit(c, base))
     };
     if !digits_ok(ip) || fp.is_some_and(|f| !digits_ok(f)) {
-        return Err(format!("misplaced `_` or missing digits in `{text}`"));
+        return Err(NumberFault::UnderscoreOrDigits);
     }
     match fp {
         None => {
             if exp_val < 0 {
-                return Err(format!(
-                    "an integer literal cannot have a negative exponent: `{text}`"
-                ));
+                return Err(NumberFault::NegativeExponent);
             }
             let mut v: i128 = 0;
             for c in ip.chars().filter(|c| *c != '_') {
@@ -446,12 +374,10 @@ fn based(text: &str) -> Result<Token, String> {
                 v = v
                     .checked_mul(base as i128)
                     .and_then(|v| v.checked_add(d as i128))
-                    .ok_or_else(|| format!("`{text}` is too large"))?;
+                    .ok_or(NumberFault::TooLarge)?;
             }
             for _ in 0..exp_val {
-                v = v
-                    .checked_mul(base as i128)
-                    .ok_or_else(|| format!("`{text}` is too large"))?;
+                v = v.checked_mul(base as i128).ok_or(NumberFault::TooLarge)?;
             }
             Ok(Token::Int(IntLit::new(v)))
         }

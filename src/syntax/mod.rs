@@ -1,6 +1,7 @@
 //! Syntax: tokens, lexer, AST and parser. Knows nothing of robots or types.
 
 pub mod ast;
+pub mod diagnostics;
 pub mod lexer;
 pub mod parser;
 pub mod token;
@@ -14,7 +15,7 @@ pub fn parse_source(src: &str, file: FileId) -> (Option<ast::CompilationUnit>, V
     let (unit, mut pd) = parser::parse(&tokens, file, src.len());
     // Name the line and column of the `if`/`case`/`loop` an `end` left open.
     for d in &mut pd {
-        if d.message.contains(parser::OPENER_AT)
+        if d.code == crate::diag::codes::E0102
             && let Some((at, _)) = d.notes.first()
         {
             let (line, col) = crate::diag::line_col_in(src, at.start as usize);

@@ -6,7 +6,9 @@
 use super::errors::{UNCLOSED, assign_or_eq, skip_to_semi, soft_semi};
 use super::{Common, Ex, TokIn, ident, mk, name, semi};
 use crate::diag::Span;
+use crate::diag::codes;
 use crate::syntax::ast::*;
+use crate::syntax::diagnostics as D;
 use crate::syntax::token::{Kw, Token};
 use chumsky::prelude::*;
 
@@ -219,7 +221,10 @@ fn discriminants<'t, I: TokIn<'t>>(
             if !ps.is_empty() {
                 emitter.emit(Rich::custom(
                     e.span(),
-                    "discriminants are not supported by AdaIR (see docs/differences.md)",
+                    D::custom(
+                        codes::E0701,
+                        "discriminants are not supported by AdaIR (see docs/differences.md)",
+                    ),
                 ));
             }
         })
@@ -398,7 +403,10 @@ pub(super) fn params<'t, I: TokIn<'t>>(
             .validate(|_, e, emitter| {
                 emitter.emit(Rich::custom(
                     e.span(),
-                    "`inout` is not a parameter mode: write `in out`",
+                    D::custom(
+                        codes::E0104,
+                        "`inout` is not a parameter mode: write `in out`",
+                    ),
                 ));
             })
             .to(Mode::InOut),
@@ -459,7 +467,10 @@ fn expression_function<'t, I: TokIn<'t>>(
             ) {
                 emitter.emit(Rich::custom(
                     x.span,
-                    "the body of an expression function is one parenthesized expression: `is (...)`",
+                    D::custom(
+                        codes::E0106,
+                        "the body of an expression function is one parenthesized expression: `is (...)`",
+                    ),
                 ));
             }
             x
@@ -750,7 +761,10 @@ fn entry_decl<'t, I: TokIn<'t>>(
         .validate(|_, e, emitter| {
             emitter.emit(Rich::custom(
                 e.span(),
-                "an entry family is not supported by AdaIR (see docs/differences.md)",
+                D::custom(
+                    codes::E0701,
+                    "an entry family is not supported by AdaIR (see docs/differences.md)",
+                ),
             ))
         });
     kw!(Entry)

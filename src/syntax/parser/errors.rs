@@ -4,7 +4,9 @@
 //! how chumsky's errors become [`Diagnostic`]s.
 
 use super::{Ex, TokIn, semi};
+use crate::diag::codes;
 use crate::diag::{Diagnostic, Span};
+use crate::syntax::diagnostics as D;
 use crate::syntax::token::{Kw, Token};
 use chumsky::prelude::*;
 
@@ -25,7 +27,7 @@ pub(super) fn soft_kw<'t, I: TokIn<'t>>(k: Kw) -> impl Parser<'t, I, (), Ex<'t>>
                     end: sp.start,
                     context: sp.context,
                 },
-                format!("missing `{}`", k.as_str()),
+                D::custom(codes::E0103, format!("missing `{}`", k.as_str())),
             ));
         }))
 }
@@ -115,7 +117,7 @@ pub(super) fn soft_semi<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + 
                     end: sp.start,
                     context: sp.context,
                 },
-                "missing `;`",
+                D::custom(codes::E0103, "missing `;`"),
             ));
         }))
 }
@@ -128,7 +130,10 @@ pub(super) fn assign_or_eq<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>>
         .or(just(Token::Eq).validate(|_, e, emitter| {
             emitter.emit(Rich::custom(
                 e.span(),
-                "`=` compares; an initial value is given with `:=` (`V : Float := 50.0;`)",
+                D::custom(
+                    codes::E0104,
+                    "`=` compares; an initial value is given with `:=` (`V : Float := 50.0;`)",
+                ),
             ));
         }))
 }
@@ -316,11 +321,11 @@ pub(super) fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -
             // The text ends before the construct's `end`: one diagnostic at
             // the end of the input, which `explain_unclosed` words.
             if ended.is_none() && at == tokens.len() {
-                return Diagnostic::syntax(span, format!("the text ends inside the `{word}`"))
+                return D::unclosed(span, format!("the text ends inside the `{word}`"))
                     .with_label("end of input");
             }
             if let Some((message, hint, note)) = ended {
-                let mut d = Diagnostic::syntax(span, format!("{message} at {OPENER_AT}"))
+                let mut d = D::unclosed(span, format!("{message} at {OPENER_AT}"))
                     .with_label("end of input")
                     .with_hint(hint);
                 d.notes.push((opener, note.to_string()));
@@ -349,7 +354,7 @@ pub(super) fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -
                     format!("add `end {word};` before this line"),
                 )
             };
-            let mut d = Diagnostic::syntax(
+            let mut d = D::unclosed(
                 span,
                 format!("`end {word};` expected to close the `{word}` at {OPENER_AT}"),
             )
@@ -360,7 +365,7 @@ pub(super) fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -
             d
         }
         // A custom error explains itself; it has no token of its own to show.
-        RichReason::Custom(msg) => Diagnostic::syntax(span, msg.clone()),
+        RichReason::Custom(msg) => D::worded(span, msg),
         _ => {
             let mut expected: Vec<String> = e
                 .expected()
@@ -393,9 +398,7 @@ pub(super) fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -
                     }
                 }
                 if depth >= 0 {
-                    return Diagnostic::syntax(span, "unexpected `)` without a matching `(`")
-                        .with_label("this `)` closes nothing")
-                        .with_hint("remove it, or add the `(` it should close");
+                    return D::unmatched_paren(span);
                 }
             }
             if expected.iter().any(|x| x == "`;`") && e.found().is_some() {
@@ -411,9 +414,7 @@ pub(super) fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -
                         context: p.context,
                     })
                     .unwrap_or(span);
-                return Diagnostic::syntax(at, format!("missing `;` before {found}"))
-                    .with_label("expected `;` here")
-                    .with_hint("a statement or declaration ends with `;`");
+                return D::missing_semicolon(at, &found);
             }
             // Operators that could continue an expression are rarely what was meant.
             const CONT: &[&str] = &[
@@ -443,7 +444,7 @@ pub(super) fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -
                 1 => format!(", expected {}", expected[0]),
                 _ => format!(", expected one of {}", expected.join(", ")),
             };
-            let d = Diagnostic::syntax(span, format!("unexpected {found}{exp}")).with_label(label);
+            let d = D::unexpected(span, format!("unexpected {found}{exp}")).with_label(label);
             // `...` (`..` then `.`): a placeholder copied from a text, as in
             // the handbook's demo (`F := ... -- Hier Code zur
             // Stellungsanpassung`).

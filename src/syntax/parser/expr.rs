@@ -5,7 +5,9 @@
 
 use super::{Ex, TokIn, exact, first_and, ident, join, mk};
 use crate::diag::Span;
+use crate::diag::codes;
 use crate::syntax::ast::*;
+use crate::syntax::diagnostics as D;
 use crate::syntax::token::{Kw, Token};
 use chumsky::pratt::{infix, left, none, prefix};
 use chumsky::prelude::*;
@@ -105,8 +107,11 @@ pub fn expr<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, Expr, Ex<'t>> {
                     let (a, b) = (w[0].0.0.symbol(), w[1].0.0.symbol());
                     emitter.emit(Rich::custom(
                         w[1].0.1,
-                        format!(
-                            "`{a}` and `{b}` mixed without parentheses: write `(X {a} Y) {b} Z`"
+                        D::custom(
+                            codes::E0106,
+                            format!(
+                                "`{a}` and `{b}` mixed without parentheses: write `(X {a} Y) {b} Z`"
+                            ),
                         ),
                     ));
                 }
@@ -250,7 +255,10 @@ fn paren_part<'t, I: TokIn<'t>>(
                     span,
                 },
                 (None, _) => {
-                    emitter.emit(Rich::custom(span, "a choice needs `=>` and a value"));
+                    emitter.emit(Rich::custom(
+                        span,
+                        D::custom(codes::E0106, "a choice needs `=>` and a value"),
+                    ));
                     Assoc {
                         choices: Vec::new(),
                         value: mk(ExprKind::Error, span),
@@ -410,7 +418,7 @@ fn simple_expr<'t, I: TokIn<'t>>(
         // is followed by `(` is taken (a string literal cannot be called).
         let op_call = select! { Token::Str(s) = e => (s, e.span()) }
             .try_map(|(s, sp): (std::rc::Rc<str>, Span), _| {
-                operator_of(&s).map(|o| (o, sp)).ok_or_else(|| Rich::custom(sp, "not an operator symbol"))
+                operator_of(&s).map(|o| (o, sp)).ok_or_else(|| Rich::custom(sp, D::custom(codes::E0106, "not an operator symbol")))
             })
             .then(
                 expr.clone()
@@ -442,7 +450,10 @@ fn simple_expr<'t, I: TokIn<'t>>(
                     _ => {
                         emitter.emit(Rich::custom(
                             sp,
-                            "this operator takes a different number of operands",
+                            D::custom(
+                                codes::E0106,
+                                "this operator takes a different number of operands",
+                            ),
                         ));
                         mk(ExprKind::Error, sp)
                     }
@@ -482,7 +493,10 @@ fn simple_expr<'t, I: TokIn<'t>>(
                 unary_sign_first(&x, true, &mut |sp| {
                     emitter.emit(Rich::custom(
                         sp,
-                        "a unary `-` or `+` only begins an expression: put this operand in parentheses (`2 * (-3)`)",
+                        D::custom(
+                            codes::E0106,
+                            "a unary `-` or `+` only begins an expression: put this operand in parentheses (`2 * (-3)`)",
+                        ),
                     ))
                 });
                 x

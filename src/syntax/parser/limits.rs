@@ -54,7 +54,7 @@ pub(super) fn too_deep(tokens: &[(Token, Span)]) -> Option<Diagnostic> {
                 *n += 1;
                 if *n > MAX_CHAIN {
                     return Some(
-                        Diagnostic::syntax(
+                        crate::syntax::diagnostics::too_deep(
                             *sp,
                             format!(
                                 "expression too long: more than {MAX_CHAIN} operators in a row"
@@ -97,7 +97,7 @@ pub(super) fn too_deep(tokens: &[(Token, Span)]) -> Option<Diagnostic> {
         };
         if let Some(what) = what {
             return Some(
-                Diagnostic::syntax(
+                crate::syntax::diagnostics::too_deep(
                     *sp,
                     format!("nesting too deep: more than {MAX_NESTING} levels of {what}"),
                 )
@@ -120,7 +120,7 @@ pub(super) fn too_deep(tokens: &[(Token, Span)]) -> Option<Diagnostic> {
         }
         if levels + run > MAX_NESTING {
             return Some(
-                Diagnostic::syntax(
+                crate::syntax::diagnostics::too_deep(
                     *sp,
                     format!(
                         "nesting too deep: more than {MAX_NESTING} levels of parentheses \

@@ -6,7 +6,9 @@ use super::decl::params;
 use super::errors::{UNCLOSED, closing, skip_to_semi, soft_kw, soft_semi, unclosed};
 use super::{Common, Ex, TokIn, first_and, ident, name, semi};
 use crate::diag::Span;
+use crate::diag::codes;
 use crate::syntax::ast::*;
+use crate::syntax::diagnostics as D;
 use crate::syntax::token::{Kw, Token};
 use chumsky::prelude::*;
 
@@ -256,7 +258,10 @@ pub(super) fn stmt_grammar<'t, I: TokIn<'t>>(
                 .validate(|_, e, emitter| {
                     emitter.emit(Rich::custom(
                         e.span(),
-                        "an entry family is not supported by AdaIR (see docs/differences.md)",
+                        D::custom(
+                            codes::E0701,
+                            "an entry family is not supported by AdaIR (see docs/differences.md)",
+                        ),
                     ))
                 })
                 .or_not(),
@@ -389,7 +394,10 @@ pub(super) fn stmt_grammar<'t, I: TokIn<'t>>(
             ) => {
                 emitter.emit(Rich::custom(
                     span,
-                    "`=` compares; an assignment is written `:=` (`X := 5;`)",
+                    D::custom(
+                        codes::E0104,
+                        "`=` compares; an assignment is written `:=` (`X := 5;`)",
+                    ),
                 ));
                 StmtKind::Assign(l, r)
             }

@@ -5,6 +5,9 @@
 
 use std::fmt::Write as _;
 
+pub mod codes;
+pub use codes::Code;
+
 /// Identifies one source text (a file, a stdlib unit or a REPL entry).
 pub type FileId = u32;
 
@@ -57,8 +60,26 @@ pub enum Phase {
     Warning,
 }
 
+impl Phase {
+    /// The phase a code belongs to (see [`codes`] for the ranges).
+    pub fn of(code: Code) -> Phase {
+        let c = code.0.as_bytes();
+        match (c.first(), c.get(2)) {
+            (Some(b'W'), _) => Phase::Warning,
+            (_, Some(b'0')) => Phase::Lexical,
+            (_, Some(b'1')) => Phase::Syntax,
+            (_, Some(b'2')) => Phase::Name,
+            (_, Some(b'7')) => Phase::Unsupported,
+            (_, Some(b'9')) => Phase::Runtime,
+            _ => Phase::Type,
+        }
+    }
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagnostic {
+    /// What kind of fault this is, stable across versions (`adair explain`).
+    pub code: Code,
     pub phase: Phase,
     pub message: String,
     pub span: Span,
@@ -66,18 +87,39 @@ pub struct Diagnostic {
     pub hint: Option<String>,
     /// Secondary places (for example the call chain of an exception).
     pub notes: Vec<(Span, String)>,
+    /// The names the message is about, for tools (E0201: the name, then
+    /// the package it was looked up in, if any).
+    pub names: Vec<String>,
+    /// Whether the hint is a guess from the spelling (`did you mean`),
+    /// which a better hint replaces.
+    pub guessed: bool,
 }
 
 impl Diagnostic {
-    pub fn new(phase: Phase, span: Span, message: impl Into<String>) -> Self {
+    /// A diagnostic of kind `code`; its phase follows from the code.
+    pub fn new(code: Code, span: Span, message: impl Into<String>) -> Self {
         Diagnostic {
-            phase,
+            code,
+            phase: Phase::of(code),
             message: message.into(),
             span,
             label: String::new(),
             hint: None,
             notes: Vec::new(),
+            names: Vec::new(),
+            guessed: false,
         }
+    }
+    /// The names the message is about (see [`Diagnostic::names`]).
+    pub fn about(mut self, names: &[&str]) -> Self {
+        self.names = names.iter().map(|n| n.to_string()).collect();
+        self
+    }
+    /// A hint guessed from the spelling (see [`Diagnostic::guessed`]).
+    pub fn with_guess(mut self, hint: impl Into<String>) -> Self {
+        self.hint = Some(hint.into());
+        self.guessed = true;
+        self
     }
     pub fn with_label(mut self, label: impl Into<String>) -> Self {
         self.label = label.into();
@@ -92,49 +134,24 @@ impl Diagnostic {
         self
     }
 
-    // --- lexical ---
-    pub fn stray_char(span: Span, c: char) -> Self {
-        Self::new(Phase::Lexical, span, format!("unexpected character `{c}`"))
-            .with_label("not part of any Ada token")
-    }
-    pub fn unterminated_string(span: Span) -> Self {
-        Self::new(Phase::Lexical, span, "unterminated string literal")
-            .with_label("this string has no closing `\"` on its line")
-            .with_hint("close the string with `\"`; write `\"\"` for a quote inside it")
-    }
-    pub fn single_quoted_string(span: Span, text: &str) -> Self {
-        Self::new(Phase::Lexical, span, "string literal in single quotes")
-            .with_label("Ada strings use double quotes")
-            .with_hint(format!("write \"{text}\""))
-    }
-    pub fn bad_number(span: Span, why: impl Into<String>) -> Self {
-        Self::new(
-            Phase::Lexical,
-            span,
-            format!("malformed numeric literal: {}", why.into()),
-        )
-    }
-
-    // --- syntax ---
+    // --- transitional: each phase's `diagnostics.rs` replaces these ---
     pub fn syntax(span: Span, message: impl Into<String>) -> Self {
-        Self::new(Phase::Syntax, span, message)
+        Self::new(codes::E0101, span, message)
     }
     pub fn unsupported(span: Span, what: &str) -> Self {
         Self::new(
-            Phase::Unsupported,
+            codes::E0701,
             span,
             format!("{what} is not supported by AdaIR"),
         )
         .with_label("outside the AdaIR subset")
         .with_hint("see docs/differences.md for the supported subset of Ada 2012")
     }
-
-    // --- names and types ---
     pub fn name(span: Span, message: impl Into<String>) -> Self {
-        Self::new(Phase::Name, span, message)
+        Self::new(codes::E0201, span, message)
     }
     pub fn ty(span: Span, message: impl Into<String>) -> Self {
-        Self::new(Phase::Type, span, message)
+        Self::new(codes::E0301, span, message)
     }
 
     /// True for errors that happen before anything runs.
@@ -146,20 +163,18 @@ impl Diagnostic {
         self.phase == Phase::Warning
     }
 
-    /// `error` or `warning`, and the message as the first line shows it.
-    fn severity_and_message(&self) -> (&'static str, String) {
-        match self.phase {
-            Phase::Warning => ("warning", self.message.clone()),
-            // A deadlock, or the user's stop, is no exception the program
-            // could handle.
-            Phase::Runtime
-                if self.message.starts_with("deadlock:")
-                    || self.message.starts_with(crate::interp::STOPPED_TASKS) =>
-            {
-                ("error", self.message.clone())
-            }
-            Phase::Runtime => ("error", format!("unhandled exception: {}", self.message)),
-            _ => ("error", self.message.clone()),
+    /// `error[E0201]` or `warning[W0001]`, and the message as the first
+    /// line shows it.
+    fn severity_and_message(&self) -> (String, String) {
+        let severity = if self.is_warning() {
+            "warning"
+        } else {
+            "error"
+        };
+        let severity = format!("{severity}[{}]", self.code);
+        match self.code {
+            codes::E0901 => (severity, format!("unhandled exception: {}", self.message)),
+            _ => (severity, self.message.clone()),
         }
     }
 }
