@@ -211,7 +211,7 @@ pub fn describe_def(a: &Analysis, d: &Def) -> String {
         doc.push_str(c);
     }
     if d.kind == DefKind::Exception
-        && let Some(e) = crate::repl::exception_doc(&d.name)
+        && let Some(e) = crate::services::exception_doc(&d.name)
     {
         doc = e;
     }

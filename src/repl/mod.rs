@@ -11,6 +11,7 @@ use crate::check::types::{self, TypeId, TypeKind};
 use crate::diag::{self, Diagnostic};
 use crate::interp::Value;
 use crate::kinematics::{RobotDescription, joints_to_deg};
+use crate::services::exception_doc;
 use crate::session::Session;
 use std::io::Write;
 
@@ -932,97 +933,6 @@ fn stdlib_type_doc(name: &str) -> Option<String> {
         s.push('\n');
     }
     Some(s)
-}
-
-/// `:help` on an AdaIR exception (handbook appendix B): when adair raises it
-/// (also the language server's hover text on one).
-pub fn exception_doc(name: &str) -> Option<String> {
-    const EXCEPTIONS: &[(&str, &str)] = &[
-        (
-            "CommandNotImplemented",
-            "the controller has no such command",
-        ),
-        (
-            "CommandNotSupported",
-            "the service cannot run here: TeachBox without a terminal, or the unit refused the command (ER 1; the message shows the line sent)",
-        ),
-        (
-            "ControlCommandActive",
-            "a motion started with Control => True is still running",
-        ),
-        (
-            "DistanceInvalid",
-            "a gripper distance outside the tool's DistMin .. DistMax",
-        ),
-        (
-            "FatalCommunicationError",
-            "the serial link broke (end of file, I/O error, the port vanished); later services raise NoConnection until InitRobot opens it again",
-        ),
-        (
-            "FatalNetError",
-            "a network failure (no adair driver uses a network)",
-        ),
-        (
-            "ForceInvalid",
-            "a gripper force outside the tool's ForceMin .. ForceMax",
-        ),
-        (
-            "FrameInvalid",
-            "a frame that is not a rigid transform, or an orientation this 5-axis arm cannot take (ValidFrame turns it into one it can)",
-        ),
-        (
-            "MessageInvalid",
-            "a reply from the unit that does not parse",
-        ),
-        (
-            "MessageLost",
-            "no reply from the unit within the motion's time plus --serial-timeout",
-        ),
-        ("MessageOverflow", "a message too long for the controller"),
-        (
-            "NoConnection",
-            "the serial port does not open (the message names the port and the OS error)",
-        ),
-        ("NoRobotInstalled", "the port opened but no unit answers"),
-        (
-            "OutOfReach",
-            "the goal is outside the arm's reach or a joint's limits (the message gives the goal and the nearest reachable point, or the joint)",
-        ),
-        (
-            "PathAlreadyDefined",
-            "CreatePath or LoadPathSystem of a path number that exists",
-        ),
-        (
-            "PathElementNotDefined",
-            "a position number the path does not have",
-        ),
-        ("PathMemOverflow", "the controller's path memory is full"),
-        ("PathNotDefined", "a path number that was never created"),
-        (
-            "RobotBusy",
-            "a task calls a motion service while the TeachBox is open (another task has it)",
-        ),
-        (
-            "SystemNotInitialized",
-            "a service called before InitRobot (or after EndRobot)",
-        ),
-        (
-            "TimeInvalid",
-            "a motion time that is negative, not a number, or shorter than the joints' speed allows",
-        ),
-        (
-            "UserInfoInvalid",
-            "a TeachBox text over 60 characters or with control characters",
-        ),
-        (
-            "WrongRobotInstalled",
-            "the unit answers as another robot than --robot says",
-        ),
-    ];
-    EXCEPTIONS
-        .iter()
-        .find(|(n, _)| n.eq_ignore_ascii_case(name))
-        .map(|(n, d)| format!("exception AdaIR.{n} (handbook appendix B)\nraised when {d}\n"))
 }
 
 /// An address or register value as the REPL takes it: Ada based literals

@@ -17,7 +17,7 @@ use crate::interp::{Clock, ServiceCx as Cx, ServiceFault, Services, Value, value
 use crate::kinematics::{
     Arm, Elbow, Joints, KinError, Kinematics, MotionProfile, Pose, RobotDescription,
 };
-pub use exc::{Exc, ExcIds};
+pub use exc::{Exc, ExcIds, exception_doc};
 use std::collections::BTreeMap;
 use std::io::Write;
 use std::rc::Rc;
