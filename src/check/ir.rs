@@ -6,6 +6,7 @@ use super::PVec;
 use super::types::TypeId;
 use crate::diag::Span;
 use crate::syntax::ast::Mode;
+use std::any::Any;
 use std::rc::Rc;
 
 pub type FuncId = u32;
@@ -305,22 +306,63 @@ pub struct PartAt {
 }
 
 /// The code of a long body's compiled parts, in one list, opaque to the
-/// checker. The engine takes it out when it compiles the body: a body made
-/// of parts is compiled once (a second compilation finds the code gone,
-/// and running it raises Program_Error).
-#[derive(Clone)]
-pub struct Precompiled(pub Rc<std::cell::RefCell<Option<crate::interp::vm::Part>>>);
+/// checker: the checker makes the slot and keeps it in the body
+/// (`StmtKind::Compiled`), the engine adds each part's code to it
+/// ([`Precompiled::fill`]) and takes the code out when it compiles the body
+/// ([`Precompiled::take`]). A body made of parts is compiled once (a second
+/// compilation finds the code gone, and running it raises Program_Error).
+/// The checker never names the engine's code type: the engine is the layer
+/// above it (tests/layering.rs).
+#[derive(Clone, Default)]
+pub struct Precompiled(Rc<std::cell::RefCell<Slot>>);
+
+/// What a [`Precompiled`] holds.
+#[derive(Default)]
+enum Slot {
+    /// No code yet.
+    #[default]
+    Empty,
+    /// The engine's code so far.
+    Filled(Box<dyn Any>),
+    /// Taken out by the engine's compilation of the body.
+    Taken,
+}
 
 impl Precompiled {
     /// No code yet.
     pub fn new() -> Precompiled {
-        Precompiled(Rc::new(std::cell::RefCell::new(Some(Default::default()))))
+        Precompiled::default()
     }
-}
 
-impl Default for Precompiled {
-    fn default() -> Self {
-        Self::new()
+    /// Runs `f` on the code so far (a `T::default()` at first); `None`
+    /// once the code has been taken out. `T` is the engine's code type,
+    /// the same at every call.
+    pub fn fill<T: Any + Default, R>(&self, f: impl FnOnce(&mut T) -> R) -> Option<R> {
+        let mut slot = self.0.borrow_mut();
+        if let Slot::Empty = *slot {
+            *slot = Slot::Filled(Box::new(T::default()));
+        }
+        let Slot::Filled(code) = &mut *slot else {
+            return None;
+        };
+        let code = code
+            .downcast_mut::<T>()
+            .expect("a Precompiled holds one code type");
+        Some(f(code))
+    }
+
+    /// Takes the code out, once: the code so far (a `T::default()` when no
+    /// part was added), then `None`.
+    pub fn take<T: Any + Default>(&self) -> Option<T> {
+        match std::mem::replace(&mut *self.0.borrow_mut(), Slot::Taken) {
+            Slot::Empty => Some(T::default()),
+            Slot::Filled(code) => Some(
+                *code
+                    .downcast::<T>()
+                    .expect("a Precompiled holds one code type"),
+            ),
+            Slot::Taken => None,
+        }
     }
 }
 

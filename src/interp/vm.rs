@@ -292,7 +292,7 @@ pub(crate) fn compile_part(
     c.masters = u32::from(at.master);
     c.stmts(&stmts);
     drop(stmts);
-    if let Some(body) = into.0.borrow_mut().as_mut() {
+    into.fill(|body: &mut Part| {
         // One list for the whole body, grown in place (a big list's memory
         // is remapped, not copied, as it grows).
         let by = body.ops.len() as u32;
@@ -305,7 +305,7 @@ pub(crate) fn compile_part(
         body.exits
             .extend(c.exits.into_iter().map(|(id, t, d)| (id, t + by, d)));
         body.scalar = Some(body.scalar.unwrap_or(true) && c.scalar);
-    }
+    });
     c.max_temp
 }
 
@@ -1091,8 +1091,7 @@ impl<'r> Compiler<'r> {
             }
             StmtKind::Select(sel) => self.select(sel, s.span),
             StmtKind::Compiled(p) => {
-                let part = p.0.borrow_mut().take();
-                match part {
+                match p.take::<Part>() {
                     Some(part) => self.splice(part),
                     // Compiled once already: the walker raises.
                     None => self.ops.push(Op::Exec(Box::new(s.clone()))),
