@@ -1357,6 +1357,23 @@ pub(crate) fn char_lit_key(c: char) -> String {
     format!("'{:x}'", c as u32)
 }
 
+/// For the unit tests of the layer above (the engine's, which may not
+/// build a `Session`): `src` checked by a bare checker, without the
+/// stdlib; it must check. The engine reads it through [`Checker::program`].
+#[cfg(test)]
+pub(crate) fn checked_for_tests(src: &str) -> Checker {
+    let (unit, d) = crate::syntax::parse_source(src, 0);
+    assert!(d.is_empty(), "{d:?}");
+    let mut c = Checker::new(|_| false);
+    c.check_unit(&unit.expect("the program parses"));
+    let d = c.take_diags();
+    assert!(
+        d.iter().all(|d| d.is_warning()),
+        "the program checks: {d:?}"
+    );
+    c
+}
+
 #[cfg(test)]
 mod consume_tests {
     use crate::syntax::ast::{CompilationUnit, DeclKind, TopItem};
@@ -1390,50 +1407,5 @@ mod consume_tests {
         assert_eq!(body_len(&unit), 0);
         assert_eq!(format!("{kept:?}"), format!("{consumed:?}"));
         assert!(!c.consume_ast);
-    }
-
-    /// A long program (its bodies parsed lazily, a part at a time) checked
-    /// for its diagnostics only (`adair check`) keeps no checked statement
-    /// of its lazy bodies, and reports what a check that keeps them reports:
-    /// an error in a late part, a warning.
-    #[test]
-    fn a_check_for_diagnostics_only_keeps_no_lazy_body() {
-        let mut text = String::from(
-            "procedure Big is\n   X : Integer := 0;\n   Unused : Integer := 1;\nbegin\n",
-        );
-        for i in 0..6000 {
-            text.push_str(&format!("   X := X + {i} mod 7;\n"));
-        }
-        let good = format!("{text}end Big;\n");
-        let bad = format!("{text}   X := \"late\";\nend Big;\n");
-        let check = |src: &str, only: bool| {
-            let mut s = crate::session::Session::new(Box::new(std::io::sink()));
-            s.front.checker.diagnostics_only = only;
-            let r = s.check_source("big.adb", src, false);
-            let body = s
-                .front
-                .checker
-                .funcs
-                .iter()
-                .find(|f| f.name.eq_ignore_ascii_case("big"))
-                .and_then(|f| f.body.as_ref())
-                .map(|b| format!("{b:?}").matches("Assign").count());
-            let diags = match r {
-                Ok(_) => s.warnings.clone(),
-                Err(d) => d,
-            };
-            (format!("{diags:?}"), body)
-        };
-        assert!(good.len() >= 64 * 1024, "a lazily parsed source");
-        let (kept, n) = check(&good, false);
-        assert_eq!(n, Some(6000));
-        let (only, n) = check(&good, true);
-        assert_eq!(n, Some(0));
-        assert_eq!(kept, only);
-        assert!(kept.contains("Unused"), "{kept}");
-        let (kept, _) = check(&bad, false);
-        let (only, _) = check(&bad, true);
-        assert!(kept.contains("late"), "{kept}");
-        assert_eq!(kept, only);
     }
 }
