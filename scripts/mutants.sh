@@ -8,8 +8,11 @@
 # cargo lock (the machine has two cores for everyone); each mutant's build
 # and test run is cut after MUTANTS_TIMEOUT seconds (default 300).
 # Two passes per file. The first builds and runs only the library's unit
-# tests (`cargo test --lib`: the tests of src/kinematics/ and src/services/
-# live there, so a mutant costs one test binary, a few seconds). The second
+# tests (`cargo test --lib`: the tests of src/kinematics/ live there, so a
+# mutant costs one test binary, a few seconds), and for a file of
+# src/services/ the services' tests too (`--test services`: they run whole
+# programs through a Session, a layer above the services, so they are an
+# integration test; a second test binary). The second
 # (`--iterate`) gives the mutants the first pass missed or cut to the whole
 # suite (golden scripts, CLI, serial): MUTANTS_PASSES=1 skips it. Set
 # MUTANTS_TEST_ARGS to run other `cargo test` arguments in the second pass.
@@ -86,8 +89,10 @@ for f in "${files[@]}"; do
     # --in-place runs one mutant at a time by itself and refuses -j.
     [[ " ${extra[*]} " == *" --in-place "* ]] && jobs=()
     base=(cargo mutants "${jobs[@]}" --timeout "$timeout" "${extra[@]}" --file "$f" --output "$out")
-    # -C goes to the build as well as to the test run: one test binary.
-    run_pass "$out" "${base[@]}" -C --lib
+    # -C goes to the build as well as to the test run.
+    first=(-C --lib)
+    [[ $f == src/services/* ]] && first+=(-C --test=services)
+    run_pass "$out" "${base[@]}" "${first[@]}"
     # The whole suite, for what the library tests left (if anything).
     if [ "${MUTANTS_PASSES:-2}" != 1 ] && { [ -s "$out/mutants.out/missed.txt" ] \
         || [ -s "$out/mutants.out/timeout.txt" ]; }; then

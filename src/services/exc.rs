@@ -180,24 +180,3 @@ pub fn exception_doc(name: &str) -> Option<String> {
         .find(|(n, _)| n.eq_ignore_ascii_case(name))
         .map(|(n, d)| format!("exception AdaIR.{n} (handbook appendix B)\nraised when {d}\n"))
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn every_exception_is_bound_to_its_own_identity() {
-        let mut s = crate::session::Session::new(Box::new(std::io::sink()));
-        assert!(s.need_package("AdaIR"));
-        let ids = ExcIds::bind(&s.front.checker).expect("stdlib declares them all");
-        for (i, a) in Exc::ALL.iter().enumerate() {
-            assert_eq!(
-                s.front.checker.excs[ids.id(*a) as usize].name,
-                a.full_name()
-            );
-            for b in &Exc::ALL[i + 1..] {
-                assert_ne!(ids.id(*a), ids.id(*b));
-            }
-        }
-    }
-}

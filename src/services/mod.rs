@@ -3,7 +3,7 @@
 //! and only then commands the driver, so a refused motion moves nothing and
 //! every raised exception leaves the state as it was.
 
-pub(crate) mod paths;
+pub mod paths;
 pub mod record;
 pub mod table;
 

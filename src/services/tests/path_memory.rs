@@ -1,11 +1,10 @@
 //! The path memory: a path holds at most `PosNo'Last` positions and all
-//! paths together at most `MAX_TOTAL_POSITIONS`; past either,
-//! `PathMemOverflow` and nothing changes (handbook appendix B). The
-//! positions' list against a plain vector under random inserts and deletes.
+//! paths together at most `MAX_TOTAL_POSITIONS`; past either, the memory
+//! refuses and nothing changes. The positions' list against a plain vector
+//! under random inserts and deletes; a path file with too many positions.
+//! (`PathMemOverflow` raised in a program: tests/services/path_memory.rs.)
 
-use crate::golden::SharedBuf;
 use crate::services::paths::{Frame, MAX_POSITIONS, MAX_TOTAL_POSITIONS, PathMem, Positions};
-use crate::session::{Outcome, Session};
 use proptest::prelude::*;
 
 fn frame(x: f64) -> Frame {
@@ -84,38 +83,6 @@ fn the_memory_refuses_past_either_limit_and_changes_nothing() {
     assert_eq!(m.insert(p + 1, 0, frame(0.0)), Ok(0));
     m.remove(&(p + 1));
     assert_eq!(m.total(), MAX_TOTAL_POSITIONS - 1);
-}
-
-#[test]
-fn insert_position_raises_path_mem_overflow_when_the_memory_is_full() {
-    let out = SharedBuf::default();
-    let mut s = Session::new(Box::new(out.clone()));
-    s.set_robot(
-        crate::kinematics::RobotDescription::builtin("rv-m1").unwrap(),
-        None,
-        false,
-    );
-    let st = s.robot_state_mut().unwrap();
-    let mut p = 100;
-    while st.paths.total() < MAX_TOTAL_POSITIONS {
-        if st.paths.get(&p).map_or(0, Positions::len) == MAX_POSITIONS {
-            p += 1;
-        }
-        st.paths.insert(p, usize::MAX, frame(0.0)).unwrap();
-    }
-    let prog = "InitRobot;\nCreatePath (1);\n\
-        begin\n   InsertPosition (1, 1, Trans (300.0, 0.0, 200.0));\n   Put_Line (\"stored (wrong)\");\n\
-        exception\n   when E : PathMemOverflow =>\n      \
-        Put_Line (Ada.Exceptions.Exception_Name (E) & \": \" & Ada.Exceptions.Exception_Message (E));\n      \
-        Put_Line (ErrorCode'Image (ValueErrorStatus));\nend;\n";
-    assert!(matches!(s.run_source("t.air", prog), Outcome::Ok));
-    assert_eq!(
-        out.take(),
-        "ADAIR.PATHMEMOVERFLOW: the path memory holds 1000000 position(s) over all paths, \
-         its limit is 1000000\n 160\n"
-    );
-    let st = s.robot_state_mut().unwrap();
-    assert_eq!(st.paths.get(&1).map(Positions::len), Some(0));
 }
 
 #[test]

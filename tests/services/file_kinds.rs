@@ -42,7 +42,7 @@ fn try_file(dir: &Path, name: &Path, load: bool) -> String {
     .unwrap();
     let (tx, rx) = std::sync::mpsc::channel();
     std::thread::spawn(move || {
-        let _ = tx.send(crate::golden::run_case(&script));
+        let _ = tx.send(adair::golden::run_case(&script));
     });
     match rx.recv_timeout(Duration::from_secs(10)) {
         Ok(out) => out,

@@ -4,8 +4,8 @@
 //! Ada exception (AdaIR's own, or Constraint_Error from a parameter subtype),
 //! and a call that raises leaves the joints exactly where they were.
 
-use crate::kinematics::RobotDescription;
-use crate::session::Session;
+use adair::kinematics::RobotDescription;
+use adair::session::Session;
 use proptest::prelude::*;
 
 fn f(x: f64) -> String {
@@ -101,7 +101,7 @@ fn run(calls: &[(u8, Vec<f64>)], robot: &str) -> Result<(), TestCaseError> {
             call(*k, v)
         ));
     }
-    let buf = crate::golden::SharedBuf::default();
+    let buf = adair::golden::SharedBuf::default();
     let mut s = Session::new(Box::new(buf.clone()));
     s.set_robot(
         RobotDescription::builtin(robot).expect("robot"),

@@ -27,7 +27,7 @@ fn trace_and_value_tool_agree() {
                PlaceObject (30.0);\n\
                MoveTool (10.0, 12.0);\nShow;\n\
                MoveTool (0.0, 7.0);\nShow;\n";
-    let r = crate::golden::run_text("grip.air", src, "rv-m1", true);
+    let r = adair::golden::run_text("grip.air", src, "rv-m1", true);
     assert_eq!(r.code, 0, "{}{}", r.output, r.diagnostics);
     let lines: Vec<&str> = r.output.lines().collect();
     // After InitRobot: open 60 mm, force InitToolForce = 10 N.
@@ -73,7 +73,7 @@ fn pressing_reads_the_force_the_jaws_press_with_not_the_setting() {
                PlaceObject (30.0);\n\
                MoveTool (10.0, 80.0);\nShow;\n\
                MoveTool (60.0, 25.0);\nShow;\n";
-    let r = crate::golden::run_text("press.air", src, "rv-m1", false);
+    let r = adair::golden::run_text("press.air", src, "rv-m1", false);
     assert_eq!(r.code, 0, "{}{}", r.output, r.diagnostics);
     let values: Vec<&str> = r
         .output

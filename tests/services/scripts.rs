@@ -1,12 +1,13 @@
 //! The services' golden scripts (`tests/golden/services/`, and the task
 //! scenarios and examples, where the gripper picks parts from a belt), run
-//! by the library's own tests as well: the mutation pass over `src/services/`
-//! (`scripts/mutants.sh`) runs `cargo test --lib`, and what most of the
+//! by the services' tests as well: the first mutation pass over
+//! `src/services/` (`scripts/mutants.sh`) runs the library's unit tests and
+//! these (`cargo test --lib --test services`), and what most of the
 //! service core's code decides (options, timing, printed poses, faults) is
 //! pinned only by these scripts' expected output. `tests/golden.rs` runs
 //! them too, in both engines, with every other script.
 
-use crate::golden::{self, Verdict};
+use adair::golden::{self, Verdict};
 use std::path::PathBuf;
 
 #[test]

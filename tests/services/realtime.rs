@@ -1,13 +1,11 @@
-//! Motions paced to the wall clock (`RealTime => True`, `--realtime`), the
-//! user's stop in the middle of one, the wall clock of a real arm, and the
-//! pieces of the service core they use (`opts`, `interpolate`,
-//! `import_profile`). The golden scripts run on virtual time and never
-//! reach this code. Wall-clock figures are lower bounds only.
+//! Motions paced to the wall clock (`RealTime => True`, `--realtime`) and
+//! the user's stop in the middle of one (the pieces of the service core
+//! they use, `opts`, `interpolate`, the wall clock, are tested in
+//! `src/services/tests/parts.rs`). The golden scripts run on virtual time
+//! and never reach this code. Wall-clock figures are lower bounds only.
 
-use crate::interp::Clock;
-use crate::interp::value::Value;
-use crate::kinematics::RobotDescription;
-use crate::session::{Outcome, Session};
+use adair::kinematics::RobotDescription;
+use adair::session::{Outcome, Session};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
@@ -118,62 +116,6 @@ fn a_stop_during_a_realtime_motion_leaves_the_arm_where_it_had_got_to() {
 }
 
 #[test]
-fn interpolate_goes_evenly_through_the_support_points() {
-    let from = [0.0; 5];
-    let p1 = [1.0, 2.0, 0.0, 0.0, -1.0];
-    let p2 = [3.0, 2.0, 4.0, 0.0, -1.0];
-    let at = |f| crate::services::interpolate(&from, &[p1, p2], f);
-    assert_eq!(at(0.0), from);
-    assert_eq!(at(0.25), [0.5, 1.0, 0.0, 0.0, -0.5]);
-    assert_eq!(at(0.5), p1);
-    assert_eq!(at(0.75), [2.0, 2.0, 2.0, 0.0, -1.0]);
-    assert_eq!(at(1.0), p2);
-    assert_eq!(at(7.0), p2, "clamped");
-    assert_eq!(crate::services::interpolate(&p1, &[], 0.5), p1);
-}
-
-#[test]
-fn the_motion_options_are_read_from_their_own_positions() {
-    let args = [
-        Value::Int(0),
-        Value::Real(1.5),
-        Value::Int(0),
-        Value::Int(1),
-    ];
-    let o = crate::services::opts(&args, 1);
-    assert_eq!(
-        (o.time, o.time_arg, o.control, o.realtime),
-        (Some(1.5), 1.5, false, true)
-    );
-    let args = [Value::Real(0.0), Value::Int(1), Value::Int(0)];
-    let o = crate::services::opts(&args, 0);
-    assert_eq!((o.time, o.control, o.realtime), (None, true, false));
-}
-
-#[test]
-fn the_wall_clock_of_a_real_arm_counts_real_seconds() {
-    let mut c = crate::services::WallClock::default();
-    let t0 = c.now();
-    assert!((0.0..0.5).contains(&t0), "{t0}");
-    c.sleep(0.03);
-    let t1 = c.now();
-    assert!(t1 - t0 >= 0.03, "{t0} -> {t1}");
-    c.sleep(-5.0);
-    assert!(c.now() - t1 < 1.0, "a negative sleep does not wait");
-}
-
-#[test]
-fn every_service_gives_the_checker_its_import_profile() {
-    for svc in crate::services::SERVICES {
-        let p = crate::services::import_profile(svc.import)
-            .unwrap_or_else(|| panic!("{} has no import profile", svc.name));
-        assert_eq!(p.text, svc.import_profile().text, "{}", svc.name);
-        assert!(!p.text.is_empty(), "{}", svc.name);
-    }
-    assert!(crate::services::import_profile("NoSuchService").is_none());
-}
-
-#[test]
 fn a_straight_line_may_be_given_exactly_its_fastest_time() {
     // At full velocity a straight line takes its fastest time; the same
     // line back with `Time =>` that time is accepted (a tolerance of 1 ns
@@ -197,7 +139,7 @@ exception
    when TimeInvalid => Put_Line (\"shorter refused\");
 end;
 ";
-    let out = crate::golden::SharedBuf::default();
+    let out = adair::golden::SharedBuf::default();
     s.machine.out = Box::new(out.clone());
     let o = s.run_source("fast.air", text);
     assert!(matches!(o, Outcome::Ok), "{o:?}");
@@ -231,7 +173,7 @@ exception
    when TimeInvalid => Put_Line (\"shorter refused\");
 end;
 ";
-    let out = crate::golden::SharedBuf::default();
+    let out = adair::golden::SharedBuf::default();
     s.machine.out = Box::new(out.clone());
     let o = s.run_source("path.air", text);
     assert!(matches!(o, Outcome::Ok), "{o:?}");
@@ -241,19 +183,19 @@ end;
 /// A stand-in for a real arm: the simulator's motions, but taking "wall
 /// clock" time in the driver (`real_time`), with the waits counted.
 struct FakeArm {
-    sim: crate::driver::sim::Simulator,
+    sim: adair::driver::sim::Simulator,
     pending: bool,
     waits: std::rc::Rc<std::cell::Cell<u32>>,
 }
 
-impl crate::driver::Robot for FakeArm {
+impl adair::driver::Robot for FakeArm {
     fn description(&self) -> &RobotDescription {
         self.sim.description()
     }
-    fn joints(&self) -> crate::kinematics::Joints {
+    fn joints(&self) -> adair::kinematics::Joints {
         self.sim.joints()
     }
-    fn read_joints(&self) -> crate::kinematics::Joints {
+    fn read_joints(&self) -> adair::kinematics::Joints {
         self.sim.read_joints()
     }
     fn real_time(&self) -> bool {
@@ -261,13 +203,13 @@ impl crate::driver::Robot for FakeArm {
     }
     fn start_motion(
         &mut self,
-        points: &[crate::kinematics::Joints],
+        points: &[adair::kinematics::Joints],
         duration: f64,
-    ) -> Result<(), crate::driver::DriverError> {
+    ) -> Result<(), adair::driver::DriverError> {
         self.pending = true;
         self.sim.start_motion(points, duration)
     }
-    fn wait_motion(&mut self) -> Result<(), crate::driver::DriverError> {
+    fn wait_motion(&mut self) -> Result<(), adair::driver::DriverError> {
         if self.pending {
             self.waits.set(self.waits.get() + 1);
             self.pending = false;
@@ -277,17 +219,17 @@ impl crate::driver::Robot for FakeArm {
     fn motion_pending(&self) -> bool {
         self.pending
     }
-    fn calibrate(&mut self) -> Result<(), crate::driver::DriverError> {
+    fn calibrate(&mut self) -> Result<(), adair::driver::DriverError> {
         self.sim.calibrate()
     }
-    fn gripper(&self) -> crate::driver::GripperState {
+    fn gripper(&self) -> adair::driver::GripperState {
         self.sim.gripper()
     }
     fn move_gripper(
         &mut self,
         opening: f64,
         force_limit: Option<f64>,
-    ) -> Result<crate::driver::GripperState, crate::driver::DriverError> {
+    ) -> Result<adair::driver::GripperState, adair::driver::DriverError> {
         self.sim.move_gripper(opening, force_limit)
     }
 }
@@ -297,7 +239,7 @@ fn on_a_real_arm_a_motion_waits_for_the_arm_unless_control_is_true() {
     let desc = RobotDescription::builtin("rv-m1").unwrap();
     let waits = std::rc::Rc::new(std::cell::Cell::new(0));
     let arm = FakeArm {
-        sim: crate::driver::sim::Simulator::new(desc.clone()),
+        sim: adair::driver::sim::Simulator::new(desc.clone()),
         pending: false,
         waits: waits.clone(),
     };
@@ -406,14 +348,14 @@ fn a_stopped_motion_is_recorded_up_to_where_the_arm_stopped() {
 /// A stand-in real arm whose wait for a motion is interrupted (Ctrl-C).
 struct InterruptedArm(FakeArm);
 
-impl crate::driver::Robot for InterruptedArm {
+impl adair::driver::Robot for InterruptedArm {
     fn description(&self) -> &RobotDescription {
         self.0.description()
     }
-    fn joints(&self) -> crate::kinematics::Joints {
+    fn joints(&self) -> adair::kinematics::Joints {
         self.0.joints()
     }
-    fn read_joints(&self) -> crate::kinematics::Joints {
+    fn read_joints(&self) -> adair::kinematics::Joints {
         self.0.read_joints()
     }
     fn real_time(&self) -> bool {
@@ -421,29 +363,29 @@ impl crate::driver::Robot for InterruptedArm {
     }
     fn start_motion(
         &mut self,
-        points: &[crate::kinematics::Joints],
+        points: &[adair::kinematics::Joints],
         duration: f64,
-    ) -> Result<(), crate::driver::DriverError> {
+    ) -> Result<(), adair::driver::DriverError> {
         self.0.start_motion(points, duration)
     }
-    fn wait_motion(&mut self) -> Result<(), crate::driver::DriverError> {
+    fn wait_motion(&mut self) -> Result<(), adair::driver::DriverError> {
         self.0.wait_motion()?;
-        Err(crate::driver::DriverError::Interrupted)
+        Err(adair::driver::DriverError::Interrupted)
     }
     fn motion_pending(&self) -> bool {
         self.0.motion_pending()
     }
-    fn calibrate(&mut self) -> Result<(), crate::driver::DriverError> {
+    fn calibrate(&mut self) -> Result<(), adair::driver::DriverError> {
         self.0.calibrate()
     }
-    fn gripper(&self) -> crate::driver::GripperState {
+    fn gripper(&self) -> adair::driver::GripperState {
         self.0.gripper()
     }
     fn move_gripper(
         &mut self,
         opening: f64,
         force_limit: Option<f64>,
-    ) -> Result<crate::driver::GripperState, crate::driver::DriverError> {
+    ) -> Result<adair::driver::GripperState, adair::driver::DriverError> {
         self.0.move_gripper(opening, force_limit)
     }
 }
@@ -452,7 +394,7 @@ impl crate::driver::Robot for InterruptedArm {
 fn a_stopped_motion_of_a_real_arm_is_recorded_up_to_the_stop() {
     let desc = RobotDescription::builtin("rv-m1").unwrap();
     let arm = InterruptedArm(FakeArm {
-        sim: crate::driver::sim::Simulator::new(desc.clone()),
+        sim: adair::driver::sim::Simulator::new(desc.clone()),
         pending: false,
         waits: Default::default(),
     });

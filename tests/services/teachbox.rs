@@ -3,11 +3,11 @@
 //! screen, and another task that moves the arm while the box is open meets
 //! `RobotBusy` (tasks.md "Robot services from several tasks").
 
-use crate::golden::SharedBuf;
-use crate::interp::Clock;
-use crate::kinematics::{Joints, rad};
-use crate::services::{Pendant, RobotState, jog};
-use crate::session::{Outcome, Session};
+use adair::golden::SharedBuf;
+use adair::interp::Clock;
+use adair::kinematics::{Joints, rad};
+use adair::services::{Pendant, RobotState, jog};
+use adair::session::{Outcome, Session};
 use std::cell::RefCell;
 use std::rc::Rc;
 
@@ -94,8 +94,8 @@ fn teachbox_jogs_are_recorded_like_motions() {
     let n = rec.len();
     let t = rec.last().unwrap().t;
     let st = s.robot_state_mut().unwrap();
-    let mut clock = crate::interp::VirtualClock { t };
-    let g = crate::services::jog_hand(st, &mut clock, false).expect("close");
+    let mut clock = adair::interp::VirtualClock { t };
+    let g = adair::services::jog_hand(st, &mut clock, false).expect("close");
     assert!(g.opening < 60.0);
     let rec = &s.robot_state().unwrap().record.as_ref().unwrap()[n..];
     assert_eq!(rec.len(), 1);

@@ -1,10 +1,8 @@
-//! What `--record` samples of a motion, and the service table's lookups
-//! (by import name, by Ada name, command codes, group titles): the CLI
-//! tests see these only through whole runs and `:help` text.
+//! What `--record` samples of a motion (the service table's lookups are
+//! tested in `src/services/tests/parts.rs`).
 
-use crate::kinematics::RobotDescription;
-use crate::services::table::{self, Group};
-use crate::session::{Outcome, Session};
+use adair::kinematics::RobotDescription;
+use adair::session::{Outcome, Session};
 
 #[test]
 fn a_recorded_motion_is_sampled_every_20_ms_and_at_both_ends() {
@@ -35,37 +33,6 @@ fn a_recorded_motion_is_sampled_every_20_ms_and_at_both_ends() {
     let last = rec.last().unwrap();
     let fk = s.robot_state().unwrap().robot.joints();
     assert_eq!(last.joints, fk);
-}
-
-#[test]
-fn the_table_finds_services_by_import_name_and_by_ada_name() {
-    let s = table::by_import("MoveAxesRelative").expect("by import");
-    assert_eq!(s.name, "MoveAxesRelative");
-    assert!(table::by_import("NoSuchImport").is_none());
-    // By Ada name: any case, services only (not the value functions).
-    assert_eq!(table::by_name("movetool").map(|s| s.name), Some("MoveTool"));
-    // ValueAxes is a procedure and a function: the procedure is the service.
-    assert_eq!(
-        table::by_name("ValueAxes").map(|s| s.import),
-        Some("ValueAxes")
-    );
-    assert!(table::by_name("NoSuchService").is_none());
-    assert_eq!(table::code_of("MoveAxesRelative"), 190);
-    assert_eq!(table::code_of("NoSuchService"), 0);
-}
-
-#[test]
-fn every_group_has_its_own_title() {
-    let mut titles: Vec<&str> = Group::ALL.iter().map(|g| g.title()).collect();
-    assert_eq!(Group::Motion.title(), "motion");
-    assert!(
-        titles
-            .iter()
-            .all(|t| !t.is_empty() && t.chars().all(|c| c.is_ascii_lowercase() || c == ' '))
-    );
-    titles.sort();
-    titles.dedup();
-    assert_eq!(titles.len(), Group::ALL.len());
 }
 
 #[test]
@@ -125,7 +92,7 @@ fn set_robot_config_chooses_the_elbow_on_a_robot_whose_limits_allow_both() {
     let desc = RobotDescription::from_toml_str(&text).unwrap();
     let mut s = Session::new(Box::new(std::io::sink()));
     s.set_robot(desc, None, false);
-    let out = crate::golden::SharedBuf::default();
+    let out = adair::golden::SharedBuf::default();
     s.machine.out = Box::new(out.clone());
     let script = "\
 Arm : ArmConfig; Elbow : ElbowConfig; Hand : HandConfig;

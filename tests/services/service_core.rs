@@ -3,10 +3,10 @@
 //! on the simulator, and the service table as the source of the AdaIR
 //! package's declarations.
 
-use crate::golden::SharedBuf;
-use crate::interp::{Clock, VirtualClock};
-use crate::kinematics::{RobotDescription, joints_from_deg};
-use crate::session::{Outcome, Session};
+use adair::golden::SharedBuf;
+use adair::interp::{Clock, VirtualClock};
+use adair::kinematics::{RobotDescription, joints_from_deg};
+use adair::session::{Outcome, Session};
 
 #[test]
 fn a_session_without_a_robot_raises_instead_of_inventing_one() {
@@ -32,10 +32,10 @@ fn a_teach_box_jog_is_limited_clocked_and_traced_like_a_motion() {
     );
     let st = s.robot_state_mut().expect("robot state");
     let mut clock = VirtualClock::default();
-    crate::services::jog(st, &mut clock, joints_from_deg([30.0, 0.0, 0.0, 0.0, 0.0])).unwrap();
+    adair::services::jog(st, &mut clock, joints_from_deg([30.0, 0.0, 0.0, 0.0, 0.0])).unwrap();
     assert!(clock.now() > 0.0, "the jog took no time");
     assert!((st.robot.joints()[0] - 30f64.to_radians()).abs() < 1e-12);
-    let e = crate::services::jog(st, &mut clock, joints_from_deg([0.0, 150.0, 0.0, 0.0, 0.0]))
+    let e = adair::services::jog(st, &mut clock, joints_from_deg([0.0, 150.0, 0.0, 0.0, 0.0]))
         .unwrap_err();
     assert!(e.contains("joint 2"), "{e}");
     assert!((st.robot.joints()[1]).abs() < 1e-12, "a refused jog moved");
@@ -47,7 +47,7 @@ fn a_teach_box_jog_is_limited_clocked_and_traced_like_a_motion() {
 fn the_adair_package_declares_every_service_of_the_table() {
     let mut s = Session::new(Box::new(std::io::sink()));
     s.need_package("AdaIR");
-    for svc in crate::services::SERVICES {
+    for svc in adair::services::SERVICES {
         let n = s
             .front
             .checker
@@ -57,7 +57,7 @@ fn the_adair_package_declares_every_service_of_the_table() {
             .count();
         assert!(n >= 1, "{} is not declared", svc.name);
     }
-    let spec = crate::services::table::spec_text();
+    let spec = adair::services::table::spec_text();
     assert!(spec.contains(
         "procedure MoveAxesAbsolute (Axes : in AxesVector; Time : in Duration := 0.0; Control : in Boolean := False; RealTime : in Boolean := False) with Import, External_Name => \"MoveAxesAbsolute\";"
     ));
@@ -76,8 +76,12 @@ fn services_take_a_narrow_context_and_a_typed_state() {
         .filter(|p| p.extension().is_some_and(|x| x == "rs"))
         .collect();
     assert!(files.len() >= 5, "{files:?}");
-    files.push(root.join("src/session/mod.rs"));
-    files.push(root.join("src/session/frontend.rs"));
+    // The session's files.
+    files.extend(
+        std::fs::read_dir(root.join("src/session"))
+            .unwrap()
+            .map(|e| e.unwrap().path()),
+    );
     files.extend(
         std::fs::read_dir(root.join("src/interp"))
             .unwrap()
@@ -146,7 +150,7 @@ fn a_service_exception_is_raised_at_the_call_and_the_state_stays_with_the_sessio
     assert!((st.velocity - 0.5).abs() < 1e-12);
     assert_eq!(
         st.error_status,
-        crate::services::table::code_of("MoveAxesAbsolute")
+        adair::services::table::code_of("MoveAxesAbsolute")
     );
 }
 
@@ -196,10 +200,10 @@ fn the_teach_box_service_passes_text_and_flags_to_the_pendant() {
     use std::rc::Rc;
     type Seen = Rc<RefCell<Vec<(String, bool, bool)>>>;
     struct Fake(Seen);
-    impl crate::services::Pendant for Fake {
+    impl adair::services::Pendant for Fake {
         fn teach(
             &mut self,
-            _: &mut crate::services::RobotState,
+            _: &mut adair::services::RobotState,
             _: &mut dyn Clock,
             text: &str,
             refresh: bool,

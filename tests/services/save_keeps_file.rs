@@ -8,7 +8,7 @@ use std::path::Path;
 fn run(dir: &Path, name: &str, body: &str) -> String {
     let script = dir.join(name);
     std::fs::write(&script, body).unwrap();
-    crate::golden::run_case(&script)
+    adair::golden::run_case(&script)
 }
 
 #[test]

@@ -154,7 +154,7 @@ fn run(k: usize, value: &str, i: usize) -> (String, String) {
          end;\n",
         stmt = SLOTS[k].stmt
     );
-    let r = crate::golden::run_text("bad.air", &src, "rv-m1", false);
+    let r = adair::golden::run_text("bad.air", &src, "rv-m1", false);
     assert_eq!(r.code, 0, "{src}\n{}\n{}", r.output, r.diagnostics);
     let mut lines = r.output.lines();
     let exc = lines.next().unwrap_or_default().to_string();
