@@ -170,7 +170,7 @@ impl SerialOpts {
 impl RobotOpts {
     fn description(&self) -> Result<adair::kinematics::RobotDescription, String> {
         let r = match &self.robot_file {
-            Some(p) => adair::kinematics::RobotDescription::from_file(p),
+            Some(p) => adair::services::read_robot_file(p),
             None => adair::kinematics::RobotDescription::builtin(&self.robot),
         };
         r.map_err(|e| {

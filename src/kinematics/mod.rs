@@ -1,9 +1,10 @@
 //! Kinematics of 5-axis vertical articulated arms (Mitsubishi RV-M1, RM-501
 //! and any robot of the same structure described by a TOML file).
 //!
-//! Pure math: no I/O except [`RobotDescription::from_file`], no printing, no
-//! clock. Every public function returns a [`KinError`] instead of panicking,
-//! whatever its input (NaN included).
+//! Pure math: no I/O (a description file is read above, by the services;
+//! tests/layering.rs holds it), no printing, no clock. Every public
+//! function returns a [`KinError`] instead of panicking, whatever its input
+//! (NaN included).
 //!
 //! Conventions (see `docs/kinematics.md` for the decisions):
 //! - joint angles in radians, lengths in millimetres, times in seconds;

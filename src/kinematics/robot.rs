@@ -6,7 +6,6 @@
 //! keys come from the TOML parser (one at a time, with line and column).
 
 use std::fmt;
-use std::path::Path;
 
 use serde::Deserialize;
 
@@ -243,17 +242,11 @@ impl RobotDescription {
         Self::parse(text, "<string>".to_string())
     }
 
-    /// Read and parse a description file.
-    pub fn from_file(path: impl AsRef<Path>) -> Result<Self, DescriptionError> {
-        let path = path.as_ref();
-        let source = path.display().to_string();
-        match std::fs::read_to_string(path) {
-            Ok(text) => Self::parse(&text, source),
-            Err(e) => Err(DescriptionError {
-                source,
-                problems: vec![format!("cannot read the file: {e}")],
-            }),
-        }
+    /// Parse a description from the TOML text of the file `source` names
+    /// (in its errors). The kinematics do no I/O: the file is read above
+    /// them (`services::read_robot_file`).
+    pub fn from_file_text(text: &str, source: impl Into<String>) -> Result<Self, DescriptionError> {
+        Self::parse(text, source.into())
     }
 
     fn parse(text: &str, source: String) -> Result<Self, DescriptionError> {

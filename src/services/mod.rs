@@ -265,6 +265,22 @@ pub fn lookup(name: &str) -> Option<crate::interp::Binding> {
     table::index_of(name).map(crate::interp::Binding::Service)
 }
 
+/// Reads and parses a robot description file (`--robot-file`). The
+/// kinematics parse the text and do no I/O; the file is read here.
+pub fn read_robot_file(
+    path: impl AsRef<std::path::Path>,
+) -> Result<RobotDescription, crate::kinematics::DescriptionError> {
+    let path = path.as_ref();
+    let source = path.display().to_string();
+    match std::fs::read_to_string(path) {
+        Ok(text) => RobotDescription::from_file_text(&text, source),
+        Err(e) => Err(crate::kinematics::DescriptionError {
+            source,
+            problems: vec![format!("cannot read the file: {e}")],
+        }),
+    }
+}
+
 /// The profile an import name expects, for the checker.
 pub fn import_profile(name: &str) -> Option<crate::check::ImportProfile> {
     table::by_import(name).map(|s| s.import_profile())

@@ -1,9 +1,10 @@
 //! Tests of the services through whole programs: the service core,
 //! gripper and ValidFrame scripts, every float argument refused, random
 //! service calls, saves that keep the old file, the exceptions bound, the
-//! path memory full. They build a `Session`, the layer above the services
-//! (tests/layering.rs), so they are an integration test (`cargo test
-//! --test services`); the services' unit tests (`src/services/tests/`) need none. The first pass of a
+//! path memory full; and a robot description read from a file. They build
+//! a `Session`, the layer above the services (tests/layering.rs), so they
+//! are an integration test (`cargo test --test services`); the services'
+//! unit tests (`src/services/tests/`) need none. The first pass of a
 //! mutation run over `src/services/` (`scripts/mutants.sh`) runs both.
 
 mod bad_floats;
@@ -14,6 +15,7 @@ mod path_memory;
 mod props;
 mod realtime;
 mod record_table;
+mod robot_file;
 mod save_keeps_file;
 mod scripts;
 mod service_core;

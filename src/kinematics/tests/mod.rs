@@ -6,7 +6,8 @@
 //! straight lines, the motion rules (proptest), speed profiles, seeded
 //! round trips and ValidFrame. They are unit tests of the library, not
 //! integration tests, so that `cargo test --lib` covers `src/kinematics/`
-//! and a mutation run (`scripts/mutants.sh`) builds one test binary.
+//! and a mutation run (`scripts/mutants.sh`) builds one test binary. Like
+//! the kinematics, they do no I/O (tests/layering.rs).
 
 mod description;
 mod fk_ik;
