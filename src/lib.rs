@@ -1,7 +1,8 @@
 //! adair: an interpreter, checker and simulator for AdaIR, Ada for industrial robots.
 //!
-//! Layers (arrows point one way): `syntax` -> `check` -> `interp`; `diag`
-//! is the one diagnostic type; `driver` ties a session together; only the
+//! Layers (arrows point one way): `syntax` below `check` below `interp`
+//! below `services` below `session`; `diag` at the bottom; the table is in
+//! ARCHITECTURE.md ("Layers") and `tests/layering.rs` enforces it. Only the
 //! binary prints.
 #![forbid(unsafe_code)]
 // AST and IR nodes are built once per program; boxing their big variants
