@@ -863,6 +863,12 @@ fn real_main(
                 if let Some(d) = &devices {
                     s.set_devices(d.clone());
                 }
+                // Targets are judged for the robot a script names in its
+                // `-- adair: --robot` line (else the RV-M1).
+                s.check_robot = adair::golden::directives(&text)
+                    .ok()
+                    .and_then(|d| d.robot)
+                    .and_then(|r| adair::kinematics::RobotDescription::builtin(&r).ok());
                 match s.check_source(&f.to_string_lossy(), text.clone(), false) {
                     Err(d) => {
                         eprint!("{}", adair::diag::render(&d, &s.front.sources, color));

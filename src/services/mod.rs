@@ -4,6 +4,7 @@
 //! every raised exception leaves the state as it was.
 
 pub mod paths;
+pub mod lint;
 pub mod record;
 pub mod table;
 

@@ -133,6 +133,9 @@ pub struct Session {
     /// (None until one is chosen: a service call then raises
     /// `Program_Error`, never drives a default robot).
     pub robot: Option<crate::services::RobotState>,
+    /// The robot `adair check` judges targets for when no robot is chosen
+    /// (`--robot`, a script's `-- adair: --robot`; None: the RV-M1).
+    pub check_robot: Option<crate::kinematics::RobotDescription>,
 }
 
 /// The engine's side of the pipeline: each source is shown to the
@@ -197,6 +200,7 @@ impl Session {
             strict: false,
             warnings_to: None,
             robot,
+            check_robot: None,
         }
     }
 
@@ -383,12 +387,41 @@ impl Session {
     ) -> Result<(Vec<Stmt>, Option<FuncId>), Vec<Diagnostic>> {
         let strict = self.strict;
         let (front, mut host) = self.parts();
-        let checked = front.check(name, text.into_shared(), script, Mode::Run, None, &mut host);
+        let mut checked = front.check(name, text.into_shared(), script, Mode::Run, None, &mut host);
+        // A whole program (not a REPL entry, whose robot earlier entries
+        // set up) is also read for the robot faults it certainly has.
+        if !script && checked.passes(false) {
+            let lint = self.lint(&checked);
+            checked.diags.extend(lint);
+            checked
+                .diags
+                .sort_by_key(|d| (d.span.context, d.span.start));
+        }
         if !checked.passes(strict) {
             return Err(checked.diags);
         }
         self.warnings = checked.diags;
         Ok((checked.stmts, checked.main))
+    }
+
+    /// W0005 and W0006 (see `services::lint`) for a checked program.
+    fn lint(&self, checked: &Checked) -> Vec<Diagnostic> {
+        let chosen = self
+            .robot
+            .as_ref()
+            .map(|r| r.robot.description().clone())
+            .or_else(|| self.check_robot.clone());
+        let Some(robot) =
+            chosen.or_else(|| crate::kinematics::RobotDescription::builtin("rv-m1").ok())
+        else {
+            return Vec::new();
+        };
+        crate::services::lint::warnings(
+            self.front.checker.program(),
+            &checked.stmts,
+            checked.main,
+            &robot,
+        )
     }
 
     /// The warnings of the last successful check, taken.

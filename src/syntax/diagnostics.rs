@@ -157,6 +157,15 @@ pub fn bad_number(span: Span, text: &str, fault: &NumberFault) -> Diagnostic {
     }
 }
 
+/// `==` or `!=` from another language; read as Ada's `=` or `/=`.
+pub fn foreign_operator(span: Span, op: &str, ada: &str) -> Diagnostic {
+    Diagnostic::new(codes::E0104, span, format!("`{op}` is not an Ada operator"))
+        .with_label(format!("Ada writes `{ada}`"))
+        .with_hint(format!(
+            "write `{ada}`: in Ada, `=` compares, `/=` is \"not equal\", and `:=` assigns"
+        ))
+}
+
 // --- syntax ---
 
 /// A grammar error without a more precise word: a token the grammar does
@@ -175,6 +184,16 @@ pub fn missing_semicolon(span: Span, found: &str) -> Diagnostic {
     Diagnostic::new(codes::E0103, span, format!("missing `;` before {found}"))
         .with_label("expected `;` here")
         .with_hint("a statement or declaration ends with `;`")
+}
+
+/// `exception` at the top of a script: a script's statements have no
+/// handler of their own, a block gives them one.
+pub fn handler_outside_a_block(span: Span, message: impl Into<String>) -> Diagnostic {
+    Diagnostic::new(codes::E0101, span, message)
+        .with_label("no `begin` that this handler could belong to")
+        .with_hint(
+            "put the statements and the handler in a block:\n   begin\n      ...\n   exception\n      when OutOfReach => ...\n   end;",
+        )
 }
 
 /// A `)` that closes no `(`.

@@ -69,6 +69,12 @@ enum Raw {
     Eq,
     #[token("/=")]
     Ne,
+    /// `==` and `!=` of C, Python, RAPID's neighbours: reported, read as
+    /// `=` and `/=`.
+    #[token("==")]
+    EqEq,
+    #[token("!=")]
+    BangEq,
     #[token("<")]
     Lt,
     #[token("<=")]
@@ -207,6 +213,14 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
                 Ok(Raw::Slash) => Token::Slash,
                 Ok(Raw::Eq) => Token::Eq,
                 Ok(Raw::Ne) => Token::Ne,
+                Ok(Raw::EqEq) => {
+                    diags.push(D::foreign_operator(sp, "==", "="));
+                    Token::Eq
+                }
+                Ok(Raw::BangEq) => {
+                    diags.push(D::foreign_operator(sp, "!=", "/="));
+                    Token::Ne
+                }
                 Ok(Raw::Lt) => Token::Lt,
                 Ok(Raw::Le) => Token::Le,
                 Ok(Raw::Gt) => Token::Gt,

@@ -444,6 +444,13 @@ pub(super) fn rich_to_diag(e: Rich<'_, Token, Span>, tokens: &[(Token, Span)]) -
                 1 => format!(", expected {}", expected[0]),
                 _ => format!(", expected one of {}", expected.join(", ")),
             };
+            // A handler at the top of a script (as in Python's `try` or
+            // RAPID's ERROR section): a block gives statements a handler.
+            if matches!(e.found(), Some(Token::Kw(Kw::Exception)))
+                && expected.iter().any(|x| x == "end of input")
+            {
+                return D::handler_outside_a_block(span, format!("unexpected {found}{exp}"));
+            }
             let d = D::unexpected(span, format!("unexpected {found}{exp}")).with_label(label);
             // `...` (`..` then `.`): a placeholder copied from a text, as in
             // the handbook's demo (`F := ... -- Hier Code zur
