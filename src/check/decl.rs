@@ -172,11 +172,11 @@ impl Checker {
                 }
                 if let (Some(f), Some(name)) = (f, import) {
                     if !self.known_builtin(name) {
-                        self.err(diagnostics::no_builtin(spec.span, &name));
+                        self.err(diagnostics::no_builtin(spec.span, name));
                     } else if let Some(want) = self.import_mismatch(f, name) {
                         let declared = self.signature(f);
                         self.err(diagnostics::import_profile_mismatch(
-                            spec.span, &name, &declared, &want.text,
+                            spec.span, name, &declared, &want.text,
                         ));
                     }
                     self.imports[f as usize] = Some(name.clone());
@@ -768,7 +768,7 @@ impl Checker {
                 "or", "xor", "mod", "rem",
             ];
             if !ok.contains(&op.to_ascii_lowercase().as_str()) {
-                self.err(diagnostics::not_an_operator_symbol(*sp, &op));
+                self.err(diagnostics::not_an_operator_symbol(*sp, op));
             }
         }
         // A body completes an earlier declaration with the same profile.
@@ -877,7 +877,7 @@ impl Checker {
             if end.eq_ignore_ascii_case(&name) {
                 self.index_ref(*sp, &end.to_lowercase(), &Entity::Func(f));
             } else {
-                self.err(diagnostics::end_name_mismatch(*sp, &end, &name));
+                self.err(diagnostics::end_name_mismatch(*sp, end, &name));
             }
         }
         let written: Vec<&ast::Ident> = b.spec.params.iter().flat_map(|p| p.names.iter()).collect();

@@ -1376,11 +1376,11 @@ impl Checker {
                 self.err_ex(sp)
             }
             Entity::Exc(_) => {
-                self.err(diagnostics::exception_is_not_a_value(sp, &text));
+                self.err(diagnostics::exception_is_not_a_value(sp, text));
                 self.err_ex(sp)
             }
             Entity::Package(_) => {
-                self.err(diagnostics::package_is_not_a_value(sp, &text));
+                self.err(diagnostics::package_is_not_a_value(sp, text));
                 self.err_ex(sp)
             }
         }
