@@ -88,6 +88,40 @@ pub fn not_declared(span: Span, name: &str) -> Diagnostic {
         .about(&[name])
 }
 
+/// What AdaIR calls a command of another robot language (RAPID, KRL,
+/// URScript, RoboDK, MELFA BASIC), by its lower-case name.
+pub fn from_other_robot_languages(key: &str) -> Option<&'static str> {
+    const GRIP: &str = "AdaIR opens and closes the hand with `MoveTool (Distance, Force)`: `MoveTool (60.0, 0.0);` opens it to 60 mm, `MoveTool (0.0, 10.0);` closes it until it grips with 10 N";
+    const SPEED: &str =
+        "AdaIR sets the speed with `SetVelocity (Percent);`, e.g. `SetVelocity (50.0);`";
+    const LINEAR: &str = "AdaIR moves in a straight line with `SetMoveMode (StraightLine);` and then `MoveFrameAbsolute (F);`";
+    const JOINT: &str = "AdaIR moves joint-interpolated with `MoveAxesAbsolute (Axes);` (angles in radians), or `SetMoveMode (JointInterpolated);` and `MoveFrameAbsolute (F);`";
+    const HOME: &str = "AdaIR's `InitRobot;` calibrates and moves the arm to its zero pose";
+    const WAIT: &str = "Ada waits with `delay 1.5;` (seconds)";
+    const PRINT: &str = "Ada prints with `Put_Line (\"text\");` (`Integer'Image (N)` or `Float'Image (X)` make numbers text)";
+    Some(match key {
+        "gripper"
+        | "opengripper"
+        | "closegripper"
+        | "open_gripper"
+        | "close_gripper"
+        | "grip"
+        | "gripopen"
+        | "gripclose"
+        | "hopen"
+        | "hclose"
+        | "setgripper"
+        | "set_tool_digital_out" => GRIP,
+        "setspeed" | "set_speed" | "speed" | "velset" | "setvel" | "ovr" | "speedset" => SPEED,
+        "movelinear" | "move_linear" | "movel" | "lin" | "mvs" | "linear" => LINEAR,
+        "movej" | "move_joint" | "movejoint" | "moveabsj" | "ptp" | "mov" | "movjoint" => JOINT,
+        "home" | "gohome" | "movehome" | "nest" => HOME,
+        "waittime" | "wait" | "sleep" | "dly" => WAIT,
+        "tpwrite" | "print" | "textout" | "popup" => PRINT,
+        _ => return None,
+    })
+}
+
 /// `prefix.name` where `prefix` declares no `name`.
 pub fn not_declared_in(span: Span, name: &str, prefix: &str) -> Diagnostic {
     d(
@@ -916,6 +950,28 @@ pub fn case_needs_others(span: Span, ty: &str) -> Diagnostic {
 }
 
 // ---- E0311: names indexed, called or selected wrongly ----
+
+/// `F := P (A, B);` where `P` gives its result in its last, `out`
+/// parameter: `written` is the call as a statement, `P (A, B, F);`.
+pub fn procedure_result_in_out_param(
+    span: Span,
+    name: &str,
+    param: &str,
+    written: &str,
+    signature: &str,
+) -> Diagnostic {
+    d(
+        codes::E0311,
+        span,
+        format!("`{name}` is a procedure and has no value"),
+    )
+    .with_label(format!(
+        "it gives its result in its `out` parameter `{param}`"
+    ))
+    .with_hint(format!(
+        "call it as a statement: `{written}` (`{signature}`)"
+    ))
+}
 
 pub fn procedure_has_no_value(span: Span, name: &str) -> Diagnostic {
     d(

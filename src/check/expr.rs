@@ -91,6 +91,22 @@ impl Checker {
                     "make it text: `{tn}'Image ({})`",
                     self.snippet(ex.span)
                 ));
+            } else if self.types.base(t) == types::CHARACTER
+                && matches!(
+                    self.types.kind(self.types.base(ex.ty)),
+                    TypeKind::Integer | TypeKind::Float | TypeKind::UnivInt | TypeKind::UnivReal
+                )
+            {
+                // `"Z is " & Z`: `&` joins characters and strings only.
+                let tn = match self.types.kind(ex.ty) {
+                    TypeKind::UnivInt => "Integer".to_string(),
+                    TypeKind::UnivReal => "Float".to_string(),
+                    _ => self.types.name(ex.ty).to_string(),
+                };
+                d = d.with_hint(format!(
+                    "`&` joins text, not numbers: make it text with `{tn}'Image ({})`",
+                    self.snippet(ex.span)
+                ));
             } else if self.types.base(ex.ty) == types::STRING
                 && (ti || tf || matches!(self.types.kind(self.types.base(t)), TypeKind::Enum(_)))
             {

@@ -1056,6 +1056,8 @@ impl Checker {
                             "`{}` is declared in `{pkg}`: add `with {pkg}; use {pkg};` at the top of the file",
                             id.name
                         ));
+                    } else if let Some(h) = diagnostics::from_other_robot_languages(&id.key) {
+                        d = d.with_hint(h);
                     } else if let Some(s) = self.suggest(&id.key) {
                         d = d.with_guess(format!("did you mean `{s}`?"));
                     }

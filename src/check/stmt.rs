@@ -189,9 +189,14 @@ impl Checker {
                     }
                     _ => ty,
                 };
-                let v = self.expr(value, Some(vty));
-                let v = self.coerce(v, vty);
-                StmtKind::Assign(t, v)
+                if let Some(d) = self.procedure_assigned(target.span, value) {
+                    self.err(d);
+                    StmtKind::Null
+                } else {
+                    let v = self.expr(value, Some(vty));
+                    let v = self.coerce(v, vty);
+                    StmtKind::Assign(t, v)
+                }
             }
             S::Call(e) => match self.call_stmt(e) {
                 Some(k) => k,
@@ -664,5 +669,51 @@ pub(super) fn last_ident(e: &ast::Expr) -> Option<&ast::Ident> {
     match &e.kind {
         ast::ExprKind::Name(id) | ast::ExprKind::Select(_, id) => Some(id),
         _ => None,
+    }
+}
+
+impl Checker {
+    /// `F := ValuePosition (1, N);`: a procedure that gives its result in
+    /// its last, `out` parameter, called as a function. The diagnostic
+    /// shows the call as it is written (`ValuePosition (1, N, F);`).
+    fn procedure_assigned(&mut self, target: Span, value: &ast::Expr) -> Option<Diagnostic> {
+        let (callee, args) = match &value.kind {
+            ast::ExprKind::Apply(p, args) => (p, args.len()),
+            _ => return None,
+        };
+        let ast::ExprKind::Name(id) = &callee.kind else {
+            return None;
+        };
+        let es = self.lookup(&id.key);
+        let mut out_last = None;
+        for e in &es {
+            let Entity::Func(f) = e else { return None };
+            let sp = &self.funcs[*f as usize];
+            if sp.ret.is_some() {
+                return None;
+            }
+            if sp.params.len() == args + 1
+                && matches!(
+                    sp.params.last().map(|p| p.mode),
+                    Some(ast::Mode::Out | ast::Mode::InOut)
+                )
+            {
+                out_last = Some(*f);
+            }
+        }
+        let f = out_last?;
+        let call = self.snippet(value.span);
+        let written = format!(
+            "{}, {});",
+            call.trim_end().strip_suffix(')')?.trim_end(),
+            self.snippet(target)
+        );
+        Some(diagnostics::procedure_result_in_out_param(
+            value.span,
+            &id.name,
+            &self.funcs[f as usize].params.last()?.name,
+            &written,
+            &self.signature(f),
+        ))
     }
 }

@@ -403,13 +403,14 @@ mod render_tests {
         let id = sources.add("many.air", &text);
         let diags: Vec<Diagnostic> = (0..1500u32)
             .map(|i| {
-                Diagnostic::stray_char(
+                Diagnostic::new(
+                    codes::E0001,
                     Span {
                         start: 2 * i,
                         end: 2 * i + 1,
                         context: id,
                     },
-                    'x',
+                    "unexpected character `x`",
                 )
             })
             .collect();
@@ -417,7 +418,7 @@ mod render_tests {
         let firsts = out.lines().filter(|l| l.starts_with("many.air:")).count();
         assert_eq!(firsts, SHOWN, "{}", &out[..out.len().min(400)]);
         assert_eq!(out.matches("╭─[").count(), SHOWN_IN_FULL);
-        assert!(out.contains("many.air:101:1: error: unexpected character `x`\n"));
+        assert!(out.contains("many.air:101:1: error[E0001]: unexpected character `x`\n"));
         assert!(
             out.ends_with("adair: 500 more diagnostics not shown (fix the first ones: later ones often follow from them)\n"),
             "{}",

@@ -227,11 +227,7 @@ impl Kinematics {
 
     /// `raw` with each joint moved by a multiple of 2 pi into its limits,
     /// nearest to `reference`; or the first joint that fits no way.
-    pub(crate) fn fit_limits(
-        &self,
-        raw: &Joints,
-        reference: &Joints,
-    ) -> Result<Joints, LimitViolation> {
+    pub fn fit_limits(&self, raw: &Joints, reference: &Joints) -> Result<Joints, LimitViolation> {
         let mut out = *raw;
         for (i, spec) in self.desc.joints().iter().enumerate() {
             let q = raw[i];

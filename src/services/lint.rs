@@ -13,8 +13,9 @@
 //!   `SystemNotInitialized` (or `others`): a test of that exception is
 //!   meant.
 //! - W0006: `MoveAxesAbsolute` with an aggregate of literal angles one of
-//!   which lies outside its joint's limits (AxesVector is in radians: 3.0
-//!   meant as degrees is 172 degrees), or `MoveFrameAbsolute (Trans (X, Y,
+//!   which lies outside its joint's limits however many turns are taken
+//!   off (as the service does; AxesVector is in radians: 3.0 meant as
+//!   degrees is 172 degrees), or `MoveFrameAbsolute (Trans (X, Y,
 //!   Z))` with literals farther from the base than the arm's full stretch.
 
 use crate::check::ir::{Arg, ArrayAggKind, Body, Ex, ExKind, FuncId, ProgramRef, Stmt, StmtKind};
@@ -187,17 +188,19 @@ impl Lint<'_> {
                 let Some(q) = literal_reals(&first.value) else {
                     return;
                 };
-                for (i, (v, spec)) in q.iter().zip(self.robot.joints()).enumerate() {
-                    if !spec.contains(*v) {
-                        self.out.push(joint_out_of_reach(
-                            first.value.span,
-                            i + 1,
-                            *v,
-                            spec.min,
-                            spec.max,
-                        ));
-                        return;
-                    }
+                let Ok(q) = <[f64; crate::kinematics::JOINTS]>::try_from(q) else {
+                    return;
+                };
+                // As the service takes it: multiples of 2 pi removed.
+                let k = crate::kinematics::Kinematics::new(self.robot.clone());
+                if let Err(v) = k.fit_limits(&q, &q) {
+                    self.out.push(joint_out_of_reach(
+                        first.value.span,
+                        v.joint,
+                        q[v.joint - 1],
+                        v.min,
+                        v.max,
+                    ));
                 }
             }
             "MoveFrameAbsolute" => {
@@ -303,8 +306,9 @@ fn joint_out_of_reach(span: Span, joint: usize, v: f64, min: f64, max: f64) -> D
         ),
     )
     .with_label("OutOfReach will be raised here");
-    // 3.0 meant as degrees.
-    if v.to_radians() >= min && v.to_radians() <= max {
+    // 3.0 meant as degrees (a number as people write one).
+    let written = (v * 100.0).fract() == 0.0;
+    if written && v.to_radians() >= min && v.to_radians() <= max {
         d = d.with_hint(format!(
             "an AxesVector is in radians: for {v:?} degrees write `{v:?} * Pi / 180.0` ({:.4})",
             v.to_radians()

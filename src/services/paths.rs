@@ -651,7 +651,11 @@ pub(crate) fn write_whole(name: &std::path::Path, bytes: &[u8]) -> Result<(), Fi
             {
                 return Err((
                     Exc::NameError,
-                    format!("the directory {} does not exist", dir.display()),
+                    format!(
+                        "the directory {} does not exist{}",
+                        dir.display(),
+                        relative_note(dir)
+                    ),
                 ));
             }
         }
@@ -713,7 +717,10 @@ pub(crate) fn read_whole(name: &std::path::Path) -> Result<Vec<u8>, FileFault> {
         None => Ok(()),
     };
     let cannot = |e: std::io::Error| match e.kind() {
-        std::io::ErrorKind::NotFound => (Exc::NameError, format!("no file {}", name.display())),
+        std::io::ErrorKind::NotFound => (
+            Exc::NameError,
+            format!("no file {}{}", name.display(), relative_note(name)),
+        ),
         _ => (
             Exc::UseError,
             format!("cannot read {}: {e}", name.display()),
@@ -731,4 +738,14 @@ pub(crate) fn read_whole(name: &std::path::Path) -> Result<Vec<u8>, FileFault> {
     let mut bytes = Vec::new();
     f.read_to_end(&mut bytes).map_err(cannot)?;
     Ok(bytes)
+}
+
+/// For a relative name in a `Name_Error`: where it was looked up (a script
+/// run from another folder looks for its files there, not beside itself).
+fn relative_note(name: &std::path::Path) -> &'static str {
+    if name.is_relative() {
+        " (a relative name: looked up in the current directory)"
+    } else {
+        ""
+    }
 }
