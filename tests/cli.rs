@@ -61,7 +61,7 @@ fn a_diagnostic_starts_with_file_line_col_error() {
     assert_eq!(code, 2);
     let first = err.lines().next().unwrap_or("");
     assert!(
-        first.starts_with(&format!("{bad}:2:1: error: ")),
+        first.starts_with(&format!("{bad}:2:1: error[E0201]: ")),
         "first line: {first}"
     );
 }
@@ -123,12 +123,12 @@ fn unclosed_nested_declare_blocks_are_reported_not_retried_exponentially() {
     assert_eq!(code, 2, "{err}");
     let first = err.lines().next().unwrap_or("");
     assert!(
-        first.ends_with(":2004:1: error: `end;` expected to close the block at 2001:1"),
+        first.ends_with(":2004:1: error[E0102]: `end;` expected to close the block at 2001:1"),
         "{}",
         &err[..err.len().min(600)]
     );
     assert!(err.contains("this block is not closed"), "{err}");
-    assert_eq!(err.matches(": error:").count(), 1, "{err}");
+    assert_eq!(err.matches(": error[").count(), 1, "{err}");
 }
 
 #[test]
@@ -140,14 +140,13 @@ fn a_body_the_text_ends_inside_is_one_error_naming_the_subprogram() {
     let (code, _, err) = adair(&["check", &f]);
     assert_eq!(code, 2, "{err}");
     assert!(
-        err.lines()
-            .next()
-            .unwrap_or("")
-            .ends_with(":5:1: error: the text ends inside the body of the subprogram at 1:1"),
+        err.lines().next().unwrap_or("").ends_with(
+            ":5:1: error[E0102]: the text ends inside the body of the subprogram at 1:1"
+        ),
         "{err}"
     );
     assert!(err.contains("end NAME;"), "{err}");
-    assert_eq!(err.matches(": error:").count(), 1, "{err}");
+    assert_eq!(err.matches(": error[").count(), 1, "{err}");
 }
 
 #[test]
@@ -163,11 +162,13 @@ fn nesting_past_the_limit_is_one_error_with_its_place_and_below_it_runs() {
     assert_eq!(code, 2, "{err}");
     // The 10,001st `(` is at column 15 + 10,000.
     assert!(
-        err.contains(":1:10016: error: nesting too deep: more than 10000 levels of parentheses"),
+        err.contains(
+            ":1:10016: error[E0105]: nesting too deep: more than 10000 levels of parentheses"
+        ),
         "{}",
         &err[..err.len().min(400)]
     );
-    assert_eq!(err.matches("error:").count(), 1, "one error only");
+    assert_eq!(err.matches("error[").count(), 1, "one error only");
 
     let calls = format!(
         "function F (X : Integer) return Integer is begin return X; end F;\n\
@@ -188,7 +189,7 @@ fn nesting_past_the_limit_is_one_error_with_its_place_and_below_it_runs() {
     let (code, _, err) = adair(&["check", &f]);
     assert_eq!(code, 2, "{err}");
     assert!(
-        err.contains(":10002:1: error: nesting too deep: more than 10000 levels of blocks"),
+        err.contains(":10002:1: error[E0105]: nesting too deep: more than 10000 levels of blocks"),
         "{}",
         &err[..err.len().min(400)]
     );
@@ -222,7 +223,7 @@ fn running_out_of_memory_is_storage_error_at_the_place_that_asked() {
     let (code, _, err) = adair(&["run", "--max-memory", "64M", &unhandled]);
     assert_eq!(code, 1, "{err}");
     assert!(
-        err.contains("grow_unhandled.air:4:17: error: unhandled exception: raised STORAGE_ERROR : out of memory")
+        err.contains("grow_unhandled.air:4:17: error[E0901]: unhandled exception: raised STORAGE_ERROR : out of memory")
             && err.contains("limit of 64 MiB (--max-memory)"),
         "{err}"
     );
@@ -377,15 +378,15 @@ fn warnings_stop_nothing_unless_strict() {
     let (code, out, err) = adair(&["run", &f]);
     assert_eq!((code, out.as_str()), (0, "ran\n"), "{err}");
     assert!(
-        err.contains("warned.air:3:4: warning: variable `Spare` is never read"),
+        err.contains("warned.air:3:4: warning[W0001]: variable `Spare` is never read"),
         "{err}"
     );
     let (code, _, err) = adair(&["check", &f]);
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("warning: variable `Spare`"), "{err}");
+    assert!(err.contains("warning[W0001]: variable `Spare`"), "{err}");
     let (code, out, err) = adair(&["run", "--strict", &f]);
     assert_eq!((code, out.as_str()), (2, ""), "nothing runs: {err}");
-    assert!(err.contains("warning: variable `Spare`"), "{err}");
+    assert!(err.contains("warning[W0001]: variable `Spare`"), "{err}");
     let (code, _, _) = adair(&["check", "--strict", &f]);
     assert_eq!(code, 2);
 }
@@ -512,13 +513,13 @@ fn an_operator_chain_past_the_limit_is_one_error_and_at_it_runs() {
     // The 50,001st ` and ` ends at column 24 + 50,001 * 9 - 4.
     assert!(
         err.contains(&format!(
-            ":1:{}: error: expression too long: more than 50000 operators in a row",
+            ":1:{}: error[E0105]: expression too long: more than 50000 operators in a row",
             24 + 50_000 * 9 + 6
         )),
         "{}",
         &err[..err.len().min(400)]
     );
-    assert_eq!(err.matches("error:").count(), 1, "one error only");
+    assert_eq!(err.matches("error[").count(), 1, "one error only");
     let at = format!(
         "X : Integer := ({});\nPut_Line (Integer'Image (X));\n",
         chain(50_000, " + ", "1")
@@ -577,7 +578,9 @@ fn check_warns_of_a_simulator_only_service() {
     let (code, out, err) = adair(&["check", &f]);
     assert_eq!((code, out.as_str()), (0, ""), "{err}");
     assert!(
-        err.contains("sim_only.air:3:1: warning: `PlaceObject` exists only on the simulator"),
+        err.contains(
+            "sim_only.air:3:1: warning[W0002]: `PlaceObject` exists only on the simulator"
+        ),
         "{err}"
     );
     let (code, _, err) = adair(&["run", &f]);
@@ -707,12 +710,12 @@ fn a_unary_chain_past_the_nesting_limit_is_one_error_and_below_it_runs() {
         let col = 16 + 10_000 * op.len();
         assert!(
             err.contains(&format!(
-                ":1:{col}: error: nesting too deep: more than 10000 levels of parentheses and unary operators"
+                ":1:{col}: error[E0105]: nesting too deep: more than 10000 levels of parentheses and unary operators"
             )),
             "{op}: {}",
             &err[..err.len().min(400)]
         );
-        assert_eq!(err.matches("error:").count(), 1, "one error only");
+        assert_eq!(err.matches("error[").count(), 1, "one error only");
     }
     // `not (` is two levels: the 5,001st `not` is the 10,001st level.
     let mixed = format!(
@@ -724,7 +727,10 @@ fn a_unary_chain_past_the_nesting_limit_is_one_error_and_below_it_runs() {
     let (code, _, err) = adair(&["check", &f]);
     assert_eq!(code, 2, "{}", &err[..err.len().min(400)]);
     assert!(
-        err.contains(&format!(":1:{}: error: nesting too deep", 16 + 5_000 * 5)),
+        err.contains(&format!(
+            ":1:{}: error[E0105]: nesting too deep",
+            16 + 5_000 * 5
+        )),
         "{}",
         &err[..err.len().min(400)]
     );
@@ -813,7 +819,7 @@ fn the_default_memory_limit_follows_ulimit_v() {
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(1), "ulimit -v {kib}: {err}");
         assert!(
-            err.contains("grow_ulimit.air:4:17: error: unhandled exception: raised STORAGE_ERROR : out of memory"),
+            err.contains("grow_ulimit.air:4:17: error[E0901]: unhandled exception: raised STORAGE_ERROR : out of memory"),
             "ulimit -v {kib}: {err}"
         );
     }

@@ -86,7 +86,7 @@ fn a_golden_passes_however_the_script_is_named() {
     let r = adair_in(&dir, &["test", "--bless", "ex4.air"], &[]);
     assert_eq!(r.code, 0, "{}{}", r.out, r.err);
     let out = std::fs::read_to_string(dir.join("ex4.out")).unwrap();
-    assert!(out.contains("\nex4.air:2:16: error:"), "{out}");
+    assert!(out.contains("\nex4.air:2:16: error[E0901]:"), "{out}");
     // ... it passes under every other: relative, `./`, absolute, the folder
     // (none given, `.`, from its parent), and from elsewhere.
     let abs = dir.join("ex4.air").to_string_lossy().into_owned();

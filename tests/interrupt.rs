@@ -182,7 +182,8 @@ fn sigint_with_tasks_names_where_the_main_program_was() {
     assert_eq!(code, Some(130), "{stderr}");
     assert!(!stderr.contains("stdlib"), "{stderr}");
     assert!(
-        stderr.contains("tasks_end.air:8:17: error: interrupted (Ctrl-C): every task stopped"),
+        stderr
+            .contains("tasks_end.air:8:17: error[E0903]: interrupted (Ctrl-C): every task stopped"),
         "{stderr}"
     );
     assert!(stderr.contains("the main program was here"), "{stderr}");
@@ -203,7 +204,9 @@ fn sigint_with_tasks_names_where_the_main_program_was() {
     );
     assert_eq!(code, Some(130), "{stderr}");
     assert!(
-        stderr.contains("tasks_block.air:12:1: error: interrupted (Ctrl-C): every task stopped"),
+        stderr.contains(
+            "tasks_block.air:12:1: error[E0903]: interrupted (Ctrl-C): every task stopped"
+        ),
         "{stderr}"
     );
     assert!(stderr.contains("T runs"), "{stderr}");

@@ -411,7 +411,7 @@ fn a_rehearsal_refuses_a_simulator_only_service() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{err}");
     assert!(
-        err.contains("places.air:3:1: warning: `PlaceObject` exists only on the simulator"),
+        err.contains("places.air:3:1: warning[W0002]: `PlaceObject` exists only on the simulator"),
         "{err}"
     );
     assert!(

@@ -110,7 +110,7 @@ end B;
     );
     let (code, _, err) = adair(&["run", &f]);
     assert_eq!(code, 1, "{err}");
-    assert!(err.contains("error: deadlock"), "{err}");
+    assert!(err.contains("error[E0902]: deadlock"), "{err}");
     assert!(!err.contains("unhandled exception"), "{err}");
     assert!(err.contains("A waits in a call of B.Ping"), "{err}");
     assert!(err.contains("B waits in a call of A.Ping"), "{err}");

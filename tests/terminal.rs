@@ -276,10 +276,10 @@ fn repl_forgiving_continuation() {
     t.wait_for("   ...>");
     t.keys(&["W : Integer := 1 begin", "Enter"]);
     let s = t.screen();
-    assert!(!s.contains("error:"), "ended too early:\n{s}");
+    assert!(!s.contains("error["), "ended too early:\n{s}");
     // An empty line ends it: the error is shown and the main prompt is back.
     t.keys(&["Enter"]);
-    let s = t.wait_for("error:");
+    let s = t.wait_for("error[");
     let last = s.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or("");
     assert_eq!(last.trim_end(), "adair>", "{s}");
     t.keys(&[":quit", "Enter"]);

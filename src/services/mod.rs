@@ -3,8 +3,8 @@
 //! and only then commands the driver, so a refused motion moves nothing and
 //! every raised exception leaves the state as it was.
 
-pub mod paths;
 pub mod lint;
+pub mod paths;
 pub mod record;
 pub mod table;
 
