@@ -18,12 +18,23 @@ pub fn custom(code: Code, message: impl std::fmt::Display) -> String {
     format!("{code}{CODE_MARK}{message}")
 }
 
-/// The code and message of a [`custom`] text (a text without a code is a
-/// malformed construct, E0106).
-pub fn from_custom(text: &str) -> (Code, &str) {
+/// The names a [`custom`] message is about (see `Diagnostic::names`), to
+/// put after its message.
+pub fn about(names: &[&str]) -> String {
+    names.iter().map(|n| format!("{CODE_MARK}{n}")).collect()
+}
+
+/// The code, message and names of a [`custom`] text (a text without a
+/// code is a malformed construct, E0106).
+pub fn from_custom(text: &str) -> (Code, &str, Vec<&str>) {
     match text.split_once(CODE_MARK) {
-        Some((c, m)) => (codes::lookup(c).map_or(codes::E0106, |e| e.code), m),
-        None => (codes::E0106, text),
+        Some((c, rest)) => {
+            let mut parts = rest.split(CODE_MARK);
+            let message = parts.next().unwrap_or("");
+            let code = codes::lookup(c).map_or(codes::E0106, |e| e.code);
+            (code, message, parts.collect())
+        }
+        None => (codes::E0106, text, Vec::new()),
     }
 }
 
@@ -182,6 +193,7 @@ pub fn unclosed(span: Span, message: impl Into<String>) -> Diagnostic {
 /// `missing `;` before X`, at the end of the token it should follow.
 pub fn missing_semicolon(span: Span, found: &str) -> Diagnostic {
     Diagnostic::new(codes::E0103, span, format!("missing `;` before {found}"))
+        .about(&[";"])
         .with_label("expected `;` here")
         .with_hint("a statement or declaration ends with `;`")
 }
@@ -211,6 +223,6 @@ pub fn too_deep(span: Span, message: impl Into<String>) -> Diagnostic {
 
 /// A grammar error the grammar worded itself (see [`custom`]).
 pub fn worded(span: Span, text: &str) -> Diagnostic {
-    let (code, message) = from_custom(text);
-    Diagnostic::new(code, span, message)
+    let (code, message, names) = from_custom(text);
+    Diagnostic::new(code, span, message).about(&names)
 }

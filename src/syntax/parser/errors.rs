@@ -27,7 +27,10 @@ pub(super) fn soft_kw<'t, I: TokIn<'t>>(k: Kw) -> impl Parser<'t, I, (), Ex<'t>>
                     end: sp.start,
                     context: sp.context,
                 },
-                D::custom(codes::E0103, format!("missing `{}`", k.as_str())),
+                D::custom(
+                    codes::E0103,
+                    format!("missing `{}`", k.as_str()) + &D::about(&[k.as_str()]),
+                ),
             ));
         }))
 }
@@ -117,7 +120,7 @@ pub(super) fn soft_semi<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + 
                     end: sp.start,
                     context: sp.context,
                 },
-                D::custom(codes::E0103, "missing `;`"),
+                D::custom(codes::E0103, format!("missing `;`{}", D::about(&[";"]))),
             ));
         }))
 }
@@ -176,7 +179,7 @@ pub(super) fn decls_end<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + 
 /// should follow.
 pub(super) fn missing_after(diags: &mut [Diagnostic], tokens: &[(Token, Span)]) {
     for d in diags.iter_mut() {
-        if d.message.starts_with("missing `")
+        if d.code == codes::E0103
             && let Some((_, p)) = tokens.iter().rev().find(|(_, s)| s.end <= d.span.start)
         {
             d.span = Span {
@@ -185,12 +188,8 @@ pub(super) fn missing_after(diags: &mut [Diagnostic], tokens: &[(Token, Span)]) 
                 context: p.context,
             };
             // The word that is missing (`;`, `then`, `loop`, ...).
-            let word = d.message["missing ".len()..]
-                .split(' ')
-                .next()
-                .unwrap_or("`;`")
-                .to_string();
-            d.label = format!("expected {word} here");
+            let word = d.names.first().map_or(";", String::as_str);
+            d.label = format!("expected `{word}` here");
         }
     }
 }
@@ -198,10 +197,7 @@ pub(super) fn missing_after(diags: &mut [Diagnostic], tokens: &[(Token, Span)]) 
 /// The file ended inside a `loop`, `if` or `case`: name the construct and
 /// point at it rather than at the end of the file.
 pub(super) fn explain_unclosed(diags: &mut [Diagnostic], tokens: &[(Token, Span)], src_len: u32) {
-    let Some(d) = diags
-        .iter_mut()
-        .find(|d| d.span.start >= src_len && d.label == "end of input")
-    else {
+    let Some(d) = diags.iter_mut().find(|d| d.span.start >= src_len) else {
         return;
     };
     // Open constructs at parenthesis depth 0 (an `if` or `case` inside
@@ -259,7 +255,7 @@ pub fn is_unfinished(diags: &[Diagnostic], src_len: usize) -> bool {
     // way (after recovery) do not make it finished.
     diags.iter().any(|d| {
         d.phase == crate::diag::Phase::Syntax
-            && ((d.span.start >= src_len && d.label == "end of input")
+            && (d.span.start >= src_len
                 || d.notes
                     .iter()
                     .any(|(s, n)| s.start >= src_len && n == UNFINISHED_NOTE))
