@@ -63,7 +63,7 @@ codes! {
     E0206: "a body without its declaration",
     E0301: "a value of the wrong type",
     E0302: "a static value outside its type's range",
-    E0303: "a call that no version of the subprogram accepts",
+    E0303: "a call that no version of the subprogram accepts, or more than one",
     E0304: "an operator not defined for these operands",
     E0305: "a conversion between types that cannot be converted",
     E0306: "an assignment to something that is not a variable",
