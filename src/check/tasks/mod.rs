@@ -1,0 +1,486 @@
+//! Tasks and protected objects: their declarations and bodies (tasks.md);
+//! entry calls, `accept` and `select` are in `statements.rs`, address
+//! clauses in `devices.rs`. A task type is a table entry with its entries'
+//! profiles and its body (a subprogram without parameters); a protected
+//! type is a record of components reached through a hidden last parameter
+//! of every operation.
+
+use super::expr::mode_text;
+use super::*;
+
+mod devices;
+mod statements;
+
+/// What kind of body [`Checker::check_body`] checks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum BodyKind {
+    Subprogram,
+    Task,
+    /// An operation or entry of the protected type.
+    Protected(u32),
+}
+
+/// The name of the hidden object parameter of protected operations.
+const SELF: &str = "<protected object>";
+
+impl Checker {
+    fn new_func(
+        &mut self,
+        name: String,
+        params: Vec<Param>,
+        ret: Option<TypeId>,
+        span: Span,
+    ) -> FuncId {
+        let id = self.funcs.len() as FuncId;
+        self.funcs.push(Subprogram {
+            name,
+            params,
+            ret,
+            level: self.level + 1,
+            nslots: 0,
+            body: None,
+            span,
+        });
+        self.imports.push(None);
+        id
+    }
+
+    fn static_int(&mut self, e: &ast::Expr, what: &str) -> Option<i64> {
+        let x = self.expr(e, Some(UNIV_INT));
+        match self.static_value(&x) {
+            Some(Static::Int(v)) => i64::try_from(v).ok(),
+            _ => {
+                if x.ty != ERROR {
+                    self.err(diagnostics::not_static_integer(e.span, what));
+                }
+                None
+            }
+        }
+    }
+
+    pub(super) fn task_spec(&mut self, t: &ast::TaskSpec, span: Span, out: &mut Vec<Stmt>) {
+        let k = self.tasks.len() as u32;
+        let name = t.name.name.clone();
+        let ty = self.types.add(&name, TypeKind::Task(k));
+        let mut entries = Vec::new();
+        for e in &t.entries {
+            if entries
+                .iter()
+                .any(|x: &EntryDef| x.name.eq_ignore_ascii_case(&e.name.name))
+            {
+                self.err(diagnostics::entry_declared_twice(e.name.span, &e.name.name));
+            }
+            let params = self.params(&e.params);
+            let f = self.new_func(format!("{name}.{}", e.name.name), params, None, e.name.span);
+            entries.push(EntryDef {
+                name: e.name.name.to_string(),
+                profile: f,
+                interrupt: None,
+            });
+        }
+        for (id, addr) in &t.addresses {
+            let Some(i) = entries
+                .iter()
+                .position(|x| x.name.eq_ignore_ascii_case(&id.name))
+            else {
+                self.err(diagnostics::not_an_entry_of_task(id.span, &id.name, &name));
+                continue;
+            };
+            if !self.funcs[entries[i].profile as usize].params.is_empty() {
+                self.err(diagnostics::interrupt_entry_with_parameters(
+                    id.span, &id.name,
+                ));
+            }
+            if let Some(a) = self.static_int(addr, "an address") {
+                match u32::try_from(a).ok().and_then(|x| self.devices.lookup(x)) {
+                    None => self.err(self.no_device(addr.span, a)),
+                    Some((d, role)) if role != crate::devices::Role::Interrupt => {
+                        let dname = self.devices.devices()[d].name.clone();
+                        self.err(diagnostics::address_not_an_interrupt(
+                            addr.span,
+                            &crate::devices::ada_address(a as u32),
+                            role.describe(),
+                            &dname,
+                        ));
+                    }
+                    Some(_) => entries[i].interrupt = Some(a),
+                }
+            }
+        }
+        let priority = t.priority.as_ref().map(|p| {
+            let e = self.expr(p, Some(INTEGER));
+            self.coerce(e, INTEGER)
+        });
+        self.tasks.push(TaskDef {
+            name: name.to_string(),
+            entries,
+            body: None,
+            priority,
+            span,
+        });
+        if t.is_type {
+            self.declare_checked(&t.name, Entity::Type(ty));
+        } else {
+            self.object(std::slice::from_ref(&t.name), false, ty, None, span, out);
+        }
+    }
+
+    /// The task or protected type a body names.
+    fn body_target(&mut self, id: &ast::Ident) -> Option<TypeKind> {
+        self.lookup(&id.key).iter().find_map(|e| {
+            let t = match e {
+                Entity::Type(t) | Entity::Var { ty: t, .. } => *t,
+                _ => return None,
+            };
+            match self.types.kind(t) {
+                k @ (TypeKind::Task(_) | TypeKind::Protected(_)) => Some(k.clone()),
+                _ => None,
+            }
+        })
+    }
+
+    pub(super) fn task_body(&mut self, b: &ast::TaskBody, span: Span) {
+        let Some(TypeKind::Task(k)) = self.body_target(&b.name) else {
+            self.err(diagnostics::task_body_without_spec(
+                b.name.span,
+                &b.name.name,
+            ));
+            return;
+        };
+        if self.tasks[k as usize].body.is_some() {
+            self.err(diagnostics::task_body_twice(b.name.span, &b.name.name));
+            return;
+        }
+        let f = self.new_func(b.name.name.to_string(), Vec::new(), None, span);
+        self.tasks[k as usize].body = Some(f);
+        self.task_ctx.push(k);
+        self.check_body(
+            f,
+            &b.name.key,
+            &b.name.name,
+            &[],
+            &b.decls,
+            &b.body,
+            BodyKind::Task,
+        );
+        self.task_ctx.pop();
+    }
+
+    pub(super) fn protected_spec(&mut self, p: &ast::ProtectedSpec, out: &mut Vec<Stmt>) {
+        let k = self.prots.len() as u32;
+        let name = p.name.name.clone();
+        // The components: a record with the object's number first.
+        let mut fields = vec![types::Field {
+            name: "<number>".into(),
+            key: "<number>".into(),
+            ty: INTEGER,
+            default: None,
+        }];
+        for d in &p.private {
+            match &d.kind {
+                ast::DeclKind::Object {
+                    names,
+                    ty,
+                    init,
+                    constant: false,
+                    anon: None,
+                } => {
+                    let t = self.subtype_ind(ty);
+                    let default = init.as_ref().map(|e| {
+                        let x = self.expr(e, Some(t));
+                        self.coerce(x, t)
+                    });
+                    for n in names {
+                        fields.push(types::Field {
+                            name: n.name.to_string(),
+                            key: n.key.to_string(),
+                            ty: t,
+                            default: default.clone(),
+                        });
+                    }
+                }
+                ast::DeclKind::Pragma { .. } => {}
+                _ => self.err(diagnostics::unsupported_in_protected_private(d.span)),
+            }
+        }
+        let rec = self
+            .types
+            .add(&format!("{name} components"), TypeKind::Record(fields));
+        let access = self
+            .types
+            .add(&format!("{name} object"), TypeKind::Access(rec));
+        let ty = self.types.add(&name, TypeKind::Protected(k));
+        let self_param = |ty| Param {
+            name: SELF.into(),
+            mode: ast::Mode::In,
+            ty,
+            default: None,
+        };
+        let mut members = Vec::new();
+        let mut entries = Vec::new();
+        for op in &p.ops {
+            match op {
+                ast::ProtOp::Sub(spec) => {
+                    let params = self.params(&spec.params);
+                    let ret = spec.ret.as_ref().map(|r| self.type_mark(r));
+                    let display = spec.name.display();
+                    let profile =
+                        self.new_func(format!("{name}.{display}"), params.clone(), ret, spec.span);
+                    let mut real_params = params;
+                    real_params.push(self_param(access));
+                    let real =
+                        self.new_func(format!("{name}.{display}"), real_params, ret, spec.span);
+                    self.prot_real.insert(profile, (real, k));
+                    members.push((spec.name.key(), profile, real, ret.is_some()));
+                }
+                ast::ProtOp::Entry(e) => {
+                    let params = self.params(&e.params);
+                    let profile =
+                        self.new_func(format!("{name}.{}", e.name.name), params, None, e.span);
+                    entries.push(ProtEntry {
+                        name: e.name.name.to_string(),
+                        profile,
+                        barrier: None,
+                        body: None,
+                    });
+                }
+            }
+        }
+        self.prot_members.resize(k as usize + 1, Vec::new());
+        self.prot_members[k as usize] = members;
+        self.prots.push(ProtDef {
+            name: name.to_string(),
+            rec,
+            access,
+            entries,
+            span: p.span,
+        });
+        if p.is_type {
+            self.declare_checked(&p.name, Entity::Type(ty));
+        } else {
+            self.object(std::slice::from_ref(&p.name), false, ty, None, p.span, out);
+        }
+    }
+
+    /// The access type of a protected type's object parameter.
+    fn prot_access(&self, k: u32) -> TypeId {
+        self.prots[k as usize].access
+    }
+
+    pub(super) fn protected_body(&mut self, b: &ast::ProtectedBody) {
+        let Some(TypeKind::Protected(k)) = self.body_target(&b.name) else {
+            self.err(diagnostics::protected_body_without_spec(
+                b.name.span,
+                &b.name.name,
+            ));
+            return;
+        };
+        self.prot_bodied.push(k);
+        self.prot_ctx.push((k, None));
+        self.push_scope();
+        // The operations are visible inside the body by their names.
+        let members = self.prot_members[k as usize].clone();
+        for (key, profile, _, _) in &members {
+            self.declare(key, Entity::Func(*profile));
+        }
+        for d in &b.decls {
+            match &d.kind {
+                ast::DeclKind::SubprogramBody(sb) => self.prot_op_body(k, sb),
+                ast::DeclKind::EntryBody(eb) => self.entry_body_of(k, eb),
+                ast::DeclKind::Pragma { .. } => {}
+                _ => self.err(diagnostics::unsupported_in_protected_body(d.span)),
+            }
+        }
+        self.pop_scope();
+        self.prot_ctx.pop();
+        for (key, profile, real, _) in &members {
+            if self.funcs[*real as usize].body.is_none() {
+                let what = self.spelled(key);
+                self.err(diagnostics::protected_body_lacks(
+                    b.span,
+                    &b.name.name,
+                    &what,
+                ));
+                let _ = profile;
+            }
+        }
+        for e in self.prots[k as usize].entries.clone() {
+            if e.body.is_none() {
+                self.err(diagnostics::protected_body_lacks_entry(
+                    b.span,
+                    &b.name.name,
+                    &e.name,
+                ));
+            }
+        }
+    }
+
+    fn prot_op_body(&mut self, k: u32, b: &ast::SubprogramBody) {
+        let key = b.spec.name.key();
+        let params = self.params(&b.spec.params);
+        let ret = b.spec.ret.as_ref().map(|r| self.type_mark(r));
+        let found = self.prot_members[k as usize]
+            .iter()
+            .find(|(n, p, _, _)| {
+                *n == key && self.same_profile(&self.funcs[*p as usize], &params, ret)
+            })
+            .map(|(_, _, r, _)| *r);
+        let Some(real) = found else {
+            self.err(diagnostics::not_in_protected_with_profile(
+                b.spec.span,
+                &b.spec.name.display(),
+                &self.prots[k as usize].name,
+            ));
+            return;
+        };
+        if self.funcs[real as usize].body.is_some() {
+            self.err(diagnostics::body_twice(b.spec.span, &b.spec.name.display()));
+            return;
+        }
+        let written: Vec<&ast::Ident> = b.spec.params.iter().flat_map(|p| p.names.iter()).collect();
+        let saw = self.check_body(
+            real,
+            &key,
+            &b.spec.name.display(),
+            &written,
+            &b.decls,
+            &b.body,
+            BodyKind::Protected(k),
+        );
+        if ret.is_some() && !saw {
+            self.err(diagnostics::protected_function_without_return(
+                b.spec.span,
+                &b.spec.name.display(),
+            ));
+        }
+    }
+
+    pub(super) fn entry_body(&mut self, b: &ast::EntryBody) {
+        match self.prot_ctx.last() {
+            Some((k, _)) => {
+                let k = *k;
+                self.entry_body_of(k, b)
+            }
+            None => self.err(diagnostics::entry_body_outside_protected(b.span)),
+        }
+    }
+
+    fn entry_body_of(&mut self, k: u32, b: &ast::EntryBody) {
+        let Some(i) = self.prots[k as usize]
+            .entries
+            .iter()
+            .position(|e| e.name.eq_ignore_ascii_case(&b.name.name))
+        else {
+            self.err(diagnostics::not_an_entry_of_protected(
+                b.name.span,
+                &b.name.name,
+                &self.prots[k as usize].name,
+            ));
+            return;
+        };
+        let entry = self.prots[k as usize].entries[i].clone();
+        if entry.body.is_some() {
+            self.err(diagnostics::entry_body_twice(b.name.span, &b.name.name));
+            return;
+        }
+        let params = self.params(&b.params);
+        let profile = self.funcs[entry.profile as usize].clone();
+        if !self.same_profile(&profile, &params, None) {
+            self.err(diagnostics::entry_body_params_differ(
+                b.name.span,
+                &b.name.name,
+            ));
+        }
+        let access = self.prot_access(k);
+        let pname = self.prots[k as usize].name.clone();
+        // The barrier: a function of the object alone.
+        let barrier = self.new_func(
+            format!("{pname}.{} barrier", b.name.name),
+            vec![Param {
+                name: SELF.into(),
+                mode: ast::Mode::In,
+                ty: access,
+                default: None,
+            }],
+            Some(BOOLEAN),
+            b.barrier.span,
+        );
+        let ret_stmt = ast::Block {
+            stmts: vec![ast::Stmt {
+                kind: ast::StmtKind::Return(Some(Box::new(b.barrier.clone()))),
+                span: b.barrier.span,
+            }]
+            .into(),
+            handlers: Vec::new(),
+            span: b.barrier.span,
+            lazy: None,
+        };
+        self.check_body(
+            barrier,
+            "<barrier>",
+            &b.name.name,
+            &[],
+            &[],
+            &ret_stmt,
+            BodyKind::Protected(k),
+        );
+        let mut real_params = profile.params.clone();
+        real_params.push(Param {
+            name: SELF.into(),
+            mode: ast::Mode::In,
+            ty: access,
+            default: None,
+        });
+        let body = self.new_func(
+            format!("{pname}.{}", b.name.name),
+            real_params,
+            None,
+            b.span,
+        );
+        let written: Vec<&ast::Ident> = b.params.iter().flat_map(|p| p.names.iter()).collect();
+        self.check_body(
+            body,
+            &b.name.key,
+            &b.name.name,
+            &written,
+            &b.decls,
+            &b.body,
+            BodyKind::Protected(k),
+        );
+        let e = &mut self.prots[k as usize].entries[i];
+        e.barrier = Some(barrier);
+        e.body = Some(body);
+    }
+
+    /// Inside a protected operation: the components by name, as components
+    /// of the object parameter.
+    pub(super) fn declare_components(&mut self, k: u32, obj: Option<Var>) {
+        let Some(obj) = obj else { return };
+        let rec = self.prots[k as usize].rec;
+        let access = self.prot_access(k);
+        let sp = self.prots[k as usize].span;
+        let fields = self
+            .types
+            .fields(rec)
+            .map(|f| f.to_vec())
+            .unwrap_or_default();
+        for (i, f) in fields.iter().enumerate().skip(1) {
+            let p = Ex {
+                kind: ExKind::Var(obj),
+                ty: access,
+                span: sp,
+            };
+            let d = Ex {
+                kind: ExKind::Deref(Box::new(p)),
+                ty: rec,
+                span: sp,
+            };
+            let x = Ex {
+                kind: ExKind::Field(Box::new(d), i as u32),
+                ty: f.ty,
+                span: sp,
+            };
+            self.declare(&f.name, Entity::Alias(Box::new(x)));
+        }
+    }
+}
