@@ -292,7 +292,7 @@ pub fn run_text_on(name: &str, text: &str, robot: &str, trace: bool, target: &Ta
         Ok(desc) => match &target.port {
             None => s.set_robot(desc, tracer(), false),
             Some(settings) => {
-                s.front.checker.simulator_only = crate::services::SIMULATOR_ONLY;
+                s.front.checker.options.simulator_only = crate::services::SIMULATOR_ONLY;
                 if target.rehearse
                     && let Err((diagnostics, code)) =
                         crate::session::rehearse(&desc, settings, name, text, false)

@@ -642,7 +642,7 @@ fn real_main(
             match robot.serial.settings() {
                 None => s.set_robot(desc, trace(), robot.realtime || view.live()),
                 Some(settings) => {
-                    s.front.checker.simulator_only = adair::services::SIMULATOR_ONLY;
+                    s.front.checker.options.simulator_only = adair::services::SIMULATOR_ONLY;
                     if robot.rehearse {
                         let name = file.to_string_lossy();
                         match adair::session::rehearse(&desc, &settings, &name, &text, color) {
@@ -856,9 +856,9 @@ fn real_main(
                 let mut s = Session::new(Box::new(std::io::sink()));
                 s.front.checker.index.uses = false;
                 // Nothing runs: a long program's checked form is not kept.
-                s.front.checker.diagnostics_only = true;
+                s.front.checker.options.diagnostics_only = true;
                 // A script may be meant for a real arm: say where it cannot be.
-                s.front.checker.simulator_only = adair::services::SIMULATOR_ONLY;
+                s.front.checker.options.simulator_only = adair::services::SIMULATOR_ONLY;
                 s.strict = strict;
                 if let Some(d) = &devices {
                     s.set_devices(d.clone());

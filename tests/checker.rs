@@ -19,7 +19,7 @@ fn a_check_for_diagnostics_only_keeps_no_lazy_body() {
     let bad = format!("{text}   X := \"late\";\nend Big;\n");
     let check = |src: &str, only: bool| {
         let mut s = Session::new(Box::new(std::io::sink()));
-        s.front.checker.diagnostics_only = only;
+        s.front.checker.options.diagnostics_only = only;
         let r = s.check_source("big.adb", src, false);
         let body = s
             .front

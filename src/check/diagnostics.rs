@@ -3,6 +3,10 @@
 //! A constructor takes the words its message is built from (names,
 //! types, values), so that the wording of a fault lives in one place and
 //! code decides by [`Diagnostic::code`], never by a message's words.
+//!
+//! One file for one concern, though long: one constructor per message
+//! family, by code, so that every message of the checker is read in one
+//! place.
 
 use crate::diag::codes::{self, Code};
 use crate::diag::{Diagnostic, Span};

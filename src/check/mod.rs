@@ -100,10 +100,9 @@ pub struct ImportProfile {
 
 pub type ImportProfileOf = fn(&str) -> Option<ImportProfile>;
 
-/// Cloning a checker snapshots its state, so that the REPL can undo an
-/// entry that does not check.
-#[derive(Clone)]
-pub struct Checker {
+/// The modes of a checker's run: what its checked form is for.
+#[derive(Clone, Copy, Default)]
+pub struct Options {
     /// In `check_unit_consuming`: blocks' statements are taken from the AST.
     consume_ast: bool,
     /// Only the diagnostics are wanted (`adair check`): the checked form of
@@ -119,6 +118,14 @@ pub struct Checker {
     /// subprogram body is compiled a part at a time as it is checked, and
     /// each part's checked statements dropped (see [`ir::PartCompiler`]).
     pub compile_parts: Option<ir::PartCompiler>,
+}
+
+/// Cloning a checker snapshots its state, so that the REPL can undo an
+/// entry that does not check.
+#[derive(Clone)]
+pub struct Checker {
+    /// The run's modes: what the checked form is for.
+    pub options: Options,
     /// The next subprogram body checked is the main program's, whose
     /// statements are compiled a part at a time (see `compile_parts`): only
     /// the compiled engine runs it (a subprogram that an expression the
@@ -256,10 +263,7 @@ pub const END_ERROR: ExcId = 7;
 impl Checker {
     pub fn new(known_builtin: KnownBuiltin) -> Checker {
         let mut c = Checker {
-            consume_ast: false,
-            diagnostics_only: false,
-            simulator_only: &[],
-            compile_parts: None,
+            options: Options::default(),
             main_body: false,
             parts_here: false,
             erred: false,
@@ -876,9 +880,9 @@ impl Checker {
         &mut self,
         unit: &ast::CompilationUnit,
     ) -> (Vec<Stmt>, Option<FuncId>) {
-        self.consume_ast = true;
+        self.options.consume_ast = true;
         let r = self.check_unit(unit);
-        self.consume_ast = false;
+        self.options.consume_ast = false;
         r
     }
 
@@ -1408,6 +1412,6 @@ mod consume_tests {
         let (consumed, _) = c.check_unit_consuming(&unit);
         assert_eq!(body_len(&unit), 0);
         assert_eq!(format!("{kept:?}"), format!("{consumed:?}"));
-        assert!(!c.consume_ast);
+        assert!(!c.options.consume_ast);
     }
 }

@@ -26,8 +26,9 @@ impl Checker {
             // The body's code, as its parts are compiled.
             let code = ir::Precompiled::new();
             let compiling = self
+                .options
                 .compile_parts
-                .filter(|_| parts_here && !self.diagnostics_only);
+                .filter(|_| parts_here && !self.options.diagnostics_only);
             let diags = crate::syntax::lazy_stmts(&text, at.context, at, |n, ss| {
                 if let Some(compile) = compiling {
                     let mut part = Vec::with_capacity(ss.len());
@@ -47,7 +48,7 @@ impl Checker {
                     let temps = compile(self.program(), at, part, &code);
                     self.ctx.last_mut().expect("a body's context").next_slot += temps;
                     return;
-                } else if self.diagnostics_only {
+                } else if self.options.diagnostics_only {
                     // This part's checked statements go as the next are made.
                     stmts.clear();
                 } else if stmts.capacity() == 0 {
@@ -63,13 +64,13 @@ impl Checker {
                     span: at,
                 });
             }
-            if self.diagnostics_only {
+            if self.options.diagnostics_only {
                 stmts.clear();
             }
             for d in diags {
                 self.err(d);
             }
-        } else if self.consume_ast {
+        } else if self.options.consume_ast {
             let ss = std::mem::take(&mut *b.stmts.borrow_mut());
             // About one checked statement per statement: no doubling.
             stmts.reserve_exact(ss.len());

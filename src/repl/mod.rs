@@ -205,7 +205,7 @@ impl Repl {
             let trace = self.trace.then(|| (self.make_out)());
             // On a real arm a simulator-only call is a warning as it is
             // checked, and `CommandNotSupported` when it runs.
-            self.session.front.checker.simulator_only = match &self.port {
+            self.session.front.checker.options.simulator_only = match &self.port {
                 None => &[],
                 Some(_) => crate::services::SIMULATOR_ONLY,
             };

@@ -270,7 +270,7 @@ impl Frontend {
         // walker may run a unit it names (from an expression it evaluates),
         // and the walker runs checked statements.
         let parts = if library {
-            self.checker.compile_parts.take()
+            self.checker.options.compile_parts.take()
         } else {
             None
         };
@@ -280,7 +280,7 @@ impl Frontend {
             self.checker.check_unit_consuming(&unit)
         };
         if parts.is_some() {
-            self.checker.compile_parts = parts;
+            self.checker.options.compile_parts = parts;
         }
         let own = self.checker.take_diags();
         if !partial {

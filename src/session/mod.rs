@@ -372,7 +372,7 @@ impl Session {
     /// that its checked form is never held whole (see
     /// `Checker::compile_parts`). Its code is then used up by its run.
     pub fn compile_as_checked(&mut self) {
-        self.front.checker.compile_parts = self.machine.part_compiler();
+        self.front.checker.options.compile_parts = self.machine.part_compiler();
     }
 
     /// Checks a program (`script`: a REPL entry, statements at the top)
@@ -488,7 +488,7 @@ pub fn rehearse(
         // A `TeachBox` cannot be rehearsed: it says so.
         st.rehearsal = true;
     }
-    s.front.checker.simulator_only = crate::services::SIMULATOR_ONLY;
+    s.front.checker.options.simulator_only = crate::services::SIMULATOR_ONLY;
     let outcome = s.run_source(name, text);
     // A failed rehearsal ends the run before the real one is checked: its
     // warnings (a simulator-only service) are shown with its failure.

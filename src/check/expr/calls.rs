@@ -286,7 +286,7 @@ impl Checker {
         let Some(Some(import)) = self.imports.get(f as usize) else {
             return;
         };
-        if !self.simulator_only.contains(&import.as_str()) {
+        if !self.options.simulator_only.contains(&import.as_str()) {
             return;
         }
         let name = self.funcs[f as usize].name.clone();
