@@ -120,6 +120,27 @@ pub struct Options {
     pub compile_parts: Option<ir::PartCompiler>,
 }
 
+/// Where the statement being checked stands among tasks, protected bodies
+/// and masters (tasks.md).
+#[derive(Clone, Default)]
+struct TaskContext {
+    /// The task types whose bodies are being checked (innermost last).
+    task_ctx: Vec<u32>,
+    /// The entries whose accept bodies enclose the statement being checked
+    /// (an accept of one of them inside is illegal, RM 9.5.2(15)).
+    accepting: Vec<(u32, u32, Span)>,
+    /// The protected bodies being checked: the type and the slot of the
+    /// object parameter of the operation being checked.
+    prot_ctx: Vec<(u32, Option<Var>)>,
+    /// The object parameter of the protected function being checked: its
+    /// components are constants there (RM 9.5.1).
+    prot_function_obj: Option<Var>,
+    /// Per declarative region being checked: whether it may create tasks.
+    masters: Vec<bool>,
+    /// Library-level tasks created and not yet activated.
+    library_tasks: bool,
+}
+
 /// Cloning a checker snapshots its state, so that the REPL can undo an
 /// entry that does not check.
 #[derive(Clone)]
@@ -199,17 +220,9 @@ pub struct Checker {
     /// Task types and protected types.
     pub tasks: PVec<TaskDef>,
     pub prots: PVec<ProtDef>,
-    /// The task types whose bodies are being checked (innermost last).
-    task_ctx: Vec<u32>,
-    /// The entries whose accept bodies enclose the statement being checked
-    /// (an accept of one of them inside is illegal, RM 9.5.2(15)).
-    accepting: Vec<(u32, u32, Span)>,
-    /// The protected bodies being checked: the type and the slot of the
-    /// object parameter of the operation being checked.
-    prot_ctx: Vec<(u32, Option<Var>)>,
-    /// The object parameter of the protected function being checked: its
-    /// components are constants there (RM 9.5.1).
-    prot_function_obj: Option<Var>,
+    /// Where the statement being checked stands among tasks, protected
+    /// bodies and masters.
+    tasking: TaskContext,
     /// Names an unsupported declaration would have declared (a generic
     /// unit, its formals, an instance): a use of one is no second error.
     unsupported_names: std::collections::HashSet<String>,
@@ -230,13 +243,9 @@ pub struct Checker {
     prot_members: Vec<Vec<(String, FuncId, FuncId, bool)>>,
     /// Profile -> real subprogram of protected operations.
     prot_real: HashMap<FuncId, (FuncId, u32)>,
-    /// Per declarative region being checked: whether it may create tasks.
-    masters: Vec<bool>,
     /// Protected types whose body was seen (missing operations in it are
     /// reported there).
     prot_bodied: Vec<u32>,
-    /// Library-level tasks created and not yet activated.
-    library_tasks: bool,
     /// The devices address clauses bind to (`--devices`, or the default set).
     pub devices: Rc<crate::devices::Devices>,
     /// Subprograms declared before their bodies: the hidden Boolean that
@@ -305,19 +314,14 @@ impl Checker {
             cur_decl: None,
             tasks: PVec::new(),
             prots: PVec::new(),
-            task_ctx: Vec::new(),
-            accepting: Vec::new(),
-            prot_ctx: Vec::new(),
-            prot_function_obj: None,
+            tasking: TaskContext::default(),
             unsupported_names: Default::default(),
             undeclared: HashMap::new(),
             closed: 0,
             lows: Vec::new(),
             prot_members: Vec::new(),
             prot_real: HashMap::new(),
-            masters: Vec::new(),
             prot_bodied: Vec::new(),
-            library_tasks: false,
             devices: Rc::new(crate::devices::Devices::default_set()),
             elab_flags: HashMap::new(),
         };
@@ -963,7 +967,7 @@ impl Checker {
     /// (before the main program runs), so that they can call each other
     /// whatever their order of declaration.
     pub(super) fn activate_library_tasks(&mut self, out: &mut Vec<Stmt>, at: Span) {
-        if std::mem::take(&mut self.library_tasks) {
+        if std::mem::take(&mut self.tasking.library_tasks) {
             out.push(Stmt {
                 kind: StmtKind::Activate,
                 span: Span {

@@ -43,7 +43,7 @@ impl Checker {
                     let at = ir::PartAt {
                         level: self.level,
                         own: ctx.next_slot,
-                        master: self.masters.last().copied().unwrap_or(false),
+                        master: self.tasking.masters.last().copied().unwrap_or(false),
                     };
                     let temps = compile(self.program(), at, part, &code);
                     self.ctx.last_mut().expect("a body's context").next_slot += temps;
@@ -151,7 +151,7 @@ impl Checker {
     pub(super) fn stmt(&mut self, s: &ast::Stmt, out: &mut Vec<Stmt>) {
         crate::work::tick();
         let sp = s.span;
-        if self.masters.is_empty() && !matches!(s.kind, S::Decl(_) | S::Null | S::Error) {
+        if self.tasking.masters.is_empty() && !matches!(s.kind, S::Decl(_) | S::Null | S::Error) {
             self.activate_library_tasks(out, sp);
         }
         let kind = match &s.kind {
@@ -384,10 +384,10 @@ impl Checker {
                     self.unit_path.push(l.name.to_string());
                 }
                 let mut elab = Vec::new();
-                self.masters.push(false);
+                self.tasking.masters.push(false);
                 self.decls_completed(decls, &mut elab);
                 let inner = self.block(body);
-                let creates = self.masters.pop().unwrap_or(false);
+                let creates = self.tasking.masters.pop().unwrap_or(false);
                 if label.is_some() {
                     self.unit_path.pop();
                 }

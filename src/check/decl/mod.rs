@@ -273,7 +273,7 @@ impl Checker {
             None
         };
         let creates_task = self.types.has_task(t);
-        if creates_task && let Some(m) = self.masters.last_mut() {
+        if creates_task && let Some(m) = self.tasking.masters.last_mut() {
             *m = true;
         }
         // An unconstrained array object takes the bounds of its initial value.
@@ -311,8 +311,8 @@ impl Checker {
         }
         // A library-level (or script) task is activated with the others
         // before the next statement (see `activate_library_tasks`).
-        if creates_task && self.masters.is_empty() {
-            self.library_tasks = true;
+        if creates_task && self.tasking.masters.is_empty() {
+            self.tasking.library_tasks = true;
         }
     }
 

@@ -249,29 +249,29 @@ impl Checker {
                 None => self.declare(&p.name, e),
             }
         }
-        let outer_function_obj = self.prot_function_obj;
+        let outer_function_obj = self.tasking.prot_function_obj;
         if let BodyKind::Protected(k) = kind {
-            self.prot_ctx.push((k, last));
+            self.tasking.prot_ctx.push((k, last));
             self.declare_components(k, last);
-            self.prot_function_obj = if self.funcs[f as usize].ret.is_some() {
+            self.tasking.prot_function_obj = if self.funcs[f as usize].ret.is_some() {
                 last
             } else {
                 None
             };
         }
-        self.masters.push(false);
+        self.tasking.masters.push(false);
         let decl_span = self.funcs[f as usize].span;
         let mut elab: Vec<Stmt> = self.elab_check(f, decl_span).into_iter().collect();
         self.decls_completed(decls, &mut elab);
         self.parts_here = kind == BodyKind::Subprogram && main;
         let inner = self.block(body);
-        let creates = self.masters.pop().unwrap_or(false);
+        let creates = self.tasking.masters.pop().unwrap_or(false);
         let body_span = body.span;
         let elab = self.master_region(elab, inner, body_span, creates, kind == BodyKind::Task);
         if matches!(kind, BodyKind::Protected(_)) {
-            self.prot_ctx.pop();
+            self.tasking.prot_ctx.pop();
         }
-        self.prot_function_obj = outer_function_obj;
+        self.tasking.prot_function_obj = outer_function_obj;
         self.unit_path.pop();
         self.pop_scope();
         let ctx = self.ctx.pop().expect("ctx");

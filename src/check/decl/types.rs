@@ -404,7 +404,7 @@ impl Checker {
         if !self.types.has_task(designated) || self.types.get(t).master.is_some() {
             return;
         }
-        if let Some(m) = self.masters.last_mut() {
+        if let Some(m) = self.tasking.masters.last_mut() {
             *m = true;
         }
         let v = self.new_slot();

@@ -59,7 +59,7 @@ impl Checker {
                 }
                 ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _) => e = p,
                 // A component of the object of a protected function.
-                ExKind::Deref(p) if matches!(p.kind, ExKind::Var(v) if Some(v) == self.prot_function_obj) =>
+                ExKind::Deref(p) if matches!(p.kind, ExKind::Var(v) if Some(v) == self.tasking.prot_function_obj) =>
                 {
                     let name = self.snippet(span);
                     self.err(diagnostics::protected_function_changes(span, &name, what));

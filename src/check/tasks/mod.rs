@@ -153,7 +153,7 @@ impl Checker {
         }
         let f = self.new_func(b.name.name.to_string(), Vec::new(), None, span);
         self.tasks[k as usize].body = Some(f);
-        self.task_ctx.push(k);
+        self.tasking.task_ctx.push(k);
         self.check_body(
             f,
             &b.name.key,
@@ -163,7 +163,7 @@ impl Checker {
             &b.body,
             BodyKind::Task,
         );
-        self.task_ctx.pop();
+        self.tasking.task_ctx.pop();
     }
 
     pub(super) fn protected_spec(&mut self, p: &ast::ProtectedSpec, out: &mut Vec<Stmt>) {
@@ -276,7 +276,7 @@ impl Checker {
             return;
         };
         self.prot_bodied.push(k);
-        self.prot_ctx.push((k, None));
+        self.tasking.prot_ctx.push((k, None));
         self.push_scope();
         // The operations are visible inside the body by their names.
         let members = self.prot_members[k as usize].clone();
@@ -292,7 +292,7 @@ impl Checker {
             }
         }
         self.pop_scope();
-        self.prot_ctx.pop();
+        self.tasking.prot_ctx.pop();
         for (key, profile, real, _) in &members {
             if self.funcs[*real as usize].body.is_none() {
                 let what = self.spelled(key);
@@ -356,7 +356,7 @@ impl Checker {
     }
 
     pub(super) fn entry_body(&mut self, b: &ast::EntryBody) {
-        match self.prot_ctx.last() {
+        match self.tasking.prot_ctx.last() {
             Some((k, _)) => {
                 let k = *k;
                 self.entry_body_of(k, b)

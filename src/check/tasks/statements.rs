@@ -15,12 +15,20 @@ impl Checker {
         let Some(&(real, k)) = self.prot_real.get(&f) else {
             return (f, args);
         };
-        let ctx = self.prot_ctx.iter().rev().find(|(p, _)| *p == k).copied();
+        let ctx = self
+            .tasking
+            .prot_ctx
+            .iter()
+            .rev()
+            .find(|(p, _)| *p == k)
+            .copied();
         match ctx {
             Some((_, Some(obj))) => {
                 // A protected function only reads its object (RM 9.5.1):
                 // it may not call a procedure of it.
-                if Some(obj) == self.prot_function_obj && self.funcs[real as usize].ret.is_none() {
+                if Some(obj) == self.tasking.prot_function_obj
+                    && self.funcs[real as usize].ret.is_none()
+                {
                     let name = self.funcs[real as usize].name.clone();
                     self.err(diagnostics::protected_function_calls_procedure(span, &name));
                 }
@@ -140,9 +148,9 @@ impl Checker {
             return None;
         }
         // Not an internal call, even inside a protected body.
-        let outer = std::mem::take(&mut self.prot_ctx);
+        let outer = std::mem::take(&mut self.tasking.prot_ctx);
         let r = self.call(&fs, args, None, procedure, sp, &id.name);
-        self.prot_ctx = outer;
+        self.tasking.prot_ctx = outer;
         let (f, mut a) = r?;
         let real = self.prot_real.get(&f)?.0;
         self.index_ref(id.span, &id.key, &Entity::Func(f));
@@ -280,7 +288,7 @@ impl Checker {
             .and_then(|c| c.func)
             .map(|f| format!("procedure {}", self.funcs[f as usize].name))
             .unwrap_or_else(|| "the main program".into());
-        let Some(&k) = self.task_ctx.last() else {
+        let Some(&k) = self.tasking.task_ctx.last() else {
             self.err(diagnostics::misplaced_accept(sp, &here));
             return None;
         };
@@ -304,6 +312,7 @@ impl Checker {
             return None;
         };
         if let Some(&(_, _, outer)) = self
+            .tasking
             .accepting
             .iter()
             .find(|(t, e, _)| *t == k && *e == i as u32)
@@ -351,9 +360,9 @@ impl Checker {
             self.declare(&id.name, e);
             slots.push((var, p.mode));
         }
-        self.accepting.push((k, i as u32, sp));
+        self.tasking.accepting.push((k, i as u32, sp));
         let body = body.map(|b| self.block(b));
-        self.accepting.pop();
+        self.tasking.accepting.pop();
         self.pop_scope();
         Some(Accept {
             entry: i as u32,
@@ -494,7 +503,7 @@ impl Checker {
             let ast::ExprKind::Name(id) = &p.kind else {
                 return None;
             };
-            if let Some(&(k, obj)) = self.prot_ctx.last()
+            if let Some(&(k, obj)) = self.tasking.prot_ctx.last()
                 && let Some(i) = self.prots[k as usize]
                     .entries
                     .iter()
@@ -513,7 +522,7 @@ impl Checker {
                     sp,
                 ));
             }
-            if let Some(&k) = self.task_ctx.last()
+            if let Some(&k) = self.tasking.task_ctx.last()
                 && let Some(i) = self.tasks[k as usize]
                     .entries
                     .iter()
