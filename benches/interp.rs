@@ -9,8 +9,11 @@ use criterion::{Criterion, criterion_group, criterion_main};
 fn run(path: &str) {
     let text = std::fs::read_to_string(path).expect("bench program");
     let mut s = adair::session::Session::new(Box::new(std::io::sink()));
+    // `adair run`'s default robot (moves.air drives it).
+    let rv_m1 = adair::kinematics::RobotDescription::builtin("rv-m1").expect("the RV-M1");
+    s.set_robot(rv_m1, None, false);
     let outcome = s.run_source(path, &text);
-    assert_eq!(outcome.exit_code(), 0);
+    assert_eq!(outcome.exit_code(), 0, "{path}: {outcome:?}");
 }
 
 fn programs(c: &mut Criterion) {

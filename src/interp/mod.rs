@@ -250,7 +250,7 @@ impl Machine {
             interrupted: None,
             current: Vec::new(),
             resolver: |n| builtins::lookup(n).map(Binding::Native),
-            engine: vm::Engine::from_env(),
+            engine: vm::Engine::Compiled,
             world: Some(crate::devices::World::new(
                 crate::devices::Devices::default_set(),
             )),

@@ -28,11 +28,12 @@ pub enum Engine {
 }
 
 impl Engine {
-    /// `ADAIR_ENGINE=walker` chooses the reference engine; anything else,
-    /// or nothing, the compiled one.
-    pub fn from_env() -> Engine {
-        match std::env::var("ADAIR_ENGINE").as_deref() {
-            Ok("walker") => Engine::Walker,
+    /// The engine a setting names: `walker` the reference engine; anything
+    /// else, or nothing, the compiled one (the session reads
+    /// `ADAIR_ENGINE`: the machine reads no environment).
+    pub fn named(setting: Option<&str>) -> Engine {
+        match setting {
+            Some("walker") => Engine::Walker,
             _ => Engine::Compiled,
         }
     }
