@@ -310,7 +310,7 @@ fn joint_out_of_reach(span: Span, joint: usize, v: f64, min: f64, max: f64) -> D
     let written = (v * 100.0).fract() == 0.0;
     if written && v.to_radians() >= min && v.to_radians() <= max {
         d = d.with_hint(format!(
-            "an AxesVector is in radians: for {v:?} degrees write `{v:?} * Pi / 180.0` ({:.4})",
+            "an AxesVector is in radians: for {v:?} degrees write `Rad ({v:?})` ({:.4})",
             v.to_radians()
         ));
     }
