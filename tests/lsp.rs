@@ -109,10 +109,7 @@ impl Client {
     }
 
     fn open(&self, name: &str, text: &str) {
-        self.notify(
-            N::DidOpenTextDocument::METHOD,
-            json!({ "textDocument": { "uri": uri(name), "languageId": "adair", "version": 1, "text": text } }),
-        );
+        open_uri(self, &uri(name), text);
     }
 
     fn change(&self, name: &str, version: i32, text: &str) {
@@ -149,7 +146,11 @@ impl Client {
 
     /// The next diagnostics published for `name`.
     fn diagnostics(&mut self, name: &str) -> (Vec<lsp_types::Diagnostic>, Option<i32>) {
-        let want = uri(name);
+        self.diagnostics_at(&uri(name))
+    }
+
+    /// The next diagnostics published for the document `want`.
+    fn diagnostics_at(&mut self, want: &Uri) -> (Vec<lsp_types::Diagnostic>, Option<i32>) {
         loop {
             let n = if self.pending.is_empty() {
                 match self.conn.receiver.recv_timeout(WAIT).unwrap() {
@@ -162,7 +163,7 @@ impl Client {
             if n.method == N::PublishDiagnostics::METHOD {
                 let p: lsp_types::PublishDiagnosticsParams =
                     serde_json::from_value(n.params).unwrap();
-                if p.uri == want {
+                if p.uri == *want {
                     return (p.diagnostics, p.version);
                 }
             }
@@ -1189,22 +1190,7 @@ fn open_uri(c: &Client, uri: &Uri, text: &str) {
 
 /// The next diagnostics published for `uri`.
 fn diagnostics_of(c: &mut Client, uri: &Uri) -> Vec<lsp_types::Diagnostic> {
-    loop {
-        let n = if c.pending.is_empty() {
-            match c.conn.receiver.recv_timeout(WAIT).unwrap() {
-                Message::Notification(n) => n,
-                m => panic!("unexpected {m:?}"),
-            }
-        } else {
-            c.pending.remove(0)
-        };
-        if n.method == N::PublishDiagnostics::METHOD {
-            let p: lsp_types::PublishDiagnosticsParams = serde_json::from_value(n.params).unwrap();
-            if p.uri == *uri {
-                return p.diagnostics;
-            }
-        }
-    }
+    c.diagnostics_at(uri).0
 }
 
 const GEO: &str = "package Geo is\n   function Answer return Integer;\nend Geo;\n\npackage body Geo is\n   function Answer return Integer is\n   begin\n      return 42;\n   end Answer;\nend Geo;\n";
