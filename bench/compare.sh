@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs the programs of bench/programs in adair, Lua 5.4, CPython and GNAT
 # (-O2), each workload in ONE hyperfine run, and prints the medians and
-# adair's ratios; then the peak RSS of the list program in each, and the
+# adair's ratios; then the peak RSS of the two list programs in each, and the
 # check time of the checker's two pathological inputs.
 # Usage: bench/compare.sh   (RUNS=n for more runs per command)
 # Needs: hyperfine, lua5.4, python3, gnatmake, jq, /usr/bin/time.
@@ -23,7 +23,7 @@ median() { jq -r ".results[$1].median" "$2"; }
 
 printf '%-8s %10s %10s %10s %10s %9s %9s %9s\n' \
   workload 'adair ms' 'lua ms' 'python ms' 'gnat ms' adair/lua adair/py adair/gnat
-for p in hello fib matrix list; do
+for p in hello fib matrix list records strings; do
   cp "bench/programs/$p.adb" "$work/"
   (cd "$work" && gnatmake -q -O2 "$p.adb" >/dev/null 2>&1)
   hyperfine -N --warmup 2 --runs "$runs" --style none --export-json "$work/$p.json" \
@@ -39,13 +39,15 @@ for p in hello fib matrix list; do
 done
 
 rss() { /usr/bin/time -f '%M' "$@" 2>&1 >/dev/null | tail -1; }
-ra=$(rss "$adair" run bench/programs/list.adb)
-rl=$(rss lua5.4 bench/programs/list.lua)
-ry=$(rss "$python" -S bench/programs/list.py)
-rg=$(rss "$work/list")
-awk -v a="$ra" -v l="$rl" -v y="$ry" -v g="$rg" 'BEGIN {
-  printf "%-8s %10.1f %10.1f %10.1f %10.1f %9.2f %9.2f %9.2f   (peak RSS, MiB)\n",
-    "list", a/1024, l/1024, y/1024, g/1024, a/l, a/y, a/g }'
+for p in list records; do
+  ra=$(rss "$adair" run "bench/programs/$p.adb")
+  rl=$(rss lua5.4 "bench/programs/$p.lua")
+  ry=$(rss "$python" -S "bench/programs/$p.py")
+  rg=$(rss "$work/$p")
+  awk -v p="$p" -v a="$ra" -v l="$rl" -v y="$ry" -v g="$rg" 'BEGIN {
+    printf "%-8s %10.1f %10.1f %10.1f %10.1f %9.2f %9.2f %9.2f   (peak RSS, MiB)\n",
+      p, a/1024, l/1024, y/1024, g/1024, a/l, a/y, a/g }'
+done
 
 # The checker on its two pathological inputs (adair only).
 python3 bench/pathological.py "$work"

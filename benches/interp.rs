@@ -1,5 +1,7 @@
-//! The interpreter on the three benchmark programs of `bench/programs`
+//! The interpreter on the benchmark programs of `bench/programs`
 //! (recursive fib (27), 200,000 4x4 matrix products, a 100,000-node list,
+//! a 100,000-record list with 4-character tags, 200,000 labels made and
+//! read back as strings,
 //! 10,000 joint moves on the simulator, 10,000 rendezvous between two tasks,
 //! 1,000 tasks created and finished).
 //! `bench/compare.sh` runs the same programs in CPython, Lua and GNAT.
@@ -23,6 +25,8 @@ fn programs(c: &mut Criterion) {
         "fib.adb",
         "matrix.adb",
         "list.adb",
+        "records.adb",
+        "strings.adb",
         "moves.air",
         "rendezvous.adb",
         "tasks1000.adb",
