@@ -13,6 +13,7 @@ mod expr;
 pub mod index;
 pub mod ir;
 mod persist;
+mod scopes;
 mod stmt;
 mod tasks;
 pub mod types;
@@ -21,6 +22,7 @@ use crate::diag::{Diagnostic, Span};
 use crate::syntax::ast;
 use ir::*;
 pub use persist::{PMap, PVec};
+pub use scopes::edit_distance;
 use std::collections::HashMap;
 use std::rc::Rc;
 use types::*;
@@ -50,20 +52,6 @@ pub enum Entity {
     /// The element name of `for E of A`: it stands for `A (I)`, a variable
     /// when `A` is one.
     Alias(Box<Ex>),
-}
-
-#[derive(Default, Debug, Clone)]
-struct Scope {
-    names: PMap<String, Vec<Entity>>,
-    uses: Vec<usize>,
-    /// Packages whose operators `use type` makes directly visible (those
-    /// of the package that declares the type).
-    op_uses: Vec<usize>,
-    /// The name of the subprogram or block this scope belongs to (lower
-    /// case), for expanded names like `Main.X`.
-    name: Option<String>,
-    /// The package whose spec (false) or body (true) this scope is.
-    package: Option<(usize, bool)>,
 }
 
 #[derive(Debug, Clone)]
@@ -167,18 +155,7 @@ pub struct Checker {
     pub imports: PVec<Option<String>>,
     pub excs: PVec<Exception>,
     pub packages: PVec<Package>,
-    scopes: Vec<Scope>,
-    /// For each name, the scopes (indices into `scopes`, ascending) that
-    /// declare it, and the scopes that are packages': a lookup visits
-    /// these only, not every scope of a deep nest (4,000 unclosed loops
-    /// made each lookup walk 4,000 scopes).
-    declared_in: PMap<String, Vec<u32>>,
-    package_scopes: Vec<u32>,
-    /// The name and constancy of each variable of the scopes (a scan of
-    /// every scope's names for each assignment was quadratic).
-    var_names: PMap<Var, (String, bool)>,
-    /// The scopes with `use` or `use type` clauses (ascending).
-    use_scopes: Vec<u32>,
+    scopes: scopes::Scopes,
     level: u16,
     ctx: Vec<FuncCtx>,
     loops: Vec<(Option<String>, u32)>,
@@ -205,8 +182,6 @@ pub struct Checker {
     pub script: bool,
     /// Units named by a `with` that does not exist (reported once).
     missing_units: Vec<String>,
-    /// Declared spelling of each name, for messages.
-    spelling: PMap<String, String>,
     /// What each subexpression of the expression being checked can mean
     /// (`interps`), so that overload resolution visits every node once
     /// instead of once per candidate of each enclosing operator. It lives
@@ -226,18 +201,6 @@ pub struct Checker {
     /// Names an unsupported declaration would have declared (a generic
     /// unit, its formals, an instance): a use of one is no second error.
     unsupported_names: std::collections::HashSet<String>,
-    /// "not declared" reports that a later declaration may explain, by
-    /// name: the report's index, the scope depth it was made at, and the
-    /// number of scopes closed before it (a declaration finds its own in one
-    /// look-up; see `lows` for the depth of its scopes still open).
-    undeclared: HashMap<String, Vec<(usize, usize, u64)>>,
-    /// Scopes closed so far, and the depths the scope stack came down to
-    /// after them: (closings so far, depth), both ascending. The lowest
-    /// depth reached since a report is the first entry after its count, so
-    /// closing a scope does not visit every report (that was quadratic for
-    /// deep nests full of undeclared names).
-    closed: u64,
-    lows: Vec<(u64, usize)>,
     /// Each protected type's subprograms: name, profile, real subprogram,
     /// whether it is a function.
     prot_members: Vec<Vec<(String, FuncId, FuncId, bool)>>,
@@ -282,11 +245,7 @@ impl Checker {
             imports: PVec::new(),
             excs: PVec::new(),
             packages: PVec::new(),
-            scopes: vec![Scope::default()],
-            declared_in: PMap::new(),
-            package_scopes: Vec::new(),
-            var_names: PMap::new(),
-            use_scopes: Vec::new(),
+            scopes: scopes::Scopes::new(),
             level: 0,
             ctx: vec![FuncCtx {
                 func: None,
@@ -308,7 +267,6 @@ impl Checker {
             globals: 0,
             script: false,
             missing_units: Vec::new(),
-            spelling: PMap::new(),
             memo: None,
             index: index::Index::recording(),
             cur_decl: None,
@@ -316,9 +274,6 @@ impl Checker {
             prots: PVec::new(),
             tasking: TaskContext::default(),
             unsupported_names: Default::default(),
-            undeclared: HashMap::new(),
-            closed: 0,
-            lows: Vec::new(),
             prot_members: Vec::new(),
             prot_real: HashMap::new(),
             prot_bodied: Vec::new(),
@@ -420,168 +375,6 @@ impl Checker {
         }
     }
 
-    // ---- scopes ----
-
-    fn push_scope(&mut self) {
-        self.scopes.push(Scope::default());
-    }
-    fn name_scope(&mut self, key: &str) {
-        if let Some(s) = self.scopes.last_mut() {
-            s.name = Some(key.to_string());
-        }
-    }
-    /// Makes the innermost scope the spec (`false`) or body of package `p`.
-    fn set_scope_package(&mut self, p: usize, body: bool) {
-        let i = self.scopes.len() as u32 - 1;
-        self.scopes.last_mut().expect("scope").package = Some((p, body));
-        if self.package_scopes.last() != Some(&i) {
-            self.package_scopes.push(i);
-        }
-    }
-    /// Notes that scope `i` has a `use` clause.
-    fn mark_uses(&mut self, i: usize) {
-        let i = i as u32;
-        if let Err(at) = self.use_scopes.binary_search(&i) {
-            self.use_scopes.insert(at, i);
-        }
-    }
-    fn pop_scope(&mut self) {
-        let i = self.scopes.len() as u32 - 1;
-        if let Some(s) = self.scopes.pop() {
-            for e in s.names.values().flatten() {
-                if let Entity::Var { var, .. } = e {
-                    self.var_names.remove(var);
-                }
-            }
-            for key in s.names.keys() {
-                if let Some(v) = self.declared_in.get_mut(key) {
-                    if v.last() == Some(&i) {
-                        v.pop();
-                    }
-                    if v.is_empty() {
-                        self.declared_in.remove(key);
-                    }
-                }
-            }
-        }
-        if self.package_scopes.last() == Some(&i) {
-            self.package_scopes.pop();
-        }
-        if self.use_scopes.last() == Some(&i) {
-            self.use_scopes.pop();
-        }
-        let depth = self.scopes.len();
-        self.closed += 1;
-        while self.lows.last().is_some_and(|&(_, d)| d >= depth) {
-            crate::work::tick();
-            self.lows.pop();
-        }
-        self.lows.push((self.closed, depth));
-    }
-
-    /// The depth of the scopes of a report made at `depth` after `closed`
-    /// closings that are still open: the lowest the stack has come since.
-    fn open_depth(&self, depth: usize, closed: u64) -> usize {
-        let after = self.lows.partition_point(|&(c, _)| c <= closed);
-        self.lows.get(after).map_or(depth, |&(_, d)| d.min(depth))
-    }
-
-    fn declare(&mut self, name: &str, e: Entity) {
-        let key = name.to_lowercase();
-        if !self.spelling.contains_key(&key) {
-            self.spelling.insert(key.clone(), name.to_string());
-        }
-        let scope = self.scopes.last_mut().expect("scope");
-        match scope.package {
-            Some((p, false)) => self.packages[p]
-                .names
-                .entry(key.clone())
-                .or_default()
-                .push(e.clone()),
-            Some((p, true)) => self.packages[p]
-                .private
-                .entry(key.clone())
-                .or_default()
-                .push(e.clone()),
-            None => {}
-        }
-        let i = self.scopes.len() as u32 - 1;
-        let v = self.declared_in.entry(key.clone()).or_default();
-        if v.last() != Some(&i) {
-            v.push(i);
-        }
-        if let Entity::Var { var, constant, .. } = &e {
-            self.var_names.insert(*var, (key.clone(), *constant));
-        }
-        let scope = self.scopes.last_mut().expect("scope");
-        scope.names.entry(key).or_default().push(e);
-    }
-
-    /// Replaces the latest meaning of `key` in the innermost scope (and in
-    /// its package's table): an object that an address clause maps.
-    fn redeclare(&mut self, key: &str, e: Entity) {
-        if let Entity::Var { var, constant, .. } = &e {
-            self.var_names.insert(*var, (key.to_string(), *constant));
-        }
-        let scope = self.scopes.last_mut().expect("scope");
-        if let Some(last) = scope.names.get_mut(key).and_then(|v| v.last_mut()) {
-            *last = e.clone();
-        }
-        if let Some((p, private)) = scope.package {
-            let table = if private {
-                &mut self.packages[p].private
-            } else {
-                &mut self.packages[p].names
-            };
-            if let Some(last) = table.get_mut(key).and_then(|v| v.last_mut()) {
-                *last = e;
-            }
-        }
-    }
-
-    /// Declares a name, reporting a clash with a non-overloadable name of the
-    /// same declarative region.
-    fn declare_checked(&mut self, id: &ast::Ident, e: Entity) {
-        let overloadable = matches!(e, Entity::Func(_) | Entity::EnumLit(..));
-        if let Some(prev) = self.scopes.last().and_then(|s| s.names.get(&*id.key)) {
-            let clash = prev
-                .iter()
-                .any(|p| !(overloadable && matches!(p, Entity::Func(_) | Entity::EnumLit(..))));
-            if clash
-                && !matches!(prev.last(), Some(Entity::Type(t)) if matches!(self.types.kind(*t), TypeKind::Incomplete))
-            {
-                self.err(diagnostics::declared_twice(id.span, &id.name));
-            }
-        }
-        self.index_def(&id.name, id.span, &e, None);
-        // A name reported "not declared" earlier in this scope (or one
-        // inside it): it was used before its declaration.
-        let depth = self.scopes.len();
-        let is_func = matches!(e, Entity::Func(_));
-        let mut before = Vec::new();
-        if let Some(mut uses) = self.undeclared.remove(&*id.key) {
-            uses.retain(|&(i, d, c)| {
-                crate::work::tick();
-                let here = depth <= self.open_depth(d, c);
-                if here {
-                    before.push(i);
-                }
-                !here
-            });
-            if !uses.is_empty() {
-                self.undeclared.insert(id.key.to_string(), uses);
-            }
-        }
-        for i in before {
-            if let Some(d) = self.diags.get_mut(i) {
-                *d = diagnostics::used_before_declaration(d.span, &id.name, id.span, is_func);
-            }
-        }
-        self.declare(&id.name, e);
-    }
-
-    /// All entities a simple name denotes here (innermost first; overloadable
-    /// names collect from all levels).
     /// Whether `key` (lower case) is undeclared or denotes a procedure or
     /// something other than functions: a REPL entry `F (X)` of functions
     /// only is an expression, never a call statement.
@@ -591,104 +384,6 @@ impl Checker {
             || es
                 .iter()
                 .any(|e| !matches!(e, Entity::Func(f) if self.funcs[*f as usize].ret.is_some()))
-    }
-
-    fn lookup(&self, key: &str) -> Vec<Entity> {
-        let mut found: Vec<Entity> = Vec::new();
-        // The scopes that declare `key` or are a package's, innermost
-        // first (the others add nothing).
-        let declaring: &[u32] = self.declared_in.get(key).map_or(&[], |v| &v[..]);
-        let (mut d, mut p) = (declaring.len(), self.package_scopes.len());
-        let candidates = std::iter::from_fn(|| {
-            let a = d.checked_sub(1).map(|k| declaring[k]);
-            let b = p.checked_sub(1).map(|k| self.package_scopes[k]);
-            let next = a.max(b)?;
-            if a == Some(next) {
-                d -= 1;
-            }
-            if b == Some(next) {
-                p -= 1;
-            }
-            Some(&self.scopes[next as usize])
-        });
-        for s in candidates {
-            crate::work::tick();
-            if let Some(es) = s.names.get(key) {
-                let overloadable = es
-                    .iter()
-                    .all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));
-                if !overloadable {
-                    if found.is_empty() {
-                        return vec![es.last().cloned().expect("nonempty")];
-                    }
-                    break;
-                }
-                for e in es.iter().rev() {
-                    found.push(e.clone());
-                }
-            }
-            if let Some((p, is_body)) = s.package {
-                let pk = &self.packages[p];
-                let spec = (is_body || !s.names.contains_key(key))
-                    .then(|| pk.names.get(key))
-                    .flatten();
-                // A package body sees its spec's private part too.
-                let private = is_body.then(|| pk.private.get(key)).flatten();
-                for es in [spec, private].into_iter().flatten() {
-                    let overloadable = es
-                        .iter()
-                        .all(|e| matches!(e, Entity::Func(_) | Entity::EnumLit(..)));
-                    if !overloadable && found.is_empty() {
-                        return vec![es.last().cloned().expect("nonempty")];
-                    }
-                    found.extend(es.iter().rev().cloned());
-                }
-            }
-        }
-        if !found.is_empty() {
-            return found;
-        }
-        // Use-visible declarations of packages (and, for an operator, of
-        // the packages of `use type` clauses).
-        let op = key.starts_with('"');
-        for s in self
-            .use_scopes
-            .iter()
-            .rev()
-            .map(|&i| &self.scopes[i as usize])
-        {
-            crate::work::tick();
-            let op_uses = if op { &s.op_uses[..] } else { &[] };
-            for &p in s
-                .uses
-                .iter()
-                .chain(op_uses.iter().filter(|p| !s.uses.contains(p)))
-            {
-                if let Some(es) = self.packages[p].names.get(key) {
-                    found.extend(es.iter().cloned());
-                }
-            }
-        }
-        // Non-overloadable use-visible names conflict: keep the first.
-        if found.len() > 1
-            && found
-                .iter()
-                .any(|e| !matches!(e, Entity::Func(_) | Entity::EnumLit(..)))
-        {
-            found.truncate(1);
-        }
-        found
-    }
-
-    fn visible_names(&self) -> Vec<String> {
-        let mut v: Vec<String> = Vec::new();
-        for s in &self.scopes {
-            v.extend(s.names.keys().cloned());
-            for &p in &s.uses {
-                v.extend(self.packages[p].names.keys().cloned());
-            }
-        }
-        v
     }
 
     /// The components of the record a name denotes (a variable of a record
@@ -725,7 +420,7 @@ impl Checker {
 
     /// Names in scope, for REPL completion.
     pub fn completion_names(&self) -> Vec<String> {
-        let mut v = self.visible_names();
+        let mut v = self.scopes.visible_names(&self.packages);
         v.sort();
         v.dedup();
         v
@@ -774,44 +469,6 @@ impl Checker {
             .iter()
             .find(|p| p.names.contains_key(key))
             .map(|p| p.name.clone())
-    }
-
-    fn suggest(&self, key: &str) -> Option<String> {
-        let mut best: Option<(usize, String)> = None;
-        for n in self.visible_names() {
-            let d = edit_distance(key, &n);
-            if key.len() > 2
-                && d <= 1.max(key.len() / 3)
-                && d > 0
-                && best.as_ref().is_none_or(|b| d < b.0)
-            {
-                best = Some((d, n));
-            }
-        }
-        if best.is_none() && key.len() >= 4 {
-            // A name cut short (`Error` for `ErrorCode`): the shortest
-            // visible name it begins.
-            for n in self.visible_names() {
-                if n.len() > key.len()
-                    && n.len() <= 2 * key.len()
-                    && n.starts_with(key)
-                    && best
-                        .as_ref()
-                        .is_none_or(|b| (n.len(), &n) < (b.1.len(), &b.1))
-                {
-                    best = Some((0, n));
-                }
-            }
-        }
-        best.map(|b| self.spelled(&b.1))
-    }
-
-    /// A name as it was declared (keys are lower case).
-    pub fn spelled(&self, key: &str) -> String {
-        self.spelling
-            .get(key)
-            .cloned()
-            .unwrap_or_else(|| key.to_string())
     }
 
     // ---- frames and slots ----
@@ -947,12 +604,7 @@ impl Checker {
     /// `T.E` in task T's own body, E not declared there: not an expanded
     /// name but T's entry E (T the task object, declared outside its body).
     pub(super) fn own_task_entry(&self, task: &ast::Ident, sel: &ast::Ident) -> bool {
-        let Some(scope) = self
-            .scopes
-            .iter()
-            .rev()
-            .find(|s| s.name.as_deref() == Some(task.key.as_ref()))
-        else {
+        let Some(scope) = self.scopes.enclosing(&task.key) else {
             return false;
         };
         !scope.names.contains_key(&*sel.key)
@@ -1003,13 +655,7 @@ impl Checker {
                 continue;
             }
             match self.package_of(n, true) {
-                Some(p) => {
-                    let s = self.scopes.last_mut().expect("scope");
-                    if !s.uses.contains(&p) {
-                        s.uses.push(p);
-                    }
-                    self.mark_uses(self.scopes.len() - 1);
-                }
+                Some(p) => self.scopes.use_package(p),
                 None => {
                     // `use type T;`: the operators of the package that
                     // declares T become directly visible.
@@ -1023,11 +669,7 @@ impl Checker {
                                 })
                             });
                             if let Some(p) = declaring {
-                                let s = self.scopes.last_mut().expect("scope");
-                                if !s.op_uses.contains(&p) {
-                                    s.op_uses.push(p);
-                                }
-                                self.mark_uses(self.scopes.len() - 1);
+                                self.scopes.use_type_ops(p);
                             }
                         }
                         Some(_) => {
@@ -1066,28 +708,20 @@ impl Checker {
                         ));
                     } else if let Some(h) = diagnostics::from_other_robot_languages(&id.key) {
                         d = d.with_hint(h);
-                    } else if let Some(s) = self.suggest(&id.key) {
+                    } else if let Some(s) = self.scopes.suggest(&self.packages, &id.key) {
                         d = d.with_guess(format!("did you mean `{s}`?"));
                     }
                     let n = self.diags.len();
                     self.err(d);
                     if self.diags.len() > n {
-                        let depth = self.scopes.len();
-                        self.undeclared
-                            .entry(id.key.to_string())
-                            .or_default()
-                            .push((n, depth, self.closed));
+                        self.scopes.note_undeclared(&id.key, n);
                     }
                 }
                 es
             }
             ast::ExprKind::Select(p, id) => {
                 if let ast::ExprKind::Name(pn) = &p.kind
-                    && let Some(scope) = self
-                        .scopes
-                        .iter()
-                        .rev()
-                        .find(|s| s.name.as_deref() == Some(pn.key.as_ref()))
+                    && let Some(scope) = self.scopes.enclosing(&pn.key)
                     && !self.own_task_entry(pn, id)
                 {
                     let es = scope.names.get(&*id.key).cloned().unwrap_or_default();
@@ -1109,12 +743,7 @@ impl Checker {
                             .cloned()
                             .unwrap_or_default();
                         // Inside the package itself, its private names are visible too.
-                        if es.is_empty()
-                            && self
-                                .scopes
-                                .iter()
-                                .any(|s| s.package.is_some_and(|x| x.0 == pk))
-                        {
+                        if es.is_empty() && self.scopes.in_package(pk) {
                             es = self.packages[pk]
                                 .private
                                 .get(&*id.key)
@@ -1187,16 +816,8 @@ impl Checker {
             }
             None => {
                 // Library-level packages are visible in the outermost scope.
-                let key = full.to_lowercase();
-                let v = self.declared_in.entry(key.clone()).or_default();
-                if v.first() != Some(&0) {
-                    v.insert(0, 0);
-                }
-                self.scopes[0]
-                    .names
-                    .entry(key)
-                    .or_default()
-                    .push(Entity::Package(idx));
+                self.scopes
+                    .declare_library_package(full.to_lowercase(), idx);
             }
         }
         idx
@@ -1209,18 +830,15 @@ impl Checker {
             .packages
             .iter()
             .position(|p| p.name.eq_ignore_ascii_case(full))
-            && !self.scopes[0].uses.contains(&i)
         {
-            self.scopes[0].uses.push(i);
-            self.mark_uses(0);
+            self.scopes.use_at_library_level(i);
         }
     }
 
     /// Finishes a check: the level-0 statements and the slot count.
     pub fn take_diags(&mut self) -> Vec<Diagnostic> {
         self.diag_keys.clear();
-        self.undeclared.clear();
-        self.lows.clear();
+        self.scopes.forget_reports();
         self.erred = false;
         std::mem::take(&mut self.diags)
     }
@@ -1286,21 +904,6 @@ impl Checker {
         };
         (!(params_match && ret_match)).then_some(want)
     }
-}
-
-pub fn edit_distance(a: &str, b: &str) -> usize {
-    let a: Vec<char> = a.chars().collect();
-    let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    for i in 1..=a.len() {
-        let mut cur = vec![i; b.len() + 1];
-        for j in 1..=b.len() {
-            let cost = usize::from(a[i - 1] != b[j - 1]);
-            cur[j] = (prev[j] + 1).min(cur[j - 1] + 1).min(prev[j - 1] + cost);
-        }
-        prev = cur;
-    }
-    prev[b.len()]
 }
 
 impl Checker {

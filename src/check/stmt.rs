@@ -110,7 +110,7 @@ impl Checker {
                     },
                 }
             }
-            self.push_scope();
+            self.scopes.push();
             let occurrence = h.occurrence.as_ref().map(|id| {
                 let var = self.new_slot();
                 let e = Entity::Var {
@@ -126,7 +126,7 @@ impl Checker {
             self.in_handler += 1;
             let stmts = self.stmts(&h.stmts);
             self.in_handler -= 1;
-            self.pop_scope();
+            self.scopes.pop();
             out.push(Handler {
                 choices,
                 occurrence,
@@ -293,7 +293,7 @@ impl Checker {
                             }
                             _ => t,
                         };
-                        self.push_scope();
+                        self.scopes.push();
                         let v = self.new_slot();
                         let e = Entity::Var {
                             var: v,
@@ -304,7 +304,7 @@ impl Checker {
                         self.index_def(&var.name, var.span, &e, Some(index::DefKind::LoopVariable));
                         self.declare(&var.name, e);
                         let body = self.stmts(body);
-                        self.pop_scope();
+                        self.scopes.pop();
                         StmtKind::For(Box::new(ForLoop {
                             id,
                             var: v,
@@ -376,9 +376,9 @@ impl Checker {
                 }
             }
             S::Block { label, decls, body } => {
-                self.push_scope();
+                self.scopes.push();
                 if let Some(l) = label {
-                    self.name_scope(&l.key);
+                    self.scopes.name(&l.key);
                     // An exception declared in a named block is
                     // `UNIT.BLOCK.NAME` (as GNAT's Exception_Name).
                     self.unit_path.push(l.name.to_string());
@@ -391,7 +391,7 @@ impl Checker {
                 if label.is_some() {
                     self.unit_path.pop();
                 }
-                self.pop_scope();
+                self.scopes.pop();
                 if creates {
                     let stmts = self.master_region(elab, inner, sp, true, false);
                     StmtKind::Block(Box::new(Body {
@@ -460,9 +460,9 @@ impl Checker {
     }
 
     fn scoped_stmts(&mut self, ss: &[ast::Stmt]) -> Vec<Stmt> {
-        self.push_scope();
+        self.scopes.push();
         let r = self.stmts(ss);
-        self.pop_scope();
+        self.scopes.pop();
         r
     }
 
@@ -553,7 +553,7 @@ impl Checker {
             return StmtKind::Loop { id, body };
         };
         let elem = self.types.array(arr.ty).map(|(_, e, _)| e).unwrap_or(ERROR);
-        self.push_scope();
+        self.scopes.push();
         let mut before = Vec::new();
         let base = if is_name(&arr) {
             arr
@@ -598,7 +598,7 @@ impl Checker {
         self.index_def(&var.name, var.span, &e, None);
         self.declare(&var.name, e);
         let mut stmts = self.stmts(body);
-        self.pop_scope();
+        self.scopes.pop();
         // Innermost dimension first: the last index varies fastest.
         for (d, v) in vars.iter().enumerate().rev() {
             let dim = d as u8 + 1;

@@ -121,7 +121,7 @@ impl Checker {
                 // Completing an incomplete type keeps its id.
                 let prev = self
                     .scopes
-                    .last()
+                    .innermost()
                     .and_then(|s| s.names.get(&*name.key))
                     .and_then(|es| es.last().cloned());
                 if let Some(Entity::Type(old)) = prev
@@ -221,7 +221,7 @@ impl Checker {
     /// The literals of a completed incomplete type (declared just now, in
     /// the current scope) become the literals of the type first declared.
     fn retarget_enum_lits(&mut self, from: TypeId, to: TypeId) {
-        let Some(s) = self.scopes.last_mut() else {
+        let Some(s) = self.scopes.innermost_mut() else {
             return;
         };
         let is_lit = |e: &Entity| matches!(e, Entity::EnumLit(t, _) if *t == from);

@@ -62,11 +62,11 @@ impl Checker {
         // A body completes an earlier declaration with the same profile.
         let mut existing: Vec<FuncId> = self
             .scopes
-            .last()
+            .innermost()
             .and_then(|s| s.names.get(&key))
             .map(|es| super::expr::funcs_of(es))
             .unwrap_or_default();
-        if let Some((p, true)) = self.scopes.last().and_then(|s| s.package)
+        if let Some((p, true)) = self.scopes.innermost().and_then(|s| s.package)
             && let Some(es) = self.packages[p].names.get(&key)
         {
             existing.extend(super::expr::funcs_of(es));
@@ -224,8 +224,8 @@ impl Checker {
             saw_return: false,
             next_slot: 0,
         });
-        self.push_scope();
-        self.name_scope(key);
+        self.scopes.push();
+        self.scopes.name(key);
         self.unit_path.push(display.to_string());
         let mut written = written.iter();
         let mut last = None;
@@ -273,7 +273,7 @@ impl Checker {
         }
         self.tasking.prot_function_obj = outer_function_obj;
         self.unit_path.pop();
-        self.pop_scope();
+        self.scopes.pop();
         let ctx = self.ctx.pop().expect("ctx");
         self.report_unread();
         self.level -= 1;
@@ -366,8 +366,8 @@ impl Checker {
             }
             idx
         };
-        self.push_scope();
-        self.set_scope_package(idx, false);
+        self.scopes.push();
+        self.scopes.set_package(idx, false);
         // Child units see their parents' declarations.
         if let Some((parent, _)) = full.rsplit_once('.')
             && let Some(pi) = self
@@ -375,17 +375,17 @@ impl Checker {
                 .iter()
                 .position(|x| x.name.eq_ignore_ascii_case(parent))
         {
-            self.scopes.last_mut().expect("scope").uses.push(pi);
-            self.mark_uses(self.scopes.len() - 1);
+            self.scopes.innermost_mut().expect("scope").uses.push(pi);
+            self.scopes.mark_uses(self.scopes.depth() - 1);
         }
         self.unit_path.extend(name.split('.').map(str::to_string));
         self.decls(&p.decls, out);
-        self.set_scope_package(idx, true);
+        self.scopes.set_package(idx, true);
         self.decls(&p.private, out);
         for _ in name.split('.') {
             self.unit_path.pop();
         }
-        self.pop_scope();
+        self.scopes.pop();
     }
 
     pub(super) fn package_body(&mut self, p: &ast::PackageBody, out: &mut Vec<Stmt>) {
@@ -397,8 +397,8 @@ impl Checker {
                 return;
             }
         };
-        self.push_scope();
-        self.set_scope_package(idx, true);
+        self.scopes.push();
+        self.scopes.set_package(idx, true);
         self.unit_path.extend(name.split('.').map(str::to_string));
         self.decls_completed(&p.decls, out);
         if let Some(init) = &p.init {
@@ -411,7 +411,7 @@ impl Checker {
         for _ in name.split('.') {
             self.unit_path.pop();
         }
-        self.pop_scope();
+        self.scopes.pop();
         // Every subprogram declared in the spec needs a body.
         let missing: Vec<String> = self.packages[idx]
             .names

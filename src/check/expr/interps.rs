@@ -245,20 +245,13 @@ impl Checker {
     /// subprogram or named block), rather than a record value?
     pub(in crate::check) fn expanded_prefix(&mut self, p: &ast::Expr) -> bool {
         match &p.kind {
-            ExprKind::Name(id)
-                if self
-                    .scopes
-                    .iter()
-                    .any(|s| s.name.as_deref() == Some(id.key.as_ref())) =>
-            {
-                true
-            }
+            ExprKind::Name(id) if self.scopes.enclosing(&id.key).is_some() => true,
             // Each prefix of an expanded name is a distinct package or
             // enclosing scope, so a longer chain is a component selection:
             // answering that without walking it keeps a dotted name of
             // n parts linear (each level asks this of its prefix).
             ExprKind::Select(..)
-                if select_depth_exceeds(p, self.packages.len() + self.scopes.len()) =>
+                if select_depth_exceeds(p, self.packages.len() + self.scopes.depth()) =>
             {
                 false
             }

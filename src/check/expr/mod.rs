@@ -103,7 +103,7 @@ impl Checker {
 
     fn var_info(&self, v: Var) -> Option<(String, bool)> {
         crate::work::tick();
-        self.var_names.get(&v).cloned()
+        self.scopes.var(v)
     }
 
     /// Checks an expression; `want` is the type the context expects, if known.

@@ -33,7 +33,7 @@ impl Checker {
         }
         let Some(Entity::Var { ty, var, .. }) = self
             .scopes
-            .last()
+            .innermost()
             .and_then(|s| s.names.get(&*name.key))
             .and_then(|es| es.last().cloned())
         else {

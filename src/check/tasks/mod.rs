@@ -277,7 +277,7 @@ impl Checker {
         };
         self.prot_bodied.push(k);
         self.tasking.prot_ctx.push((k, None));
-        self.push_scope();
+        self.scopes.push();
         // The operations are visible inside the body by their names.
         let members = self.prot_members[k as usize].clone();
         for (key, profile, _, _) in &members {
@@ -291,7 +291,7 @@ impl Checker {
                 _ => self.err(diagnostics::unsupported_in_protected_body(d.span)),
             }
         }
-        self.pop_scope();
+        self.scopes.pop();
         self.tasking.prot_ctx.pop();
         for (key, profile, real, _) in &members {
             if self.funcs[*real as usize].body.is_none() {

@@ -345,7 +345,7 @@ impl Checker {
             ));
             return None;
         }
-        self.push_scope();
+        self.scopes.push();
         let mut slots = Vec::new();
         let written = params.iter().flat_map(|p| p.names.iter());
         for (p, id) in profile.params.iter().zip(written) {
@@ -363,7 +363,7 @@ impl Checker {
         self.tasking.accepting.push((k, i as u32, sp));
         let body = body.map(|b| self.block(b));
         self.tasking.accepting.pop();
-        self.pop_scope();
+        self.scopes.pop();
         Some(Accept {
             entry: i as u32,
             params: slots,
@@ -486,9 +486,9 @@ impl Checker {
     }
 
     fn scoped(&mut self, ss: &[ast::Stmt]) -> Vec<Stmt> {
-        self.push_scope();
+        self.scopes.push();
         let r = self.stmts(ss);
-        self.pop_scope();
+        self.scopes.pop();
         r
     }
 
