@@ -24,6 +24,7 @@ fn a_check_for_diagnostics_only_keeps_no_lazy_body() {
         let body = s
             .front
             .checker
+            .tables
             .funcs
             .iter()
             .find(|f| f.name.eq_ignore_ascii_case("big"))

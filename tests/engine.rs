@@ -87,6 +87,7 @@ fn run(src: &str, parts: bool, engine: Engine) -> (String, String, bool) {
     let kept = s
         .front
         .checker
+        .tables
         .funcs
         .iter()
         .find(|f| f.name.eq_ignore_ascii_case("big"))

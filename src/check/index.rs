@@ -186,7 +186,7 @@ impl Checker {
             Entity::Type(t) => (DefKind::Type, Some(*t), None),
             Entity::Func(f) => (
                 DefKind::Subprogram,
-                self.funcs.get(*f as usize).and_then(|s| s.ret),
+                self.tables.funcs.get(*f as usize).and_then(|s| s.ret),
                 Some(*f),
             ),
             Entity::EnumLit(t, _) => (DefKind::EnumLiteral, Some(*t), None),
@@ -278,7 +278,7 @@ impl Checker {
 
     /// Records a named association `Name => ...` of a call of `f`.
     pub(super) fn index_named_arg(&mut self, f: FuncId, id: &crate::syntax::ast::Ident) {
-        let Some(i) = self.funcs.get(f as usize).and_then(|s| {
+        let Some(i) = self.tables.funcs.get(f as usize).and_then(|s| {
             s.params
                 .iter()
                 .position(|p| p.name.eq_ignore_ascii_case(&id.name))
@@ -308,11 +308,11 @@ impl Checker {
     /// Records a use of record component `i` of `rec` at `span`.
     pub(super) fn index_field_ref(&mut self, span: Span, rec: TypeId, i: u32) {
         let k = Key::Field(rec, i);
-        let def = self
-            .index
-            .by_key
-            .get(&k)
-            .or_else(|| self.index.by_key.get(&Key::Field(self.types.base(rec), i)));
+        let def = self.index.by_key.get(&k).or_else(|| {
+            self.index
+                .by_key
+                .get(&Key::Field(self.tables.types.base(rec), i))
+        });
         if let Some(&def) = def
             && self.index.uses
         {

@@ -15,6 +15,7 @@ pub mod ir;
 mod persist;
 mod scopes;
 mod stmt;
+mod tables;
 mod tasks;
 pub mod types;
 
@@ -25,6 +26,7 @@ pub use persist::{PMap, PVec};
 pub use scopes::edit_distance;
 use std::collections::HashMap;
 use std::rc::Rc;
+pub use tables::{Package, Tables};
 use types::*;
 
 #[derive(Clone, Debug, PartialEq)]
@@ -52,14 +54,6 @@ pub enum Entity {
     /// The element name of `for E of A`: it stands for `A (I)`, a variable
     /// when `A` is one.
     Alias(Box<Ex>),
-}
-
-#[derive(Debug, Clone)]
-pub struct Package {
-    pub name: String,
-    names: PMap<String, Vec<Entity>>,
-    /// Names of the package body (and private part), visible inside it only.
-    private: PMap<String, Vec<Entity>>,
 }
 
 #[derive(Clone)]
@@ -149,12 +143,8 @@ pub struct Checker {
     /// While a declaration's subtype indication is checked: the statements
     /// that evaluate its non-static bounds once (`elaborating`).
     bounds_out: Option<Vec<Stmt>>,
-    pub types: Types,
-    pub funcs: PVec<Subprogram>,
-    /// Import name of each subprogram bound to a builtin.
-    pub imports: PVec<Option<String>>,
-    pub excs: PVec<Exception>,
-    pub packages: PVec<Package>,
+    /// What the program declares.
+    pub tables: tables::Tables,
     scopes: scopes::Scopes,
     level: u16,
     ctx: Vec<FuncCtx>,
@@ -192,23 +182,12 @@ pub struct Checker {
     pub index: index::Index,
     /// The declaration being checked, for [`index::Def::decl`].
     cur_decl: Option<Span>,
-    /// Task types and protected types.
-    pub tasks: PVec<TaskDef>,
-    pub prots: PVec<ProtDef>,
     /// Where the statement being checked stands among tasks, protected
     /// bodies and masters.
     tasking: TaskContext,
     /// Names an unsupported declaration would have declared (a generic
     /// unit, its formals, an instance): a use of one is no second error.
     unsupported_names: std::collections::HashSet<String>,
-    /// Each protected type's subprograms: name, profile, real subprogram,
-    /// whether it is a function.
-    prot_members: Vec<Vec<(String, FuncId, FuncId, bool)>>,
-    /// Profile -> real subprogram of protected operations.
-    prot_real: HashMap<FuncId, (FuncId, u32)>,
-    /// Protected types whose body was seen (missing operations in it are
-    /// reported there).
-    prot_bodied: Vec<u32>,
     /// The devices address clauses bind to (`--devices`, or the default set).
     pub devices: Rc<crate::devices::Devices>,
     /// Subprograms declared before their bodies: the hidden Boolean that
@@ -240,11 +219,7 @@ impl Checker {
             parts_here: false,
             erred: false,
             bounds_out: None,
-            types: Types::standard(),
-            funcs: PVec::new(),
-            imports: PVec::new(),
-            excs: PVec::new(),
-            packages: PVec::new(),
+            tables: tables::Tables::new(),
             scopes: scopes::Scopes::new(),
             level: 0,
             ctx: vec![FuncCtx {
@@ -270,13 +245,8 @@ impl Checker {
             memo: None,
             index: index::Index::recording(),
             cur_decl: None,
-            tasks: PVec::new(),
-            prots: PVec::new(),
             tasking: TaskContext::default(),
             unsupported_names: Default::default(),
-            prot_members: Vec::new(),
-            prot_real: HashMap::new(),
-            prot_bodied: Vec::new(),
             devices: Rc::new(crate::devices::Devices::default_set()),
             elab_flags: HashMap::new(),
         };
@@ -317,7 +287,7 @@ impl Checker {
             } else {
                 name.to_uppercase()
             };
-            self.excs.push(Exception { name: full });
+            self.tables.excs.push(Exception { name: full });
             if i < 4 {
                 self.declare(name, Entity::Exc(i as ExcId));
             }
@@ -327,20 +297,20 @@ impl Checker {
             .iter()
             .enumerate()
         {
-            self.packages[io]
+            self.tables.packages[io]
                 .names
                 .insert(n.to_string(), vec![Entity::Exc(4 + i as ExcId)]);
         }
         let ex = self.package("Ada.Exceptions");
-        self.packages[ex].names.insert(
+        self.tables.packages[ex].names.insert(
             "exception_occurrence".into(),
             vec![Entity::Type(OCCURRENCE)],
         );
         let cal = self.package("Ada.Calendar");
-        self.packages[cal]
+        self.tables.packages[cal]
             .names
             .insert("time".into(), vec![Entity::Type(TIME)]);
-        self.packages[cal]
+        self.tables.packages[cal]
             .names
             .insert("duration".into(), vec![Entity::Type(DURATION)]);
     }
@@ -381,9 +351,9 @@ impl Checker {
     pub fn may_name_a_procedure(&self, key: &str) -> bool {
         let es = self.lookup(key);
         es.is_empty()
-            || es
-                .iter()
-                .any(|e| !matches!(e, Entity::Func(f) if self.funcs[*f as usize].ret.is_some()))
+            || es.iter().any(
+                |e| !matches!(e, Entity::Func(f) if self.tables.funcs[*f as usize].ret.is_some()),
+            )
     }
 
     /// The components of the record a name denotes (a variable of a record
@@ -393,8 +363,9 @@ impl Checker {
             Some(Entity::Var { ty, .. }) => *ty,
             _ => return Vec::new(),
         };
-        let ty = self.types.designated(ty).unwrap_or(ty);
-        self.types
+        let ty = self.tables.types.designated(ty).unwrap_or(ty);
+        self.tables
+            .types
             .fields(ty)
             .map(|f| f.iter().map(|x| x.name.clone()).collect())
             .unwrap_or_default()
@@ -404,6 +375,7 @@ impl Checker {
     /// after `Pkg.`; `None` when `full` names no package.
     pub fn package_names(&self, full: &str) -> Option<Vec<String>> {
         let p = self
+            .tables
             .packages
             .iter()
             .find(|p| p.name.eq_ignore_ascii_case(full))?;
@@ -420,7 +392,7 @@ impl Checker {
 
     /// Names in scope, for REPL completion.
     pub fn completion_names(&self) -> Vec<String> {
-        let mut v = self.scopes.visible_names(&self.packages);
+        let mut v = self.scopes.visible_names(&self.tables.packages);
         v.sort();
         v.dedup();
         v
@@ -445,7 +417,8 @@ impl Checker {
     pub fn qualified_with_hint(&self, prefix: &str, name: &str) -> Option<String> {
         let full = format!("{prefix}.{name}");
         let find = |n: &str| {
-            self.packages
+            self.tables
+                .packages
                 .iter()
                 .find(|p| p.name.eq_ignore_ascii_case(n))
         };
@@ -465,7 +438,8 @@ impl Checker {
     }
 
     fn package_declaring(&self, key: &str) -> Option<String> {
-        self.packages
+        self.tables
+            .packages
             .iter()
             .find(|p| p.names.contains_key(key))
             .map(|p| p.name.clone())
@@ -508,22 +482,23 @@ impl Checker {
         // (A name only a failed unit meant to declare is not declared
         // afterwards: a later REPL entry that uses it is told so.)
         self.unsupported_names.clear();
-        let (tasks0, prots0) = (self.tasks.len(), self.prots.len());
+        let (tasks0, prots0) = (self.tables.tasks.len(), self.tables.prots.len());
         let r = self.check_unit_items(unit);
         // Every task and protected type declared here has its body here.
         let mut missing: Vec<Diagnostic> = self
+            .tables
             .tasks
             .iter()
             .skip(tasks0)
             .filter(|t| t.body.is_none())
             .map(|t| diagnostics::task_without_body(t.span, &t.name))
             .collect();
-        for (k, p) in self.prots.iter().enumerate().skip(prots0) {
+        for (k, p) in self.tables.prots.iter().enumerate().skip(prots0) {
             let unfinished = p.entries.iter().any(|e| e.body.is_none())
-                || self.prot_members[k]
+                || self.tables.prot_members[k]
                     .iter()
-                    .any(|(_, _, real, _)| self.funcs[*real as usize].body.is_none());
-            if unfinished && !self.prot_bodied.contains(&(k as u32)) {
+                    .any(|(_, _, real, _)| self.tables.funcs[*real as usize].body.is_none());
+            if unfinished && !self.tables.prot_bodied.contains(&(k as u32)) {
                 missing.push(diagnostics::protected_without_body(p.span, &p.name));
             }
         }
@@ -573,7 +548,7 @@ impl Checker {
                         && !has_stmts
                     {
                         // Library-level procedure: the last one is the main program.
-                        let before = self.funcs.len();
+                        let before = self.tables.funcs.len();
                         self.main_body = std::ptr::eq(item, last_main.unwrap_or(item));
                         self.decl(d, &mut out);
                         self.main_body = false;
@@ -610,7 +585,7 @@ impl Checker {
         !scope.names.contains_key(&*sel.key)
             && self.lookup(&task.key).iter().any(|e| {
                 matches!(e, Entity::Var { ty, .. }
-                    if matches!(self.types.kind(*ty), types::TypeKind::Task(_)))
+                    if matches!(self.tables.types.kind(*ty), types::TypeKind::Task(_)))
             })
     }
 
@@ -632,7 +607,7 @@ impl Checker {
 
     fn funcs_named(&self, key: &str, _after: usize) -> Option<FuncId> {
         self.lookup(key).iter().find_map(|e| match e {
-            Entity::Func(f) if self.funcs[*f as usize].params.is_empty() => Some(*f),
+            Entity::Func(f) if self.tables.funcs[*f as usize].params.is_empty() => Some(*f),
             _ => None,
         })
     }
@@ -663,7 +638,7 @@ impl Checker {
                     match es.first() {
                         Some(Entity::Type(t)) => {
                             let t = *t;
-                            let declaring = self.packages.iter().position(|p| {
+                            let declaring = self.tables.packages.iter().position(|p| {
                                 p.names.values().any(|es| {
                                     es.iter().any(|e| matches!(e, Entity::Type(x) if *x == t))
                                 })
@@ -708,7 +683,7 @@ impl Checker {
                         ));
                     } else if let Some(h) = diagnostics::from_other_robot_languages(&id.key) {
                         d = d.with_hint(h);
-                    } else if let Some(s) = self.scopes.suggest(&self.packages, &id.key) {
+                    } else if let Some(s) = self.scopes.suggest(&self.tables.packages, &id.key) {
                         d = d.with_guess(format!("did you mean `{s}`?"));
                     }
                     let n = self.diags.len();
@@ -737,14 +712,14 @@ impl Checker {
                 match pes.first() {
                     Some(Entity::Package(pk)) => {
                         let pk = *pk;
-                        let mut es = self.packages[pk]
+                        let mut es = self.tables.packages[pk]
                             .names
                             .get(&*id.key)
                             .cloned()
                             .unwrap_or_default();
                         // Inside the package itself, its private names are visible too.
                         if es.is_empty() && self.scopes.in_package(pk) {
-                            es = self.packages[pk]
+                            es = self.tables.packages[pk]
                                 .private
                                 .get(&*id.key)
                                 .cloned()
@@ -754,10 +729,10 @@ impl Checker {
                             self.index_use(id, &es);
                         }
                         if es.is_empty() && report {
-                            let pname = self.packages[pk].name.clone();
+                            let pname = self.tables.packages[pk].name.clone();
                             let mut d = diagnostics::not_declared_in(id.span, &id.name, &pname);
                             let cands: Vec<String> =
-                                self.packages[pk].names.keys().cloned().collect();
+                                self.tables.packages[pk].names.keys().cloned().collect();
                             if let Some(best) = cands
                                 .iter()
                                 .filter(|c| edit_distance(&id.key, c) <= 2)
@@ -793,14 +768,15 @@ impl Checker {
     /// Creates a package (and its parents, for `Ada.Text_IO`), returning its index.
     fn package(&mut self, full: &str) -> usize {
         if let Some(i) = self
+            .tables
             .packages
             .iter()
             .position(|p| p.name.eq_ignore_ascii_case(full))
         {
             return i;
         }
-        let idx = self.packages.len();
-        self.packages.push(Package {
+        let idx = self.tables.packages.len();
+        self.tables.packages.push(Package {
             name: full.to_string(),
             names: PMap::new(),
             private: PMap::new(),
@@ -808,7 +784,7 @@ impl Checker {
         match full.rsplit_once('.') {
             Some((parent, last)) => {
                 let p = self.package(parent);
-                self.packages[p]
+                self.tables.packages[p]
                     .names
                     .entry(last.to_lowercase())
                     .or_default()
@@ -827,6 +803,7 @@ impl Checker {
     /// (script mode: Ada.Text_IO and friends without `with`/`use`).
     pub fn use_everywhere(&mut self, full: &str) {
         if let Some(i) = self
+            .tables
             .packages
             .iter()
             .position(|p| p.name.eq_ignore_ascii_case(full))
@@ -847,8 +824,8 @@ impl Checker {
     /// expected type. Errors are left in `diags`.
     pub fn check_expr(&mut self, e: &ast::Expr) -> Ex {
         let ex = self.expr(e, None);
-        if self.types.is_universal(ex.ty) {
-            let t = if self.types.is_float(ex.ty) {
+        if self.tables.types.is_universal(ex.ty) {
+            let t = if self.tables.types.is_float(ex.ty) {
                 FLOAT
             } else {
                 INTEGER
@@ -862,18 +839,20 @@ impl Checker {
     /// (Ada's IO exceptions through `AdaIR` and `Ada.Text_IO`).
     pub fn export(&mut self, package: &str, name: &str, from_package: &str) {
         let (Some(to), Some(from)) = (
-            self.packages
+            self.tables
+                .packages
                 .iter()
                 .position(|p| p.name.eq_ignore_ascii_case(package)),
-            self.packages
+            self.tables
+                .packages
                 .iter()
                 .position(|p| p.name.eq_ignore_ascii_case(from_package)),
         ) else {
             return;
         };
         let key = name.to_lowercase();
-        if let Some(es) = self.packages[from].names.get(&key).cloned() {
-            self.packages[to].names.insert(key, es);
+        if let Some(es) = self.tables.packages[from].names.get(&key).cloned() {
+            self.tables.packages[to].names.insert(key, es);
         }
     }
 
@@ -889,8 +868,8 @@ impl Checker {
     /// The expected profile of `name` when `f`'s declared one differs from it.
     pub fn import_mismatch(&self, f: FuncId, name: &str) -> Option<ImportProfile> {
         let want = (self.import_profile?)(name)?;
-        let sub = &self.funcs[f as usize];
-        let same_type = |t: TypeId, n: &str| self.types.name(t).eq_ignore_ascii_case(n);
+        let sub = &self.tables.funcs[f as usize];
+        let same_type = |t: TypeId, n: &str| self.tables.types.name(t).eq_ignore_ascii_case(n);
         let params_match = sub.params.len() == want.params.len()
             && sub
                 .params
@@ -907,19 +886,6 @@ impl Checker {
 }
 
 impl Checker {
-    /// The program checked so far, as the interpreter reads it.
-    pub fn program(&self) -> ir::ProgramRef<'_> {
-        ir::ProgramRef {
-            funcs: &self.funcs,
-            imports: &self.imports,
-            types: &self.types,
-            excs: &self.excs,
-            globals: self.globals,
-            tasks: &self.tasks,
-            prots: &self.prots,
-        }
-    }
-
     /// Marks a variable as read (see `unread`).
     pub(super) fn mark_read(&mut self, v: Var) {
         self.set_read(v, true);

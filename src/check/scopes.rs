@@ -440,13 +440,13 @@ impl Scopes {
 
 impl Checker {
     pub(super) fn declare(&mut self, name: &str, e: Entity) {
-        self.scopes.declare(&mut self.packages, name, e);
+        self.scopes.declare(&mut self.tables.packages, name, e);
     }
 
     /// Replaces the latest meaning of `key` in the innermost scope (and in
     /// its package's table): an object that an address clause maps.
     pub(super) fn redeclare(&mut self, key: &str, e: Entity) {
-        self.scopes.redeclare(&mut self.packages, key, e);
+        self.scopes.redeclare(&mut self.tables.packages, key, e);
     }
 
     /// Declares a name, reporting a clash with a non-overloadable name of the
@@ -458,7 +458,7 @@ impl Checker {
                 .iter()
                 .any(|p| !(overloadable && matches!(p, Entity::Func(_) | Entity::EnumLit(..))));
             if clash
-                && !matches!(prev.last(), Some(Entity::Type(t)) if matches!(self.types.kind(*t), TypeKind::Incomplete))
+                && !matches!(prev.last(), Some(Entity::Type(t)) if matches!(self.tables.types.kind(*t), TypeKind::Incomplete))
             {
                 self.err(diagnostics::declared_twice(id.span, &id.name));
             }
@@ -479,7 +479,7 @@ impl Checker {
     /// All entities a simple name denotes here (innermost first; overloadable
     /// names collect from all levels).
     pub(super) fn lookup(&self, key: &str) -> Vec<Entity> {
-        self.scopes.lookup(&self.packages, key)
+        self.scopes.lookup(&self.tables.packages, key)
     }
 
     /// A name as it was declared (keys are lower case).

@@ -138,10 +138,10 @@ impl Checker {
 
     fn cond(&mut self, e: &ast::Expr) -> Ex {
         let c = self.expr(e, Some(BOOLEAN));
-        if c.ty != ERROR && self.types.base(c.ty) != BOOLEAN {
+        if c.ty != ERROR && self.tables.types.base(c.ty) != BOOLEAN {
             self.err(diagnostics::condition_not_boolean(
                 e.span,
-                (!self.types.is_universal(c.ty)).then(|| self.types.name(c.ty)),
+                (!self.tables.types.is_universal(c.ty)).then(|| self.tables.types.name(c.ty)),
             ));
             return c;
         }
@@ -174,11 +174,11 @@ impl Checker {
                 let vty = match (&t.kind, &value.kind) {
                     (ExKind::Slice(_, lh), ast::ExprKind::Aggregate(_)) => {
                         let [l, h] = &**lh;
-                        match self.types.array(ty).map(|(i, e, _)| (i.to_vec(), e)) {
+                        match self.tables.types.array(ty).map(|(i, e, _)| (i.to_vec(), e)) {
                             Some((index, elem)) => {
-                                let name = self.types.name(ty).to_string();
-                                let st = self.types.add_subtype(&name, ty);
-                                self.types.list[st as usize].kind = TypeKind::Array {
+                                let name = self.tables.types.name(ty).to_string();
+                                let st = self.tables.types.add_subtype(&name, ty);
+                                self.tables.types.list[st as usize].kind = TypeKind::Array {
                                     index,
                                     elem,
                                     bounds: Some(vec![(l.clone(), h.clone())]),
@@ -218,7 +218,7 @@ impl Checker {
             }
             S::Case { subject, arms } => {
                 let subj = self.expr(subject, None);
-                let st = if self.types.is_universal(subj.ty) {
+                let st = if self.tables.types.is_universal(subj.ty) {
                     INTEGER
                 } else {
                     subj.ty
@@ -272,7 +272,7 @@ impl Checker {
                         range,
                     } => {
                         let (lo, hi, t) = self.discrete_range(range, None);
-                        let t = if self.types.is_universal(t) {
+                        let t = if self.tables.types.is_universal(t) {
                             INTEGER
                         } else {
                             t
@@ -282,11 +282,11 @@ impl Checker {
                         // subtype (a `case` on it needs no `others`).
                         let t = match (self.static_value(&lo), self.static_value(&hi)) {
                             (Some(Static::Int(l)), Some(Static::Int(h)))
-                                if self.types.is_discrete(t) =>
+                                if self.tables.types.is_discrete(t) =>
                             {
-                                let name = self.types.name(t).to_string();
-                                let st = self.types.add_subtype(&name, t);
-                                let info = &mut self.types.list[st as usize];
+                                let name = self.tables.types.name(t).to_string();
+                                let st = self.tables.types.add_subtype(&name, t);
+                                let info = &mut self.tables.types.list[st as usize];
                                 info.range = Some((lo.clone(), hi.clone()));
                                 info.static_range = Some((l, h));
                                 st
@@ -369,7 +369,7 @@ impl Checker {
                     (None, Some(t)) => {
                         self.err(diagnostics::function_returns_nothing(
                             sp,
-                            self.types.name(t),
+                            self.tables.types.name(t),
                         ));
                         return;
                     }
@@ -542,7 +542,7 @@ impl Checker {
         body: &[ast::Stmt],
     ) -> StmtKind {
         let arr = self.expr(array, None);
-        let Some(index) = self.types.array(arr.ty).map(|(i, _, _)| i.to_vec()) else {
+        let Some(index) = self.tables.types.array(arr.ty).map(|(i, _, _)| i.to_vec()) else {
             if arr.ty != ERROR {
                 self.err(diagnostics::for_of_needs_array(
                     array.span,
@@ -552,7 +552,12 @@ impl Checker {
             let body = self.scoped_stmts(body);
             return StmtKind::Loop { id, body };
         };
-        let elem = self.types.array(arr.ty).map(|(_, e, _)| e).unwrap_or(ERROR);
+        let elem = self
+            .tables
+            .types
+            .array(arr.ty)
+            .map(|(_, e, _)| e)
+            .unwrap_or(ERROR);
         self.scopes.push();
         let mut before = Vec::new();
         let base = if is_name(&arr) {
@@ -689,7 +694,7 @@ impl Checker {
         let mut out_last = None;
         for e in &es {
             let Entity::Func(f) = e else { return None };
-            let sp = &self.funcs[*f as usize];
+            let sp = &self.tables.funcs[*f as usize];
             if sp.ret.is_some() {
                 return None;
             }
@@ -712,7 +717,7 @@ impl Checker {
         Some(diagnostics::procedure_result_in_out_param(
             value.span,
             &id.name,
-            &self.funcs[f as usize].params.last()?.name,
+            &self.tables.funcs[f as usize].params.last()?.name,
             &written,
             &self.signature(f),
         ))

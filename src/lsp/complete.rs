@@ -295,7 +295,7 @@ fn name_items(a: &Analysis, offset: usize) -> Vec<Item> {
         let mut it = Item::new(d.name.clone(), kind_of(d.kind));
         it.detail = match (d.kind, d.func) {
             (DefKind::Subprogram, Some(f)) => Some(a.checker.signature(f)),
-            _ => d.ty.map(|t| a.checker.types.name(t).to_string()),
+            _ => d.ty.map(|t| a.checker.tables.types.name(t).to_string()),
         };
         push(&mut out, it);
     }
@@ -323,7 +323,7 @@ fn name_items(a: &Analysis, offset: usize) -> Vec<Item> {
         it.detail = match e {
             Entity::Func(f) => Some(a.checker.signature(*f)),
             Entity::Var { ty, .. } | Entity::EnumLit(ty, _) => {
-                Some(a.checker.types.name(*ty).to_string())
+                Some(a.checker.tables.types.name(*ty).to_string())
             }
             _ => None,
         };
@@ -391,8 +391,9 @@ fn select_items(a: &Analysis, offset: usize, prefix: &str) -> Vec<Item> {
         return Vec::new();
     };
     for p in parts {
-        let t = c.types.designated(ty).unwrap_or(ty);
+        let t = c.tables.types.designated(ty).unwrap_or(ty);
         let Some(f) = c
+            .tables
             .types
             .fields(t)
             .and_then(|fs| fs.iter().find(|f| f.key == p.to_lowercase()))
@@ -401,14 +402,15 @@ fn select_items(a: &Analysis, offset: usize, prefix: &str) -> Vec<Item> {
         };
         ty = f.ty;
     }
-    let t = c.types.designated(ty).unwrap_or(ty);
-    c.types
+    let t = c.tables.types.designated(ty).unwrap_or(ty);
+    c.tables
+        .types
         .fields(t)
         .map(|fs| {
             fs.iter()
                 .map(|f| {
                     let mut it = Item::new(f.name.clone(), CK::FIELD);
-                    it.detail = Some(c.types.name(f.ty).to_string());
+                    it.detail = Some(c.tables.types.name(f.ty).to_string());
                     it
                 })
                 .collect()
@@ -506,11 +508,11 @@ pub fn signature_help(a: &Analysis, offset: usize) -> Option<Signatures> {
     // The subprogram the checker chose there, else every one so named.
     let resolved = features::def_at(a, name_at)
         .and_then(|(_, d)| d.func)
-        .filter(|f| c.funcs[*f as usize].name.eq_ignore_ascii_case(&name));
+        .filter(|f| c.tables.funcs[*f as usize].name.eq_ignore_ascii_case(&name));
     let mut funcs: Vec<u32> = match resolved {
         Some(f) => vec![f],
-        None => (0..c.funcs.len() as u32)
-            .filter(|f| c.funcs[*f as usize].name.eq_ignore_ascii_case(&name))
+        None => (0..c.tables.funcs.len() as u32)
+            .filter(|f| c.tables.funcs[*f as usize].name.eq_ignore_ascii_case(&name))
             .collect(),
     };
     funcs.dedup_by_key(|f| c.signature(*f));
@@ -521,7 +523,7 @@ pub fn signature_help(a: &Analysis, offset: usize) -> Option<Signatures> {
     let mut active = None;
     let mut param = commas;
     for (k, f) in funcs.iter().enumerate() {
-        let sub = &c.funcs[*f as usize];
+        let sub = &c.tables.funcs[*f as usize];
         let mut label = format!("{} ", sub.name);
         let mut ranges = Vec::new();
         if !sub.params.is_empty() {
@@ -536,7 +538,7 @@ pub fn signature_help(a: &Analysis, offset: usize) -> Option<Signatures> {
                     ast::Mode::InOut => "in out ",
                 };
                 let start = label.encode_utf16().count();
-                label.push_str(&format!("{} : {mode}{}", p.name, c.types.name(p.ty)));
+                label.push_str(&format!("{} : {mode}{}", p.name, c.tables.types.name(p.ty)));
                 if p.default.is_some() {
                     label.push_str(" := ...");
                 }
@@ -545,7 +547,7 @@ pub fn signature_help(a: &Analysis, offset: usize) -> Option<Signatures> {
             label.push(')');
         }
         if let Some(r) = sub.ret {
-            label.push_str(&format!(" return {}", c.types.name(r)));
+            label.push_str(&format!(" return {}", c.tables.types.name(r)));
         }
         let label = label.trim_end().to_string();
         let doc = service_of(a, *f).map(service_doc);

@@ -38,7 +38,7 @@ pub fn def_at(a: &Analysis, offset: usize) -> Option<(u32, &Def)> {
 
 /// The Ada type name of a type id.
 fn tname(a: &Analysis, t: crate::check::types::TypeId) -> String {
-    a.checker.types.name(t).to_string()
+    a.checker.tables.types.name(t).to_string()
 }
 
 /// The comment lines right above the line where `at` is, without `--`.
@@ -59,7 +59,7 @@ fn comment_above(text: &str, at: usize) -> String {
 
 /// The service a subprogram is bound to, if it is one.
 pub fn service_of(a: &Analysis, f: u32) -> Option<&'static Service> {
-    let import = a.checker.imports.get(f as usize)?.as_deref()?;
+    let import = a.checker.tables.imports.get(f as usize)?.as_deref()?;
     table::by_import(import)
 }
 
@@ -219,7 +219,7 @@ pub fn describe_def(a: &Analysis, d: &Def) -> String {
     let mut s = match d.kind {
         DefKind::Subprogram => {
             let f = d.func.unwrap_or(u32::MAX);
-            let sig = if (f as usize) < a.checker.funcs.len() {
+            let sig = if (f as usize) < a.checker.tables.funcs.len() {
                 a.checker.signature(f)
             } else {
                 d.name.clone()

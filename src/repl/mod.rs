@@ -681,8 +681,8 @@ impl Repl {
     pub fn help_on(&self, name: &str) -> Option<String> {
         let c = &self.session.front.checker;
         let key = name.to_ascii_lowercase();
-        let funcs: Vec<u32> = (0..c.funcs.len() as u32)
-            .filter(|f| c.funcs[*f as usize].name.eq_ignore_ascii_case(&key))
+        let funcs: Vec<u32> = (0..c.tables.funcs.len() as u32)
+            .filter(|f| c.tables.funcs[*f as usize].name.eq_ignore_ascii_case(&key))
             .collect();
         if funcs.is_empty() {
             return stdlib_type_doc(name).or_else(|| exception_doc(name));
@@ -782,7 +782,7 @@ impl Repl {
     /// circular list would print without end, in a recursion without end).
     fn show_in(&self, v: &Value, t: TypeId, accesses: usize) -> String {
         const SHOWN_ACCESSES: usize = 3;
-        let ty = &self.session.front.checker.types;
+        let ty = &self.session.front.checker.tables.types;
         let name = ty.name(t).to_ascii_lowercase();
         match (v, ty.kind(t)) {
             (Value::Int(i), TypeKind::Enum(lits)) => {
@@ -857,7 +857,9 @@ impl Repl {
                 format!("access to {}", self.show_in(&p.borrow(), *d, accesses + 1))
             }
             (Value::Ptr(Some(_)), _) => "access".into(),
-            (Value::Occ(o), _) => self.session.front.checker.excs[o.exc as usize].name.clone(),
+            (Value::Occ(o), _) => self.session.front.checker.tables.excs[o.exc as usize]
+                .name
+                .clone(),
             (Value::Undef, _) => "(no value)".into(),
             _ => format!("{v:?}"),
         }

@@ -39,8 +39,8 @@ impl AdaHelper {
             }
         }
         self.signatures.clear();
-        for f in 0..c.funcs.len() as u32 {
-            let key = c.funcs[f as usize].name.to_ascii_lowercase();
+        for f in 0..c.tables.funcs.len() as u32 {
+            let key = c.tables.funcs[f as usize].name.to_ascii_lowercase();
             self.signatures.entry(key).or_insert_with(|| c.signature(f));
         }
     }

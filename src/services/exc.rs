@@ -71,7 +71,7 @@ impl ExcIds {
     pub fn bind(chk: &Checker) -> Result<ExcIds, &'static str> {
         let mut ids = Vec::with_capacity(Exc::ALL.len());
         for e in Exc::ALL {
-            match chk.excs.iter().position(|x| x.name == e.full_name()) {
+            match chk.tables.excs.iter().position(|x| x.name == e.full_name()) {
                 Some(i) => ids.push(i as ExcId),
                 None => return Err(e.full_name()),
             }

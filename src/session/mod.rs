@@ -455,7 +455,7 @@ impl Session {
 
     /// The diagnostic for an exception that left the program.
     pub fn exception_diag(&self, o: &Occurrence) -> Diagnostic {
-        let name = &self.front.checker.excs[o.exc as usize].name;
+        let name = &self.front.checker.tables.excs[o.exc as usize].name;
         crate::interp::diagnostics::left_the_program(o, name)
     }
 }

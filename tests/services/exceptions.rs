@@ -10,7 +10,7 @@ fn every_exception_is_bound_to_its_own_identity() {
     let ids = ExcIds::bind(&s.front.checker).expect("stdlib declares them all");
     for (i, a) in Exc::ALL.iter().enumerate() {
         assert_eq!(
-            s.front.checker.excs[ids.id(*a) as usize].name,
+            s.front.checker.tables.excs[ids.id(*a) as usize].name,
             a.full_name()
         );
         for b in &Exc::ALL[i + 1..] {

@@ -51,6 +51,7 @@ fn the_adair_package_declares_every_service_of_the_table() {
         let n = s
             .front
             .checker
+            .tables
             .funcs
             .iter()
             .filter(|f| f.name.eq_ignore_ascii_case(svc.name))

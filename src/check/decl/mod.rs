@@ -21,21 +21,22 @@ impl Checker {
     /// declared in it without a body there is an error, as in GNAT
     /// ("missing body"), not a `Program_Error` when it is called.
     pub(super) fn decls_completed(&mut self, decls: &[ast::Decl], out: &mut Vec<Stmt>) {
-        let before = self.funcs.len();
+        let before = self.tables.funcs.len();
         self.decls(decls, out);
         for d in decls {
             let DeclKind::SubprogramDecl { spec, import: None } = &d.kind else {
                 continue;
             };
             let declared = self
+                .tables
                 .funcs
                 .iter()
                 .skip(before)
                 .position(|f| f.span == spec.span)
                 .map(|i| before + i);
             if let Some(f) = declared
-                && self.funcs[f].body.is_none()
-                && self.imports[f].is_none()
+                && self.tables.funcs[f].body.is_none()
+                && self.tables.imports[f].is_none()
             {
                 let name = spec.name.display();
                 self.err(diagnostics::no_body(spec.span, &name));
@@ -62,11 +63,13 @@ impl Checker {
             // completed by an expression function in the private part has
             // one).
             let needs_body = match self.denote(&p.name, false).first() {
-                Some(Entity::Package(i)) => self.packages[*i].names.values().flatten().any(|e| {
-                    matches!(e, Entity::Func(f)
-                            if self.funcs[*f as usize].body.is_none()
-                                && self.imports[*f as usize].is_none())
-                }),
+                Some(Entity::Package(i)) => {
+                    self.tables.packages[*i].names.values().flatten().any(|e| {
+                        matches!(e, Entity::Func(f)
+                            if self.tables.funcs[*f as usize].body.is_none()
+                                && self.tables.imports[*f as usize].is_none())
+                    })
+                }
                 _ => false,
             };
             let name = crate::syntax::parser::expr_text(&p.name);
@@ -125,18 +128,18 @@ impl Checker {
                     .and_then(|s| s.names.get(&*name.key))
                     .and_then(|es| es.last().cloned());
                 if let Some(Entity::Type(old)) = prev
-                    && matches!(self.types.kind(old), TypeKind::Incomplete)
+                    && matches!(self.tables.types.kind(old), TypeKind::Incomplete)
                 {
                     let t = self.elaborating(out, |c| c.type_def(name, def, d.span));
-                    let mut info = self.types.get(t).clone();
+                    let mut info = self.tables.types.get(t).clone();
                     info.base = old;
-                    self.types.list[old as usize] = info;
+                    self.tables.types.list[old as usize] = info;
                     self.retarget_enum_lits(t, old);
                     // Access types declared before the completion that now
                     // designate tasks get their master here (same region).
-                    let before: Vec<TypeId> = (0..self.types.list.len() as TypeId)
+                    let before: Vec<TypeId> = (0..self.tables.types.list.len() as TypeId)
                         .filter(|&a| {
-                            matches!(self.types.kind(a), TypeKind::Access(d) if self.types.base(*d) == old)
+                            matches!(self.tables.types.kind(a), TypeKind::Access(d) if self.tables.types.base(*d) == old)
                         })
                         .collect();
                     for a in before {
@@ -145,7 +148,7 @@ impl Checker {
                     return;
                 }
                 if matches!(def, TypeDef::Incomplete) {
-                    let t = self.types.add(&name.name, TypeKind::Incomplete);
+                    let t = self.tables.types.add(&name.name, TypeKind::Incomplete);
                     self.declare_checked(name, Entity::Type(t));
                     return;
                 }
@@ -157,13 +160,13 @@ impl Checker {
             }
             DeclKind::Subtype { name, ind } => {
                 let of = self.elaborating(out, |c| c.subtype_ind(ind));
-                let t = self.types.add_subtype(&name.name, of);
+                let t = self.tables.types.add_subtype(&name.name, of);
                 self.declare_checked(name, Entity::Type(t));
             }
             DeclKind::Exception { names } => {
                 for n in names {
-                    let id = self.excs.len() as ExcId;
-                    self.excs.push(Exception {
+                    let id = self.tables.excs.len() as ExcId;
+                    self.tables.excs.push(Exception {
                         name: self.exc_name(&n.name),
                     });
                     self.declare_checked(n, Entity::Exc(id));
@@ -183,7 +186,7 @@ impl Checker {
                             spec.span, name, &declared, &want.text,
                         ));
                     }
-                    self.imports[f as usize] = Some(name.clone());
+                    self.tables.imports[f as usize] = Some(name.clone());
                 }
             }
             DeclKind::SubprogramBody(b) => {
@@ -253,13 +256,16 @@ impl Checker {
         span: Span,
         out: &mut Vec<Stmt>,
     ) {
-        let unconstrained_array = self.types.array(t).is_some_and(|a| a.2.is_none());
+        let unconstrained_array = self.tables.types.array(t).is_some_and(|a| a.2.is_none());
         let init_ex = init.map(|e| {
             let ex = self.expr(e, Some(t));
             self.coerce(ex, t)
         });
         if init_ex.is_none() && unconstrained_array {
-            self.err(diagnostics::unconstrained_object(span, self.types.name(t)));
+            self.err(diagnostics::unconstrained_object(
+                span,
+                self.tables.types.name(t),
+            ));
         }
         if constant && init_ex.is_none() {
             self.err(diagnostics::constant_without_value(span));
@@ -268,11 +274,11 @@ impl Checker {
             init_ex
                 .as_ref()
                 .and_then(|e| self.static_value(e))
-                .filter(|_| self.types.is_scalar(t))
+                .filter(|_| self.tables.types.is_scalar(t))
         } else {
             None
         };
-        let creates_task = self.types.has_task(t);
+        let creates_task = self.tables.types.has_task(t);
         if creates_task && let Some(m) = self.tasking.masters.last_mut() {
             *m = true;
         }
@@ -293,7 +299,7 @@ impl Checker {
             });
             // A task or protected object works without being read.
             if !constant
-                && !self.types.is_unique(t)
+                && !self.tables.types.is_unique(t)
                 && self.level > 0
                 && let Some(frame) = self.unread.get_mut(self.level as usize - 1)
             {
@@ -389,8 +395,8 @@ impl Checker {
                 r => r,
             },
             ExKind::RangeCheck(a, _) => self.static_value(a)?,
-            ExKind::TypeFirst(t) => Int(self.types.discrete_bounds(*t)?.0),
-            ExKind::TypeLast(t) => Int(self.types.discrete_bounds(*t)?.1),
+            ExKind::TypeFirst(t) => Int(self.tables.types.discrete_bounds(*t)?.0),
+            ExKind::TypeLast(t) => Int(self.tables.types.discrete_bounds(*t)?.1),
             ExKind::Attr(AttrOp::Pos, a) => self.static_value(a.first()?)?,
             // `T'Val (N)`, `T'Succ (X)`, `T'Pred (X)` of static arguments are
             // static when the result is a value of T.
@@ -403,7 +409,10 @@ impl Checker {
                     AttrOp::Pred => v - 1,
                     _ => v,
                 };
-                let (l, h) = self.types.discrete_bounds(self.types.base(e.ty))?;
+                let (l, h) = self
+                    .tables
+                    .types
+                    .discrete_bounds(self.tables.types.base(e.ty))?;
                 if v < l || v > h {
                     return None;
                 }

@@ -34,11 +34,10 @@ impl Checker {
         ret: Option<TypeId>,
     ) -> bool {
         a.params.len() == params.len()
-            && a.params
-                .iter()
-                .zip(params)
-                .all(|(x, y)| self.types.base(x.ty) == self.types.base(y.ty) && x.mode == y.mode)
-            && a.ret.map(|t| self.types.base(t)) == ret.map(|t| self.types.base(t))
+            && a.params.iter().zip(params).all(|(x, y)| {
+                self.tables.types.base(x.ty) == self.tables.types.base(y.ty) && x.mode == y.mode
+            })
+            && a.ret.map(|t| self.tables.types.base(t)) == ret.map(|t| self.tables.types.base(t))
     }
 
     /// Declares a subprogram (or finds its earlier declaration) and returns its id.
@@ -67,14 +66,14 @@ impl Checker {
             .map(|es| super::expr::funcs_of(es))
             .unwrap_or_default();
         if let Some((p, true)) = self.scopes.innermost().and_then(|s| s.package)
-            && let Some(es) = self.packages[p].names.get(&key)
+            && let Some(es) = self.tables.packages[p].names.get(&key)
         {
             existing.extend(super::expr::funcs_of(es));
         }
         for f in existing {
-            let sub = &self.funcs[f as usize];
+            let sub = &self.tables.funcs[f as usize];
             if self.same_profile(sub, &params, ret) {
-                if declare_only || sub.body.is_some() || self.imports[f as usize].is_some() {
+                if declare_only || sub.body.is_some() || self.tables.imports[f as usize].is_some() {
                     self.err(diagnostics::declared_with_same_profile(
                         spec.span,
                         &spec.name.display(),
@@ -83,8 +82,8 @@ impl Checker {
                 return Some(f);
             }
         }
-        let id = self.funcs.len() as FuncId;
-        self.funcs.push(Subprogram {
+        let id = self.tables.funcs.len() as FuncId;
+        self.tables.funcs.push(Subprogram {
             name: spec.name.display(),
             params,
             ret,
@@ -93,8 +92,8 @@ impl Checker {
             body: None,
             span: spec.span,
         });
-        self.imports.push(None);
-        let tys: Vec<TypeId> = self.funcs[id as usize]
+        self.tables.imports.push(None);
+        let tys: Vec<TypeId> = self.tables.funcs[id as usize]
             .params
             .iter()
             .map(|p| p.ty)
@@ -138,7 +137,7 @@ impl Checker {
     fn elab_check(&self, f: FuncId, span: Span) -> Option<Stmt> {
         let var = *self.elab_flags.get(&f)?;
         let flag = self.mk(ExKind::Var(var), BOOLEAN, span);
-        let name = &self.funcs[f as usize].name;
+        let name = &self.tables.funcs[f as usize].name;
         let msg = format!(
             "access before elaboration: `{name}` was called before its body was elaborated"
         );
@@ -186,7 +185,7 @@ impl Checker {
             &b.body,
             BodyKind::Subprogram,
         );
-        let ret = self.funcs[f as usize].ret;
+        let ret = self.tables.funcs[f as usize].ret;
         if ret.is_some() && !saw_return && !unreadable {
             self.err(diagnostics::function_without_return(
                 b.spec.span,
@@ -212,8 +211,8 @@ impl Checker {
         body: &ast::Block,
         kind: BodyKind,
     ) -> bool {
-        let ret = self.funcs[f as usize].ret;
-        let params = self.funcs[f as usize].params.clone();
+        let ret = self.tables.funcs[f as usize].ret;
+        let params = self.tables.funcs[f as usize].params.clone();
         // Nested bodies are not the main program's.
         let main = std::mem::take(&mut self.main_body);
         self.level += 1;
@@ -253,14 +252,14 @@ impl Checker {
         if let BodyKind::Protected(k) = kind {
             self.tasking.prot_ctx.push((k, last));
             self.declare_components(k, last);
-            self.tasking.prot_function_obj = if self.funcs[f as usize].ret.is_some() {
+            self.tasking.prot_function_obj = if self.tables.funcs[f as usize].ret.is_some() {
                 last
             } else {
                 None
             };
         }
         self.tasking.masters.push(false);
-        let decl_span = self.funcs[f as usize].span;
+        let decl_span = self.tables.funcs[f as usize].span;
         let mut elab: Vec<Stmt> = self.elab_check(f, decl_span).into_iter().collect();
         self.decls_completed(decls, &mut elab);
         self.parts_here = kind == BodyKind::Subprogram && main;
@@ -277,7 +276,7 @@ impl Checker {
         let ctx = self.ctx.pop().expect("ctx");
         self.report_unread();
         self.level -= 1;
-        let sub = &mut self.funcs[f as usize];
+        let sub = &mut self.tables.funcs[f as usize];
         sub.nslots = ctx.next_slot;
         sub.body = Some(Rc::new(Body {
             stmts: elab,
@@ -355,8 +354,8 @@ impl Checker {
             }
             idx
         } else {
-            let idx = self.packages.len();
-            self.packages.push(Package {
+            let idx = self.tables.packages.len();
+            self.tables.packages.push(Package {
                 name: full.clone(),
                 names: PMap::new(),
                 private: PMap::new(),
@@ -371,6 +370,7 @@ impl Checker {
         // Child units see their parents' declarations.
         if let Some((parent, _)) = full.rsplit_once('.')
             && let Some(pi) = self
+                .tables
                 .packages
                 .iter()
                 .position(|x| x.name.eq_ignore_ascii_case(parent))
@@ -413,16 +413,16 @@ impl Checker {
         }
         self.scopes.pop();
         // Every subprogram declared in the spec needs a body.
-        let missing: Vec<String> = self.packages[idx]
+        let missing: Vec<String> = self.tables.packages[idx]
             .names
             .values()
             .flatten()
             .filter_map(|e| match e {
                 Entity::Func(f)
-                    if self.funcs[*f as usize].body.is_none()
-                        && self.imports[*f as usize].is_none() =>
+                    if self.tables.funcs[*f as usize].body.is_none()
+                        && self.tables.imports[*f as usize].is_none() =>
                 {
-                    Some(self.funcs[*f as usize].name.clone())
+                    Some(self.tables.funcs[*f as usize].name.clone())
                 }
                 _ => None,
             })

@@ -23,18 +23,19 @@ impl Checker {
         match &ind.constraint {
             None => t,
             Some(ast::Constraint::Range(lo, hi)) => {
-                if !self.types.is_scalar(t) && t != ERROR {
+                if !self.tables.types.is_scalar(t) && t != ERROR {
                     self.err(diagnostics::range_constraint_not_scalar(
                         ind.span,
-                        self.types.name(t),
+                        self.tables.types.name(t),
                     ));
                     return t;
                 }
-                let name = self.types.name(t).to_string();
+                let name = self.tables.types.name(t).to_string();
                 self.constrained_scalar(&name, t, lo, hi)
             }
             Some(ast::Constraint::Index(ranges)) => {
                 let Some((index, elem, bounds)) = self
+                    .tables
                     .types
                     .array(t)
                     .map(|(i, e, b)| (i.to_vec(), e, b.is_some()))
@@ -42,7 +43,7 @@ impl Checker {
                     if t != ERROR {
                         self.err(diagnostics::index_constraint_not_array(
                             ind.span,
-                            self.types.name(t),
+                            self.tables.types.name(t),
                         ));
                     }
                     return t;
@@ -50,14 +51,14 @@ impl Checker {
                 if bounds {
                     self.err(diagnostics::already_constrained(
                         ind.span,
-                        self.types.name(t),
+                        self.tables.types.name(t),
                     ));
                     return t;
                 }
                 if ranges.len() != index.len() {
                     self.err(diagnostics::index_constraint_count(
                         ind.span,
-                        self.types.name(t),
+                        self.tables.types.name(t),
                         index.len(),
                         ranges.len(),
                     ));
@@ -68,9 +69,9 @@ impl Checker {
                     let (lo, hi, _) = self.discrete_range(r, Some(*it));
                     bs.push((self.elaborate_bound(lo), self.elaborate_bound(hi)));
                 }
-                let name = self.types.name(t).to_string();
-                let st = self.types.add_subtype(&name, t);
-                self.types.list[st as usize].kind = TypeKind::Array {
+                let name = self.tables.types.name(t).to_string();
+                let st = self.tables.types.add_subtype(&name, t);
+                self.tables.types.list[st as usize].kind = TypeKind::Array {
                     index,
                     elem,
                     bounds: Some(bs),
@@ -87,12 +88,12 @@ impl Checker {
         lo: &ast::Expr,
         hi: &ast::Expr,
     ) -> TypeId {
-        let base = self.types.base(t);
+        let base = self.tables.types.base(t);
         let l = self.expr(lo, Some(base));
         let l = self.coerce_base(l, base);
         let h = self.expr(hi, Some(base));
         let h = self.coerce_base(h, base);
-        let st = self.types.add_subtype(name, t);
+        let st = self.tables.types.add_subtype(name, t);
         self.set_range(st, l, h);
         st
     }
@@ -137,7 +138,7 @@ impl Checker {
     fn set_range(&mut self, st: TypeId, l: Ex, h: Ex) {
         let (l, h) = (self.elaborate_bound(l), self.elaborate_bound(h));
         let (sl, sh) = (self.static_value(&l), self.static_value(&h));
-        let info = &mut self.types.list[st as usize];
+        let info = &mut self.tables.types.list[st as usize];
         info.static_range = None;
         info.static_frange = None;
         match (sl, sh) {
@@ -166,17 +167,20 @@ impl Checker {
                 let l = self.coerce_base(l, t);
                 let h = self.expr(b, Some(t));
                 let h = self.coerce_base(h, t);
-                if !self.types.is_discrete(t) && t != ERROR {
-                    self.err(diagnostics::range_not_discrete(a.span, self.types.name(t)));
+                if !self.tables.types.is_discrete(t) && t != ERROR {
+                    self.err(diagnostics::range_not_discrete(
+                        a.span,
+                        self.tables.types.name(t),
+                    ));
                 }
                 (l, h, t)
             }
             ast::DiscreteRange::Subtype(ind) => {
                 let t = self.subtype_ind(ind);
-                if !self.types.is_discrete(t) && t != ERROR {
+                if !self.tables.types.is_discrete(t) && t != ERROR {
                     self.err(diagnostics::not_a_discrete_type(
                         ind.span,
-                        self.types.name(t),
+                        self.tables.types.name(t),
                     ));
                 }
                 let sp = ind.span;
@@ -219,8 +223,8 @@ impl Checker {
                     })
                     .collect();
                 let n = images.len();
-                let t = self.types.add(&name.name, TypeKind::Enum(images));
-                self.types.list[t as usize].static_range = Some((0, n as i128 - 1));
+                let t = self.tables.types.add(&name.name, TypeKind::Enum(images));
+                self.tables.types.list[t as usize].static_range = Some((0, n as i128 - 1));
                 for (i, l) in lits.iter().enumerate() {
                     match l {
                         ast::EnumLit::Ident(id) => {
@@ -236,7 +240,7 @@ impl Checker {
             TypeDef::IntRange(lo, hi) => {
                 let l = self.expr(lo, Some(UNIV_INT));
                 let h = self.expr(hi, Some(UNIV_INT));
-                let t = self.types.add(&name.name, TypeKind::Integer);
+                let t = self.tables.types.add(&name.name, TypeKind::Integer);
                 match (self.static_value(&l), self.static_value(&h)) {
                     (Some(Static::Int(a)), Some(Static::Int(b))) => {
                         if a < INT_FIRST || b > INT_LAST {
@@ -261,12 +265,12 @@ impl Checker {
                         None
                     }
                 };
-                let t = self.types.add(&name.name, TypeKind::Float);
+                let t = self.tables.types.add(&name.name, TypeKind::Float);
                 // GNAT: single precision up to 6 digits, else double.
                 let n = n.filter(|n| (1..=15).contains(n)).unwrap_or(15);
-                self.types.list[t as usize].digits = Some(n);
+                self.tables.types.list[t as usize].digits = Some(n);
                 let max = if n <= 6 { f32::MAX as f64 } else { f64::MAX };
-                self.types.list[t as usize].static_frange = Some((-max, max));
+                self.tables.types.list[t as usize].static_frange = Some((-max, max));
                 if let Some((lo, hi)) = range {
                     let l = self.expr(lo, Some(UNIV_REAL));
                     let h = self.expr(hi, Some(UNIV_REAL));
@@ -277,25 +281,26 @@ impl Checker {
             }
             TypeDef::Derived(ind) => {
                 let parent = self.subtype_ind(ind);
-                let mut info = self.types.get(parent).clone();
-                let id = self.types.list.len() as TypeId;
+                let mut info = self.tables.types.get(parent).clone();
+                let id = self.tables.types.list.len() as TypeId;
                 info.name = name.name.to_string();
                 info.base = id;
                 if let TypeKind::Enum(_) = &info.kind {
                     // Derived enumeration types get their own literals.
                     let lits = self
+                        .tables
                         .types
                         .enum_lits(parent)
                         .map(|l| l.to_vec())
                         .unwrap_or_default();
                     info.kind = TypeKind::Enum(lits.clone());
-                    self.types.list.push(info);
+                    self.tables.types.list.push(info);
                     for (i, l) in lits.iter().enumerate() {
                         self.declare(l, Entity::EnumLit(id, i as i64));
                     }
                     return id;
                 }
-                let k = self.types.kind(parent).clone();
+                let k = self.tables.types.kind(parent).clone();
                 if let TypeKind::Array { bounds: None, .. } = &info.kind {
                 } else if matches!(info.kind, TypeKind::Array { .. }) {
                 } else {
@@ -305,18 +310,18 @@ impl Checker {
                     l.ty = id;
                     h.ty = id;
                 }
-                self.types.list.push(info);
+                self.tables.types.list.push(info);
                 id
             }
             TypeDef::Array { index, elem } => {
                 let et = self.subtype_ind(elem);
-                if matches!(self.types.array(et), Some((_, _, None))) {
+                if matches!(self.tables.types.array(et), Some((_, _, None))) {
                     self.err(diagnostics::array_component_unconstrained(elem.span));
                 }
                 match index {
                     ast::ArrayIndex::Unconstrained(marks) => {
                         let idx: Vec<TypeId> = marks.iter().map(|m| self.type_mark(m)).collect();
-                        self.types.add(
+                        self.tables.types.add(
                             &name.name,
                             TypeKind::Array {
                                 index: idx,
@@ -330,15 +335,15 @@ impl Checker {
                         let mut bs = Vec::new();
                         for r in ranges {
                             let (l, h, t) = self.discrete_range(r, None);
-                            let t = if self.types.is_universal(t) {
+                            let t = if self.tables.types.is_universal(t) {
                                 INTEGER
                             } else {
                                 t
                             };
-                            idx.push(self.types.base(t));
+                            idx.push(self.tables.types.base(t));
                             bs.push((self.elaborate_bound(l), self.elaborate_bound(h)));
                         }
-                        self.types.add(
+                        self.tables.types.add(
                             &name.name,
                             TypeKind::Array {
                                 index: idx,
@@ -353,7 +358,7 @@ impl Checker {
                 let mut fields: Vec<Field> = Vec::new();
                 for c in components {
                     let t = self.subtype_ind(&c.ty);
-                    if matches!(self.types.array(t), Some((_, _, None))) {
+                    if matches!(self.tables.types.array(t), Some((_, _, None))) {
                         self.err(diagnostics::record_component_unconstrained(c.ty.span));
                     }
                     let default = c.default.as_ref().map(|d| {
@@ -374,7 +379,7 @@ impl Checker {
                 }
                 let names: Vec<&ast::Ident> = components.iter().flat_map(|c| &c.names).collect();
                 let tys: Vec<TypeId> = fields.iter().map(|f| f.ty).collect();
-                let t = self.types.add(&name.name, TypeKind::Record(fields));
+                let t = self.tables.types.add(&name.name, TypeKind::Record(fields));
                 for (i, (n, ft)) in names.into_iter().zip(tys).enumerate() {
                     self.index_field(t, i as u32, n, ft);
                 }
@@ -382,9 +387,9 @@ impl Checker {
             }
             TypeDef::Access(ind) => {
                 let t = self.subtype_ind(ind);
-                self.types.add(&name.name, TypeKind::Access(t))
+                self.tables.types.add(&name.name, TypeKind::Access(t))
             }
-            TypeDef::Incomplete => self.types.add(&name.name, TypeKind::Incomplete),
+            TypeDef::Incomplete => self.tables.types.add(&name.name, TypeKind::Incomplete),
             TypeDef::Unsupported(what) => {
                 self.err(diagnostics::unsupported(span, what));
                 // The error type itself: what uses the name says nothing more.
@@ -397,18 +402,18 @@ impl Checker {
     /// a master: the tasks its allocators create belong to that region,
     /// which waits for them at its end, wherever the allocator runs.
     pub(super) fn collection_master(&mut self, t: TypeId, span: Span, out: &mut Vec<Stmt>) {
-        let designated = match self.types.kind(t) {
+        let designated = match self.tables.types.kind(t) {
             TypeKind::Access(d) => *d,
             _ => return,
         };
-        if !self.types.has_task(designated) || self.types.get(t).master.is_some() {
+        if !self.tables.types.has_task(designated) || self.tables.types.get(t).master.is_some() {
             return;
         }
         if let Some(m) = self.tasking.masters.last_mut() {
             *m = true;
         }
         let v = self.new_slot();
-        self.types.list[t as usize].master = Some(v);
+        self.tables.types.list[t as usize].master = Some(v);
         out.push(Stmt {
             kind: StmtKind::NoteMaster(v),
             span,

@@ -5,7 +5,7 @@ use super::*;
 
 impl Checker {
     pub(super) fn aggregate(&mut self, items: &[ast::Assoc], t: TypeId, sp: Span) -> Ex {
-        if let Some(fields) = self.types.fields(t).map(|f| f.to_vec()) {
+        if let Some(fields) = self.tables.types.fields(t).map(|f| f.to_vec()) {
             let mut vals: Vec<Option<Ex>> = vec![None; fields.len()];
             let mut pos = 0;
             for it in items {
@@ -13,7 +13,7 @@ impl Checker {
                     if pos >= fields.len() {
                         self.err(diagnostics::aggregate_too_many(
                             it.span,
-                            self.types.name(t),
+                            self.tables.types.name(t),
                             fields.len(),
                         ));
                         continue;
@@ -39,7 +39,7 @@ impl Checker {
                             None => {
                                 self.err(diagnostics::aggregate_no_component(
                                     n.span,
-                                    self.types.name(t),
+                                    self.tables.types.name(t),
                                     &n.name,
                                 ));
                                 vec![]
@@ -74,7 +74,7 @@ impl Checker {
                         self.err(diagnostics::aggregate_lacks(
                             sp,
                             &fields[i].name,
-                            self.types.name(t),
+                            self.tables.types.name(t),
                         ));
                         out.push(self.err_ex(sp));
                     }
@@ -83,6 +83,7 @@ impl Checker {
             return self.mk(ExKind::RecordAgg(out.into()), t, sp);
         }
         let Some((idx, el, bounds)) = self
+            .tables
             .types
             .array(t)
             .map(|(i, e, b)| (i.to_vec(), e, b.cloned()))
@@ -97,8 +98,8 @@ impl Checker {
                 elem: el,
                 bounds: bounds.as_ref().map(|b| b[1..].to_vec()),
             };
-            let name = format!("{} row", self.types.name(t));
-            self.types.add(&name, rest)
+            let name = format!("{} row", self.tables.types.name(t));
+            self.tables.types.add(&name, rest)
         } else {
             el
         };
@@ -186,7 +187,10 @@ impl Checker {
             }
         }
         if others.is_some() && bounds.is_none() {
-            self.err(diagnostics::others_needs_bounds(sp, self.types.name(t)));
+            self.err(diagnostics::others_needs_bounds(
+                sp,
+                self.tables.types.name(t),
+            ));
         }
         // A static length check for positional aggregates of constrained types.
         if let Some(b) = &bounds
@@ -199,7 +203,7 @@ impl Checker {
             if positional.len() != len {
                 self.err(diagnostics::aggregate_length(
                     sp,
-                    self.types.name(t),
+                    self.tables.types.name(t),
                     len,
                     positional.len(),
                 ));

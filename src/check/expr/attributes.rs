@@ -49,8 +49,8 @@ impl Checker {
             }
         };
         if let Some(t) = type_prefix {
-            let base = self.types.base(t);
-            let scalar = self.types.is_scalar(t);
+            let base = self.tables.types.base(t);
+            let scalar = self.tables.types.is_scalar(t);
             match key {
                 "first" | "last" if scalar => {
                     let k = if key == "first" {
@@ -61,10 +61,11 @@ impl Checker {
                     return self.mk(k, t, sp);
                 }
                 "first" | "last" | "length"
-                    if self.types.array(t).is_some_and(|x| x.2.is_some()) =>
+                    if self.tables.types.array(t).is_some_and(|x| x.2.is_some()) =>
                 {
                     let d = dim(self) as usize;
                     let (idx, bounds) = self
+                        .tables
                         .types
                         .array(t)
                         .map(|(i, _, b)| (i.to_vec(), b.cloned().unwrap_or_default()))
@@ -113,9 +114,9 @@ impl Checker {
                 }
                 "value" if scalar => {
                     let x = arg(self, 0, Some(STRING));
-                    let op = if self.types.is_float(t) {
+                    let op = if self.tables.types.is_float(t) {
                         AttrOp::ValueFloat
-                    } else if self.types.is_integer(t) {
+                    } else if self.tables.types.is_integer(t) {
                         AttrOp::ValueInt
                     } else {
                         AttrOp::ValueEnum(base)
@@ -123,30 +124,31 @@ impl Checker {
                     // 'Value yields the base type; only an assignment checks the subtype.
                     return self.mk(ExKind::Attr(op, Box::new(vec![x])), base, sp);
                 }
-                "pos" if self.types.is_discrete(t) => {
+                "pos" if self.tables.types.is_discrete(t) => {
                     let x = arg(self, 0, Some(base));
                     return self.mk(ExKind::Attr(AttrOp::Pos, Box::new(vec![x])), UNIV_INT, sp);
                 }
-                "val" if self.types.is_discrete(t) => {
+                "val" if self.tables.types.is_discrete(t) => {
                     let x = arg(self, 0, Some(UNIV_INT));
-                    let x = if self.types.is_universal(x.ty) {
+                    let x = if self.tables.types.is_universal(x.ty) {
                         Ex { ty: INTEGER, ..x }
                     } else {
                         x
                     };
-                    if !self.types.is_integer(x.ty) && x.ty != ERROR {
+                    if !self.tables.types.is_integer(x.ty) && x.ty != ERROR {
                         self.err(diagnostics::val_needs_integer(x.span));
                     }
                     // `S'Val` is a function of S's base type (RM 3.5.5): a
                     // position outside a subtype's range is no error.
-                    if let (Some(Static::Int(v)), Some((l, h))) =
-                        (self.static_value(&x), self.types.discrete_bounds(base))
-                        && (v < l || v > h)
+                    if let (Some(Static::Int(v)), Some((l, h))) = (
+                        self.static_value(&x),
+                        self.tables.types.discrete_bounds(base),
+                    ) && (v < l || v > h)
                     {
                         self.err(diagnostics::not_a_position(
                             x.span,
                             v,
-                            self.types.name(base),
+                            self.tables.types.name(base),
                             l,
                             h,
                         ));
@@ -154,7 +156,7 @@ impl Checker {
                     let v = self.mk(ExKind::Attr(AttrOp::Val, Box::new(vec![x])), base, sp);
                     return self.coerce_force_check(v, base);
                 }
-                "succ" | "pred" if self.types.is_discrete(t) => {
+                "succ" | "pred" if self.tables.types.is_discrete(t) => {
                     let x = arg(self, 0, Some(base));
                     let op = if key == "succ" {
                         AttrOp::Succ
@@ -163,9 +165,10 @@ impl Checker {
                     };
                     // Past the base type's end with a static argument: a
                     // compile-time error in GNAT too.
-                    if let (Some(Static::Int(v)), Some((l, h))) =
-                        (self.static_value(&x), self.types.discrete_bounds(base))
-                        && ((op == AttrOp::Succ && v >= h) || (op == AttrOp::Pred && v <= l))
+                    if let (Some(Static::Int(v)), Some((l, h))) = (
+                        self.static_value(&x),
+                        self.tables.types.discrete_bounds(base),
+                    ) && ((op == AttrOp::Succ && v >= h) || (op == AttrOp::Pred && v <= l))
                     {
                         let (end, which) = if op == AttrOp::Succ {
                             ("last", "Succ")
@@ -176,7 +179,7 @@ impl Checker {
                             x.span,
                             which,
                             end,
-                            self.types.name(base),
+                            self.tables.types.name(base),
                         ));
                     }
                     let v = self.mk(ExKind::Attr(op, Box::new(vec![x])), base, sp);
@@ -185,7 +188,7 @@ impl Checker {
                 "min" | "max" if scalar => {
                     let x = arg(self, 0, Some(base));
                     let y = arg(self, 1, Some(base));
-                    let op = match (key, self.types.is_float(t)) {
+                    let op = match (key, self.tables.types.is_float(t)) {
                         ("min", false) => AttrOp::Min,
                         ("max", false) => AttrOp::Max,
                         ("min", true) => AttrOp::FloatMin,
@@ -193,7 +196,9 @@ impl Checker {
                     };
                     return self.mk(ExKind::Attr(op, Box::new(vec![x, y])), base, sp);
                 }
-                "floor" | "ceiling" | "truncation" | "rounding" if self.types.is_float(t) => {
+                "floor" | "ceiling" | "truncation" | "rounding"
+                    if self.tables.types.is_float(t) =>
+                {
                     let x = arg(self, 0, Some(base));
                     let op = match key {
                         "floor" => AttrOp::Floor,
@@ -203,8 +208,12 @@ impl Checker {
                     };
                     return self.mk(ExKind::Attr(op, Box::new(vec![x])), base, sp);
                 }
-                "digits" if self.types.is_float(t) => {
-                    return self.mk(ExKind::Int(self.types.digits(t) as i64), UNIV_INT, sp);
+                "digits" if self.tables.types.is_float(t) => {
+                    return self.mk(
+                        ExKind::Int(self.tables.types.digits(t) as i64),
+                        UNIV_INT,
+                        sp,
+                    );
                 }
                 "range" => {
                     self.err(diagnostics::range_outside_range_context(sp));
@@ -214,7 +223,7 @@ impl Checker {
                     self.err(diagnostics::attribute_unsupported_for_type(
                         a.span,
                         &a.name,
-                        self.types.name(t),
+                        self.tables.types.name(t),
                     ));
                     return self.err_ex(sp);
                 }
@@ -225,13 +234,14 @@ impl Checker {
         if pe.ty == ERROR {
             return self.err_ex(sp);
         }
-        if let Some(d) = self.types.designated(pe.ty)
-            && self.types.is_array(d)
+        if let Some(d) = self.tables.types.designated(pe.ty)
+            && self.tables.types.is_array(d)
         {
             let psp = pe.span;
             pe = self.mk(ExKind::Deref(bx(pe)), d, psp);
         }
         if let Some((idx, _, _)) = self
+            .tables
             .types
             .array(pe.ty)
             .map(|(i, e, b)| (i.to_vec(), e, b.is_some()))
@@ -240,7 +250,7 @@ impl Checker {
             if d as usize > idx.len() {
                 self.err(diagnostics::too_few_dimensions(
                     sp,
-                    self.types.name(pe.ty),
+                    self.tables.types.name(pe.ty),
                     idx.len(),
                 ));
                 return self.err_ex(sp);
@@ -270,15 +280,15 @@ impl Checker {
                 }
             };
         }
-        if key == "image" && self.types.is_scalar(pe.ty) {
-            let t = if self.types.is_universal(pe.ty) {
-                if self.types.is_float(pe.ty) {
+        if key == "image" && self.tables.types.is_scalar(pe.ty) {
+            let t = if self.tables.types.is_universal(pe.ty) {
+                if self.tables.types.is_float(pe.ty) {
                     FLOAT
                 } else {
                     INTEGER
                 }
             } else {
-                self.types.base(pe.ty)
+                self.tables.types.base(pe.ty)
             };
             return self.image(pe, t, sp);
         }
@@ -289,7 +299,7 @@ impl Checker {
 
     fn coerce_force_check(&mut self, v: Ex, t: TypeId) -> Ex {
         let sp = v.span;
-        if self.types.get(t).range.is_some() || self.types.enum_lits(t).is_some() {
+        if self.tables.types.get(t).range.is_some() || self.tables.types.enum_lits(t).is_some() {
             self.mk(ExKind::RangeCheck(bx(v), t), t, sp)
         } else {
             v
@@ -297,16 +307,16 @@ impl Checker {
     }
 
     fn image(&mut self, x: Ex, t: TypeId, sp: Span) -> Ex {
-        let op = if self.types.base(t) == DURATION {
+        let op = if self.tables.types.base(t) == DURATION {
             AttrOp::ImageDuration
-        } else if self.types.is_float(t) {
-            AttrOp::ImageFloat(self.types.digits(t) as u8)
-        } else if self.types.is_integer(t) {
+        } else if self.tables.types.is_float(t) {
+            AttrOp::ImageFloat(self.tables.types.digits(t) as u8)
+        } else if self.tables.types.is_integer(t) {
             AttrOp::ImageInt
-        } else if self.types.base(t) == CHARACTER {
+        } else if self.tables.types.base(t) == CHARACTER {
             AttrOp::ImageChar
         } else {
-            AttrOp::ImageEnum(self.types.base(t))
+            AttrOp::ImageEnum(self.tables.types.base(t))
         };
         self.mk(ExKind::Attr(op, Box::new(vec![x])), STRING, sp)
     }
@@ -329,7 +339,7 @@ impl Checker {
             }
         };
         if let Some(t) = self.denote_quiet_type(p) {
-            if self.types.is_scalar(t) {
+            if self.tables.types.is_scalar(t) {
                 return (
                     self.mk(ExKind::TypeFirst(t), t, sp),
                     self.mk(ExKind::TypeLast(t), t, sp),
@@ -337,6 +347,7 @@ impl Checker {
                 );
             }
             if let Some((idx, _, Some(b))) = self
+                .tables
                 .types
                 .array(t)
                 .map(|(i, e, b)| (i.to_vec(), e, b.cloned()))
@@ -346,16 +357,16 @@ impl Checker {
             }
             self.err(diagnostics::range_needs_scalar_or_array(
                 sp,
-                self.types.name(t),
+                self.tables.types.name(t),
             ));
             return (self.err_ex(sp), self.err_ex(sp), ERROR);
         }
         let mut pe = self.expr(p, None);
-        if let Some(dt) = self.types.designated(pe.ty) {
+        if let Some(dt) = self.tables.types.designated(pe.ty) {
             let psp = pe.span;
             pe = self.mk(ExKind::Deref(bx(pe)), dt, psp);
         }
-        match self.types.array(pe.ty).map(|(i, _, _)| i.to_vec()) {
+        match self.tables.types.array(pe.ty).map(|(i, _, _)| i.to_vec()) {
             Some(idx) if (d as usize) <= idx.len() => {
                 let it = idx[d as usize - 1];
                 (

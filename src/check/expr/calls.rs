@@ -8,9 +8,13 @@ impl Checker {
         let cands = self.op_funcs(sym, args.len());
         let mut out = Vec::new();
         for f in cands {
-            let ps: Vec<TypeId> = self.funcs[f as usize].params.iter().map(|p| p.ty).collect();
+            let ps: Vec<TypeId> = self.tables.funcs[f as usize]
+                .params
+                .iter()
+                .map(|p| p.ty)
+                .collect();
             if args.iter().zip(&ps).all(|(a, t)| self.fits(a, *t))
-                && let Some(r) = self.funcs[f as usize].ret
+                && let Some(r) = self.tables.funcs[f as usize].ret
             {
                 out.push(r);
             }
@@ -28,7 +32,7 @@ impl Checker {
                     None
                 }
             })
-            .filter(|f| self.funcs[*f as usize].params.len() == arity)
+            .filter(|f| self.tables.funcs[*f as usize].params.len() == arity)
             .collect()
     }
 
@@ -40,7 +44,7 @@ impl Checker {
         args: &'a [ast::Arg],
     ) -> Result<Vec<Option<&'a ast::Arg>>, diagnostics::ArgsMismatch> {
         use diagnostics::ArgsMismatch as Why;
-        let sub = &self.funcs[f as usize];
+        let sub = &self.tables.funcs[f as usize];
         let mut slots: Vec<Option<&ast::Arg>> = vec![None; sub.params.len()];
         let mut named = false;
         for (i, a) in args.iter().enumerate() {
@@ -92,7 +96,11 @@ impl Checker {
         let Ok(slots) = self.match_args(f, args) else {
             return false;
         };
-        let tys: Vec<TypeId> = self.funcs[f as usize].params.iter().map(|p| p.ty).collect();
+        let tys: Vec<TypeId> = self.tables.funcs[f as usize]
+            .params
+            .iter()
+            .map(|p| p.ty)
+            .collect();
         slots
             .iter()
             .zip(tys)
@@ -112,7 +120,7 @@ impl Checker {
         let kind_ok: Vec<FuncId> = cands
             .iter()
             .copied()
-            .filter(|f| self.funcs[*f as usize].ret.is_none() == procedure)
+            .filter(|f| self.tables.funcs[*f as usize].ret.is_none() == procedure)
             .collect();
         if kind_ok.is_empty() {
             self.err(if procedure {
@@ -134,9 +142,9 @@ impl Checker {
                 .iter()
                 .copied()
                 .filter(|f| {
-                    self.funcs[*f as usize]
+                    self.tables.funcs[*f as usize]
                         .ret
-                        .is_some_and(|r| self.types.compatible(r, w))
+                        .is_some_and(|r| self.tables.types.compatible(r, w))
                 })
                 .collect();
             if !by_ret.is_empty() {
@@ -147,13 +155,17 @@ impl Checker {
         let mut distinct: Vec<FuncId> = Vec::new();
         for f in fitting {
             let same = distinct.iter().any(|g| {
-                let (a, b) = (&self.funcs[f as usize], &self.funcs[*g as usize]);
+                let (a, b) = (
+                    &self.tables.funcs[f as usize],
+                    &self.tables.funcs[*g as usize],
+                );
                 a.params.len() == b.params.len()
                     && a.params
                         .iter()
                         .zip(&b.params)
-                        .all(|(x, y)| self.types.base(x.ty) == self.types.base(y.ty))
-                    && a.ret.map(|t| self.types.base(t)) == b.ret.map(|t| self.types.base(t))
+                        .all(|(x, y)| self.tables.types.base(x.ty) == self.tables.types.base(y.ty))
+                    && a.ret.map(|t| self.tables.types.base(t))
+                        == b.ret.map(|t| self.tables.types.base(t))
             });
             if !same {
                 distinct.push(f);
@@ -196,7 +208,7 @@ impl Checker {
             }
         }
         self.warn_simulator_only(f, span);
-        let params = self.funcs[f as usize].params.clone();
+        let params = self.tables.funcs[f as usize].params.clone();
         let mut out = Vec::new();
         for (slot, p) in slots.into_iter().zip(&params) {
             match slot {
@@ -230,15 +242,15 @@ impl Checker {
                             ),
                         );
                         let actual_ty = ex.ty;
-                        if !self.types.compatible(actual_ty, p.ty)
-                            || self.types.is_universal(actual_ty)
+                        if !self.tables.types.compatible(actual_ty, p.ty)
+                            || self.tables.types.is_universal(actual_ty)
                         {
                             // Only for its diagnostic: the actual stays a variable.
                             let _ = self.coerce(ex.clone(), p.ty);
                         }
-                        let back_check = (self.types.is_scalar(actual_ty)
+                        let back_check = (self.tables.types.is_scalar(actual_ty)
                             && actual_ty != p.ty
-                            && self.types.get(actual_ty).range.is_some()
+                            && self.tables.types.get(actual_ty).range.is_some()
                             && actual_ty != INTEGER)
                             .then_some(actual_ty);
                         out.push(Arg {
@@ -254,7 +266,7 @@ impl Checker {
     }
 
     pub fn signature(&self, f: FuncId) -> String {
-        let s = &self.funcs[f as usize];
+        let s = &self.tables.funcs[f as usize];
         let ps: Vec<String> = s
             .params
             .iter()
@@ -263,7 +275,7 @@ impl Checker {
                 format!(
                     "{} : {mode}{}{}",
                     p.name,
-                    self.types.name(p.ty),
+                    self.tables.types.name(p.ty),
                     if p.default.is_some() { " := ..." } else { "" }
                 )
             })
@@ -274,7 +286,11 @@ impl Checker {
             format!(" ({})", ps.join("; "))
         };
         match s.ret {
-            Some(r) => format!("function {}{params} return {}", s.name, self.types.name(r)),
+            Some(r) => format!(
+                "function {}{params} return {}",
+                s.name,
+                self.tables.types.name(r)
+            ),
             None => format!("procedure {}{params}", s.name),
         }
     }
@@ -283,13 +299,13 @@ impl Checker {
     /// is meant for a real arm too (`simulator_only`): it would raise
     /// `CommandNotSupported` there, and in the rehearsal for it.
     fn warn_simulator_only(&mut self, f: FuncId, span: Span) {
-        let Some(Some(import)) = self.imports.get(f as usize) else {
+        let Some(Some(import)) = self.tables.imports.get(f as usize) else {
             return;
         };
         if !self.options.simulator_only.contains(&import.as_str()) {
             return;
         }
-        let name = self.funcs[f as usize].name.clone();
+        let name = self.tables.funcs[f as usize].name.clone();
         self.err(diagnostics::simulator_only(span, &name));
     }
 
@@ -306,10 +322,15 @@ impl Checker {
                 _ => None,
             }
         }
-        let name = self.funcs[f as usize].name.to_ascii_lowercase();
+        let name = self.tables.funcs[f as usize].name.to_ascii_lowercase();
         let angles: Vec<&ast::Expr> = if ["rotx", "roty", "rotz"].contains(&name.as_str()) {
             vec![actual]
-        } else if self.types.name(formal).eq_ignore_ascii_case("AxesVector") {
+        } else if self
+            .tables
+            .types
+            .name(formal)
+            .eq_ignore_ascii_case("AxesVector")
+        {
             match &actual.kind {
                 ExprKind::Aggregate(items) => items.iter().map(|i| &i.value).collect(),
                 _ => Vec::new(),

@@ -11,7 +11,7 @@ impl Checker {
         arms: &[&[Choice]],
         sp: Span,
     ) -> (Vec<Vec<(i64, i64)>>, Option<usize>) {
-        if !self.types.is_discrete(t) && t != ERROR {
+        if !self.tables.types.is_discrete(t) && t != ERROR {
             self.err(diagnostics::case_needs_discrete(sp, &self.tname(t)));
         }
         let mut out = Vec::new();
@@ -30,7 +30,7 @@ impl Checker {
                     }
                     Choice::Expr(x) => {
                         if let Some(tt) = self.denote_quiet_type(x) {
-                            match self.types.discrete_bounds(tt) {
+                            match self.tables.types.discrete_bounds(tt) {
                                 Some((l, h)) => {
                                     (Some(Static::Int(l)), Some(Static::Int(h)), x.span)
                                 }
@@ -62,13 +62,13 @@ impl Checker {
                         // (RM 5.4(7); GNAT: "minimum allowed choice value").
                         if l <= h
                             && t != ERROR
-                            && let Some((lo, hi)) = self.types.discrete_bounds(t)
+                            && let Some((lo, hi)) = self.tables.types.discrete_bounds(t)
                             && (l < lo || h > hi)
                         {
-                            let name = self.types.name(t);
-                            let lits = self.types.enum_lits(t).map(|l| l.to_vec());
+                            let name = self.tables.types.name(t);
+                            let lits = self.tables.types.enum_lits(t).map(|l| l.to_vec());
                             let show = |v: i128| match &lits {
-                                Some(ls) if self.types.base(t) != CHARACTER => {
+                                Some(ls) if self.tables.types.base(t) != CHARACTER => {
                                     ls.get(v as usize).cloned().unwrap_or_default()
                                 }
                                 _ => v.to_string(),
@@ -99,8 +99,8 @@ impl Checker {
             }
             out.push(rs);
         }
-        if others.is_none() && t != ERROR && self.types.is_discrete(t) {
-            match self.types.discrete_bounds(t) {
+        if others.is_none() && t != ERROR && self.tables.types.is_discrete(t) {
+            match self.tables.types.discrete_bounds(t) {
                 Some((lo, hi)) => {
                     all.sort_by_key(|x| x.0);
                     let mut missing: Vec<(i128, i128)> = Vec::new();
@@ -117,9 +117,9 @@ impl Checker {
                     let missing: Vec<(i128, i128)> =
                         missing.into_iter().filter(|(a, b)| a <= b).collect();
                     if !missing.is_empty() {
-                        let lits = self.types.enum_lits(t).map(|l| l.to_vec());
+                        let lits = self.tables.types.enum_lits(t).map(|l| l.to_vec());
                         let show = |v: i128| match &lits {
-                            Some(l) if self.types.base(t) != CHARACTER => {
+                            Some(l) if self.tables.types.base(t) != CHARACTER => {
                                 l.get(v as usize).cloned().unwrap_or_default()
                             }
                             _ => v.to_string(),
@@ -135,10 +135,17 @@ impl Checker {
                                 }
                             })
                             .collect();
-                        self.err(diagnostics::case_missing(sp, self.types.name(t), &text));
+                        self.err(diagnostics::case_missing(
+                            sp,
+                            self.tables.types.name(t),
+                            &text,
+                        ));
                     }
                 }
-                None => self.err(diagnostics::case_needs_others(sp, self.types.name(t))),
+                None => self.err(diagnostics::case_needs_others(
+                    sp,
+                    self.tables.types.name(t),
+                )),
             }
         }
         (out, others)

@@ -10,10 +10,10 @@ impl Checker {
     /// Converts an operand to the base type of `t` (unconstrained, as Ada's
     /// `T'Base`): compatibility and universal types, but no range check.
     pub(in crate::check) fn coerce_base(&mut self, ex: Ex, t: TypeId) -> Ex {
-        let base = self.types.base(t);
-        let saved = self.types.list[base as usize].range.take();
+        let base = self.tables.types.base(t);
+        let saved = self.tables.types.list[base as usize].range.take();
         let r = self.coerce(ex, base);
-        self.types.list[base as usize].range = saved;
+        self.tables.types.list[base as usize].range = saved;
         r
     }
 
@@ -21,32 +21,35 @@ impl Checker {
         if ex.ty == ERROR || t == ERROR {
             return ex;
         }
-        if !self.types.compatible(ex.ty, t) {
+        if !self.tables.types.compatible(ex.ty, t) {
             let mut d = diagnostics::type_mismatch(
                 ex.span,
                 &self.tname(t),
                 &self.found_desc(ex.ty),
                 &self.tname(ex.ty),
             );
-            let (tf, ti) = (self.types.is_float(t), self.types.is_integer(t));
-            if tf && self.types.is_integer(ex.ty) {
+            let (tf, ti) = (
+                self.tables.types.is_float(t),
+                self.tables.types.is_integer(t),
+            );
+            if tf && self.tables.types.is_integer(ex.ty) {
                 d = match &ex.kind {
                     ExKind::Int(v) => d.with_hint(format!("write the literal as a real: `{v}.0`")),
                     _ => d.with_hint(format!(
                         "convert it: `{} ({})`",
-                        self.types.name(t),
+                        self.tables.types.name(t),
                         self.snippet(ex.span)
                     )),
                 };
-            } else if ti && self.types.is_float(ex.ty) {
+            } else if ti && self.tables.types.is_float(ex.ty) {
                 d = d.with_hint(format!(
                     "convert it: `{} ({})` (rounds to nearest, ties away from zero)",
-                    self.types.name(t),
+                    self.tables.types.name(t),
                     self.snippet(ex.span)
                 ));
             } else if t == types::STRING
                 && matches!(
-                    self.types.kind(self.types.base(ex.ty)),
+                    self.tables.types.kind(self.tables.types.base(ex.ty)),
                     TypeKind::Integer
                         | TypeKind::Float
                         | TypeKind::Enum(_)
@@ -55,38 +58,44 @@ impl Checker {
                 )
             {
                 // `Put_Line (Count)`: text is made with 'Image.
-                let tn = match self.types.kind(ex.ty) {
+                let tn = match self.tables.types.kind(ex.ty) {
                     TypeKind::UnivInt => "Integer".to_string(),
                     TypeKind::UnivReal => "Float".to_string(),
-                    _ => self.types.name(ex.ty).to_string(),
+                    _ => self.tables.types.name(ex.ty).to_string(),
                 };
                 d = d.with_hint(format!(
                     "make it text: `{tn}'Image ({})`",
                     self.snippet(ex.span)
                 ));
-            } else if self.types.base(t) == types::CHARACTER
+            } else if self.tables.types.base(t) == types::CHARACTER
                 && matches!(
-                    self.types.kind(self.types.base(ex.ty)),
+                    self.tables.types.kind(self.tables.types.base(ex.ty)),
                     TypeKind::Integer | TypeKind::Float | TypeKind::UnivInt | TypeKind::UnivReal
                 )
             {
                 // `"Z is " & Z`: `&` joins characters and strings only.
-                let tn = match self.types.kind(ex.ty) {
+                let tn = match self.tables.types.kind(ex.ty) {
                     TypeKind::UnivInt => "Integer".to_string(),
                     TypeKind::UnivReal => "Float".to_string(),
-                    _ => self.types.name(ex.ty).to_string(),
+                    _ => self.tables.types.name(ex.ty).to_string(),
                 };
                 d = d.with_hint(format!(
                     "`&` joins text, not numbers: make it text with `{tn}'Image ({})`",
                     self.snippet(ex.span)
                 ));
-            } else if self.types.base(ex.ty) == types::STRING
-                && (ti || tf || matches!(self.types.kind(self.types.base(t)), TypeKind::Enum(_)))
+            } else if self.tables.types.base(ex.ty) == types::STRING
+                && (ti
+                    || tf
+                    || matches!(
+                        self.tables.types.kind(self.tables.types.base(t)),
+                        TypeKind::Enum(_)
+                    ))
             {
                 // Text where a number or an enumeration value is wanted.
                 let text = self.snippet(ex.span);
                 let lit = text.strip_prefix('"').and_then(|t| t.strip_suffix('"'));
                 let lits = self
+                    .tables
                     .types
                     .enum_lits(t)
                     .map(|l| l.to_vec())
@@ -99,23 +108,26 @@ impl Checker {
                     ),
                     (None, Some(l)) if (ti || tf) && !l.is_empty() => format!(
                         "convert the text: `{}'Value ({text})`, or write the number `{l}`",
-                        self.types.name(t)
+                        self.tables.types.name(t)
                     ),
-                    _ => format!("convert the text: `{}'Value ({text})`", self.types.name(t)),
+                    _ => format!(
+                        "convert the text: `{}'Value ({text})`",
+                        self.tables.types.name(t)
+                    ),
                 };
                 d = d.with_hint(hint);
             } else if let ExKind::Int(v) = ex.kind
-                && self.types.is_universal(ex.ty)
+                && self.tables.types.is_universal(ex.ty)
             {
                 // An integer literal where a Boolean or an enumeration
                 // value is wanted.
-                if self.types.base(t) == types::BOOLEAN {
+                if self.tables.types.base(t) == types::BOOLEAN {
                     d = d.with_hint(format!(
                         "write `{}` (Ada's Boolean is not a number)",
                         if v == 0 { "False" } else { "True" }
                     ));
-                } else if let Some(lits) = self.types.enum_lits(t).map(|l| l.to_vec())
-                    && self.types.base(t) != types::CHARACTER
+                } else if let Some(lits) = self.tables.types.enum_lits(t).map(|l| l.to_vec())
+                    && self.tables.types.base(t) != types::CHARACTER
                 {
                     let names: Vec<String> = lits
                         .iter()
@@ -126,7 +138,7 @@ impl Checker {
                     d = d.with_hint(format!(
                         "write one of {}{more} (or `{}'Val ({v})`)",
                         names.join(", "),
-                        self.types.name(t)
+                        self.tables.types.name(t)
                     ));
                 }
             }
@@ -135,8 +147,8 @@ impl Checker {
             return ex;
         }
         if let ExKind::Int(v) = ex.kind
-            && self.types.is_integer(t)
-            && !self.types.is_universal(t)
+            && self.tables.types.is_integer(t)
+            && !self.tables.types.is_universal(t)
             && i32::try_from(v).is_err()
         {
             self.err(diagnostics::static_outside_integer(
@@ -150,8 +162,8 @@ impl Checker {
         // RM 4.9(35): a static real expected of a floating point type lies
         // in that type's base range (a literal beyond it, `1.0E309` or
         // `1.0E39` for `Float`, is illegal, not infinity).
-        if self.types.is_float(t)
-            && !self.types.is_universal(t)
+        if self.tables.types.is_float(t)
+            && !self.tables.types.is_universal(t)
             && let Some((lo, hi)) = self.float_base_range(t)
             && (matches!(ex.kind, ExKind::Real(v) if !v.is_finite())
                 || matches!(self.static_value(&ex), Some(Static::Real(v))
@@ -172,7 +184,7 @@ impl Checker {
             self.err(diagnostics::static_outside_float(
                 ex.span,
                 &shown,
-                &self.tname(self.types.base(t)),
+                &self.tname(self.tables.types.base(t)),
                 &e(lo),
                 &e(hi),
             ));
@@ -180,15 +192,15 @@ impl Checker {
             return ex;
         }
         let from = ex.ty;
-        if self.types.is_universal(ex.ty)
+        if self.tables.types.is_universal(ex.ty)
             || matches!(
-                self.types.kind(ex.ty),
+                self.tables.types.kind(ex.ty),
                 TypeKind::Null | TypeKind::AnyComposite
             )
         {
             ex.ty = t;
         }
-        let info = self.types.get(t);
+        let info = self.tables.types.get(t);
         // Operations yield values of the base type, which may lie outside
         // the subtype even when their type is the subtype itself.
         let computed = matches!(
@@ -202,7 +214,7 @@ impl Checker {
                 | ExKind::IntToFloat(_)
                 | ExKind::FloatToInt(_)
         );
-        if self.types.is_scalar(t)
+        if self.tables.types.is_scalar(t)
             && info.range.is_some()
             && (from != t || computed)
             && t != INTEGER
@@ -222,8 +234,8 @@ impl Checker {
             };
             let same_range = !computed
                 && from != ERROR
-                && self.types.get(from).static_range.is_some()
-                && self.types.get(from).static_range == info.static_range;
+                && self.tables.types.get(from).static_range.is_some()
+                && self.tables.types.get(from).static_range == info.static_range;
             if !inside && !same_range {
                 // A static value outside a static range: it will raise.
                 let outside = match (
@@ -253,7 +265,7 @@ impl Checker {
             ex.ty = t;
             return ex;
         }
-        if let Some((_, _, Some(_))) = self.types.array(t)
+        if let Some((_, _, Some(_))) = self.tables.types.array(t)
             && ex.ty != t
         {
             let span = ex.span;
@@ -263,12 +275,12 @@ impl Checker {
     }
 
     fn found_desc(&self, t: TypeId) -> String {
-        match self.types.kind(t) {
+        match self.tables.types.kind(t) {
             TypeKind::UnivInt => "an integer literal".into(),
             TypeKind::UnivReal => "a real literal".into(),
             TypeKind::AnyComposite => "an aggregate".into(),
             TypeKind::Null => "`null`".into(),
-            _ => format!("`{}`", self.types.name(t)),
+            _ => format!("`{}`", self.tables.types.name(t)),
         }
     }
 
@@ -277,9 +289,9 @@ impl Checker {
         let mut univ = None;
         for e in es {
             for t in self.interps(e) {
-                if !self.types.is_universal(t)
+                if !self.tables.types.is_universal(t)
                     && !matches!(
-                        self.types.kind(t),
+                        self.tables.types.kind(t),
                         TypeKind::Null | TypeKind::AnyComposite | TypeKind::Error
                     )
                 {
@@ -304,15 +316,16 @@ impl Checker {
             return true;
         }
         match &e.kind {
-            ExprKind::Str(_) => self
-                .types
-                .array(t)
-                .is_some_and(|(i, el, _)| i.len() == 1 && self.types.base(el) == CHARACTER),
+            ExprKind::Str(_) => {
+                self.tables.types.array(t).is_some_and(|(i, el, _)| {
+                    i.len() == 1 && self.tables.types.base(el) == CHARACTER
+                })
+            }
             ExprKind::Aggregate(_) => matches!(
-                self.types.kind(t),
+                self.tables.types.kind(t),
                 TypeKind::Array { .. } | TypeKind::Record(_)
             ),
-            ExprKind::Allocator(..) | ExprKind::Null => self.types.is_access(t),
+            ExprKind::Allocator(..) | ExprKind::Null => self.tables.types.is_access(t),
             ExprKind::Paren(x) => self.fits(x, t),
             ExprKind::If { arms, .. } => arms.first().is_none_or(|a| self.fits(&a.1, t)),
             _ => {
@@ -320,7 +333,7 @@ impl Checker {
                 is.is_empty()
                     || is
                         .iter()
-                        .any(|u| *u == ERROR || self.types.compatible(*u, t))
+                        .any(|u| *u == ERROR || self.tables.types.compatible(*u, t))
             }
         }
     }
@@ -328,11 +341,11 @@ impl Checker {
     /// The base range of a floating point type (RM 3.5.7): single precision
     /// up to 6 digits, as GNAT; `Duration`'s own.
     fn float_base_range(&self, t: TypeId) -> Option<(f64, f64)> {
-        let base = self.types.base(t);
+        let base = self.tables.types.base(t);
         if base == DURATION {
-            return self.types.get(base).static_frange;
+            return self.tables.types.get(base).static_frange;
         }
-        let max = if self.types.digits(t) <= 6 {
+        let max = if self.tables.types.digits(t) <= 6 {
             f32::MAX as f64
         } else {
             f64::MAX

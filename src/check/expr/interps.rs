@@ -65,8 +65,9 @@ impl Checker {
                 }
                 let mut out = Vec::new();
                 for t in self.interps(p) {
-                    let t = self.types.designated(t).unwrap_or(t);
+                    let t = self.tables.types.designated(t).unwrap_or(t);
                     if let Some(f) = self
+                        .tables
                         .types
                         .fields(t)
                         .and_then(|fs| fs.iter().find(|f| *f.key == *id.key))
@@ -79,7 +80,7 @@ impl Checker {
             ExprKind::Deref(p) => self
                 .interps(p)
                 .into_iter()
-                .filter_map(|t| self.types.designated(t))
+                .filter_map(|t| self.tables.types.designated(t))
                 .collect(),
             ExprKind::Apply(p, args) => {
                 let pes = match &p.kind {
@@ -92,13 +93,13 @@ impl Checker {
                         let fs: Vec<FuncId> = funcs_of(&pes);
                         let mut out = Vec::new();
                         for f in fs {
-                            let Some(r) = self.funcs[f as usize].ret else {
+                            let Some(r) = self.tables.funcs[f as usize].ret else {
                                 continue;
                             };
                             if self.args_fit(f, args) {
                                 out.push(r);
-                            } else if self.funcs[f as usize].params.is_empty()
-                                && let Some((idx, el, _)) = self.types.array(r)
+                            } else if self.tables.funcs[f as usize].params.is_empty()
+                                && let Some((idx, el, _)) = self.tables.types.array(r)
                             {
                                 // `ValueAxes (1)`: a component of the result of
                                 // a call without parameters.
@@ -115,8 +116,8 @@ impl Checker {
                     _ => {
                         let mut out = Vec::new();
                         for t in self.interps(p) {
-                            let t = self.types.designated(t).unwrap_or(t);
-                            if let Some((idx, el, _)) = self.types.array(t) {
+                            let t = self.tables.types.designated(t).unwrap_or(t);
+                            if let Some((idx, el, _)) = self.tables.types.array(t) {
                                 let slice = args.len() == 1 && is_range_arg(&args[0].value);
                                 out.push(if slice || idx.len() != args.len() {
                                     t
@@ -138,7 +139,11 @@ impl Checker {
                     "image" => vec![STRING],
                     "pos" | "length" | "digits" => vec![UNIV_INT],
                     "first" | "last" => match pt {
-                        Some(t) => match self.types.array(self.types.designated(t).unwrap_or(t)) {
+                        Some(t) => match self
+                            .tables
+                            .types
+                            .array(self.tables.types.designated(t).unwrap_or(t))
+                        {
                             Some((idx, _, _)) => vec![idx[0]],
                             None => vec![t],
                         },
@@ -158,7 +163,7 @@ impl Checker {
                 BinOp::And | BinOp::Or | BinOp::Xor => {
                     let mut v = vec![BOOLEAN];
                     for t in self.interps(a).into_iter().chain(self.interps(b)) {
-                        if self.types.is_bool_array(t) && !v.contains(&t) {
+                        if self.tables.types.is_bool_array(t) && !v.contains(&t) {
                             v.push(t);
                         }
                     }
@@ -171,7 +176,7 @@ impl Checker {
                     // list grew with the chain: quadratic memory).
                     let mut v: Vec<TypeId> = Vec::new();
                     for t in self.interps(a).into_iter().chain(self.interps(b)) {
-                        if self.types.is_array(t) && !v.contains(&t) {
+                        if self.tables.types.is_array(t) && !v.contains(&t) {
                             v.push(t);
                         }
                     }
@@ -185,22 +190,28 @@ impl Checker {
                     let (l, r) = (self.interps(a), self.interps(b));
                     for &x in &l {
                         for &y in &r {
-                            if !self.types.is_numeric(x)
-                                || !(self.types.is_numeric(y) || y == ERROR)
+                            if !self.tables.types.is_numeric(x)
+                                || !(self.tables.types.is_numeric(y) || y == ERROR)
                             {
                                 continue;
                             }
                             if *op == BinOp::Pow {
-                                if self.types.is_integer(y) {
+                                if self.tables.types.is_integer(y) {
                                     out.push(x);
                                 }
-                            } else if self.types.compatible(x, y) || self.types.compatible(y, x) {
-                                out.push(if self.types.is_universal(x) { y } else { x });
-                            } else if (self.types.base(x) == DURATION
-                                && self.types.is_integer(y)
+                            } else if self.tables.types.compatible(x, y)
+                                || self.tables.types.compatible(y, x)
+                            {
+                                out.push(if self.tables.types.is_universal(x) {
+                                    y
+                                } else {
+                                    x
+                                });
+                            } else if (self.tables.types.base(x) == DURATION
+                                && self.tables.types.is_integer(y)
                                 && matches!(op, BinOp::Mul | BinOp::Div))
-                                || (self.types.base(y) == DURATION
-                                    && self.types.is_integer(x)
+                                || (self.tables.types.base(y) == DURATION
+                                    && self.tables.types.is_integer(x)
                                     && *op == BinOp::Mul)
                             {
                                 out.push(DURATION);
@@ -215,7 +226,7 @@ impl Checker {
                 v.extend(
                     self.interps(a)
                         .into_iter()
-                        .filter(|t| self.types.is_bool_array(*t)),
+                        .filter(|t| self.tables.types.is_bool_array(*t)),
                 );
                 v
             }
@@ -223,7 +234,7 @@ impl Checker {
                 let mut out: Vec<TypeId> = self
                     .interps(a)
                     .into_iter()
-                    .filter(|t| self.types.is_numeric(*t))
+                    .filter(|t| self.tables.types.is_numeric(*t))
                     .collect();
                 if out.is_empty() {
                     out = self.user_op_types(op.symbol(), &[a]);
@@ -251,7 +262,7 @@ impl Checker {
             // answering that without walking it keeps a dotted name of
             // n parts linear (each level asks this of its prefix).
             ExprKind::Select(..)
-                if select_depth_exceeds(p, self.packages.len() + self.scopes.depth()) =>
+                if select_depth_exceeds(p, self.tables.packages.len() + self.scopes.depth()) =>
             {
                 false
             }
@@ -281,7 +292,7 @@ impl Checker {
                 Entity::Number(Static::Real(_)) => Some(UNIV_REAL),
                 Entity::EnumLit(t, _) => Some(*t),
                 Entity::Func(f) => {
-                    let s = &self.funcs[*f as usize];
+                    let s = &self.tables.funcs[*f as usize];
                     if s.params.iter().all(|p| p.default.is_some()) {
                         s.ret
                     } else {

@@ -34,12 +34,12 @@ impl Checker {
     }
 
     pub(super) fn tname(&self, t: TypeId) -> String {
-        match self.types.kind(t) {
+        match self.tables.types.kind(t) {
             TypeKind::UnivInt => "universal integer (a literal)".into(),
             TypeKind::UnivReal => "universal real (a literal)".into(),
             TypeKind::AnyComposite => "an aggregate".into(),
             TypeKind::Null => "null".into(),
-            _ => self.types.name(t).to_string(),
+            _ => self.tables.types.name(t).to_string(),
         }
     }
 
@@ -140,11 +140,11 @@ impl Checker {
             ExprKind::Real(v) => self.mk(ExKind::Real(*v), UNIV_REAL, sp),
             ExprKind::Char(c) => {
                 if let Some(w) = want
-                    && self.types.base(w) != CHARACTER
+                    && self.tables.types.base(w) != CHARACTER
                 {
                     for ent in self.lookup(&char_lit_key(*c)) {
                         if let Entity::EnumLit(t, pos) = ent
-                            && self.types.compatible(t, w)
+                            && self.tables.types.compatible(t, w)
                         {
                             return self.mk(ExKind::Int(pos), t, sp);
                         }
@@ -157,22 +157,25 @@ impl Checker {
                     Some(w) if self.fits(e, w) => w,
                     _ => STRING,
                 };
-                let ty = if self.types.array(ty).is_some_and(|a| a.2.is_some()) {
-                    self.types.base(ty)
+                let ty = if self.tables.types.array(ty).is_some_and(|a| a.2.is_some()) {
+                    self.tables.types.base(ty)
                 } else {
                     ty
                 };
-                let ty = if self.types.array(ty).is_some() {
+                let ty = if self.tables.types.array(ty).is_some() {
                     self.unconstrained_of(ty)
                 } else {
                     STRING
                 };
                 // Its lower bound is its index subtype's first (RM 4.2(11)):
                 // 1 for String; otherwise an aggregate of its characters.
-                let first = match self.types.array(ty) {
-                    Some((index, elem, None)) if index.len() == 1 => {
-                        self.types.get(index[0]).static_range.map(|r| (r.0, elem))
-                    }
+                let first = match self.tables.types.array(ty) {
+                    Some((index, elem, None)) if index.len() == 1 => self
+                        .tables
+                        .types
+                        .get(index[0])
+                        .static_range
+                        .map(|r| (r.0, elem)),
                     _ => None,
                 };
                 if let Some((f, elem)) = first
@@ -213,7 +216,7 @@ impl Checker {
             }
             ExprKind::Deref(p) => {
                 let pe = self.expr(p, None);
-                match self.types.designated(pe.ty) {
+                match self.tables.types.designated(pe.ty) {
                     Some(d) => self.mk(ExKind::Deref(bx(pe)), d, sp),
                     None => {
                         if pe.ty != ERROR {
@@ -258,7 +261,7 @@ impl Checker {
                         && let Some(tt) = self.denote_quiet_type(x)
                         && {
                             let first = self.interps(subject).first().copied().unwrap_or(ERROR);
-                            self.types.is_universal(first)
+                            self.tables.types.is_universal(first)
                         }
                     {
                         tt
@@ -284,19 +287,19 @@ impl Checker {
                             {
                                 // `X in A'Range`, `X in A'Range (N)`
                                 let (l, h, rt) = self.range_attr(prefix, args, x.span);
-                                if rt != ERROR && !self.types.compatible(rt, s.ty) {
+                                if rt != ERROR && !self.tables.types.compatible(rt, s.ty) {
                                     self.err(diagnostics::range_of_other_type(
                                         x.span,
-                                        self.types.name(rt),
+                                        self.tables.types.name(rt),
                                         &self.tname(s.ty),
                                     ));
                                 }
                                 ranges.push((l, h));
                             } else if let Some(tt) = self.denote_quiet_type(x) {
-                                if !self.types.compatible(tt, s.ty) {
+                                if !self.tables.types.compatible(tt, s.ty) {
                                     self.err(diagnostics::not_a_subtype_of(
                                         x.span,
-                                        self.types.name(tt),
+                                        self.tables.types.name(tt),
                                         &self.tname(s.ty),
                                     ));
                                 }
@@ -320,7 +323,7 @@ impl Checker {
                 )
             }
             ExprKind::Aggregate(items) => match want {
-                Some(t) if t != ERROR && !self.types.is_universal(t) => {
+                Some(t) if t != ERROR && !self.tables.types.is_universal(t) => {
                     self.aggregate(items, t, sp)
                 }
                 Some(_) => self.err_ex(sp),
@@ -353,7 +356,7 @@ impl Checker {
                         self.coerce(v, t)
                     }
                     None => {
-                        if self.types.base(t) != BOOLEAN {
+                        if self.tables.types.base(t) != BOOLEAN {
                             self.err(diagnostics::if_expression_without_else(sp));
                         }
                         self.mk(ExKind::Int(1), BOOLEAN, sp)
@@ -370,7 +373,7 @@ impl Checker {
                     }
                 };
                 let s = self.expr(subject, None);
-                let st = if self.types.is_universal(s.ty) {
+                let st = if self.tables.types.is_universal(s.ty) {
                     INTEGER
                 } else {
                     s.ty
@@ -393,20 +396,20 @@ impl Checker {
                 self.mk(ExKind::Case(Box::new((s, out, others))), t, sp)
             }
             ExprKind::Allocator(tm, init) => {
-                let Some(w) = want.filter(|w| self.types.is_access(*w)) else {
+                let Some(w) = want.filter(|w| self.tables.types.is_access(*w)) else {
                     if want != Some(ERROR) {
                         self.err(diagnostics::allocator_without_access_type(sp));
                     }
                     return self.err_ex(sp);
                 };
-                let d = self.types.designated(w).unwrap_or(ERROR);
+                let d = self.tables.types.designated(w).unwrap_or(ERROR);
                 let t = self.type_mark(tm);
-                if !self.types.compatible(t, d) {
+                if !self.tables.types.compatible(t, d) {
                     self.err(diagnostics::designates_other_type(
                         tm.span,
-                        self.types.name(w),
-                        self.types.name(d),
-                        self.types.name(t),
+                        self.tables.types.name(w),
+                        self.tables.types.name(d),
+                        self.tables.types.name(t),
                     ));
                 }
                 let init = init.as_ref().map(|x| {
@@ -420,12 +423,12 @@ impl Checker {
 
     /// An unconstrained array type with the same index and element types.
     pub(super) fn unconstrained_of(&mut self, t: TypeId) -> TypeId {
-        match self.types.array(t) {
+        match self.tables.types.array(t) {
             Some((idx, el, Some(_))) => {
                 let (idx, el) = (idx.to_vec(), el);
-                let name = self.types.name(t).to_string();
-                let base = self.types.base(t);
-                let n = self.types.add(
+                let name = self.tables.types.name(t).to_string();
+                let base = self.tables.types.base(t);
+                let n = self.tables.types.add(
                     &name,
                     TypeKind::Array {
                         index: idx,
@@ -433,7 +436,7 @@ impl Checker {
                         bounds: None,
                     },
                 );
-                self.types.list[n as usize].base = base;
+                self.tables.types.list[n as usize].base = base;
                 n
             }
             _ => t,
@@ -483,7 +486,7 @@ impl Checker {
                 // Enumeration literals first, by the expected type; then parameterless functions.
                 for e in es {
                     if let Entity::EnumLit(t, pos) = e
-                        && want.is_none_or(|w| self.types.compatible(*t, w))
+                        && want.is_none_or(|w| self.tables.types.compatible(*t, w))
                     {
                         self.index_ref(id.span, &id.key, e);
                         return self.mk(ExKind::Int(*pos), *t, sp);
@@ -500,14 +503,14 @@ impl Checker {
                 match self.call(&fs, &[], want, false, sp, text) {
                     Some((f, args)) => {
                         self.index_ref(id.span, &id.key, &Entity::Func(f));
-                        let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
+                        let r = self.tables.funcs[f as usize].ret.unwrap_or(ERROR);
                         self.mk(ExKind::Call(f, args.into()), r, sp)
                     }
                     None => self.err_ex(sp),
                 }
             }
             Entity::Type(t) => {
-                let n = self.types.name(*t).to_string();
+                let n = self.tables.types.name(*t).to_string();
                 self.err(diagnostics::type_is_not_a_value(sp, &n));
                 self.err_ex(sp)
             }
@@ -523,17 +526,17 @@ impl Checker {
     }
 
     fn component(&mut self, mut pe: Ex, id: &ast::Ident, sp: Span) -> Ex {
-        if let TypeKind::Protected(k) = self.types.kind(pe.ty).clone() {
+        if let TypeKind::Protected(k) = self.tables.types.kind(pe.ty).clone() {
             return self.prot_function(k, pe, id, &[], sp);
         }
-        if let Some(d) = self.types.designated(pe.ty) {
+        if let Some(d) = self.tables.types.designated(pe.ty) {
             let psp = pe.span;
             pe = self.mk(ExKind::Deref(bx(pe)), d, psp);
         }
         if pe.ty == ERROR {
             return self.err_ex(sp);
         }
-        match self.types.fields(pe.ty).map(|f| f.to_vec()) {
+        match self.tables.types.fields(pe.ty).map(|f| f.to_vec()) {
             Some(fields) => match fields.iter().position(|f| *f.key == *id.key) {
                 Some(i) => {
                     let t = fields[i].ty;
@@ -544,7 +547,7 @@ impl Checker {
                     let names: Vec<&str> = fields.iter().map(|f| f.name.as_str()).collect();
                     self.err(diagnostics::no_component(
                         id.span,
-                        self.types.name(pe.ty),
+                        self.tables.types.name(pe.ty),
                         &id.name,
                         &names,
                     ));
@@ -584,7 +587,7 @@ impl Checker {
             Some(Entity::Type(t)) => {
                 let t = *t;
                 if args.len() != 1 || args[0].name.is_some() {
-                    self.err(diagnostics::conversion_arity(sp, self.types.name(t)));
+                    self.err(diagnostics::conversion_arity(sp, self.tables.types.name(t)));
                     return self.err_ex(sp);
                 }
                 self.conversion(t, &args[0].value, sp)
@@ -595,19 +598,19 @@ impl Checker {
                 // `ValueAxes (2)`: a parameterless function whose array result is indexed.
                 if !fs.iter().any(|f| self.args_fit(*f, args))
                     && let Some(f) = fs.iter().copied().find(|f| {
-                        let sub = &self.funcs[*f as usize];
+                        let sub = &self.tables.funcs[*f as usize];
                         sub.params.iter().all(|p| p.default.is_some())
                             && sub
                                 .ret
-                                .and_then(|r| self.types.array(r))
+                                .and_then(|r| self.tables.types.array(r))
                                 .is_some_and(|a| a.0.len() == args.len())
                     })
                 {
                     if let Some(id) = super::stmt::last_ident(p) {
                         self.index_ref(id.span, &id.key, &Entity::Func(f));
                     }
-                    let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
-                    let defaults: Vec<Arg> = self.funcs[f as usize]
+                    let r = self.tables.funcs[f as usize].ret.unwrap_or(ERROR);
+                    let defaults: Vec<Arg> = self.tables.funcs[f as usize]
                         .params
                         .iter()
                         .map(|p| Arg {
@@ -618,11 +621,12 @@ impl Checker {
                         .collect();
                     let callee = self.mk(ExKind::Call(f, defaults.into()), r, p.span);
                     let idx: Vec<TypeId> = self
+                        .tables
                         .types
                         .array(r)
                         .map(|a| a.0.to_vec())
                         .unwrap_or_default();
-                    let el = self.types.array(r).map(|a| a.1).unwrap_or(ERROR);
+                    let el = self.tables.types.array(r).map(|a| a.1).unwrap_or(ERROR);
                     let mut ix = Vec::new();
                     for (a, it) in args.iter().zip(&idx) {
                         let v = self.expr(&a.value, Some(*it));
@@ -635,7 +639,7 @@ impl Checker {
                         if let Some(id) = super::stmt::last_ident(p) {
                             self.index_ref(id.span, &id.key, &Entity::Func(f));
                         }
-                        let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
+                        let r = self.tables.funcs[f as usize].ret.unwrap_or(ERROR);
                         self.mk(ExKind::Call(f, a.into()), r, sp)
                     }
                     None => self.err_ex(sp),
@@ -650,7 +654,7 @@ impl Checker {
             }
             _ => {
                 let mut pe = self.expr(p, None);
-                if let Some(d) = self.types.designated(pe.ty) {
+                if let Some(d) = self.tables.types.designated(pe.ty) {
                     let psp = pe.span;
                     pe = self.mk(ExKind::Deref(bx(pe)), d, psp);
                 }
@@ -661,6 +665,7 @@ impl Checker {
                     return self.err_ex(sp);
                 }
                 let Some((idx, el, _)) = self
+                    .tables
                     .types
                     .array(pe.ty)
                     .map(|(i, e, b)| (i.to_vec(), e, b.is_some()))
@@ -689,7 +694,7 @@ impl Checker {
                 if args.len() != idx.len() {
                     self.err(diagnostics::index_count(
                         sp,
-                        self.types.name(pe.ty),
+                        self.tables.types.name(pe.ty),
                         idx.len(),
                         args.len(),
                     ));
@@ -713,10 +718,10 @@ impl Checker {
         let src = xi
             .iter()
             .copied()
-            .find(|u| !self.types.is_universal(*u))
+            .find(|u| !self.tables.types.is_universal(*u))
             .or(xi.first().copied())
             .unwrap_or(ERROR);
-        let want = if self.types.is_numeric(t) && self.types.is_numeric(src) {
+        let want = if self.tables.types.is_numeric(t) && self.tables.types.is_numeric(src) {
             Some(src)
         } else {
             Some(t)
@@ -725,41 +730,47 @@ impl Checker {
         if ex.ty == ERROR || t == ERROR {
             return self.err_ex(sp);
         }
-        let (tf, ti) = (self.types.is_float(t), self.types.is_integer(t));
-        let (sf, si) = (self.types.is_float(ex.ty), self.types.is_integer(ex.ty));
+        let (tf, ti) = (
+            self.tables.types.is_float(t),
+            self.tables.types.is_integer(t),
+        );
+        let (sf, si) = (
+            self.tables.types.is_float(ex.ty),
+            self.tables.types.is_integer(ex.ty),
+        );
         let inner = if tf && si {
-            self.mk(ExKind::IntToFloat(bx(ex)), self.types.base(t), sp)
+            self.mk(ExKind::IntToFloat(bx(ex)), self.tables.types.base(t), sp)
         } else if ti && sf {
-            self.mk(ExKind::FloatToInt(bx(ex)), self.types.base(t), sp)
+            self.mk(ExKind::FloatToInt(bx(ex)), self.tables.types.base(t), sp)
         } else if (tf && sf) || (ti && si) {
             Ex {
-                ty: self.types.base(t),
+                ty: self.tables.types.base(t),
                 ..ex
             }
-        } else if self.types.base(ex.ty) == self.types.base(t) {
+        } else if self.tables.types.base(ex.ty) == self.tables.types.base(t) {
             ex
         } else if let (Some((i1, e1, _)), Some((i2, e2, _))) =
-            (self.types.array(ex.ty), self.types.array(t))
+            (self.tables.types.array(ex.ty), self.tables.types.array(t))
         {
-            if i1.len() == i2.len() && self.types.base(e1) == self.types.base(e2) {
-                let tt = if self.types.array(t).is_some_and(|a| a.2.is_some()) {
+            if i1.len() == i2.len() && self.tables.types.base(e1) == self.tables.types.base(e2) {
+                let tt = if self.tables.types.array(t).is_some_and(|a| a.2.is_some()) {
                     t
                 } else {
-                    self.types.base(t)
+                    self.tables.types.base(t)
                 };
                 return self.mk(ExKind::ArrayConvert(bx(ex), tt), t, sp);
             }
             self.err(diagnostics::cannot_convert_arrays(
                 sp,
                 &self.tname(ex.ty),
-                self.types.name(t),
+                self.tables.types.name(t),
             ));
             return self.err_ex(sp);
         } else {
             self.err(diagnostics::cannot_convert(
                 sp,
                 &self.tname(ex.ty),
-                self.types.name(t),
+                self.tables.types.name(t),
             ));
             return self.err_ex(sp);
         };

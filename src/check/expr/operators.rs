@@ -25,7 +25,11 @@ impl Checker {
             let x = self.coerce(x, t);
             let y = self.expr(b, Some(t));
             let y = self.coerce(y, t);
-            return self.mk(ExKind::ArrLogic(lop, bx(x), bx(y)), self.types.base(t), sp);
+            return self.mk(
+                ExKind::ArrLogic(lop, bx(x), bx(y)),
+                self.tables.types.base(t),
+                sp,
+            );
         }
         match op {
             BinOp::And | BinOp::Or | BinOp::Xor | BinOp::AndThen | BinOp::OrElse => {
@@ -49,7 +53,7 @@ impl Checker {
         let user_fit: Vec<FuncId> = user
             .into_iter()
             .filter(|f| {
-                let ps: Vec<TypeId> = self.funcs[*f as usize]
+                let ps: Vec<TypeId> = self.tables.funcs[*f as usize]
                     .params
                     .iter()
                     .map(|p| p.ty)
@@ -57,9 +61,9 @@ impl Checker {
                 self.fits(a, ps[0])
                     && self.fits(b, ps[1])
                     && want.is_none_or(|w| {
-                        self.funcs[*f as usize]
+                        self.tables.funcs[*f as usize]
                             .ret
-                            .is_some_and(|r| self.types.compatible(r, w))
+                            .is_some_and(|r| self.tables.types.compatible(r, w))
                     })
             })
             .collect();
@@ -78,7 +82,7 @@ impl Checker {
             ];
             match this.call(&[f], &args, want, false, sp, op.symbol()) {
                 Some((f, args)) => {
-                    let r = this.funcs[f as usize].ret.unwrap_or(ERROR);
+                    let r = this.tables.funcs[f as usize].ret.unwrap_or(ERROR);
                     this.mk(ExKind::Call(f, args.into()), r, sp)
                 }
                 None => this.err_ex(sp),
@@ -90,9 +94,9 @@ impl Checker {
                 .op_funcs("=", 2)
                 .into_iter()
                 .filter(|f| {
-                    let fi = &self.funcs[*f as usize];
+                    let fi = &self.tables.funcs[*f as usize];
                     let (ret, p0, p1) = (fi.ret, fi.params[0].ty, fi.params[1].ty);
-                    ret.is_some_and(|r| self.types.base(r) == BOOLEAN)
+                    ret.is_some_and(|r| self.tables.types.base(r) == BOOLEAN)
                         && self.fits(a, p0)
                         && self.fits(b, p1)
                 })
@@ -115,14 +119,15 @@ impl Checker {
             BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge => {
                 let (li, ri) = (self.interps(a), self.interps(b));
                 let predefined_ok = li.iter().any(|x| {
-                    ri.iter()
-                        .any(|y| self.types.compatible(*x, *y) || self.types.compatible(*y, *x))
+                    ri.iter().any(|y| {
+                        self.tables.types.compatible(*x, *y) || self.tables.types.compatible(*y, *x)
+                    })
                 });
                 if let Some(f) = user_fit.first()
                     && (!predefined_ok
-                        || !li
-                            .iter()
-                            .any(|t| self.types.is_scalar(*t) || self.types.is_array(*t)))
+                        || !li.iter().any(|t| {
+                            self.tables.types.is_scalar(*t) || self.tables.types.is_array(*t)
+                        }))
                 {
                     return user_call(self, *f);
                 }
@@ -131,19 +136,19 @@ impl Checker {
                 let y = self.expr(b, Some(t));
                 if x.ty != ERROR
                     && y.ty != ERROR
-                    && !self.types.compatible(x.ty, y.ty)
-                    && !self.types.compatible(y.ty, x.ty)
+                    && !self.tables.types.compatible(x.ty, y.ty)
+                    && !self.tables.types.compatible(y.ty, x.ty)
                 {
                     self.mismatch(op, &x, &y, a, b, sp);
                     return self.mk(ExKind::Error, BOOLEAN, sp);
                 }
-                let t = if self.types.is_universal(x.ty) {
+                let t = if self.tables.types.is_universal(x.ty) {
                     y.ty
                 } else {
                     x.ty
                 };
-                let t = if self.types.is_universal(t) {
-                    if self.types.is_float(t) {
+                let t = if self.tables.types.is_universal(t) {
+                    if self.tables.types.is_float(t) {
                         FLOAT
                     } else {
                         INTEGER
@@ -175,11 +180,11 @@ impl Checker {
                 if matches!(op, BinOp::Eq | BinOp::Ne) {
                     return self.mk(ExKind::Eq(op == BinOp::Ne, bx(x), bx(y)), BOOLEAN, sp);
                 }
-                let ordered = self.types.is_scalar(t)
-                    || self
-                        .types
-                        .array(t)
-                        .is_some_and(|(i, e, _)| i.len() == 1 && self.types.is_discrete(e));
+                let ordered =
+                    self.tables.types.is_scalar(t)
+                        || self.tables.types.array(t).is_some_and(|(i, e, _)| {
+                            i.len() == 1 && self.tables.types.is_discrete(e)
+                        });
                 if !ordered && t != ERROR {
                     self.err(diagnostics::ordering_undefined(
                         sp,
@@ -197,20 +202,20 @@ impl Checker {
             }
             BinOp::Cat => {
                 let t = match want {
-                    Some(w) if self.types.is_array(w) => self.unconstrained_of(w),
+                    Some(w) if self.tables.types.is_array(w) => self.unconstrained_of(w),
                     _ => {
                         let c: Vec<TypeId> = self
                             .interps(a)
                             .into_iter()
                             .chain(self.interps(b))
-                            .filter(|t| self.types.is_array(*t))
+                            .filter(|t| self.tables.types.is_array(*t))
                             .collect();
                         c.first()
                             .map(|t| self.unconstrained_of(*t))
                             .unwrap_or(STRING)
                     }
                 };
-                let el = self.types.array(t).map(|x| x.1).unwrap_or(ERROR);
+                let el = self.tables.types.array(t).map(|x| x.1).unwrap_or(ERROR);
                 let side = |this: &mut Self, e: &ast::Expr| -> (Ex, bool) {
                     if this.fits(e, t) && !matches!(e.kind, ExprKind::Char(_)) {
                         let x = this.expr(e, Some(t));
@@ -234,7 +239,9 @@ impl Checker {
                 let unwanted = |this: &Self, t: TypeId| {
                     let t = if t == DURATION + 1000 { DURATION } else { t };
                     want.is_some_and(|w| {
-                        w != ERROR && !this.types.compatible(t, w) && !this.types.compatible(w, t)
+                        w != ERROR
+                            && !this.tables.types.compatible(t, w)
+                            && !this.tables.types.compatible(w, t)
                     })
                 };
                 match arith {
@@ -261,13 +268,19 @@ impl Checker {
     fn mismatch(&mut self, op: BinOp, x: &Ex, y: &Ex, a: &ast::Expr, b: &ast::Expr, sp: Span) {
         let (xt, yt) = (self.tname(x.ty), self.tname(y.ty));
         let mut d = diagnostics::operands_mixed(sp, op.symbol(), &xt, &yt);
-        let (xi, yi) = (self.types.is_integer(x.ty), self.types.is_integer(y.ty));
-        let (xf, yf) = (self.types.is_float(x.ty), self.types.is_float(y.ty));
+        let (xi, yi) = (
+            self.tables.types.is_integer(x.ty),
+            self.tables.types.is_integer(y.ty),
+        );
+        let (xf, yf) = (
+            self.tables.types.is_float(x.ty),
+            self.tables.types.is_float(y.ty),
+        );
         let fname = |this: &Self, t: TypeId| {
-            if this.types.is_universal(t) {
+            if this.tables.types.is_universal(t) {
                 "Float".to_string()
             } else {
-                this.types.name(t).to_string()
+                this.tables.types.name(t).to_string()
             }
         };
         if xi && yf {
@@ -278,7 +291,11 @@ impl Checker {
                 op.symbol(),
                 self.snippet(b.span)
             ));
-        } else if xf && yi && matches!(y.kind, ExKind::Int(_)) && self.types.is_universal(y.ty) {
+        } else if xf
+            && yi
+            && matches!(y.kind, ExKind::Int(_))
+            && self.tables.types.is_universal(y.ty)
+        {
             d = d.with_hint(format!(
                 "write the literal as a real: `{} {} {}.0`",
                 self.snippet(a.span),
@@ -306,11 +323,11 @@ impl Checker {
     ) -> Option<TypeId> {
         let (li, ri) = (self.interps(a), self.interps(b));
         if op == BinOp::Pow {
-            if !ri.iter().any(|t| self.types.is_integer(*t)) {
+            if !ri.iter().any(|t| self.tables.types.is_integer(*t)) {
                 return None;
             }
             if let Some(w) = want
-                && self.types.is_numeric(w)
+                && self.tables.types.is_numeric(w)
                 && self.fits(a, w)
             {
                 return Some(w);
@@ -318,32 +335,39 @@ impl Checker {
             return li
                 .iter()
                 .copied()
-                .find(|t| self.types.is_numeric(*t) && !self.types.is_universal(*t))
-                .or(li.iter().copied().find(|t| self.types.is_numeric(*t)));
+                .find(|t| self.tables.types.is_numeric(*t) && !self.tables.types.is_universal(*t))
+                .or(li
+                    .iter()
+                    .copied()
+                    .find(|t| self.tables.types.is_numeric(*t)));
         }
         let int_only = matches!(op, BinOp::Mod | BinOp::Rem);
         let ok = |this: &Self, t: TypeId| {
-            this.types.is_numeric(t) && (!int_only || this.types.is_integer(t))
+            this.tables.types.is_numeric(t) && (!int_only || this.tables.types.is_integer(t))
         };
         if let Some(w) = want
             && ok(self, w)
-            && !self.types.is_universal(w)
+            && !self.tables.types.is_universal(w)
             && self.fits(a, w)
             && self.fits(b, w)
         {
             return Some(w);
         }
         for &t in li.iter().chain(ri.iter()) {
-            if ok(self, t) && !self.types.is_universal(t) && self.fits(a, t) && self.fits(b, t) {
+            if ok(self, t)
+                && !self.tables.types.is_universal(t)
+                && self.fits(a, t)
+                && self.fits(b, t)
+            {
                 return Some(t);
             }
         }
         // Duration * Integer, Integer * Duration, Duration / Integer.
         if matches!(op, BinOp::Mul | BinOp::Div) {
-            let dl = li.iter().any(|t| self.types.base(*t) == DURATION);
-            let dr = ri.iter().any(|t| self.types.base(*t) == DURATION);
-            let il = li.iter().any(|t| self.types.is_integer(*t));
-            let ir = ri.iter().any(|t| self.types.is_integer(*t));
+            let dl = li.iter().any(|t| self.tables.types.base(*t) == DURATION);
+            let dr = ri.iter().any(|t| self.tables.types.base(*t) == DURATION);
+            let il = li.iter().any(|t| self.tables.types.is_integer(*t));
+            let ir = ri.iter().any(|t| self.tables.types.is_integer(*t));
             if (dl && ir) || (op == BinOp::Mul && il && dr) {
                 return Some(DURATION + 1000);
             }
@@ -371,7 +395,7 @@ impl Checker {
             let (x, y) = if self
                 .interps(a)
                 .iter()
-                .any(|t| self.types.base(*t) == DURATION)
+                .any(|t| self.tables.types.base(*t) == DURATION)
             {
                 let x = self.expr(a, Some(DURATION));
                 let x = self.coerce(x, DURATION);
@@ -394,20 +418,20 @@ impl Checker {
             };
             return self.mk(ExKind::FloatBin(fop, bx(x), bx(y)), DURATION, sp);
         }
-        let base = self.types.base(t);
+        let base = self.tables.types.base(t);
         if op == BinOp::Pow {
             let x = self.expr(a, Some(t));
             let x = self.coerce_base(x, base);
             let y = self.expr(b, Some(INTEGER));
             let y = self.coerce(
                 y,
-                if self.types.is_float(t) {
+                if self.tables.types.is_float(t) {
                     INTEGER
                 } else {
                     NATURAL
                 },
             );
-            let e = if self.types.is_float(t) {
+            let e = if self.tables.types.is_float(t) {
                 self.mk(ExKind::FloatBin(FloatOp::PowI, bx(x), bx(y)), base, sp)
             } else {
                 self.mk(ExKind::IntBin(IntOp::Pow, bx(x), bx(y)), base, sp)
@@ -422,8 +446,8 @@ impl Checker {
         // `coerce` checks where it is used.
         let static_operands = self.shallow_static(&x).is_some()
             && self.shallow_static(&y).is_some()
-            && self.types.compatible(x.ty, base)
-            && self.types.compatible(y.ty, base);
+            && self.tables.types.compatible(x.ty, base)
+            && self.tables.types.compatible(y.ty, base);
         let (x, y) = if static_operands {
             let (mut x, mut y) = (x, y);
             x.ty = base;
@@ -432,7 +456,7 @@ impl Checker {
         } else {
             (self.coerce_base(x, base), self.coerce_base(y, base))
         };
-        if self.types.is_float(t) {
+        if self.tables.types.is_float(t) {
             let fop = match op {
                 BinOp::Add => FloatOp::Add,
                 BinOp::Sub => FloatOp::Sub,
@@ -493,11 +517,11 @@ impl Checker {
         if !leaves {
             return e;
         }
-        let base = self.types.base(e.ty);
+        let base = self.tables.types.base(e.ty);
         match self.static_value(&e) {
             Some(Static::Int(v)) => {
-                let info = self.types.get(base);
-                let fits = if base == INTEGER || self.types.is_universal(base) {
+                let info = self.tables.types.get(base);
+                let fits = if base == INTEGER || self.tables.types.is_universal(base) {
                     i64::try_from(v).is_ok()
                 } else {
                     match (info.range.is_some(), info.static_range) {
@@ -521,10 +545,12 @@ impl Checker {
     /// wanted, or one an operand can have; None for Boolean operands.
     fn bool_array_operands(&mut self, ops: &[&ast::Expr], want: Option<TypeId>) -> Option<TypeId> {
         if let Some(w) = want {
-            return self.types.is_bool_array(w).then_some(w);
+            return self.tables.types.is_bool_array(w).then_some(w);
         }
         let cands: Vec<TypeId> = ops.iter().flat_map(|e| self.interps(e)).collect();
-        cands.into_iter().find(|t| self.types.is_bool_array(*t))
+        cands
+            .into_iter()
+            .find(|t| self.tables.types.is_bool_array(*t))
     }
 
     pub(super) fn unary(&mut self, op: UnOp, a: &ast::Expr, want: Option<TypeId>, sp: Span) -> Ex {
@@ -533,7 +559,7 @@ impl Checker {
         {
             let x = self.expr(a, Some(t));
             let x = self.coerce(x, t);
-            return self.mk(ExKind::ArrNot(bx(x)), self.types.base(t), sp);
+            return self.mk(ExKind::ArrNot(bx(x)), self.tables.types.base(t), sp);
         }
         if op == UnOp::Not {
             let x = self.expr(a, Some(BOOLEAN));
@@ -542,15 +568,20 @@ impl Checker {
         }
         // A user-defined `"-"`, `"+"` or `"abs"` on a non-numeric type (a
         // record, say).
-        if !self.interps(a).iter().any(|t| self.types.is_numeric(*t)) {
+        if !self
+            .interps(a)
+            .iter()
+            .any(|t| self.tables.types.is_numeric(*t))
+        {
             let user: Vec<FuncId> = self
                 .op_funcs(op.symbol(), 1)
                 .into_iter()
                 .filter(|f| {
-                    let fi = &self.funcs[*f as usize];
+                    let fi = &self.tables.funcs[*f as usize];
                     let (p, r) = (fi.params[0].ty, fi.ret);
                     self.fits(a, p)
-                        && want.is_none_or(|w| r.is_some_and(|r| self.types.compatible(r, w)))
+                        && want
+                            .is_none_or(|w| r.is_some_and(|r| self.tables.types.compatible(r, w)))
                 })
                 .collect();
             if !user.is_empty() {
@@ -561,7 +592,7 @@ impl Checker {
                 }];
                 return match self.call(&user, &args, want, false, sp, op.symbol()) {
                     Some((f, args)) => {
-                        let r = self.funcs[f as usize].ret.unwrap_or(ERROR);
+                        let r = self.tables.funcs[f as usize].ret.unwrap_or(ERROR);
                         self.mk(ExKind::Call(f, args.into()), r, sp)
                     }
                     None => self.err_ex(sp),
@@ -569,12 +600,14 @@ impl Checker {
             }
         }
         let t = match want {
-            Some(w) if self.types.is_numeric(w) && self.fits(a, w) => w,
+            Some(w) if self.tables.types.is_numeric(w) && self.fits(a, w) => w,
             _ => {
                 let is = self.interps(a);
                 is.iter()
                     .copied()
-                    .find(|t| self.types.is_numeric(*t) && !self.types.is_universal(*t))
+                    .find(|t| {
+                        self.tables.types.is_numeric(*t) && !self.tables.types.is_universal(*t)
+                    })
                     .or(is.first().copied())
                     .unwrap_or(ERROR)
             }
@@ -583,7 +616,7 @@ impl Checker {
         if x.ty == ERROR {
             return x;
         }
-        if !self.types.is_numeric(x.ty) {
+        if !self.tables.types.is_numeric(x.ty) {
             self.err(diagnostics::operator_needs_number(
                 sp,
                 op.symbol(),
@@ -591,19 +624,19 @@ impl Checker {
             ));
             return self.err_ex(sp);
         }
-        let ty = if self.types.is_universal(x.ty) {
+        let ty = if self.tables.types.is_universal(x.ty) {
             x.ty
         } else {
-            self.types.base(x.ty)
+            self.tables.types.base(x.ty)
         };
-        let x = if self.types.is_universal(x.ty) || self.shallow_static(&x).is_some() {
+        let x = if self.tables.types.is_universal(x.ty) || self.shallow_static(&x).is_some() {
             // A static operand may be an intermediate outside the type
             // (`-(2 ** 31)`): the folded result is what must fit.
             Ex { ty, ..x }
         } else {
             self.coerce(x, ty)
         };
-        let float = self.types.is_float(ty);
+        let float = self.tables.types.is_float(ty);
         let kind = match (op, float) {
             (UnOp::Plus, _) => return Ex { span: sp, ..x },
             (UnOp::Neg, false) => ExKind::IntNeg(bx(x)),

@@ -43,16 +43,16 @@ impl Checker {
             return;
         };
         // Bits 0 .. 15 of the register, as the handbook's `t_16_bit`.
-        let bits = self.types.array(ty).is_some_and(|(ix, elem, bounds)| {
+        let bits = self.tables.types.array(ty).is_some_and(|(ix, elem, bounds)| {
             let b = bounds.and_then(|b| b.first()).cloned();
-            ix.len() == 1 && self.types.base(elem) == BOOLEAN && b.is_some_and(|(lo, hi)| {
+            ix.len() == 1 && self.tables.types.base(elem) == BOOLEAN && b.is_some_and(|(lo, hi)| {
                 matches!(
                     (self.static_value(&lo), self.static_value(&hi)),
                     (Some(Static::Int(l)), Some(Static::Int(h))) if l == 0.into() && h == 15.into()
                 )
             })
         });
-        if !self.types.is_integer(ty) && !bits {
+        if !self.tables.types.is_integer(ty) && !bits {
             self.err(diagnostics::register_type(span, &name.name));
             return;
         }

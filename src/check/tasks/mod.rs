@@ -31,8 +31,8 @@ impl Checker {
         ret: Option<TypeId>,
         span: Span,
     ) -> FuncId {
-        let id = self.funcs.len() as FuncId;
-        self.funcs.push(Subprogram {
+        let id = self.tables.funcs.len() as FuncId;
+        self.tables.funcs.push(Subprogram {
             name,
             params,
             ret,
@@ -41,7 +41,7 @@ impl Checker {
             body: None,
             span,
         });
-        self.imports.push(None);
+        self.tables.imports.push(None);
         id
     }
 
@@ -59,9 +59,9 @@ impl Checker {
     }
 
     pub(super) fn task_spec(&mut self, t: &ast::TaskSpec, span: Span, out: &mut Vec<Stmt>) {
-        let k = self.tasks.len() as u32;
+        let k = self.tables.tasks.len() as u32;
         let name = t.name.name.clone();
-        let ty = self.types.add(&name, TypeKind::Task(k));
+        let ty = self.tables.types.add(&name, TypeKind::Task(k));
         let mut entries = Vec::new();
         for e in &t.entries {
             if entries
@@ -86,7 +86,10 @@ impl Checker {
                 self.err(diagnostics::not_an_entry_of_task(id.span, &id.name, &name));
                 continue;
             };
-            if !self.funcs[entries[i].profile as usize].params.is_empty() {
+            if !self.tables.funcs[entries[i].profile as usize]
+                .params
+                .is_empty()
+            {
                 self.err(diagnostics::interrupt_entry_with_parameters(
                     id.span, &id.name,
                 ));
@@ -111,7 +114,7 @@ impl Checker {
             let e = self.expr(p, Some(INTEGER));
             self.coerce(e, INTEGER)
         });
-        self.tasks.push(TaskDef {
+        self.tables.tasks.push(TaskDef {
             name: name.to_string(),
             entries,
             body: None,
@@ -132,7 +135,7 @@ impl Checker {
                 Entity::Type(t) | Entity::Var { ty: t, .. } => *t,
                 _ => return None,
             };
-            match self.types.kind(t) {
+            match self.tables.types.kind(t) {
                 k @ (TypeKind::Task(_) | TypeKind::Protected(_)) => Some(k.clone()),
                 _ => None,
             }
@@ -147,12 +150,12 @@ impl Checker {
             ));
             return;
         };
-        if self.tasks[k as usize].body.is_some() {
+        if self.tables.tasks[k as usize].body.is_some() {
             self.err(diagnostics::task_body_twice(b.name.span, &b.name.name));
             return;
         }
         let f = self.new_func(b.name.name.to_string(), Vec::new(), None, span);
-        self.tasks[k as usize].body = Some(f);
+        self.tables.tasks[k as usize].body = Some(f);
         self.tasking.task_ctx.push(k);
         self.check_body(
             f,
@@ -167,7 +170,7 @@ impl Checker {
     }
 
     pub(super) fn protected_spec(&mut self, p: &ast::ProtectedSpec, out: &mut Vec<Stmt>) {
-        let k = self.prots.len() as u32;
+        let k = self.tables.prots.len() as u32;
         let name = p.name.name.clone();
         // The components: a record with the object's number first.
         let mut fields = vec![types::Field {
@@ -204,12 +207,14 @@ impl Checker {
             }
         }
         let rec = self
+            .tables
             .types
             .add(&format!("{name} components"), TypeKind::Record(fields));
         let access = self
+            .tables
             .types
             .add(&format!("{name} object"), TypeKind::Access(rec));
-        let ty = self.types.add(&name, TypeKind::Protected(k));
+        let ty = self.tables.types.add(&name, TypeKind::Protected(k));
         let self_param = |ty| Param {
             name: SELF.into(),
             mode: ast::Mode::In,
@@ -230,7 +235,7 @@ impl Checker {
                     real_params.push(self_param(access));
                     let real =
                         self.new_func(format!("{name}.{display}"), real_params, ret, spec.span);
-                    self.prot_real.insert(profile, (real, k));
+                    self.tables.prot_real.insert(profile, (real, k));
                     members.push((spec.name.key(), profile, real, ret.is_some()));
                 }
                 ast::ProtOp::Entry(e) => {
@@ -246,9 +251,9 @@ impl Checker {
                 }
             }
         }
-        self.prot_members.resize(k as usize + 1, Vec::new());
-        self.prot_members[k as usize] = members;
-        self.prots.push(ProtDef {
+        self.tables.prot_members.resize(k as usize + 1, Vec::new());
+        self.tables.prot_members[k as usize] = members;
+        self.tables.prots.push(ProtDef {
             name: name.to_string(),
             rec,
             access,
@@ -264,7 +269,7 @@ impl Checker {
 
     /// The access type of a protected type's object parameter.
     fn prot_access(&self, k: u32) -> TypeId {
-        self.prots[k as usize].access
+        self.tables.prots[k as usize].access
     }
 
     pub(super) fn protected_body(&mut self, b: &ast::ProtectedBody) {
@@ -275,11 +280,11 @@ impl Checker {
             ));
             return;
         };
-        self.prot_bodied.push(k);
+        self.tables.prot_bodied.push(k);
         self.tasking.prot_ctx.push((k, None));
         self.scopes.push();
         // The operations are visible inside the body by their names.
-        let members = self.prot_members[k as usize].clone();
+        let members = self.tables.prot_members[k as usize].clone();
         for (key, profile, _, _) in &members {
             self.declare(key, Entity::Func(*profile));
         }
@@ -294,7 +299,7 @@ impl Checker {
         self.scopes.pop();
         self.tasking.prot_ctx.pop();
         for (key, profile, real, _) in &members {
-            if self.funcs[*real as usize].body.is_none() {
+            if self.tables.funcs[*real as usize].body.is_none() {
                 let what = self.spelled(key);
                 self.err(diagnostics::protected_body_lacks(
                     b.span,
@@ -304,7 +309,7 @@ impl Checker {
                 let _ = profile;
             }
         }
-        for e in self.prots[k as usize].entries.clone() {
+        for e in self.tables.prots[k as usize].entries.clone() {
             if e.body.is_none() {
                 self.err(diagnostics::protected_body_lacks_entry(
                     b.span,
@@ -319,21 +324,21 @@ impl Checker {
         let key = b.spec.name.key();
         let params = self.params(&b.spec.params);
         let ret = b.spec.ret.as_ref().map(|r| self.type_mark(r));
-        let found = self.prot_members[k as usize]
+        let found = self.tables.prot_members[k as usize]
             .iter()
             .find(|(n, p, _, _)| {
-                *n == key && self.same_profile(&self.funcs[*p as usize], &params, ret)
+                *n == key && self.same_profile(&self.tables.funcs[*p as usize], &params, ret)
             })
             .map(|(_, _, r, _)| *r);
         let Some(real) = found else {
             self.err(diagnostics::not_in_protected_with_profile(
                 b.spec.span,
                 &b.spec.name.display(),
-                &self.prots[k as usize].name,
+                &self.tables.prots[k as usize].name,
             ));
             return;
         };
-        if self.funcs[real as usize].body.is_some() {
+        if self.tables.funcs[real as usize].body.is_some() {
             self.err(diagnostics::body_twice(b.spec.span, &b.spec.name.display()));
             return;
         }
@@ -366,7 +371,7 @@ impl Checker {
     }
 
     fn entry_body_of(&mut self, k: u32, b: &ast::EntryBody) {
-        let Some(i) = self.prots[k as usize]
+        let Some(i) = self.tables.prots[k as usize]
             .entries
             .iter()
             .position(|e| e.name.eq_ignore_ascii_case(&b.name.name))
@@ -374,17 +379,17 @@ impl Checker {
             self.err(diagnostics::not_an_entry_of_protected(
                 b.name.span,
                 &b.name.name,
-                &self.prots[k as usize].name,
+                &self.tables.prots[k as usize].name,
             ));
             return;
         };
-        let entry = self.prots[k as usize].entries[i].clone();
+        let entry = self.tables.prots[k as usize].entries[i].clone();
         if entry.body.is_some() {
             self.err(diagnostics::entry_body_twice(b.name.span, &b.name.name));
             return;
         }
         let params = self.params(&b.params);
-        let profile = self.funcs[entry.profile as usize].clone();
+        let profile = self.tables.funcs[entry.profile as usize].clone();
         if !self.same_profile(&profile, &params, None) {
             self.err(diagnostics::entry_body_params_differ(
                 b.name.span,
@@ -392,7 +397,7 @@ impl Checker {
             ));
         }
         let access = self.prot_access(k);
-        let pname = self.prots[k as usize].name.clone();
+        let pname = self.tables.prots[k as usize].name.clone();
         // The barrier: a function of the object alone.
         let barrier = self.new_func(
             format!("{pname}.{} barrier", b.name.name),
@@ -447,7 +452,7 @@ impl Checker {
             &b.body,
             BodyKind::Protected(k),
         );
-        let e = &mut self.prots[k as usize].entries[i];
+        let e = &mut self.tables.prots[k as usize].entries[i];
         e.barrier = Some(barrier);
         e.body = Some(body);
     }
@@ -456,10 +461,11 @@ impl Checker {
     /// of the object parameter.
     pub(super) fn declare_components(&mut self, k: u32, obj: Option<Var>) {
         let Some(obj) = obj else { return };
-        let rec = self.prots[k as usize].rec;
+        let rec = self.tables.prots[k as usize].rec;
         let access = self.prot_access(k);
-        let sp = self.prots[k as usize].span;
+        let sp = self.tables.prots[k as usize].span;
         let fields = self
+            .tables
             .types
             .fields(rec)
             .map(|f| f.to_vec())

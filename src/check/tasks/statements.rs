@@ -12,7 +12,7 @@ impl Checker {
         mut args: Vec<Arg>,
         span: Span,
     ) -> (FuncId, Vec<Arg>) {
-        let Some(&(real, k)) = self.prot_real.get(&f) else {
+        let Some(&(real, k)) = self.tables.prot_real.get(&f) else {
             return (f, args);
         };
         let ctx = self
@@ -27,9 +27,9 @@ impl Checker {
                 // A protected function only reads its object (RM 9.5.1):
                 // it may not call a procedure of it.
                 if Some(obj) == self.tasking.prot_function_obj
-                    && self.funcs[real as usize].ret.is_none()
+                    && self.tables.funcs[real as usize].ret.is_none()
                 {
-                    let name = self.funcs[real as usize].name.clone();
+                    let name = self.tables.funcs[real as usize].name.clone();
                     self.err(diagnostics::protected_function_calls_procedure(span, &name));
                 }
                 let access = self.prot_access(k);
@@ -58,15 +58,15 @@ impl Checker {
             },
             ast::ExprKind::Apply(p, _) => match &p.kind {
                 ast::ExprKind::Name(id) => match self.lookup(&id.key).first() {
-                    Some(Entity::Var { ty, .. }) => self.types.array(*ty).map(|a| a.1)?,
+                    Some(Entity::Var { ty, .. }) => self.tables.types.array(*ty).map(|a| a.1)?,
                     _ => return None,
                 },
                 _ => return None,
             },
             _ => return None,
         };
-        let t = self.types.designated(t).unwrap_or(t);
-        match self.types.kind(t) {
+        let t = self.tables.types.designated(t).unwrap_or(t);
+        match self.tables.types.kind(t) {
             TypeKind::Protected(k) => Some(*k),
             _ => None,
         }
@@ -75,10 +75,10 @@ impl Checker {
     /// A task or protected object named through an access value: the
     /// object itself (`P.E` for `P.all.E`).
     fn through_access(&self, x: Ex) -> Ex {
-        match self.types.designated(x.ty) {
+        match self.tables.types.designated(x.ty) {
             Some(d)
                 if matches!(
-                    self.types.kind(d),
+                    self.tables.types.kind(d),
                     TypeKind::Task(_) | TypeKind::Protected(_)
                 ) =>
             {
@@ -114,7 +114,7 @@ impl Checker {
         let obj = self.through_access(obj);
         match self.prot_subprogram(k, obj, id, args, false, sp) {
             Some((real, a)) => {
-                let r = self.funcs[real as usize].ret.unwrap_or(ERROR);
+                let r = self.tables.funcs[real as usize].ret.unwrap_or(ERROR);
                 self.mk(ExKind::Call(real, a.into()), r, sp)
             }
             None => self.err_ex(sp),
@@ -133,7 +133,7 @@ impl Checker {
         procedure: bool,
         sp: Span,
     ) -> Option<(FuncId, Vec<Arg>)> {
-        let fs: Vec<FuncId> = self.prot_members[k as usize]
+        let fs: Vec<FuncId> = self.tables.prot_members[k as usize]
             .iter()
             .filter(|(n, ..)| **n == *id.key)
             .map(|(_, p, _, _)| *p)
@@ -143,7 +143,7 @@ impl Checker {
                 id.span,
                 &id.name,
                 procedure,
-                &self.prots[k as usize].name,
+                &self.tables.prots[k as usize].name,
             ));
             return None;
         }
@@ -152,7 +152,7 @@ impl Checker {
         let r = self.call(&fs, args, None, procedure, sp, &id.name);
         self.tasking.prot_ctx = outer;
         let (f, mut a) = r?;
-        let real = self.prot_real.get(&f)?.0;
+        let real = self.tables.prot_real.get(&f)?.0;
         self.index_ref(id.span, &id.key, &Entity::Func(f));
         a.push(self.obj_arg(k, obj));
         Some((real, a))
@@ -162,11 +162,14 @@ impl Checker {
     pub(in crate::check) fn task_value(&mut self, e: &ast::Expr) -> Option<Ex> {
         let x = self.expr(e, None);
         let x = self.through_access(x);
-        match self.types.kind(x.ty) {
+        match self.tables.types.kind(x.ty) {
             TypeKind::Task(_) => Some(x),
             TypeKind::Error => None,
             _ => {
-                self.err(diagnostics::task_expected(e.span, self.types.name(x.ty)));
+                self.err(diagnostics::task_expected(
+                    e.span,
+                    self.tables.types.name(x.ty),
+                ));
                 None
             }
         }
@@ -188,9 +191,9 @@ impl Checker {
             return None;
         }
         let is_conc = |this: &mut Self, t: TypeId| {
-            let t = this.types.designated(t).unwrap_or(t);
+            let t = this.tables.types.designated(t).unwrap_or(t);
             matches!(
-                this.types.kind(t),
+                this.tables.types.kind(t),
                 TypeKind::Task(_) | TypeKind::Protected(_)
             )
         };
@@ -221,9 +224,9 @@ impl Checker {
         span: Span,
     ) -> Option<StmtKind> {
         let obj = self.through_access(obj);
-        match self.types.kind(obj.ty).clone() {
+        match self.tables.types.kind(obj.ty).clone() {
             TypeKind::Task(k) => {
-                let def = &self.tasks[k as usize];
+                let def = &self.tables.tasks[k as usize];
                 let Some(i) = def
                     .entries
                     .iter()
@@ -250,13 +253,13 @@ impl Checker {
                 })))
             }
             TypeKind::Protected(k) => {
-                if let Some(i) = self.prots[k as usize]
+                if let Some(i) = self.tables.prots[k as usize]
                     .entries
                     .iter()
                     .position(|e| e.name.eq_ignore_ascii_case(&id.name))
                 {
-                    let profile = self.prots[k as usize].entries[i].profile;
-                    let name = format!("{}.{}", self.prots[k as usize].name, id.name);
+                    let profile = self.tables.prots[k as usize].entries[i].profile;
+                    let name = format!("{}.{}", self.tables.prots[k as usize].name, id.name);
                     let (_, mut a) = self.call(&[profile], args, None, true, span, &name)?;
                     a.push(self.obj_arg(k, obj));
                     return Some(StmtKind::EntryCall(Box::new(EntryCall {
@@ -286,17 +289,17 @@ impl Checker {
             .ctx
             .last()
             .and_then(|c| c.func)
-            .map(|f| format!("procedure {}", self.funcs[f as usize].name))
+            .map(|f| format!("procedure {}", self.tables.funcs[f as usize].name))
             .unwrap_or_else(|| "the main program".into());
         let Some(&k) = self.tasking.task_ctx.last() else {
             self.err(diagnostics::misplaced_accept(sp, &here));
             return None;
         };
-        if self.ctx.last().and_then(|c| c.func) != self.tasks[k as usize].body {
+        if self.ctx.last().and_then(|c| c.func) != self.tables.tasks[k as usize].body {
             self.err(diagnostics::misplaced_accept(sp, &here));
             return None;
         }
-        let def = self.tasks[k as usize].clone();
+        let def = self.tables.tasks[k as usize].clone();
         let Some(i) = def
             .entries
             .iter()
@@ -320,7 +323,7 @@ impl Checker {
             self.err(diagnostics::nested_accept(sp, &entry.name, outer));
             return None;
         }
-        let profile = self.funcs[def.entries[i].profile as usize].clone();
+        let profile = self.tables.funcs[def.entries[i].profile as usize].clone();
         let ps = self.params(params);
         if !self.same_profile(&profile, &ps, None) {
             let want: Vec<String> = profile
@@ -331,7 +334,7 @@ impl Checker {
                         "{} : {}{}",
                         p.name,
                         mode_text(p.mode),
-                        self.types.name(p.ty)
+                        self.tables.types.name(p.ty)
                     )
                 })
                 .collect();
@@ -374,10 +377,10 @@ impl Checker {
     pub(in crate::check) fn delay_amount(&mut self, until: bool, d: &ast::Expr) -> Ex {
         if until {
             let e = self.expr(d, None);
-            if e.ty != ERROR && !matches!(self.types.kind(e.ty), TypeKind::Time) {
+            if e.ty != ERROR && !matches!(self.tables.types.kind(e.ty), TypeKind::Time) {
                 self.err(diagnostics::delay_until_needs_time(
                     d.span,
-                    self.types.name(e.ty),
+                    self.tables.types.name(e.ty),
                 ));
             }
             e
@@ -504,7 +507,7 @@ impl Checker {
                 return None;
             };
             if let Some(&(k, obj)) = self.tasking.prot_ctx.last()
-                && let Some(i) = self.prots[k as usize]
+                && let Some(i) = self.tables.prots[k as usize]
                     .entries
                     .iter()
                     .position(|e| e.name.eq_ignore_ascii_case(&id.name))
@@ -523,7 +526,7 @@ impl Checker {
                 ));
             }
             if let Some(&k) = self.tasking.task_ctx.last()
-                && let Some(i) = self.tasks[k as usize]
+                && let Some(i) = self.tables.tasks[k as usize]
                     .entries
                     .iter()
                     .position(|e| e.name.eq_ignore_ascii_case(&id.name))
@@ -548,7 +551,7 @@ impl Checker {
 
     /// ` (declared at L:C)` for a subprogram or entry profile.
     fn declared_at(&self, f: FuncId) -> String {
-        let sp = self.funcs[f as usize].span;
+        let sp = self.tables.funcs[f as usize].span;
         match self.texts.get(&sp.context) {
             Some(t) => {
                 let before = &t[..sp.lo().min(t.len())];

@@ -1,0 +1,69 @@
+//! The symbol tables of the checked program (types, subprograms, imports,
+//! exceptions, packages, task and protected types) and the engine's
+//! read-only view of them, [`ir::ProgramRef`].
+
+use super::*;
+
+#[derive(Debug, Clone)]
+pub struct Package {
+    pub name: String,
+    pub(super) names: PMap<String, Vec<Entity>>,
+    /// Names of the package body (and private part), visible inside it only.
+    pub(super) private: PMap<String, Vec<Entity>>,
+}
+
+/// What the program declares, by id: the tables a `TypeId`, `FuncId`,
+/// `ExcId` or package index points into.
+#[derive(Clone)]
+pub struct Tables {
+    pub types: Types,
+    pub funcs: PVec<Subprogram>,
+    /// Import name of each subprogram bound to a builtin.
+    pub imports: PVec<Option<String>>,
+    pub excs: PVec<Exception>,
+    pub packages: PVec<Package>,
+    /// Task types and protected types.
+    pub tasks: PVec<TaskDef>,
+    pub prots: PVec<ProtDef>,
+    /// Each protected type's subprograms: name, profile, real subprogram,
+    /// whether it is a function.
+    pub(super) prot_members: Vec<Vec<(String, FuncId, FuncId, bool)>>,
+    /// Profile -> real subprogram of protected operations.
+    pub(super) prot_real: HashMap<FuncId, (FuncId, u32)>,
+    /// Protected types whose body was seen (missing operations in it are
+    /// reported there).
+    pub(super) prot_bodied: Vec<u32>,
+}
+
+impl Tables {
+    /// The predefined types alone.
+    pub(super) fn new() -> Tables {
+        Tables {
+            types: Types::standard(),
+            funcs: PVec::new(),
+            imports: PVec::new(),
+            excs: PVec::new(),
+            packages: PVec::new(),
+            tasks: PVec::new(),
+            prots: PVec::new(),
+            prot_members: Vec::new(),
+            prot_real: HashMap::new(),
+            prot_bodied: Vec::new(),
+        }
+    }
+}
+
+impl Checker {
+    /// The program checked so far, as the interpreter reads it.
+    pub fn program(&self) -> ir::ProgramRef<'_> {
+        ir::ProgramRef {
+            funcs: &self.tables.funcs,
+            imports: &self.tables.imports,
+            types: &self.tables.types,
+            excs: &self.tables.excs,
+            globals: self.globals,
+            tasks: &self.tables.tasks,
+            prots: &self.tables.prots,
+        }
+    }
+}
