@@ -76,6 +76,28 @@ pub enum FloatOp {
     /// Duration / Integer (the integer as a real): GNAT's fixed point
     /// quotient, truncated toward zero to whole nanoseconds.
     DurDiv,
+    /// `+`, `-`, `*` and `/` of Duration (and `Time_Span`) values: the
+    /// result is a whole number of nanoseconds, as GNAT's fixed point
+    /// Duration (`Duration'Small` = 1 ns) holds it, so `0.03 - 0.02 = 0.01`
+    /// is True. A conversion to Duration from another real type is a
+    /// `DurMul` by 1.0.
+    DurAdd,
+    DurSub,
+    DurMul,
+    DurQuo,
+}
+
+impl FloatOp {
+    /// The Duration form of a real operation.
+    pub fn on_duration(self) -> FloatOp {
+        match self {
+            FloatOp::Add => FloatOp::DurAdd,
+            FloatOp::Sub => FloatOp::DurSub,
+            FloatOp::Mul => FloatOp::DurMul,
+            FloatOp::Div => FloatOp::DurQuo,
+            other => other,
+        }
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

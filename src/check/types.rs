@@ -108,6 +108,15 @@ impl Types {
     pub fn base(&self, t: TypeId) -> TypeId {
         self.list[t as usize].base
     }
+    /// Duration and the types derived from it (`Time_Span`): GNAT's fixed
+    /// point of whole nanoseconds, held as reals that the engines keep
+    /// whole (`FloatOp::on_duration`). They are the floating kind's only
+    /// types without `digits`.
+    pub fn whole_ns(&self, t: TypeId) -> bool {
+        let b = self.base(t);
+        matches!(self.list[b as usize].kind, TypeKind::Float)
+            && self.list[b as usize].digits.is_none()
+    }
     pub fn kind(&self, t: TypeId) -> &TypeKind {
         &self.list[self.base(t) as usize].kind
     }

@@ -58,9 +58,14 @@ const TABLE: &[(&str, Native)] = &[
     ("exception_name", exception_name),
     ("exception_message", exception_message),
     ("exception_information", exception_information),
-    ("clock", |r, _, _| Ok(Some(Value::Real(r.m.clock.now())))),
+    ("clock", |r, _, _| {
+        Ok(Some(Value::Real(value::whole_ns(r.m.clock.now()))))
+    }),
+    // Times, spans and durations are whole nanoseconds (value::whole_ns).
     ("time_diff", |_, a, _| {
-        Ok(Some(Value::Real(a[0].real() - a[1].real())))
+        Ok(Some(Value::Real(value::whole_ns(
+            a[0].real() - a[1].real(),
+        ))))
     }),
     // Ada.Real_Time's `Span / Span`: whole nanoseconds divided, truncated
     // toward zero (GNAT's fixed point: 300 ms / 100 ms = 3, not 2.999...).
@@ -76,10 +81,14 @@ const TABLE: &[(&str, Native)] = &[
         }
     }),
     ("time_add", |_, a, _| {
-        Ok(Some(Value::Real(a[0].real() + a[1].real())))
+        Ok(Some(Value::Real(value::whole_ns(
+            a[0].real() + a[1].real(),
+        ))))
     }),
     ("time_sub", |_, a, _| {
-        Ok(Some(Value::Real(a[0].real() - a[1].real())))
+        Ok(Some(Value::Real(value::whole_ns(
+            a[0].real() - a[1].real(),
+        ))))
     }),
     ("time_lt", |_, a, _| {
         Ok(Some(Value::Int((a[0].real() < a[1].real()) as i64)))
@@ -94,7 +103,9 @@ const TABLE: &[(&str, Native)] = &[
         Ok(Some(Value::Int((a[0].real() >= a[1].real()) as i64)))
     }),
     ("seconds", |_, a, _| {
-        Ok(Some(Value::Real(a[0].real().rem_euclid(86_400.0))))
+        Ok(Some(Value::Real(value::whole_ns(
+            a[0].real().rem_euclid(86_400.0),
+        ))))
     }),
 ];
 

@@ -58,8 +58,9 @@ impl Clock for VirtualClock {
         self.t
     }
     fn sleep(&mut self, seconds: f64) {
+        // Whole nanoseconds, as `Time` values are (value::whole_ns).
         if seconds > 0.0 {
-            self.t += seconds;
+            self.t = value::whole_ns(self.t + seconds);
         }
     }
 }
@@ -1162,13 +1163,7 @@ impl Run<'_> {
             ExKind::FloatBin(op, a, b) if *op != FloatOp::PowI => {
                 let x = self.eval_real(a)?;
                 let y = self.eval_real(b)?;
-                Ok(match op {
-                    FloatOp::Add => x + y,
-                    FloatOp::Sub => x - y,
-                    FloatOp::Div => x / y,
-                    FloatOp::DurDiv => value::duration_div(x, y),
-                    _ => x * y,
-                })
+                Ok(value::float_op(*op, x, &Value::Real(y)))
             }
             _ => Ok(self.eval(e)?.real()),
         }
@@ -1249,26 +1244,12 @@ impl Run<'_> {
             }
             ExKind::FloatBin(op, a, b) => {
                 let x = self.eval_real(a)?;
-                if matches!(op, FloatOp::Add | FloatOp::Sub | FloatOp::Mul) {
+                if *op != FloatOp::PowI {
                     let y = self.eval_real(b)?;
-                    return Ok(Value::Real(match op {
-                        FloatOp::Add => x + y,
-                        FloatOp::Sub => x - y,
-                        _ => x * y,
-                    }));
+                    return Ok(Value::Real(value::float_op(*op, x, &Value::Real(y))));
                 }
                 let yv = self.eval(b)?;
-                Value::Real(match op {
-                    FloatOp::Add => x + yv.real(),
-                    FloatOp::Sub => x - yv.real(),
-                    FloatOp::Mul => x * yv.real(),
-                    FloatOp::Div => {
-                        // IEEE as in GNAT (Float'Machine_Overflows is False).
-                        x / yv.real()
-                    }
-                    FloatOp::PowI => x.powi(yv.int() as i32),
-                    FloatOp::DurDiv => value::duration_div(x, yv.real()),
-                })
+                Value::Real(value::float_op(*op, x, &yv))
             }
             ExKind::Cmp(op, a, b) => {
                 let x = self.eval(a)?;

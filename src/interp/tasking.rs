@@ -177,7 +177,7 @@ impl Clock for DeferClock {
     }
     fn sleep(&mut self, seconds: f64) {
         if seconds > 0.0 {
-            self.spent += seconds;
+            self.spent = super::value::whole_ns(self.spent + seconds);
         }
     }
     fn pace(&mut self, _seconds: f64) {}
@@ -783,6 +783,10 @@ impl Run<'_> {
                 None => return false,
             },
         };
+        // A wake-up may be any real (a belt's arrival, the end of another
+        // task's motion): the clock, which keeps whole nanoseconds, goes to
+        // the first one not before it, so what waits for it is due there.
+        let t = super::value::ceil_ns(t);
         if t > now {
             self.advance_clock(t - now);
         }

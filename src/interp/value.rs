@@ -1,6 +1,6 @@
 //! Run-time values and GNAT-exact text forms of scalars.
 
-use crate::check::ir::ExcId;
+use crate::check::ir::{ExcId, FloatOp};
 use crate::diag::Span;
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -472,6 +472,48 @@ pub fn value_float(s: &str) -> Option<f64> {
     }
 }
 
+/// A real operation of the engines (both call this one).
+#[inline]
+pub fn float_op(op: FloatOp, x: f64, y: &Value) -> f64 {
+    match op {
+        FloatOp::Add => x + y.real(),
+        FloatOp::Sub => x - y.real(),
+        FloatOp::Mul => x * y.real(),
+        // IEEE as in GNAT (Float'Machine_Overflows is False).
+        FloatOp::Div => x / y.real(),
+        FloatOp::PowI => x.powi(y.int() as i32),
+        FloatOp::DurDiv => duration_div(x, y.real()),
+        FloatOp::DurAdd => whole_ns(x + y.real()),
+        FloatOp::DurSub => whole_ns(x - y.real()),
+        FloatOp::DurMul => whole_ns(x * y.real()),
+        FloatOp::DurQuo => whole_ns(x / y.real()),
+    }
+}
+
+/// `x` seconds as GNAT's Duration holds them: a whole number of
+/// nanoseconds (the nearest). Every Duration, `Time_Span` and `Time` value
+/// the engines make goes through here, so equal nanosecond counts are
+/// equal reals and compare as GNAT's do (`0.03 - 0.02 = 0.01`). Below
+/// 2**50 ns (13 days) each count has its own real and rounding finds it
+/// again, so sums, differences and comparisons are exact; beyond, a value
+/// is exact to the real's precision only. Non-finite values stay as they
+/// are, for the Duration check to refuse.
+#[inline]
+pub fn whole_ns(x: f64) -> f64 {
+    if x.is_finite() {
+        (x * 1e9).round() / 1e9
+    } else {
+        x
+    }
+}
+
+/// The first whole number of nanoseconds (as [`whole_ns`] holds it) not
+/// before `x`.
+pub fn ceil_ns(x: f64) -> f64 {
+    let c = whole_ns(x);
+    if c < x { whole_ns(c + 1e-9) } else { c }
+}
+
 /// `Duration / Integer` as GNAT computes it: Duration is fixed point with a
 /// small of one nanosecond, and the quotient is truncated toward zero to
 /// whole nanoseconds (10 ns / 4 = 2 ns). A zero divisor gives the infinity
@@ -487,6 +529,25 @@ pub fn duration_div(x: f64, y: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Duration values are whole nanoseconds: differences of canonical
+    /// values compare as GNAT's counts do, and a moment between two
+    /// nanoseconds goes to the next one (a wake-up at the previous one
+    /// would come back for ever).
+    #[test]
+    fn durations_are_whole_nanoseconds() {
+        let d = |op, x: f64, y: f64| float_op(op, x, &Value::Real(y));
+        // (The plain difference of the doubles is 0.009999999999999998.)
+        assert_eq!(d(FloatOp::DurSub, 0.03, 0.02), 0.01);
+        assert!(d(FloatOp::Sub, 0.03, 0.02) < 0.01);
+        assert_eq!(d(FloatOp::DurMul, 0.1, 3.0), 0.3);
+        assert_eq!(whole_ns(1.0000000004), 1.0);
+        let x = 7.1934471234567;
+        let c = ceil_ns(x);
+        assert!(c >= x && whole_ns(c) == c && c - x < 1e-9, "{c}");
+        assert_eq!(ceil_ns(0.5), 0.5);
+        assert!(whole_ns(f64::INFINITY).is_infinite());
+    }
 
     #[test]
     fn gnat_float_formats() {

@@ -1770,7 +1770,7 @@ impl<'a> Run<'a> {
             return Err(self.check_failed("delay of a non-finite duration", span));
         }
         let now = self.m.clock.now();
-        let t = if until { v } else { now + v };
+        let t = value::whole_ns(if until { v } else { now + v });
         if !self.m.sched.active() {
             // The devices live on while the program waits (their events
             // and interrupts at their own times, in --trace too).
@@ -1896,7 +1896,7 @@ impl<'a> Run<'a> {
     fn deadline(&mut self, timed: Option<(Var, bool)>) -> Option<f64> {
         timed.map(|(v, until)| {
             let x = self.m.stack[self.sl(v)].real();
-            if until { x } else { self.m.clock.now() + x }
+            value::whole_ns(if until { x } else { self.m.clock.now() + x })
         })
     }
 
@@ -2035,6 +2035,14 @@ impl<'a> Run<'a> {
         self.tasking_on();
         let me = self.m.sched.cur;
         self.m.sched.prots[pid].queues[ec.entry as usize].push_back(me);
+        // Queuing the call ends a protected action, so the queues are
+        // served (RM 9.5.3(7-8)): a barrier that reads an entry's 'Count
+        // may have opened now that the queue is longer (the cyclic
+        // barrier `when Wait'Count = N or Releasing`).
+        let granted = self.first_open_call(pid, &ec.barrier_args, ec.span)?;
+        if granted == Some(me) {
+            return Ok(ProtStep::Body);
+        }
         self.m.sched.block(
             tasking::Wait::Prot {
                 obj: pid,
@@ -2044,7 +2052,28 @@ impl<'a> Run<'a> {
             true,
             ec.span,
         );
+        if let Some(w) = granted {
+            self.m.sched.threads[w].granted = true;
+            self.m.sched.make_first(w);
+        }
         Ok(ProtStep::Wait)
+    }
+
+    /// Takes the first queued call of protected object `pid` whose
+    /// barrier is open (entries in declaration order, each queue first
+    /// in, first out) off its queue.
+    fn first_open_call(&mut self, pid: usize, bargs: &[Arg], span: Span) -> R<Option<usize>> {
+        let k = self.m.sched.prots[pid].ptype;
+        let n = self.m.sched.prots[pid].queues.len();
+        for e in 0..n {
+            if self.m.sched.prots[pid].queues[e].is_empty() {
+                continue;
+            }
+            if self.barrier_open(k, e as u32, bargs, span)? {
+                return Ok(self.m.sched.prots[pid].queues[e].pop_front());
+            }
+        }
+        Ok(None)
     }
 
     /// The end of a protected action on `obj`: the first queued call whose
@@ -2058,19 +2087,7 @@ impl<'a> Run<'a> {
         let proxied = std::mem::take(&mut self.m.sched.threads[me].proxied);
         let v = self.m.stack[self.sl(obj)].clone();
         let pid = Self::prot_id(&v);
-        let k = self.m.sched.prots[pid].ptype;
-        let n = self.m.sched.prots[pid].queues.len();
-        let mut grant = None;
-        for e in 0..n {
-            if self.m.sched.prots[pid].queues[e].is_empty() {
-                continue;
-            }
-            if self.barrier_open(k, e as u32, bargs, span)? {
-                grant = self.m.sched.prots[pid].queues[e].pop_front();
-                break;
-            }
-        }
-        match grant {
+        match self.first_open_call(pid, bargs, span)? {
             Some(w) => {
                 self.m.sched.threads[w].granted = true;
                 if proxied {
@@ -2568,22 +2585,9 @@ impl<'a> Run<'a> {
                 Op::FloatBin(o, d, a, b) => {
                     let x = self.m.stack[ix!(*a)].real();
                     let yv = &self.m.stack[ix!(*b)];
-                    let r = match o {
-                        FloatOp::Add => Ok(x + yv.real()),
-                        FloatOp::Sub => Ok(x - yv.real()),
-                        FloatOp::Mul => Ok(x * yv.real()),
-                        // IEEE as in GNAT (Float'Machine_Overflows is False).
-                        FloatOp::Div => Ok(x / yv.real()),
-                        FloatOp::PowI => Ok(x.powi(yv.int() as i32)),
-                        FloatOp::DurDiv => Ok(value::duration_div(x, yv.real())),
-                    };
-                    match r {
-                        Ok(v) => {
-                            self.put_real_ix(ix!(*d), v);
-                            continue;
-                        }
-                        Err(e) => Err(e),
-                    }
+                    let v = value::float_op(*o, x, yv);
+                    self.put_real_ix(ix!(*d), v);
+                    continue;
                 }
                 Op::ToReal(d, a) => {
                     let x = self.m.stack[ix!(*a)].real();

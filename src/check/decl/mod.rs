@@ -382,11 +382,11 @@ impl Checker {
                 }
                 let y = real(self.static_value(b)?);
                 Real(match op {
-                    FloatOp::Add => x + y,
-                    FloatOp::Sub => x - y,
-                    FloatOp::Mul => x * y,
-                    FloatOp::Div if num_traits::Zero::is_zero(&y) => return None,
-                    FloatOp::Div => x / y,
+                    FloatOp::Add | FloatOp::DurAdd => x + y,
+                    FloatOp::Sub | FloatOp::DurSub => x - y,
+                    FloatOp::Mul | FloatOp::DurMul => x * y,
+                    FloatOp::Div | FloatOp::DurQuo if num_traits::Zero::is_zero(&y) => return None,
+                    FloatOp::Div | FloatOp::DurQuo => x / y,
                     FloatOp::PowI | FloatOp::DurDiv => return None,
                 })
             }

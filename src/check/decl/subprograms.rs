@@ -307,20 +307,25 @@ impl Checker {
     /// The statements of a declarative region: its elaboration `elab`,
     /// then `inner`. When the region may create tasks, they are activated
     /// at its `begin` and the region is their master; a task body always
-    /// reports its activation.
+    /// reports its activation. The activation is the first statement of
+    /// the handled sequence, so a `Tasking_Error` for a task that failed to
+    /// activate is the region's own handlers' to catch (RM 9.2(5)).
     pub(in crate::check) fn master_region(
         &mut self,
         mut elab: Vec<Stmt>,
-        inner: Body,
+        mut inner: Body,
         span: Span,
         creates: bool,
         task_body: bool,
     ) -> Vec<Stmt> {
         if creates || task_body {
-            elab.push(Stmt {
-                kind: StmtKind::Activate,
-                span,
-            });
+            inner.stmts.insert(
+                0,
+                Stmt {
+                    kind: StmtKind::Activate,
+                    span,
+                },
+            );
         }
         elab.push(Stmt {
             kind: StmtKind::Block(Box::new(inner)),

@@ -742,6 +742,19 @@ impl Checker {
             self.mk(ExKind::IntToFloat(bx(ex)), self.tables.types.base(t), sp)
         } else if ti && sf {
             self.mk(ExKind::FloatToInt(bx(ex)), self.tables.types.base(t), sp)
+        } else if tf
+            && sf
+            && self.tables.types.whole_ns(t)
+            && !self.tables.types.whole_ns(ex.ty)
+            && !self.tables.types.is_universal(ex.ty)
+        {
+            // To whole nanoseconds, as GNAT's fixed point Duration holds them.
+            let one = Ex::real(1.0);
+            self.mk(
+                ExKind::FloatBin(FloatOp::DurMul, bx(ex), bx(one)),
+                self.tables.types.base(t),
+                sp,
+            )
         } else if (tf && sf) || (ti && si) {
             Ex {
                 ty: self.tables.types.base(t),

@@ -412,7 +412,7 @@ impl Checker {
                 (self.mk(ExKind::IntToFloat(bx(x)), DURATION, xsp), y)
             };
             let fop = if op == BinOp::Mul {
-                FloatOp::Mul
+                FloatOp::DurMul
             } else {
                 FloatOp::DurDiv
             };
@@ -462,6 +462,11 @@ impl Checker {
                 BinOp::Sub => FloatOp::Sub,
                 BinOp::Mul => FloatOp::Mul,
                 _ => FloatOp::Div,
+            };
+            let fop = if self.tables.types.whole_ns(base) {
+                fop.on_duration()
+            } else {
+                fop
             };
             let e = self.mk(ExKind::FloatBin(fop, bx(x), bx(y)), base, sp);
             self.fold(e)
