@@ -89,6 +89,10 @@ impl Gen {
                 6 => format!("(I1 ** {})", self.below(4)),
                 7 if self.below(2) == 0 => format!("A ({})", self.int()),
                 7 => format!("A (1 + {} mod 8)", self.int()),
+                8 if self.below(3) == 0 => {
+                    let (t, n) = self.modular_type();
+                    format!("Integer ({t}'({}))", self.modular(t, n))
+                }
                 8 => format!("Integer ({})", self.float()),
                 9 => format!("Twice ({}, {})", self.int(), self.int()),
                 10 => format!("Character'Pos (S ({}))", self.int()),
@@ -98,6 +102,52 @@ impl Gen {
                     self.int(),
                     self.int()
                 ),
+            }
+        };
+        self.depth -= 1;
+        e
+    }
+
+    /// One of the program's modular types and its modulus: a 16-bit word
+    /// or a modulus that is not a power of two.
+    fn modular_type(&mut self) -> (&'static str, u64) {
+        if self.below(2) == 0 {
+            ("Word", 1 << 16)
+        } else {
+            ("Ring", 10)
+        }
+    }
+
+    /// An expression of the modular type `t` (values 0 .. n - 1): every
+    /// operation wraps, a conversion from an Integer outside them raises.
+    fn modular(&mut self, t: &str, n: u64) -> String {
+        self.depth += 1;
+        let leaf = self.depth > 3 || self.below(3) == 0;
+        let var = if t == "Word" { "W1" } else { "N1" };
+        let e = if leaf {
+            match self.below(4) {
+                0 => format!("{}", self.below(n)),
+                1 => format!("{t}'Last"),
+                _ => var.into(),
+            }
+        } else {
+            match self.below(8) {
+                0..=2 => {
+                    let op = self.pick(&["+", "-", "*", "/", "mod", "rem", "and", "or", "xor"]);
+                    let l = self.modular(t, n);
+                    // A variable on the right keeps a division from being static.
+                    let r = if matches!(op, "/" | "mod" | "rem") {
+                        format!("({var} - {})", self.modular(t, n))
+                    } else {
+                        self.modular(t, n)
+                    };
+                    format!("({l} {op} {r})")
+                }
+                3 => format!("(not {})", self.modular(t, n)),
+                4 => format!("(-{})", self.modular(t, n)),
+                5 => format!("({} ** {})", self.modular(t, n), self.below(40)),
+                6 => format!("{t} ({})", self.int()),
+                _ => format!("{t}'Succ ({})", self.modular(t, n)),
             }
         };
         self.depth -= 1;
@@ -150,6 +200,11 @@ impl Gen {
             }
         } else {
             match self.below(6) {
+                0 if self.below(3) == 0 => {
+                    let (t, n) = self.modular_type();
+                    let op = self.pick(&["=", "/=", "<", ">="]);
+                    format!("({t}'({}) {op} {})", self.modular(t, n), self.modular(t, n))
+                }
                 0 | 1 => {
                     let op = self.pick(&["=", "/=", "<", "<=", ">", ">="]);
                     format!("({} {op} {})", self.int(), self.int())
@@ -181,6 +236,16 @@ impl Gen {
             0 | 1 => {
                 let v = self.pick(&["I1", "I2", "I3"]);
                 out.push_str(&format!("{pad}{v} := {};\n", self.int()));
+            }
+            2 if self.below(3) == 0 => {
+                let (t, n) = self.modular_type();
+                let v = if t == "Word" { "W1" } else { "N1" };
+                let e = self.modular(t, n);
+                if self.below(2) == 0 {
+                    out.push_str(&format!("{pad}{v} := {e};\n"));
+                } else {
+                    out.push_str(&format!("{pad}Put_Line ({t}'Image ({e}));\n"));
+                }
             }
             2 => {
                 let v = self.pick(&["F1", "F2"]);
@@ -295,6 +360,8 @@ impl Gen {
              \x20  type Rec is record\n      A : Integer;\n      B : Float;\n      C : Boolean;\n   end record;\n\
              \x20  I1 : Integer := {};\n   I2 : Integer := {};\n   I3 : Integer := 7;\n\
              \x20  F1 : Float := 1.5;\n   F2 : Float := -0.25;\n\
+             \x20  type Word is mod 2**16;\n   type Ring is mod 10;\n\
+             \x20  W1 : Word := 65_000;\n   N1 : Ring := 7;\n\
              \x20  B1 : Boolean := True;\n   B2 : Boolean := False;\n\
              \x20  A : Vec := (others => 3);\n\
              \x20  R : Rec := (A => 1, B => 2.0, C => True);\n\
@@ -413,6 +480,10 @@ fn the_generator_covers_what_it_claims() {
         " mod ",
         "Integer (",
         "(if ",
+        "Word'Image (",
+        "Ring'Image (",
+        " xor ",
+        "(not ",
     ] {
         assert!(text.contains(construct), "never generated: {construct}");
     }

@@ -512,6 +512,20 @@ pub fn static_outside_integer(span: Span, value: impl Display, ty: &str) -> Diag
     .with_hint("a static expression is computed exactly, and its value must fit its type")
 }
 
+/// A static value outside the values 0 .. `last` of the modular type
+/// `ty` (RM 4.9(35): a static expression of a modular type lies in its
+/// base range; only its operations wrap around).
+pub fn static_outside_modular(span: Span, value: impl Display, ty: &str, last: i64) -> Diagnostic {
+    d(
+        codes::E0302,
+        span,
+        format!("the static value {value} is not in range of `{ty}` (0 .. {last})"),
+    )
+    .with_hint(format!(
+        "a modular type's operations wrap around, its literals and conversions do not: write a value in 0 .. {last}"
+    ))
+}
+
 /// A static real (`shown` as written) beyond the base range of `ty`.
 pub fn static_outside_float(span: Span, shown: &str, ty: &str, lo: &str, hi: &str) -> Diagnostic {
     d(
@@ -888,6 +902,15 @@ pub fn integer_range_not_static(span: Span) -> Diagnostic {
         span,
         "the range of an integer type must be static",
     )
+}
+
+pub fn modulus_not_static(span: Span) -> Diagnostic {
+    d(
+        codes::E0309,
+        span,
+        "the modulus of a modular type must be static",
+    )
+    .with_hint("use a literal, a named number or a static constant: `mod 2**16`")
 }
 
 pub fn digits_not_static(span: Span) -> Diagnostic {
@@ -1548,6 +1571,15 @@ pub fn unsupported_in_protected_body(span: Span) -> Diagnostic {
 pub fn integer_type_too_wide(span: Span, first: impl Display, last: impl Display) -> Diagnostic {
     d(codes::E0701, span, "integer types of AdaIR are 32-bit")
         .with_hint(format!("the range must lie in {first} .. {last}"))
+}
+
+pub fn modulus_out_of_range(span: Span, value: impl Display) -> Diagnostic {
+    d(
+        codes::E0701,
+        span,
+        format!("the modulus {value} is not supported: modular types of AdaIR are 32-bit"),
+    )
+    .with_hint("the modulus must lie in 1 .. 2**32")
 }
 
 // ---- warnings ----

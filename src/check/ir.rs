@@ -65,6 +65,60 @@ pub enum IntOp {
     Pow,
 }
 
+/// The operations of a modular type (RM 4.5.1, 4.5.3, 4.5.4, 4.5.5,
+/// 4.5.6): the unary `-` is `0 - X`, `not X` is `(N - 1) - X`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ModOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Mod,
+    Rem,
+    /// `X ** N`, N a Natural.
+    Pow,
+    And,
+    Or,
+    Xor,
+}
+
+/// `x op y` for a modular type whose values are `0 ..= last`: the result
+/// reduced modulo `last + 1` (a logical operator works bit by bit, then
+/// subtracts the modulus once if the result passed it, RM 4.5.1(6)).
+/// `None`: a division by zero (`Constraint_Error`), or a negative
+/// exponent. The one place modular arithmetic is defined: the checker's
+/// static folding and both engines call it.
+pub fn modular(op: ModOp, x: i64, y: i64, last: u32) -> Option<i64> {
+    let n = last as i128 + 1;
+    let (a, b) = (x as i128, y as i128);
+    let r = match op {
+        ModOp::Add => a + b,
+        ModOp::Sub => a - b,
+        ModOp::Mul => a * b,
+        ModOp::Div => a.checked_div(b)?,
+        // Both operands are in 0 .. N - 1: `mod` and `rem` agree.
+        ModOp::Mod | ModOp::Rem => a.checked_rem(b)?,
+        ModOp::Pow => {
+            if b < 0 {
+                return None;
+            }
+            let (mut base, mut e, mut acc) = (a.rem_euclid(n), b, 1 % n);
+            while e > 0 {
+                if e & 1 == 1 {
+                    acc = acc * base % n;
+                }
+                base = base * base % n;
+                e >>= 1;
+            }
+            acc
+        }
+        ModOp::And => a & b,
+        ModOp::Or => a | b,
+        ModOp::Xor => a ^ b,
+    };
+    Some(r.rem_euclid(n) as i64)
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FloatOp {
     Add,
@@ -178,6 +232,9 @@ pub enum ExKind {
     Deref(Box<Ex>),
     Call(FuncId, Box<[Arg]>),
     IntBin(IntOp, Box<Ex>, Box<Ex>),
+    /// An operation of the modular type `Ex::ty` (its modulus is in the
+    /// type table): see [`modular`].
+    ModBin(ModOp, Box<Ex>, Box<Ex>),
     FloatBin(FloatOp, Box<Ex>, Box<Ex>),
     /// Comparison of scalars (integers and enumeration positions, or floats).
     Cmp(CmpOp, Box<Ex>, Box<Ex>),
@@ -561,6 +618,35 @@ pub struct Program {
 
 #[cfg(test)]
 mod tests {
+    use super::{ModOp, modular};
+
+    /// Modular arithmetic as GNAT computes it (checked against a GNAT
+    /// program, tests/ada/modular_register.adb): wrap-around, `not` and
+    /// the logical operators of a modulus that is not a power of two.
+    #[test]
+    fn modular_operations_wrap() {
+        let last16 = u16::MAX as u32;
+        assert_eq!(modular(ModOp::Add, 65535, 1, last16), Some(0));
+        assert_eq!(modular(ModOp::Sub, 0, 1, last16), Some(65535));
+        assert_eq!(modular(ModOp::Mul, 200, 3, 255), Some(88));
+        assert_eq!(modular(ModOp::Pow, 3, 7, 255), Some(139));
+        assert_eq!(modular(ModOp::Div, 5, 0, 255), None);
+        assert_eq!(modular(ModOp::Rem, 5, 0, 255), None);
+        // mod 10: 7 xor 9 = 14, less the modulus once.
+        assert_eq!(modular(ModOp::Xor, 7, 9, 9), Some(4));
+        assert_eq!(modular(ModOp::Or, 7, 2, 9), Some(7));
+        // mod 2**32: no overflow on the way.
+        let last32 = u32::MAX;
+        assert_eq!(
+            modular(ModOp::Mul, last32 as i64, last32 as i64, last32),
+            Some(1)
+        );
+        assert_eq!(
+            modular(ModOp::Pow, last32 as i64, 5, last32),
+            Some(last32 as i64)
+        );
+    }
+
     /// A long program's checked statements are held whole until it runs
     /// (issue 14, at most 20 bytes of memory per source byte): an
     /// expression of 40 bytes takes a 48-byte heap block (one of 48 took

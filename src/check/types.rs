@@ -75,6 +75,10 @@ pub struct TypeInfo {
     /// master of the tasks its allocators create (the region that declares
     /// the type, RM 9.3(2)), stored when the declaration is elaborated.
     pub master: Option<crate::check::ir::Var>,
+    /// A modular type's modulus (`mod N`, 1 ..= 2**32; its values are
+    /// 0 .. N - 1 and its arithmetic wraps), kept by its subtypes and the
+    /// types derived from it.
+    pub modulus: Option<i64>,
 }
 
 pub const ERROR: TypeId = 0;
@@ -135,6 +139,7 @@ impl Types {
             digits: None,
             full_name: name.to_string(),
             master: None,
+            modulus: None,
         });
         id
     }
@@ -154,6 +159,16 @@ impl Types {
             .digits
             .or(self.list[self.base(t) as usize].digits)
             .unwrap_or(15)
+    }
+    /// The modulus of a modular type (of its base type), None for every
+    /// other type.
+    pub fn modulus(&self, t: TypeId) -> Option<i64> {
+        self.list[self.base(t) as usize].modulus
+    }
+    /// The last value of a modular type (`modulus - 1`, which fits a u32):
+    /// what the engines' [`modular`](crate::check::ir::modular) takes.
+    pub fn modular_last(&self, t: TypeId) -> Option<u32> {
+        self.modulus(t).map(|n| (n - 1) as u32)
     }
     pub fn is_integer(&self, t: TypeId) -> bool {
         matches!(self.kind(t), TypeKind::Integer | TypeKind::UnivInt)

@@ -1141,6 +1141,11 @@ impl Run<'_> {
                 let y = self.eval_int(b)?;
                 self.int_op(*op, x, y, e.span)
             }
+            ExKind::ModBin(op, a, b) => {
+                let x = self.eval_int(a)?;
+                let y = self.eval_int(b)?;
+                self.mod_op(*op, x, y, e)
+            }
             _ => Ok(self.eval(e)?.int()),
         }
     }
@@ -1241,6 +1246,11 @@ impl Run<'_> {
                 let x = self.eval_int(a)?;
                 let y = self.eval_int(b)?;
                 Value::Int(self.int_op(*op, x, y, e.span)?)
+            }
+            ExKind::ModBin(op, a, b) => {
+                let x = self.eval_int(a)?;
+                let y = self.eval_int(b)?;
+                Value::Int(self.mod_op(*op, x, y, e)?)
             }
             ExKind::FloatBin(op, a, b) => {
                 let x = self.eval_real(a)?;
@@ -1480,6 +1490,16 @@ impl Run<'_> {
             return Err(self.check_failed("overflow check failed", span));
         }
         Ok(r)
+    }
+
+    /// `x op y` of the modular type of `e` (`ir::modular`, which the
+    /// compiled engine calls too); a division by zero raises.
+    fn mod_op(&self, op: ModOp, x: i64, y: i64, e: &Ex) -> R<i64> {
+        let last = self.c.types.modular_last(e.ty).unwrap_or(u32::MAX);
+        match crate::check::ir::modular(op, x, y, last) {
+            Some(v) => Ok(v),
+            None => Err(self.check_failed("divide by zero", e.span)),
+        }
     }
 
     /// Low and high bound of a scalar subtype.
@@ -1938,8 +1958,10 @@ impl Run<'_> {
                         .unwrap_or("?"),
                 )
             }
-            AttrOp::ValueInt => match value::value_int(&a0.text()) {
-                Some(v) if v >= i32::MIN as i64 && v <= i32::MAX as i64 => Value::Int(v),
+            AttrOp::ValueInt => match (value::value_int(&a0.text()), self.c.types.modulus(e.ty)) {
+                // A modular type's values are 0 .. modulus - 1.
+                (Some(v), Some(n)) if (0..n).contains(&v) => Value::Int(v),
+                (Some(v), None) if v >= i32::MIN as i64 && v <= i32::MAX as i64 => Value::Int(v),
                 _ => return Err(self.bad_value(&a0, sp)),
             },
             AttrOp::ValueFloat => match value::value_float(&a0.text()) {

@@ -50,6 +50,9 @@ enum Op {
     /// `IntBin` with an integer literal on the right.
     IntBinK(IntOp, Var, Var, i64, Span),
     IntNeg(Var, Var, Span),
+    /// An operation of a modular type whose values are `0 ..= last`
+    /// (`ir::modular`, which the walker calls too).
+    ModBin(ModOp, Var, Var, Var, u32, Span),
     FloatBin(FloatOp, Var, Var, Var),
     ToReal(Var, Var),
     Cmp(CmpOp, Var, Var, Var),
@@ -357,6 +360,7 @@ fn relocate(op: &mut Op, by: u32) {
         | Op::IntBin(..)
         | Op::IntBinK(..)
         | Op::IntNeg(..)
+        | Op::ModBin(..)
         | Op::FloatBin(..)
         | Op::ToReal(..)
         | Op::Cmp(..)
@@ -484,6 +488,7 @@ pub(crate) fn effects_unless(e: &Ex, judge: &dyn Fn(&Ex) -> Option<bool>) -> boo
     match &e.kind {
         ExKind::Int(_) | ExKind::Real(_) | ExKind::Var(_) | ExKind::Str(_) | ExKind::Null => false,
         ExKind::IntBin(_, a, b)
+        | ExKind::ModBin(_, a, b)
         | ExKind::FloatBin(_, a, b)
         | ExKind::Cmp(_, a, b)
         | ExKind::Eq(_, a, b)
@@ -640,6 +645,12 @@ impl<'r> Compiler<'r> {
             ExKind::IntNeg(a) => {
                 let x = self.expr(a);
                 self.ops.push(Op::IntNeg(dst, x, span));
+            }
+            ExKind::ModBin(op, a, b) => {
+                let last = self.types.modular_last(e.ty).unwrap_or(u32::MAX);
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::ModBin(*op, dst, x, y, last, span));
             }
             ExKind::FloatBin(op, a, b) => {
                 let x = self.left(a, b);
@@ -1438,6 +1449,7 @@ impl<'r> Compiler<'r> {
                 | Op::IntBin(..)
                 | Op::IntBinK(..)
                 | Op::IntNeg(..)
+                | Op::ModBin(..)
                 | Op::FloatBin(..)
                 | Op::ToReal(..)
                 | Op::Cmp(..)
@@ -2581,6 +2593,16 @@ impl<'a> Run<'a> {
                     let x = self.int_ix(ix!(*a));
                     self.int_op(IntOp::Sub, 0, x, *span)
                         .map(|v| self.put_ix(ix!(*d), Value::Int(v)))
+                }
+                Op::ModBin(o, d, a, b, last, span) => {
+                    let (x, y) = (self.int_ix(ix!(*a)), self.int_ix(ix!(*b)));
+                    match crate::check::ir::modular(*o, x, y, *last) {
+                        Some(v) => {
+                            self.put_int_ix(ix!(*d), v);
+                            continue;
+                        }
+                        None => Err(self.check_failed("divide by zero", *span)),
+                    }
                 }
                 Op::FloatBin(o, d, a, b) => {
                     let x = self.m.stack[ix!(*a)].real();

@@ -159,6 +159,8 @@ pub enum DiscreteRange {
 pub enum TypeDef {
     Enum(Vec<EnumLit>),
     IntRange(Expr, Expr),
+    /// `mod N`: a modular type, values 0 .. N - 1.
+    Modular(Expr),
     Float {
         digits: Expr,
         range: Option<(Expr, Expr)>,

@@ -368,6 +368,13 @@ impl Checker {
                     IntOp::Pow => x.checked_pow(u32::try_from(y).ok()?)?,
                 })
             }
+            ExKind::ModBin(op, a, b) => {
+                let (Int(x), Int(y)) = (self.static_value(a)?, self.static_value(b)?) else {
+                    return None;
+                };
+                let last = self.tables.types.modular_last(e.ty)?;
+                Int(ir::modular(*op, i64::try_from(x).ok()?, i64::try_from(y).ok()?, last)?.into())
+            }
             ExKind::FloatBin(op, a, b) => {
                 let real = |s: Static| match s {
                     Real(v) => v,

@@ -255,6 +255,30 @@ impl Checker {
                 self.set_range(t, l, h);
                 t
             }
+            TypeDef::Modular(m) => {
+                let n = self.expr(m, Some(UNIV_INT));
+                let t = self.tables.types.add(&name.name, TypeKind::Integer);
+                let n = match self.static_value(&n) {
+                    Some(Static::Int(v)) if (1..=1 << 32).contains(&v) => v as i64,
+                    Some(Static::Int(v)) => {
+                        self.err(diagnostics::modulus_out_of_range(m.span, v));
+                        1 << 16
+                    }
+                    _ => {
+                        if n.ty != ERROR {
+                            self.err(diagnostics::modulus_not_static(m.span));
+                        }
+                        1 << 16
+                    }
+                };
+                self.tables.types.list[t as usize].modulus = Some(n);
+                let (l, h) = (
+                    self.mk(ExKind::Int(0), t, m.span),
+                    self.mk(ExKind::Int(n - 1), t, m.span),
+                );
+                self.set_range(t, l, h);
+                t
+            }
             TypeDef::Float { digits, range } => {
                 let d = self.expr(digits, Some(UNIV_INT));
                 let n = match self.static_value(&d) {

@@ -156,6 +156,26 @@ impl Checker {
                     let v = self.mk(ExKind::Attr(AttrOp::Val, Box::new(vec![x])), base, sp);
                     return self.coerce_force_check(v, base);
                 }
+                "modulus" if self.tables.types.modulus(t).is_some() => {
+                    let n = self.tables.types.modulus(t).unwrap_or(1);
+                    return self.mk(ExKind::Int(n), UNIV_INT, sp);
+                }
+                // A modular type's successor of its last value is its
+                // first: `S'Succ (X)` is `X + 1`, wrapping (RM 3.5(22)).
+                "succ" | "pred" if self.tables.types.modulus(t).is_some() => {
+                    let x = arg(self, 0, Some(base));
+                    if x.ty == ERROR {
+                        return self.err_ex(sp);
+                    }
+                    let op = if key == "succ" {
+                        ModOp::Add
+                    } else {
+                        ModOp::Sub
+                    };
+                    let one = self.mk(ExKind::Int(1), base, sp);
+                    let e = self.mk(ExKind::ModBin(op, bx(x), bx(one)), base, sp);
+                    return self.fold(e);
+                }
                 "succ" | "pred" if self.tables.types.is_discrete(t) => {
                     let x = arg(self, 0, Some(base));
                     let op = if key == "succ" {

@@ -146,7 +146,18 @@ impl Checker {
             ex.ty = ERROR;
             return ex;
         }
-        if let ExKind::Int(v) = ex.kind
+        // A modular type's base range is 0 .. modulus - 1 (RM 4.9(35)):
+        // a static value outside it is illegal, not wrapped.
+        if let Some(n) = self.tables.types.modulus(t)
+            && let Some(Static::Int(v)) = self.shallow_static(&ex)
+        {
+            if v < 0 || v >= n as i128 {
+                let tn = self.tname(self.tables.types.base(t));
+                self.err(diagnostics::static_outside_modular(ex.span, v, &tn, n - 1));
+                ex.ty = ERROR;
+                return ex;
+            }
+        } else if let ExKind::Int(v) = ex.kind
             && self.tables.types.is_integer(t)
             && !self.tables.types.is_universal(t)
             && i32::try_from(v).is_err()
@@ -206,6 +217,7 @@ impl Checker {
         let computed = matches!(
             ex.kind,
             ExKind::IntBin(..)
+                | ExKind::ModBin(..)
                 | ExKind::FloatBin(..)
                 | ExKind::IntNeg(_)
                 | ExKind::FloatNeg(_)

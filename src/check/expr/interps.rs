@@ -162,8 +162,15 @@ impl Checker {
                 }
                 BinOp::And | BinOp::Or | BinOp::Xor => {
                     let mut v = vec![BOOLEAN];
+                    // `5 and 3` may be a value of any modular type.
+                    if self.interps(a).contains(&UNIV_INT) && self.interps(b).contains(&UNIV_INT) {
+                        v.push(UNIV_INT);
+                    }
                     for t in self.interps(a).into_iter().chain(self.interps(b)) {
-                        if self.tables.types.is_bool_array(t) && !v.contains(&t) {
+                        if (self.tables.types.is_bool_array(t)
+                            || self.tables.types.modulus(t).is_some())
+                            && !v.contains(&t)
+                        {
                             v.push(t);
                         }
                     }
@@ -223,11 +230,12 @@ impl Checker {
             },
             ExprKind::Unary(UnOp::Not, a) => {
                 let mut v = vec![BOOLEAN];
-                v.extend(
-                    self.interps(a)
-                        .into_iter()
-                        .filter(|t| self.tables.types.is_bool_array(*t)),
-                );
+                // `not 5` may be a value of any modular type.
+                v.extend(self.interps(a).into_iter().filter(|t| {
+                    *t == UNIV_INT
+                        || self.tables.types.is_bool_array(*t)
+                        || self.tables.types.modulus(*t).is_some()
+                }));
                 v
             }
             ExprKind::Unary(op, a) => {

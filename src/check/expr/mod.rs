@@ -755,6 +755,12 @@ impl Checker {
                 self.tables.types.base(t),
                 sp,
             )
+        } else if ti
+            && si
+            && !self.tables.types.is_universal(ex.ty)
+            && self.tables.types.base(ex.ty) != self.tables.types.base(t)
+        {
+            self.int_conversion(ex, t, sp)
         } else if (tf && sf) || (ti && si) {
             Ex {
                 ty: self.tables.types.base(t),
@@ -790,6 +796,29 @@ impl Checker {
         let mut inner = inner;
         inner.span = sp;
         self.coerce(inner, t)
+    }
+}
+
+impl Checker {
+    /// `T (X)` of a value of another integer type: checked against the
+    /// base range of T (RM 4.6(28)), never wrapped, whether T is a modular
+    /// type or a range type (`Word (-1)` raises Constraint_Error); a static
+    /// value is left for `coerce` to judge (an error for a modular type).
+    /// No check where every value of X's subtype is one of T's.
+    fn int_conversion(&mut self, ex: Ex, t: TypeId, sp: Span) -> Ex {
+        let b = self.tables.types.base(t);
+        let to = self.tables.types.discrete_bounds(b);
+        let fits = match (self.shallow_static(&ex), self.tables.types.discrete_bounds(ex.ty)) {
+            (Some(_), _) if self.tables.types.modulus(b).is_some() => true,
+            (Some(Static::Int(v)), _) => to.is_some_and(|(l, h)| l <= v && v <= h),
+            (_, Some((fl, fh))) => to.is_none_or(|(l, h)| l <= fl && fh <= h),
+            _ => to.is_none(),
+        };
+        if fits {
+            Ex { ty: b, ..ex }
+        } else {
+            self.mk(ExKind::RangeCheck(bx(ex), b), b, sp)
+        }
     }
 }
 

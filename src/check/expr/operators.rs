@@ -31,6 +31,16 @@ impl Checker {
                 sp,
             );
         }
+        if let Some(lop) = lop
+            && let Some(t) = self.modular_operands(&[a, b], want)
+        {
+            let mop = match lop {
+                LogicOp::And => ModOp::And,
+                LogicOp::Or => ModOp::Or,
+                _ => ModOp::Xor,
+            };
+            return self.modular_op(mop, a, b, t, sp);
+        }
         match op {
             BinOp::And | BinOp::Or | BinOp::Xor | BinOp::AndThen | BinOp::OrElse => {
                 let x = self.expr(a, Some(BOOLEAN));
@@ -419,6 +429,18 @@ impl Checker {
             return self.mk(ExKind::FloatBin(fop, bx(x), bx(y)), DURATION, sp);
         }
         let base = self.tables.types.base(t);
+        if self.tables.types.modulus(base).is_some() {
+            let mop = match op {
+                BinOp::Add => ModOp::Add,
+                BinOp::Sub => ModOp::Sub,
+                BinOp::Mul => ModOp::Mul,
+                BinOp::Div => ModOp::Div,
+                BinOp::Mod => ModOp::Mod,
+                BinOp::Rem => ModOp::Rem,
+                _ => ModOp::Pow,
+            };
+            return self.modular_op(mop, a, b, t, sp);
+        }
         if op == BinOp::Pow {
             let x = self.expr(a, Some(t));
             let x = self.coerce_base(x, base);
@@ -484,6 +506,40 @@ impl Checker {
         }
     }
 
+    /// `a op b` of the modular type `t`: each operand a value of the type
+    /// (a static one in 0 .. modulus - 1, RM 4.9(35)), the exponent of
+    /// `**` a Natural; folded when both are static.
+    fn modular_op(&mut self, op: ModOp, a: &ast::Expr, b: &ast::Expr, t: TypeId, sp: Span) -> Ex {
+        let base = self.tables.types.base(t);
+        let x = self.expr(a, Some(base));
+        let x = self.coerce_base(x, base);
+        let y = if op == ModOp::Pow {
+            let y = self.expr(b, Some(INTEGER));
+            self.coerce(y, NATURAL)
+        } else {
+            let y = self.expr(b, Some(base));
+            self.coerce_base(y, base)
+        };
+        if x.ty == ERROR || y.ty == ERROR {
+            return self.err_ex(sp);
+        }
+        let e = self.mk(ExKind::ModBin(op, bx(x), bx(y)), base, sp);
+        self.fold(e)
+    }
+
+    /// The modular type of a logical operator's operands (`R and Mask`,
+    /// `not R`): the one wanted, or one every operand can have; None for
+    /// Boolean operands.
+    fn modular_operands(&mut self, ops: &[&ast::Expr], want: Option<TypeId>) -> Option<TypeId> {
+        if let Some(w) = want {
+            return self.tables.types.modulus(w).is_some().then_some(w);
+        }
+        let cands: Vec<TypeId> = ops.iter().flat_map(|e| self.interps(e)).collect();
+        cands.into_iter().find(|t| {
+            self.tables.types.modulus(*t).is_some() && ops.iter().all(|e| self.fits(e, *t))
+        })
+    }
+
     /// The value of `e` when it is a static leaf: a literal (every static
     /// operation is folded into one as soon as it is checked) or a scalar
     /// type's bound. Constant time, so folding a chain stays linear.
@@ -509,9 +565,9 @@ impl Checker {
     /// folded only inside that range (the run-time check would raise); an
     /// `Integer` intermediate may leave the 32-bit range, and `coerce`
     /// refuses a final value outside it.
-    fn fold(&mut self, e: Ex) -> Ex {
+    pub(super) fn fold(&mut self, e: Ex) -> Ex {
         let leaves = match &e.kind {
-            ExKind::IntBin(_, a, b) | ExKind::FloatBin(_, a, b) => {
+            ExKind::IntBin(_, a, b) | ExKind::ModBin(_, a, b) | ExKind::FloatBin(_, a, b) => {
                 self.shallow_static(a).is_some() && self.shallow_static(b).is_some()
             }
             ExKind::IntNeg(a) | ExKind::FloatNeg(a) | ExKind::IntAbs(a) | ExKind::FloatAbs(a) => {
@@ -565,6 +621,13 @@ impl Checker {
             let x = self.expr(a, Some(t));
             let x = self.coerce(x, t);
             return self.mk(ExKind::ArrNot(bx(x)), self.tables.types.base(t), sp);
+        }
+        if op == UnOp::Not
+            && let Some(t) = self.modular_operands(&[a], want)
+        {
+            // `not X` is `(modulus - 1) - X` (RM 4.5.6(5)).
+            let x = self.expr(a, Some(t));
+            return self.modular_unary(true, x, t, sp);
         }
         if op == UnOp::Not {
             let x = self.expr(a, Some(BOOLEAN));
@@ -621,6 +684,19 @@ impl Checker {
         if x.ty == ERROR {
             return x;
         }
+        if let Some(mt) = [t, x.ty]
+            .into_iter()
+            .find(|m| self.tables.types.modulus(*m).is_some())
+        {
+            return match op {
+                UnOp::Neg => self.modular_unary(false, x, mt, sp),
+                // `+X` and `abs X` of a modular value are X.
+                _ => {
+                    let x = self.coerce_base(x, mt);
+                    Ex { span: sp, ..x }
+                }
+            };
+        }
         if !self.tables.types.is_numeric(x.ty) {
             self.err(diagnostics::operator_needs_number(
                 sp,
@@ -650,6 +726,24 @@ impl Checker {
             _ => ExKind::FloatAbs(bx(x)),
         };
         let e = self.mk(kind, ty, sp);
+        self.fold(e)
+    }
+
+    /// `-X` (`0 - X`) and, `not`, `not X` (`(N - 1) - X`) of the
+    /// checked operand `x` of the modular type `t`.
+    fn modular_unary(&mut self, not: bool, x: Ex, t: TypeId, sp: Span) -> Ex {
+        let base = self.tables.types.base(t);
+        let x = self.coerce_base(x, base);
+        if x.ty == ERROR {
+            return self.err_ex(sp);
+        }
+        let from = if not {
+            self.tables.types.modulus(base).unwrap_or(1) - 1
+        } else {
+            0
+        };
+        let k = self.mk(ExKind::Int(from), base, sp);
+        let e = self.mk(ExKind::ModBin(ModOp::Sub, bx(k), bx(x)), base, sp);
         self.fold(e)
     }
 }

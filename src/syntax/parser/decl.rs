@@ -137,9 +137,7 @@ fn type_def<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, TypeDef, Ex
             .then(kw!(Private))
             .to(TypeDef::Unsupported("a private type")),
         kw!(Private).to(TypeDef::Unsupported("a private type")),
-        kw!(Mod)
-            .ignore_then(expr.clone())
-            .to(TypeDef::Unsupported("a modular type")),
+        kw!(Mod).ignore_then(expr.clone()).map(TypeDef::Modular),
         kw!(Delta)
             .ignore_then(expr.clone())
             .then(
