@@ -407,6 +407,29 @@ fn hover_on_a_service_shows_signature_code_meaning_and_exceptions_from_the_table
 }
 
 #[test]
+fn hover_on_a_modular_register_shows_its_type_s_declaration() {
+    let src = "\
+type Word is mod 2**16;
+Status : Word := 0;
+Status := (Status or 16#0004#) and not 16#0001#;
+Put_Line (Word'Image (Status));
+";
+    let mut c = Client::start();
+    c.open("demo.air", src);
+    let (d, _) = c.diagnostics("demo.air");
+    assert!(d.is_empty(), "a modular type checks: {d:?}");
+    let p = pos(src, "Status or", 0, 1);
+    let v = c.result(R::HoverRequest::METHOD, at("demo.air", p));
+    let h: lsp_types::Hover = serde_json::from_value(v).expect("a hover");
+    let lsp_types::HoverContents::Markup(m) = h.contents else {
+        panic!("markdown expected")
+    };
+    assert!(m.value.contains("Status : Word"), "{}", m.value);
+    assert!(m.value.contains("type Word is mod 2**16;"), "{}", m.value);
+    c.finish();
+}
+
+#[test]
 fn hover_on_a_variable_shows_its_type_and_on_a_type_its_definition() {
     let mut c = demo();
     let (text, r) = hover_text(&mut c, pos(DEMO, "Count := Twice", 0, 1));
