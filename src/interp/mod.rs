@@ -1923,11 +1923,24 @@ impl Run<'_> {
     }
 
     fn attr(&mut self, op: AttrOp, args: &[Ex], e: &Ex) -> R<Value> {
-        let sp = e.span;
-        let a0 = match args.first() {
-            Some(x) => self.eval(x)?,
-            None => Value::Undef,
-        };
+        let mut vals = Vec::with_capacity(args.len());
+        for a in args {
+            vals.push(self.eval(a)?);
+        }
+        self.attr_of(op, vals, e.ty, e.span)
+    }
+
+    /// An attribute of its evaluated arguments (`vals`, in order; `ty`
+    /// is the attribute's type): what both engines run.
+    pub(crate) fn attr_of(
+        &mut self,
+        op: AttrOp,
+        vals: Vec<Value>,
+        ty: TypeId,
+        sp: Span,
+    ) -> R<Value> {
+        let mut vals = vals.into_iter();
+        let a0 = vals.next().unwrap_or_default();
         Ok(match op {
             AttrOp::Callable | AttrOp::Terminated | AttrOp::Count(_) | AttrOp::ProtCount(_) => {
                 self.task_attr(op, std::slice::from_ref(&a0))
@@ -1958,7 +1971,7 @@ impl Run<'_> {
                         .unwrap_or("?"),
                 )
             }
-            AttrOp::ValueInt => match (value::value_int(&a0.text()), self.c.types.modulus(e.ty)) {
+            AttrOp::ValueInt => match (value::value_int(&a0.text()), self.c.types.modulus(ty)) {
                 // A modular type's values are 0 .. modulus - 1.
                 (Some(v), Some(n)) if (0..n).contains(&v) => Value::Int(v),
                 (Some(v), None) if v >= i32::MIN as i64 && v <= i32::MAX as i64 => Value::Int(v),
@@ -1986,7 +1999,7 @@ impl Run<'_> {
             AttrOp::Succ | AttrOp::Pred => {
                 let v = a0.int() + if op == AttrOp::Succ { 1 } else { -1 };
                 // Past the base type's bounds: GNAT's overflow check.
-                let (lo, hi) = self.type_bounds(e.ty)?;
+                let (lo, hi) = self.type_bounds(ty)?;
                 if v < lo.int() || v > hi.int() {
                     return Err(self.check_failed("overflow check failed", sp));
                 }
@@ -1994,7 +2007,7 @@ impl Run<'_> {
             }
             AttrOp::Pos | AttrOp::Val => a0,
             AttrOp::Min | AttrOp::Max | AttrOp::FloatMin | AttrOp::FloatMax => {
-                let b = self.eval(&args[1])?;
+                let b = vals.next().unwrap_or_default();
                 let less = a0.compare(&b) == std::cmp::Ordering::Less;
                 match op {
                     AttrOp::Min | AttrOp::FloatMin => {

@@ -78,6 +78,10 @@ enum Op {
     DerefField(Var, Var, u32, Span, Span),
     /// `dst := null`.
     Null(Var),
+    /// `dst := x & y` (each an array or an element).
+    Concat(Box<ConcatOp>),
+    /// `dst := P'Attr (args)`, the arguments in slots.
+    Attr(Box<AttrInstr>),
     /// The walker evaluates an expression into a slot. The expression may
     /// be a copy whose operands were computed here first (replaced by the
     /// temporaries holding them, listed last, which are emptied once it is
@@ -187,6 +191,33 @@ struct EntryOp {
     other: u32,
     /// The barrier's argument (the object), for protected entries.
     barrier_args: Box<[Arg]>,
+    span: Span,
+}
+
+/// A concatenation: where it goes, its operands, whether each is one
+/// element (not an array) and whether each is a temporary that the
+/// operation may take (its last use), the result's type, where a length
+/// check fails.
+#[derive(Debug)]
+struct ConcatOp {
+    dst: Var,
+    x: Var,
+    y: Var,
+    elems: (bool, bool),
+    takes: (bool, bool),
+    ty: TypeId,
+    span: Span,
+}
+
+/// An attribute: its operation, result slot, arguments (temporaries are
+/// emptied once read), result type and where it fails.
+#[derive(Debug)]
+struct AttrInstr {
+    op: crate::check::ir::AttrOp,
+    dst: Var,
+    args: Box<[Var]>,
+    temps: Box<[bool]>,
+    ty: TypeId,
     span: Span,
 }
 
@@ -378,6 +409,8 @@ fn relocate(op: &mut Op, by: u32) {
         | Op::Field(..)
         | Op::DerefField(..)
         | Op::Null(..)
+        | Op::Concat(..)
+        | Op::Attr(..)
         | Op::Eval(..)
         | Op::Assign(..)
         | Op::Exec(..)
@@ -775,6 +808,50 @@ impl<'r> Compiler<'r> {
                 let x = self.expr(subj);
                 self.case(x, span, arms, others.as_ref(), |c, v| c.expr_into(v, t));
                 self.ops.push(Op::Move(dst, t));
+            }
+            ExKind::Concat(a, b, xe, ye) => {
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::Concat(Box::new(ConcatOp {
+                    dst,
+                    x,
+                    y,
+                    elems: (*xe, *ye),
+                    takes: (self.is_temp(x), self.is_temp(y) && x != y),
+                    ty: e.ty,
+                    span,
+                })));
+            }
+            ExKind::Attr(op, args) => {
+                // Each argument before the next is evaluated (a later one
+                // with effects must not change an earlier one).
+                let mut vars = Vec::with_capacity(args.len());
+                for (i, a) in args.iter().enumerate() {
+                    let v = self.expr(a);
+                    let later = &args[i + 1..];
+                    let v = if !self.is_temp(v) && later.iter().any(effects) {
+                        self.holds(a.ty);
+                        let t = self.temp();
+                        self.ops.push(Op::Move(t, v));
+                        t
+                    } else {
+                        v
+                    };
+                    vars.push(v);
+                }
+                let temps = vars
+                    .iter()
+                    .enumerate()
+                    .map(|(i, v)| self.is_temp(*v) && !vars[..i].contains(v))
+                    .collect();
+                self.ops.push(Op::Attr(Box::new(AttrInstr {
+                    op: *op,
+                    dst,
+                    args: vars.into(),
+                    temps,
+                    ty: e.ty,
+                    span,
+                })));
             }
             _ => {
                 let (copy, temps) = self
@@ -1467,6 +1544,8 @@ impl<'r> Compiler<'r> {
                 | Op::Field(..)
                 | Op::DerefField(..)
                 | Op::Null(..)
+                | Op::Concat(..)
+                | Op::Attr(..)
                 | Op::Jump(..)
                 | Op::JumpIfNot(..)
                 | Op::CmpKJumpNot(..)
@@ -2711,6 +2790,35 @@ impl<'a> Run<'a> {
                 Op::Null(d) => {
                     self.put_ix(ix!(*d), Value::Ptr(None));
                     continue;
+                }
+                Op::Concat(c) => {
+                    let (xi, yi) = (ix!(c.x), ix!(c.y));
+                    let x = if c.takes.0 {
+                        std::mem::take(&mut self.m.stack[xi])
+                    } else {
+                        self.m.stack[xi].clone()
+                    };
+                    let y = if c.takes.1 {
+                        std::mem::take(&mut self.m.stack[yi])
+                    } else {
+                        self.m.stack[yi].clone()
+                    };
+                    let (xe, ye) = c.elems;
+                    self.concat(x, y, xe, ye, c.ty, c.span)
+                        .map(|v| self.put_ix(ix!(c.dst), v))
+                }
+                Op::Attr(a) => {
+                    let mut vals = Vec::with_capacity(a.args.len());
+                    for (v, take) in a.args.iter().zip(a.temps.iter()) {
+                        let i = ix!(*v);
+                        vals.push(if *take {
+                            std::mem::take(&mut self.m.stack[i])
+                        } else {
+                            self.m.stack[i].clone()
+                        });
+                    }
+                    self.attr_of(a.op, vals, a.ty, a.span)
+                        .map(|v| self.put_ix(ix!(a.dst), v))
                 }
                 Op::Eval(d, e, temps) => {
                     let r = self.eval(e).map(|v| self.put_ix(ix!(*d), v));
