@@ -78,6 +78,10 @@ enum Op {
     DerefField(Var, Var, u32, Span, Span),
     /// `dst := null`.
     Null(Var),
+    /// `dst := "text"`: a string literal's value, made once when the code
+    /// is compiled (a copy of it is one reference count: an assignment
+    /// into it copies it first).
+    Str(Var, Value),
     /// `dst := x & y` (each an array or an element).
     Concat(Box<ConcatOp>),
     /// `dst := P'Attr (args)`, the arguments in slots.
@@ -409,6 +413,7 @@ fn relocate(op: &mut Op, by: u32) {
         | Op::Field(..)
         | Op::DerefField(..)
         | Op::Null(..)
+        | Op::Str(..)
         | Op::Concat(..)
         | Op::Attr(..)
         | Op::Eval(..)
@@ -809,6 +814,7 @@ impl<'r> Compiler<'r> {
                 self.case(x, span, arms, others.as_ref(), |c, v| c.expr_into(v, t));
                 self.ops.push(Op::Move(dst, t));
             }
+            ExKind::Str(s) => self.ops.push(Op::Str(dst, Value::str(s))),
             ExKind::Concat(a, b, xe, ye) => {
                 let x = self.left(a, b);
                 let y = self.expr(b);
@@ -1544,6 +1550,7 @@ impl<'r> Compiler<'r> {
                 | Op::Field(..)
                 | Op::DerefField(..)
                 | Op::Null(..)
+                | Op::Str(..)
                 | Op::Concat(..)
                 | Op::Attr(..)
                 | Op::Jump(..)
@@ -2789,6 +2796,10 @@ impl<'a> Run<'a> {
                 }
                 Op::Null(d) => {
                     self.put_ix(ix!(*d), Value::Ptr(None));
+                    continue;
+                }
+                Op::Str(d, v) => {
+                    self.put_ix(ix!(*d), v.clone());
                     continue;
                 }
                 Op::Concat(c) => {
