@@ -1923,24 +1923,28 @@ impl Run<'_> {
     }
 
     fn attr(&mut self, op: AttrOp, args: &[Ex], e: &Ex) -> R<Value> {
-        let mut vals = Vec::with_capacity(args.len());
-        for a in args {
-            vals.push(self.eval(a)?);
-        }
-        self.attr_of(op, vals, e.ty, e.span)
+        debug_assert!(args.len() <= 2, "an attribute has at most two arguments");
+        let a0 = match args.first() {
+            Some(a) => self.eval(a)?,
+            None => Value::Undef,
+        };
+        let a1 = match args.get(1) {
+            Some(a) => self.eval(a)?,
+            None => Value::Undef,
+        };
+        self.attr_of(op, a0, a1, e.ty, e.span)
     }
 
-    /// An attribute of its evaluated arguments (`vals`, in order; `ty`
-    /// is the attribute's type): what both engines run.
+    /// An attribute of its evaluated arguments (`a0`, `a1`: `Undef` when
+    /// it has fewer; `ty` is the attribute's type): what both engines run.
     pub(crate) fn attr_of(
         &mut self,
         op: AttrOp,
-        vals: Vec<Value>,
+        a0: Value,
+        a1: Value,
         ty: TypeId,
         sp: Span,
     ) -> R<Value> {
-        let mut vals = vals.into_iter();
-        let a0 = vals.next().unwrap_or_default();
         Ok(match op {
             AttrOp::Callable | AttrOp::Terminated | AttrOp::Count(_) | AttrOp::ProtCount(_) => {
                 self.task_attr(op, std::slice::from_ref(&a0))
@@ -2007,7 +2011,7 @@ impl Run<'_> {
             }
             AttrOp::Pos | AttrOp::Val => a0,
             AttrOp::Min | AttrOp::Max | AttrOp::FloatMin | AttrOp::FloatMax => {
-                let b = vals.next().unwrap_or_default();
+                let b = a1;
                 let less = a0.compare(&b) == std::cmp::Ordering::Less;
                 match op {
                     AttrOp::Min | AttrOp::FloatMin => {

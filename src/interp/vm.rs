@@ -828,7 +828,12 @@ impl<'r> Compiler<'r> {
                     span,
                 })));
             }
-            ExKind::Attr(op, args) => {
+            // `'Pos` and `'Val` are the value itself (a check of `'Val`'s
+            // range is a node of its own).
+            ExKind::Attr(AttrOp::Pos | AttrOp::Val, args) if args.len() == 1 => {
+                self.expr_into(&args[0], dst)
+            }
+            ExKind::Attr(op, args) if args.len() <= 2 => {
                 // Each argument before the next is evaluated (a later one
                 // with effects must not change an earlier one).
                 let mut vars = Vec::with_capacity(args.len());
@@ -2819,16 +2824,17 @@ impl<'a> Run<'a> {
                         .map(|v| self.put_ix(ix!(c.dst), v))
                 }
                 Op::Attr(a) => {
-                    let mut vals = Vec::with_capacity(a.args.len());
-                    for (v, take) in a.args.iter().zip(a.temps.iter()) {
+                    let mut vals = [Value::Undef, Value::Undef];
+                    for ((v, take), val) in a.args.iter().zip(a.temps.iter()).zip(&mut vals) {
                         let i = ix!(*v);
-                        vals.push(if *take {
+                        *val = if *take {
                             std::mem::take(&mut self.m.stack[i])
                         } else {
                             self.m.stack[i].clone()
-                        });
+                        };
                     }
-                    self.attr_of(a.op, vals, a.ty, a.span)
+                    let [a0, a1] = vals;
+                    self.attr_of(a.op, a0, a1, a.ty, a.span)
                         .map(|v| self.put_ix(ix!(a.dst), v))
                 }
                 Op::Eval(d, e, temps) => {
