@@ -1210,25 +1210,7 @@ impl Run<'_> {
             ExKind::Slice(p, lh) => {
                 let base = self.eval(p)?;
                 let (l, h) = (self.eval(&lh[0])?.int(), self.eval(&lh[1])?.int());
-                let Value::Arr(a) = base else {
-                    return Err(self.check_failed("access check failed", e.span));
-                };
-                if l > h {
-                    return Ok(Value::Arr(Rc::new(Array {
-                        bounds: vec![(l, h)],
-                        data: vec![],
-                    })));
-                }
-                let (lo, hi) = a.bounds[0];
-                if l < lo || h > hi {
-                    return Err(self.check_failed("range check failed", e.span));
-                }
-                self.reserve(h - l + 1, e.span)?;
-                let data = a.data[(l - lo) as usize..=(h - lo) as usize].to_vec();
-                Value::Arr(Rc::new(Array {
-                    bounds: vec![(l, h)],
-                    data,
-                }))
+                self.slice_of(&base, l, h, e.span)?
             }
             ExKind::Field(p, i) => match self.eval(p)? {
                 Value::Rec(r) => r[*i as usize].clone(),
@@ -1920,6 +1902,29 @@ impl Run<'_> {
         };
         bounds.extend(inner);
         Ok(Value::Arr(Rc::new(Array { bounds, data })))
+    }
+
+    /// `base (l .. h)` (what both engines run).
+    pub(crate) fn slice_of(&mut self, base: &Value, l: i64, h: i64, span: Span) -> R<Value> {
+        let Value::Arr(a) = base else {
+            return Err(self.check_failed("access check failed", span));
+        };
+        if l > h {
+            return Ok(Value::Arr(Rc::new(Array {
+                bounds: vec![(l, h)],
+                data: vec![],
+            })));
+        }
+        let (lo, hi) = a.bounds[0];
+        if l < lo || h > hi {
+            return Err(self.check_failed("range check failed", span));
+        }
+        self.reserve(h - l + 1, span)?;
+        let data = a.data[(l - lo) as usize..=(h - lo) as usize].to_vec();
+        Ok(Value::Arr(Rc::new(Array {
+            bounds: vec![(l, h)],
+            data,
+        })))
     }
 
     fn attr(&mut self, op: AttrOp, args: &[Ex], e: &Ex) -> R<Value> {

@@ -84,6 +84,8 @@ enum Op {
     Str(Var, Value),
     /// `dst := x & y` (each an array or an element).
     Concat(Box<ConcatOp>),
+    /// `dst := base (low .. high)`, and where its check fails.
+    Slice(Var, Var, [Var; 2], Span),
     /// `dst := P'Attr (args)`, the arguments in slots.
     Attr(Box<AttrInstr>),
     /// The walker evaluates an expression into a slot. The expression may
@@ -414,6 +416,7 @@ fn relocate(op: &mut Op, by: u32) {
         | Op::DerefField(..)
         | Op::Null(..)
         | Op::Str(..)
+        | Op::Slice(..)
         | Op::Concat(..)
         | Op::Attr(..)
         | Op::Eval(..)
@@ -815,6 +818,23 @@ impl<'r> Compiler<'r> {
                 self.ops.push(Op::Move(dst, t));
             }
             ExKind::Str(s) => self.ops.push(Op::Str(dst, Value::str(s))),
+            ExKind::Slice(p, lh) => {
+                let (l, h) = (&lh[0], &lh[1]);
+                let base = self.expr(p);
+                // The bounds may change the base (a call in them): then it
+                // is read first, as the walker does.
+                let base = if !self.is_temp(base) && (effects(l) || effects(h)) {
+                    self.holds(p.ty);
+                    let t = self.temp();
+                    self.ops.push(Op::Move(t, base));
+                    t
+                } else {
+                    base
+                };
+                let lo = self.left(l, h);
+                let hi = self.expr(h);
+                self.ops.push(Op::Slice(dst, base, [lo, hi], span));
+            }
             ExKind::Concat(a, b, xe, ye) => {
                 let x = self.left(a, b);
                 let y = self.expr(b);
@@ -1556,6 +1576,7 @@ impl<'r> Compiler<'r> {
                 | Op::DerefField(..)
                 | Op::Null(..)
                 | Op::Str(..)
+                | Op::Slice(..)
                 | Op::Concat(..)
                 | Op::Attr(..)
                 | Op::Jump(..)
@@ -2802,6 +2823,14 @@ impl<'a> Run<'a> {
                 Op::Null(d) => {
                     self.put_ix(ix!(*d), Value::Ptr(None));
                     continue;
+                }
+                Op::Slice(d, b, [l, h], span) => {
+                    let (l, h) = (self.int_ix(ix!(*l)), self.int_ix(ix!(*h)));
+                    let bi = ix!(*b);
+                    let base = std::mem::take(&mut self.m.stack[bi]);
+                    let r = self.slice_of(&base, l, h, *span);
+                    self.m.stack[bi] = base;
+                    r.map(|v| self.put_ix(ix!(*d), v))
                 }
                 Op::Str(d, v) => {
                     self.put_ix(ix!(*d), v.clone());
