@@ -125,7 +125,8 @@ pub(super) fn perform(
             }
         }
     } else if o.control {
-        st.busy_until = start + duration;
+        // As the clock counts it: whole nanoseconds (value::whole_ns).
+        st.busy_until = crate::interp::value::whole_ns(start + duration);
         st.busy_paced =
             (o.realtime || st.realtime).then(|| (start, duration, before, points.to_vec()));
     } else {
@@ -345,7 +346,9 @@ pub(super) fn move_tool(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<
             .iter()
             .find(|o| &o.name == name)
             .map(|o| o.width);
-        let closed_at = cx.clock.now() + jaw_time(g);
+        // The moment the clock reaches after the jaws' motion (it keeps
+        // whole nanoseconds), so that the pick happens with that motion.
+        let closed_at = crate::interp::value::whole_ns(cx.clock.now() + jaw_time(g));
         if width.is_some_and(|x| (g.opening - x).abs() < 1e-6) && w.pick_at(name, closed_at).is_ok()
         {
             st.held = Some(name.clone());

@@ -207,7 +207,15 @@ proptest! {
         // Joint slots have 5 entries.
         let i = if slot.stmt.contains("A (I)") { 1 + (i - 1) % 5 } else { i };
         let (exc, kept) = run(k, value, i);
-        prop_assert_eq!(&exc, slot.exc, "slot `{}` with X = {}", slot.stmt, value);
+        // `Duration (X)` of a NaN or an infinity fails at the conversion,
+        // before the service sees it: Duration is fixed point and holds
+        // neither (GNAT: tests/ada/duration_conversion_nonfinite.adb).
+        let want = if !negative && slot.stmt.contains("Duration (X)") {
+            "CONSTRAINT_ERROR"
+        } else {
+            slot.exc
+        };
+        prop_assert_eq!(&exc, want, "slot `{}` with X = {}", slot.stmt, value);
         prop_assert_eq!(&kept, "TRUE", "slot `{}` with X = {} moved the robot", slot.stmt, value);
     }
 }

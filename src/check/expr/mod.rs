@@ -808,7 +808,10 @@ impl Checker {
     fn int_conversion(&mut self, ex: Ex, t: TypeId, sp: Span) -> Ex {
         let b = self.tables.types.base(t);
         let to = self.tables.types.discrete_bounds(b);
-        let fits = match (self.shallow_static(&ex), self.tables.types.discrete_bounds(ex.ty)) {
+        let fits = match (
+            self.shallow_static(&ex),
+            self.tables.types.discrete_bounds(ex.ty),
+        ) {
             (Some(_), _) if self.tables.types.modulus(b).is_some() => true,
             (Some(Static::Int(v)), _) => to.is_some_and(|(l, h)| l <= v && v <= h),
             (_, Some((fl, fh))) => to.is_none_or(|(l, h)| l <= fl && fh <= h),
