@@ -2134,6 +2134,15 @@ impl<'a> Run<'a> {
         if active {
             self.rerun();
             if std::mem::take(&mut self.m.sched.threads[me].timed_out) {
+                // The call left its queue (RM 9.5.3(20)): that is a
+                // protected action, after which the queues are served, as
+                // a barrier that reads the entry's 'Count may open now.
+                let obj = self.m.stack[self.sl(ec.target)].clone();
+                let pid = Self::prot_id(&obj);
+                if let Some(w) = self.first_open_call(pid, &ec.barrier_args, ec.span)? {
+                    self.m.sched.threads[w].granted = true;
+                    self.m.sched.make_ready(w);
+                }
                 return Ok(ProtStep::Other);
             }
             if std::mem::take(&mut self.m.sched.threads[me].granted) {
