@@ -655,8 +655,14 @@ impl<'r> Compiler<'r> {
     /// An operand for the left side of a binary operation whose right side
     /// is `right`: copied to a temporary when the right side may change it.
     fn left(&mut self, e: &Ex, right: &Ex) -> Var {
+        self.operand_before(e, [right])
+    }
+
+    /// An operand read before the operands `later`: copied to a temporary
+    /// when one of them may change it.
+    fn operand_before<'e>(&mut self, e: &Ex, later: impl IntoIterator<Item = &'e Ex>) -> Var {
         let a = self.expr(e);
-        if !self.is_temp(a) && effects(right) {
+        if !self.is_temp(a) && later.into_iter().any(effects) {
             self.holds(e.ty);
             let t = self.temp();
             self.ops.push(Op::Move(t, a));
@@ -820,17 +826,8 @@ impl<'r> Compiler<'r> {
             ExKind::Str(s) => self.ops.push(Op::Str(dst, Value::str(s))),
             ExKind::Slice(p, lh) => {
                 let (l, h) = (&lh[0], &lh[1]);
-                let base = self.expr(p);
-                // The bounds may change the base (a call in them): then it
-                // is read first, as the walker does.
-                let base = if !self.is_temp(base) && (effects(l) || effects(h)) {
-                    self.holds(p.ty);
-                    let t = self.temp();
-                    self.ops.push(Op::Move(t, base));
-                    t
-                } else {
-                    base
-                };
+                // The base is read before the bounds, as the walker does.
+                let base = self.operand_before(p, [l, h]);
                 let lo = self.left(l, h);
                 let hi = self.expr(h);
                 self.ops.push(Op::Slice(dst, base, [lo, hi], span));
@@ -858,17 +855,7 @@ impl<'r> Compiler<'r> {
                 // with effects must not change an earlier one).
                 let mut vars = Vec::with_capacity(args.len());
                 for (i, a) in args.iter().enumerate() {
-                    let v = self.expr(a);
-                    let later = &args[i + 1..];
-                    let v = if !self.is_temp(v) && later.iter().any(effects) {
-                        self.holds(a.ty);
-                        let t = self.temp();
-                        self.ops.push(Op::Move(t, v));
-                        t
-                    } else {
-                        v
-                    };
-                    vars.push(v);
+                    vars.push(self.operand_before(a, &args[i + 1..]));
                 }
                 let temps = vars
                     .iter()
