@@ -79,6 +79,10 @@ pub struct TypeInfo {
     /// 0 .. N - 1 and its arithmetic wraps), kept by its subtypes and the
     /// types derived from it.
     pub modulus: Option<i64>,
+    /// Duration and the types derived from it (`Time_Span`): GNAT's fixed
+    /// point of whole nanoseconds (`Duration'Small` = 1 ns), held as reals
+    /// that the engines keep whole (`FloatOp::on_duration`).
+    pub whole_ns: bool,
 }
 
 pub const ERROR: TypeId = 0;
@@ -112,14 +116,9 @@ impl Types {
     pub fn base(&self, t: TypeId) -> TypeId {
         self.list[t as usize].base
     }
-    /// Duration and the types derived from it (`Time_Span`): GNAT's fixed
-    /// point of whole nanoseconds, held as reals that the engines keep
-    /// whole (`FloatOp::on_duration`). They are the floating kind's only
-    /// types without `digits`.
+    /// Whether `t` is Duration or derived from it (see [`TypeInfo::whole_ns`]).
     pub fn whole_ns(&self, t: TypeId) -> bool {
-        let b = self.base(t);
-        matches!(self.list[b as usize].kind, TypeKind::Float)
-            && self.list[b as usize].digits.is_none()
+        self.list[self.base(t) as usize].whole_ns
     }
     pub fn kind(&self, t: TypeId) -> &TypeKind {
         &self.list[self.base(t) as usize].kind
@@ -140,6 +139,7 @@ impl Types {
             full_name: name.to_string(),
             master: None,
             modulus: None,
+            whole_ns: false,
         });
         id
     }
@@ -334,6 +334,7 @@ impl Types {
         // GNAT's Duration: 64-bit fixed point, Duration'Small = 1 ns.
         let (lo, hi) = (i64::MIN as f64 / 1e9, i64::MAX as f64 / 1e9);
         t.list[d as usize].static_frange = Some((lo, hi));
+        t.list[d as usize].whole_ns = true;
         // A value outside it is a check error when static, else
         // Constraint_Error (GNAT's overflow check), never a saturated value.
         t.list[d as usize].range = Some((Ex::real(lo), Ex::real(hi)));
