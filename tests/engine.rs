@@ -1,5 +1,5 @@
 //! The compiled engine on whole programs (moved from the unit tests of
-//! `src/interp/vm.rs`, which may not build a `Session`: the engine is a
+//! `src/interp/vm/`, which may not build a `Session`: the engine is a
 //! layer below it, tests/layering.rs): a long body compiled a part at a
 //! time as it is checked, frames freed as scalars, a fused argument's
 //! overflow, an exception's chain of calls; each compared with the

@@ -1,0 +1,332 @@
+//! Compiling expressions.
+
+use super::*;
+
+impl<'r> Compiler<'r> {
+    /// A jump (to be patched) taken when the condition `c` is False: a
+    /// comparison jumps itself.
+    pub(in crate::interp::vm) fn jump_unless(&mut self, c: &Ex) -> usize {
+        let op = match &c.kind {
+            ExKind::Cmp(op, a, b) => match b.kind {
+                ExKind::Int(k) => Op::CmpKJumpNot(*op, self.expr(a), k, 0),
+                _ => {
+                    let x = self.left(a, b);
+                    Op::CmpJumpNot(*op, x, self.expr(b), 0)
+                }
+            },
+            _ => Op::JumpIfNot(self.expr(c), 0),
+        };
+        self.ops.push(op);
+        self.ops.len() - 1
+    }
+
+    /// The operand holding `e`'s value: a variable itself, or a temporary.
+    pub(in crate::interp::vm) fn expr(&mut self, e: &Ex) -> Var {
+        if let ExKind::Var(v) = e.kind {
+            return v;
+        }
+        let t = self.temp();
+        self.expr_into(e, t);
+        t
+    }
+
+    /// An operand for the left side of a binary operation whose right side
+    /// is `right`: copied to a temporary when the right side may change it.
+    pub(in crate::interp::vm) fn left(&mut self, e: &Ex, right: &Ex) -> Var {
+        self.operand_before(e, [right])
+    }
+
+    /// An operand read before the operands `later`: copied to a temporary
+    /// when one of them may change it.
+    pub(in crate::interp::vm) fn operand_before<'e>(
+        &mut self,
+        e: &Ex,
+        later: impl IntoIterator<Item = &'e Ex>,
+    ) -> Var {
+        let a = self.expr(e);
+        if !self.is_temp(a) && later.into_iter().any(effects) {
+            self.holds(e.ty);
+            let t = self.temp();
+            self.ops.push(Op::Move(t, a));
+            return t;
+        }
+        a
+    }
+
+    /// Evaluates `e` into `dst`, which is written once, at the end.
+    pub(in crate::interp::vm) fn expr_into(&mut self, e: &Ex, dst: Var) {
+        self.holds(e.ty);
+        let span = e.span;
+        match &e.kind {
+            ExKind::Int(v) => self.ops.push(Op::Int(dst, *v)),
+            ExKind::Real(v) => self.ops.push(Op::Real(dst, *v)),
+            ExKind::Var(v) => self.ops.push(Op::Move(dst, *v)),
+            ExKind::IntBin(op, a, b) => {
+                if let ExKind::Int(k) = b.kind {
+                    let x = self.expr(a);
+                    self.ops.push(Op::IntBinK(*op, dst, x, k, span));
+                    return;
+                }
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::IntBin(*op, dst, x, y, span));
+            }
+            ExKind::IntNeg(a) => {
+                let x = self.expr(a);
+                self.ops.push(Op::IntNeg(dst, x, span));
+            }
+            ExKind::ModBin(op, a, b) => {
+                let last = self.types.modular_last(e.ty).unwrap_or(u32::MAX);
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::ModBin(*op, dst, x, y, last, span));
+            }
+            ExKind::FloatBin(op, a, b) => {
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::FloatBin(*op, dst, x, y));
+            }
+            ExKind::IntToFloat(a) => {
+                let x = self.expr(a);
+                self.ops.push(Op::ToReal(dst, x));
+            }
+            ExKind::Cmp(op, a, b) if matches!(b.kind, ExKind::Int(_)) => {
+                let ExKind::Int(k) = b.kind else {
+                    unreachable!()
+                };
+                let x = self.expr(a);
+                self.ops.push(Op::CmpK(*op, dst, x, k));
+            }
+            ExKind::Cmp(op, a, b) => {
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::Cmp(*op, dst, x, y));
+            }
+            ExKind::Eq(ne, a, b) => {
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::Eq(*ne, dst, x, y));
+            }
+            ExKind::Logic(op @ (LogicOp::AndThen | LogicOp::OrElse), a, b) => {
+                // The result is built in a temporary: `dst` may be read by `b`.
+                let t = self.temp();
+                self.expr_into(a, t);
+                let j = self.ops.len();
+                self.ops.push(if *op == LogicOp::AndThen {
+                    Op::JumpIfNot(t, 0)
+                } else {
+                    Op::JumpIf(t, 0)
+                });
+                self.expr_into(b, t);
+                let end = self.here();
+                self.patch(j, end);
+                self.ops.push(Op::Move(dst, t));
+            }
+            ExKind::Logic(op, a, b) => {
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::Logic(*op, dst, x, y));
+            }
+            ExKind::Not(a) => {
+                let x = self.expr(a);
+                self.ops.push(Op::Not(dst, x));
+            }
+            ExKind::RangeCheck(a, t) => {
+                let x = self.expr(a);
+                self.ops.push(Op::RangeCheck(x, *t, span));
+                self.ops.push(Op::Move(dst, x));
+            }
+            ExKind::Index(p, idx) if matches!(p.kind, ExKind::Var(_)) && idx.len() <= 4 => {
+                let ExKind::Var(arr) = p.kind else {
+                    unreachable!()
+                };
+                let mut ix = Vec::with_capacity(idx.len());
+                for (k, x) in idx.iter().enumerate() {
+                    let later_effects = idx[k + 1..].iter().any(effects);
+                    let mut v = self.expr(x);
+                    if later_effects && !self.is_temp(v) {
+                        let t = self.temp();
+                        self.ops.push(Op::Move(t, v));
+                        v = t;
+                    }
+                    ix.push(v);
+                }
+                self.ops.push(match ix[..] {
+                    [i] => Op::Index1(dst, arr, i, span),
+                    [i, j] => Op::Index2(dst, arr, [i, j], span),
+                    _ => Op::Index(dst, arr, ix.into(), span),
+                });
+            }
+            ExKind::Field(p, i) => match &p.kind {
+                ExKind::Deref(a) => {
+                    let x = self.expr(a);
+                    self.ops.push(Op::DerefField(dst, x, *i, p.span, span));
+                }
+                _ => {
+                    let x = self.expr(p);
+                    self.ops.push(Op::Field(dst, x, *i, span));
+                }
+            },
+            ExKind::Null => self.ops.push(Op::Null(dst)),
+            ExKind::Call(f, args) => self.call(*f, Some(args), Some(dst), span),
+            ExKind::If(arms, els) => {
+                let t = self.temp();
+                let mut ends = Vec::new();
+                for (c, v) in arms.iter() {
+                    let x = self.expr(c);
+                    let j = self.ops.len();
+                    self.ops.push(Op::JumpIfNot(x, 0));
+                    self.expr_into(v, t);
+                    ends.push(self.ops.len());
+                    self.ops.push(Op::Jump(0));
+                    let next = self.here();
+                    self.patch(j, next);
+                }
+                self.expr_into(els, t);
+                let end = self.here();
+                for j in ends {
+                    self.patch(j, end);
+                }
+                self.ops.push(Op::Move(dst, t));
+            }
+            // A task made by an allocator is activated by it, which waits
+            // for the activation (Tasking_Error when it fails, and the
+            // target keeps its value).
+            ExKind::Alloc(None, _) if self.has_task(e.ty) => {
+                let t = self.temp();
+                self.ops.push(Op::AllocTask(t, Box::new(e.clone())));
+                self.ops.push(Op::Activate(span));
+                self.ops.push(Op::Move(dst, t));
+            }
+            ExKind::Case(c) => {
+                let (subj, arms, others) = &**c;
+                let t = self.temp();
+                let x = self.expr(subj);
+                self.case(x, span, arms, others.as_ref(), |c, v| c.expr_into(v, t));
+                self.ops.push(Op::Move(dst, t));
+            }
+            ExKind::Str(s) => self.ops.push(Op::Str(dst, Value::str(s))),
+            ExKind::Slice(p, lh) => {
+                let (l, h) = (&lh[0], &lh[1]);
+                // The base is read before the bounds, as the walker does.
+                let base = self.operand_before(p, [l, h]);
+                let lo = self.left(l, h);
+                let hi = self.expr(h);
+                self.ops.push(Op::Slice(dst, base, [lo, hi], span));
+            }
+            ExKind::Concat(a, b, xe, ye) => {
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::Concat(Box::new(ConcatOp {
+                    dst,
+                    x,
+                    y,
+                    elems: (*xe, *ye),
+                    takes: (self.is_temp(x), self.is_temp(y) && x != y),
+                    ty: e.ty,
+                    span,
+                })));
+            }
+            // `'Pos` and `'Val` are the value itself (a check of `'Val`'s
+            // range is a node of its own).
+            ExKind::Attr(AttrOp::Pos | AttrOp::Val, args) if args.len() == 1 => {
+                self.expr_into(&args[0], dst)
+            }
+            ExKind::Attr(op, args) if args.len() <= 2 => {
+                // Each argument before the next is evaluated (a later one
+                // with effects must not change an earlier one).
+                let mut vars = Vec::with_capacity(args.len());
+                for (i, a) in args.iter().enumerate() {
+                    vars.push(self.operand_before(a, &args[i + 1..]));
+                }
+                let temps = vars
+                    .iter()
+                    .enumerate()
+                    .map(|(i, v)| self.is_temp(*v) && !vars[..i].contains(v))
+                    .collect();
+                self.ops.push(Op::Attr(Box::new(AttrInstr {
+                    op: *op,
+                    dst,
+                    args: vars.into(),
+                    temps,
+                    ty: e.ty,
+                    span,
+                })));
+            }
+            _ => {
+                let (copy, temps) = self
+                    .strict_copy(e)
+                    .unwrap_or_else(|| (e.clone(), Vec::new()));
+                self.ops.push(Op::Eval(dst, Box::new(copy), temps.into()));
+            }
+        }
+    }
+
+    /// For a node that evaluates each of its operands once, in order, and
+    /// has a call among them: the operands computed here (so that the calls
+    /// run compiled), and a copy of the node that reads them from their
+    /// temporaries, for the walker. None: the walker takes the node whole.
+    pub(in crate::interp::vm) fn strict_copy(&mut self, e: &Ex) -> Option<(Ex, Vec<Var>)> {
+        let kids: Vec<&Ex> = match &e.kind {
+            ExKind::Attr(_, args) => args.iter().collect(),
+            ExKind::Concat(a, b, ..) | ExKind::ArrLogic(_, a, b) => vec![a, b],
+            ExKind::ArrNot(a) => vec![a],
+            ExKind::FloatNeg(a)
+            | ExKind::IntAbs(a)
+            | ExKind::FloatAbs(a)
+            | ExKind::FloatToInt(a)
+            | ExKind::Deref(a)
+            | ExKind::ArrayConvert(a, _) => vec![a],
+            ExKind::Slice(p, lh) => vec![p, &lh[0], &lh[1]],
+            ExKind::Index(p, idx) => std::iter::once(&**p).chain(idx.iter()).collect(),
+            _ => return None,
+        };
+        if !kids.iter().any(|k| effects(k)) {
+            return None;
+        }
+        let mut temps = Vec::with_capacity(kids.len());
+        let vars: Vec<Ex> = kids
+            .iter()
+            .map(|k| {
+                let t = self.temp();
+                self.expr_into(k, t);
+                temps.push(t);
+                Ex {
+                    kind: ExKind::Var(t),
+                    ty: k.ty,
+                    span: k.span,
+                }
+            })
+            .collect();
+        let mut v = vars.into_iter();
+        let mut next = || Box::new(v.next().expect("an operand"));
+        let kind = match &e.kind {
+            ExKind::Attr(op, args) => {
+                ExKind::Attr(*op, Box::new(args.iter().map(|_| *next()).collect()))
+            }
+            ExKind::Concat(_, _, x, y) => ExKind::Concat(next(), next(), *x, *y),
+            ExKind::ArrLogic(op, ..) => ExKind::ArrLogic(*op, next(), next()),
+            ExKind::ArrNot(_) => ExKind::ArrNot(next()),
+            ExKind::FloatNeg(_) => ExKind::FloatNeg(next()),
+            ExKind::IntAbs(_) => ExKind::IntAbs(next()),
+            ExKind::FloatAbs(_) => ExKind::FloatAbs(next()),
+            ExKind::FloatToInt(_) => ExKind::FloatToInt(next()),
+            ExKind::Deref(_) => ExKind::Deref(next()),
+            ExKind::ArrayConvert(_, t) => ExKind::ArrayConvert(next(), *t),
+            ExKind::Slice(..) => ExKind::Slice(next(), Box::new([*next(), *next()])),
+            ExKind::Index(_, idx) => {
+                let p = next();
+                ExKind::Index(p, Box::new(idx.iter().map(|_| *next()).collect()))
+            }
+            _ => unreachable!("only the kinds above are copied"),
+        };
+        Some((
+            Ex {
+                kind,
+                ty: e.ty,
+                span: e.span,
+            },
+            temps,
+        ))
+    }
+}

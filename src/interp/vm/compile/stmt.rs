@@ -1,0 +1,245 @@
+//! Compiling statements: assignments, control flow, loops, case, blocks.
+
+use super::*;
+
+impl<'r> Compiler<'r> {
+    pub(in crate::interp::vm) fn stmts(&mut self, ss: &[Stmt]) {
+        for s in ss {
+            let mark = self.ntemp;
+            self.stmt(s);
+            self.ntemp = mark;
+        }
+    }
+
+    pub(in crate::interp::vm) fn stmt(&mut self, s: &Stmt) {
+        match &s.kind {
+            StmtKind::Null => {}
+            StmtKind::Init(v, e) => self.expr_into(e, *v),
+            // An array target keeps its bounds (the walker's `assign`
+            // checks the length and slides).
+            StmtKind::Assign(t, e) => match &t.kind {
+                ExKind::Var(v) if !self.is_array(t.ty) => self.expr_into(e, *v),
+                ExKind::Index(p, idx)
+                    if matches!(p.kind, ExKind::Var(_))
+                        && !self.is_array(t.ty)
+                        && idx.len() <= 4
+                        && !idx.iter().any(effects) =>
+                {
+                    let ExKind::Var(arr) = p.kind else {
+                        unreachable!()
+                    };
+                    let src = self.expr(e);
+                    let src = if self.is_temp(src) {
+                        src
+                    } else {
+                        self.holds(e.ty);
+                        let t = self.temp();
+                        self.ops.push(Op::Move(t, src));
+                        t
+                    };
+                    let ix: Vec<Var> = idx.iter().map(|x| self.expr(x)).collect();
+                    self.ops.push(match ix[..] {
+                        [i] => Op::StoreIndex1(arr, i, src, t.span),
+                        [i, j] => Op::StoreIndex2(arr, [i, j], src, t.span),
+                        _ => Op::StoreIndex(arr, ix.into(), src, t.span),
+                    });
+                }
+                _ => {
+                    let src = self.temp();
+                    self.expr_into(e, src);
+                    self.ops.push(Op::Assign(Box::new(t.clone()), src));
+                }
+            },
+            StmtKind::Call(f, args) => self.call(*f, Some(args), None, s.span),
+            StmtKind::If(arms, els) => {
+                let mut ends = Vec::new();
+                for (c, body) in arms {
+                    let mark = self.ntemp;
+                    let j = self.jump_unless(c);
+                    self.ntemp = mark;
+                    self.stmts(body);
+                    ends.push(self.ops.len());
+                    self.ops.push(Op::Jump(0));
+                    let next = self.here();
+                    self.patch(j, next);
+                }
+                self.stmts(els);
+                let end = self.here();
+                for j in ends {
+                    self.patch(j, end);
+                }
+            }
+            StmtKind::Case(subj, arms, others) => {
+                let x = self.expr(subj);
+                self.case(x, s.span, arms, others.as_ref(), |c, b| c.stmts(b));
+            }
+            StmtKind::Loop { id, body } => {
+                let top = self.here();
+                self.ops.push(Op::Poll(s.span));
+                self.loop_body(*id, body);
+                self.ops.push(Op::Jump(top));
+                self.end_loop(*id);
+            }
+            StmtKind::While { id, cond, body } => {
+                let top = self.here();
+                let j = self.jump_unless(cond);
+                self.ops.push(Op::Poll(s.span));
+                self.loop_body(*id, body);
+                self.ops.push(Op::Jump(top));
+                let end = self.end_loop(*id);
+                self.patch(j, end);
+            }
+            StmtKind::For(f) => {
+                let (l, h) = (self.temp(), self.temp());
+                self.expr_into(&f.lo, l);
+                self.expr_into(&f.hi, h);
+                let start = self.ops.len();
+                self.ops.push(Op::ForStart(f.var, l, h, f.reverse, 0));
+                let body_pc = self.here();
+                self.loop_body(f.id, &f.body);
+                self.ops
+                    .push(Op::ForNext(f.var, l, h, f.reverse, body_pc, s.span));
+                let end = self.end_loop(f.id);
+                self.patch(start, end);
+            }
+            StmtKind::Exit(id, cond) => {
+                let Some(k) = self.loops.iter().rposition(|(l, ..)| l == id) else {
+                    self.ops.push(Op::Exec(Box::new(s.clone())));
+                    return;
+                };
+                let skip = cond.as_ref().map(|c| self.jump_unless(c));
+                let depth = self.loops[k].2;
+                if depth < self.hdepth {
+                    self.ops.push(Op::TruncCurrent(depth));
+                }
+                for _ in self.loops[k].3..self.masters {
+                    self.ops.push(Op::MasterLeave(s.span));
+                }
+                let j = self.ops.len();
+                self.ops.push(Op::Jump(0));
+                self.loops[k].1.push(j);
+                if let Some(j) = skip {
+                    let next = self.here();
+                    self.patch(j, next);
+                }
+            }
+            StmtKind::Return(Some(e)) if self.masters == 0 && int_bin(e).is_some() => {
+                let (op, a, b) = int_bin(e).expect("an integer operation");
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::ReturnIntBin(op, x, y, e.span));
+            }
+            StmtKind::Return(v) => {
+                let x = v.as_ref().map(|e| self.expr(e));
+                for _ in 0..self.masters {
+                    self.ops.push(Op::MasterLeave(s.span));
+                }
+                self.ops.push(Op::Return(x));
+            }
+            StmtKind::Block(b) => self.body(b),
+            StmtKind::Raise(..) | StmtKind::Reraise => self.ops.push(Op::Exec(Box::new(s.clone()))),
+            StmtKind::Delay(until, d) => {
+                let x = self.expr(d);
+                self.ops.push(Op::Delay(x, *until, s.span));
+            }
+            StmtKind::Activate => self.ops.push(Op::Activate(s.span)),
+            StmtKind::NoteMaster(v) => self.ops.push(Op::NoteMaster(*v)),
+            StmtKind::Master(b) => {
+                self.ops.push(Op::MasterEnter);
+                self.masters += 1;
+                self.guarded(
+                    |c| c.body(b),
+                    Op::MasterLeave(s.span),
+                    Op::MasterUnwind(s.span),
+                );
+                self.masters -= 1;
+            }
+            StmtKind::Accept(a) => self.accept(a, s.span),
+            StmtKind::EntryCall(ec) => {
+                let other = self.entry_call(ec, None, false, s.span);
+                debug_assert!(other.is_none());
+            }
+            StmtKind::TimedCall(tc) => {
+                let amount = tc.delay.as_ref().map(|(until, d)| (self.expr(d), *until));
+                let at = self.entry_call(&tc.call, amount, tc.delay.is_none(), s.span);
+                self.stmts(&tc.then);
+                let j = self.ops.len();
+                self.ops.push(Op::Jump(0));
+                let other = self.here();
+                if let Some(at) = at {
+                    self.set_other(at, other);
+                }
+                self.stmts(&tc.other);
+                let end = self.here();
+                self.patch(j, end);
+            }
+            StmtKind::ProtCall(f, args) => {
+                self.call(*f, Some(args), None, s.span);
+                let obj = self.expr(&args.last().expect("the object").value);
+                let bargs = self.obj_args(obj, &args.last().expect("the object").value);
+                self.ops.push(Op::ProtDone(obj, bargs, s.span));
+            }
+            StmtKind::Select(sel) => self.select(sel, s.span),
+            StmtKind::Compiled(p) => {
+                match p.take::<Part>() {
+                    Some(part) => self.splice(part),
+                    // Compiled once already: the walker raises.
+                    None => self.ops.push(Op::Exec(Box::new(s.clone()))),
+                }
+            }
+            StmtKind::Abort(ts) => {
+                let ops: Vec<Var> = ts.iter().map(|t| self.expr(t)).collect();
+                self.ops.push(Op::Abort(ops.into()));
+            }
+        }
+    }
+
+    /// A `case` (statement or expression) on `x`: a jump table to each
+    /// alternative, compiled by `each`, and from each to the end.
+    pub(in crate::interp::vm) fn case<T>(
+        &mut self,
+        x: Var,
+        span: Span,
+        arms: &[(Vec<(i64, i64)>, T)],
+        others: Option<&T>,
+        mut each: impl FnMut(&mut Self, &T),
+    ) {
+        let at = self.ops.len();
+        self.ops.push(Op::Case(x, Box::new([]), None, span));
+        let mut table = Vec::new();
+        let mut ends = Vec::new();
+        for (ranges, alt) in arms {
+            let target = self.here();
+            table.extend(ranges.iter().map(|(l, h)| (*l, *h, target)));
+            each(self, alt);
+            ends.push(self.ops.len());
+            self.ops.push(Op::Jump(0));
+        }
+        let other = others.map(|alt| {
+            let target = self.here();
+            each(self, alt);
+            target
+        });
+        let end = self.here();
+        for j in ends {
+            self.patch(j, end);
+        }
+        self.ops[at] = Op::Case(x, table.into(), other, span);
+    }
+
+    pub(in crate::interp::vm) fn loop_body(&mut self, id: u32, body: &[Stmt]) {
+        self.loops.push((id, Vec::new(), self.hdepth, self.masters));
+        self.stmts(body);
+    }
+
+    /// Ends the innermost loop: its exits jump here. Returns the target.
+    pub(in crate::interp::vm) fn end_loop(&mut self, id: u32) -> u32 {
+        let end = self.here();
+        let (_, jumps, depth, _) = self.loops.pop().expect("a loop");
+        for j in jumps {
+            self.patch(j, end);
+        }
+        self.exits.push((id, end, depth));
+        end
+    }
+}

@@ -1,0 +1,951 @@
+//! The execution loop, and its helpers over frame slots.
+
+use super::*;
+
+impl<'a> Run<'a> {
+    #[inline(always)]
+    pub(super) fn sl(&self, v: Var) -> usize {
+        self.m.display[v.level as usize] + v.slot as usize
+    }
+
+    #[inline(always)]
+    pub(super) fn int_at(&self, v: Var) -> i64 {
+        self.int_ix(self.sl(v))
+    }
+
+    /// How the values in slots `a` and `b` compare (as `Value::compare`,
+    /// integers inline).
+    #[inline(always)]
+    pub(super) fn order_ix(&self, a: usize, b: usize) -> std::cmp::Ordering {
+        let (x, y) = (&self.m.stack[a], &self.m.stack[b]);
+        match (x, y) {
+            (Value::Int(p), Value::Int(q)) => p.cmp(q),
+            _ => x.compare(y),
+        }
+    }
+
+    /// How the value in slot `a` compares with the integer `k`.
+    #[inline(always)]
+    pub(super) fn order_k(&self, a: usize, k: i64) -> std::cmp::Ordering {
+        match &self.m.stack[a] {
+            Value::Int(x) => x.cmp(&k),
+            other => other.compare(&Value::Int(k)),
+        }
+    }
+
+    /// The integer in stack slot `i`.
+    #[inline(always)]
+    pub(super) fn int_ix(&self, i: usize) -> i64 {
+        match &self.m.stack[i] {
+            Value::Int(i) => *i,
+            other => other.int(),
+        }
+    }
+
+    /// `dst := x op y` for integers: addition and subtraction inline, the
+    /// rest (and every overflow) through the walker's own checks.
+    #[inline(always)]
+    pub(super) fn int_arith(&mut self, o: IntOp, d: usize, x: i64, y: i64, span: Span) -> R<()> {
+        self.int_value(o, x, y, span).map(|v| self.put_int_ix(d, v))
+    }
+
+    /// `x op y` for integers, as [`Self::int_arith`] computes it.
+    #[inline(always)]
+    pub(super) fn int_value(&self, o: IntOp, x: i64, y: i64, span: Span) -> R<i64> {
+        self.int_value_at(o, x, y, || span)
+    }
+
+    /// [`Self::int_value`] whose place is made only when a check fails.
+    #[inline(always)]
+    pub(super) fn int_value_at(
+        &self,
+        o: IntOp,
+        x: i64,
+        y: i64,
+        span: impl FnOnce() -> Span,
+    ) -> R<i64> {
+        let quick = match o {
+            IntOp::Add => Some(x + y),
+            IntOp::Sub => Some(x - y),
+            _ => None,
+        };
+        match quick {
+            Some(v) if (i32::MIN as i64..=i32::MAX as i64).contains(&v) => Ok(v),
+            _ => self.int_op(o, x, y, span()),
+        }
+    }
+
+    #[inline(always)]
+    pub(super) fn put(&mut self, v: Var, x: Value) {
+        self.put_ix(self.sl(v), x);
+    }
+
+    #[inline(always)]
+    pub(super) fn put_ix(&mut self, i: usize, x: Value) {
+        set(&mut self.m.stack[i], x);
+    }
+
+    /// `put_ix` of an integer: a slot that holds one already is written in
+    /// place (nothing to drop).
+    #[inline(always)]
+    pub(super) fn put_int_ix(&mut self, i: usize, x: i64) {
+        match &mut self.m.stack[i] {
+            Value::Int(y) => *y = x,
+            s => value::overwrite(s, Value::Int(x)),
+        }
+    }
+
+    /// `put_ix` of a real, in place like [`Self::put_int`].
+    #[inline(always)]
+    pub(super) fn put_real_ix(&mut self, i: usize, x: f64) {
+        match &mut self.m.stack[i] {
+            Value::Real(y) => *y = x,
+            s => value::overwrite(s, Value::Real(x)),
+        }
+    }
+
+    /// Runs level-0 code to its end.
+    pub(super) fn exec_code<'c>(&mut self, cache: &mut Codes<'c>, code: &'c Code) -> R<()> {
+        let need = self.c.globals as usize + code.temps as usize;
+        self.m.stack.grow_to(need);
+        let mut frames: Vec<Frame<'c>> = Vec::new();
+        let level0 = code;
+        let mut cur = code;
+        let mut pc: u32 = 0;
+        let mut current_base = self.m.current.len();
+        let mut pending: Option<Box<Occurrence>> = None;
+        let mut enter: Option<Entered<'c>> = None;
+        // A task's own frame (None: the main program's code).
+        let mut root: Option<(usize, usize)> = None;
+        // The running code's level and where its frame begins: an operand
+        // of the code's own frame is found without the display.
+        let mut lvl = cur.level;
+        let mut fp = self.m.display.get(lvl as usize).copied().unwrap_or(0);
+        macro_rules! ix {
+            ($v:expr) => {{
+                let v: Var = $v;
+                if v.level == lvl {
+                    fp + v.slot as usize
+                } else {
+                    self.sl(v)
+                }
+            }};
+        }
+        // Enters a called frame: the running code is saved with its resume
+        // point, and the callee's code starts.
+        macro_rules! push_frame {
+            ($entered:expr, $dst:expr) => {
+                let (code, base, saved) = $entered;
+                frames.push(Frame {
+                    code: std::mem::replace(&mut cur, code),
+                    pc,
+                    current: current_base,
+                    base,
+                    saved,
+                    fp,
+                    dst: $dst,
+                });
+                current_base = self.m.current.len();
+                pc = 0;
+            };
+        }
+        // A call's quick way in: the callee's frame is the running one.
+        macro_rules! enter {
+            ($entered:expr, $dst:expr) => {{
+                let entered = $entered;
+                let base = entered.1;
+                push_frame!(entered, $dst);
+                lvl = cur.level;
+                fp = base;
+                continue;
+            }};
+        }
+        macro_rules! reload {
+            () => {
+                lvl = cur.level;
+                fp = self.m.display.get(lvl as usize).copied().unwrap_or(0);
+            };
+        }
+        // `dst := arr (idx)` and `arr (idx) := src` for the first `n`
+        // indices (the instructions with one, two and more indices).
+        macro_rules! load_index {
+            ($d:ident, $arr:ident, $idx:ident, $n:expr, $span:ident) => {{
+                // Scalars are copied out as such: a `Value` moved through
+                // the native stack costs a drop call and a store stall.
+                let got = match &self.m.stack[ix!(*$arr)] {
+                    Value::Arr(a) => match a.offset(&$idx[..$n]) {
+                        Some(o) => match &a.data[o] {
+                            Value::Real(x) => Ok(Err(*x)),
+                            v => Ok(Ok(v.clone())),
+                        },
+                        None => Err("index check failed"),
+                    },
+                    _ => Err("access check failed"),
+                };
+                match got {
+                    Ok(Err(x)) => {
+                        self.put_real_ix(ix!(*$d), x);
+                        continue;
+                    }
+                    Ok(Ok(v)) => {
+                        self.put_ix(ix!(*$d), v);
+                        continue;
+                    }
+                    Err(what) => Err(self.check_failed(what, *$span)),
+                }
+            }};
+        }
+        macro_rules! store_index {
+            ($arr:ident, $idx:ident, $n:expr, $src:ident, $span:ident) => {{
+                let i = ix!(*$src);
+                // A real goes as such (see `Index`), anything else is
+                // taken from its temporary.
+                let val = match &mut self.m.stack[i] {
+                    Value::Real(x) => Err(*x),
+                    v => Ok(std::mem::take(v)),
+                };
+                let slot = ix!(*$arr);
+                let r = match &mut self.m.stack[slot] {
+                    Value::Arr(a) => {
+                        let a = Rc::make_mut(a);
+                        match a.offset(&$idx[..$n]) {
+                            Some(o) => {
+                                match (val, &mut a.data[o]) {
+                                    (Err(x), Value::Real(y)) => *y = x,
+                                    (Err(x), s) => value::overwrite(s, Value::Real(x)),
+                                    (Ok(v), s) => set(s, v),
+                                }
+                                Ok(())
+                            }
+                            None => Err("index check failed"),
+                        }
+                    }
+                    _ => Err("access check failed"),
+                };
+                match r {
+                    Ok(()) => continue,
+                    Err(what) => Err(self.check_failed(what, *$span)),
+                }
+            }};
+        }
+        // A return of `$value` (an integer, or any value, or none): from a
+        // call without `out` parameters the frame goes and the value lands
+        // here; everything else takes the long way after the match.
+        macro_rules! ret {
+            ($value:expr) => {{
+                let value: Result<i64, Option<Value>> = $value;
+                let frame = if cur.all_in { frames.pop() } else { None };
+                if let Some(frame) = frame {
+                    self.pop_frame(&frame, cur, current_base);
+                    cur = frame.code;
+                    pc = frame.pc;
+                    current_base = frame.current;
+                    lvl = cur.level;
+                    fp = frame.fp;
+                    debug_assert_eq!(fp, self.m.display.get(lvl as usize).copied().unwrap_or(0));
+                    if frame.dst != NO_DST {
+                        match value {
+                            Ok(n) => self.put_int_ix(frame.dst, n),
+                            Err(v) => self.put_ix(frame.dst, v.unwrap_or_default()),
+                        }
+                    }
+                    continue;
+                }
+                Err(Flow::Return(match value {
+                    Ok(n) => Some(Value::Int(n)),
+                    Err(v) => v,
+                }))
+            }};
+        }
+        loop {
+            let op = &cur.ops[pc as usize];
+            pc += 1;
+            let r: R<()> = match op {
+                // The instructions that cannot block, call or return go on
+                // with the next one straight away (`continue`) when they
+                // succeed; only the others pass the checks after the match.
+                Op::Int(d, v) => {
+                    self.put_int_ix(ix!(*d), *v);
+                    continue;
+                }
+                Op::Real(d, v) => {
+                    self.put_real_ix(ix!(*d), *v);
+                    continue;
+                }
+                Op::Move(d, s) => {
+                    let v = self.m.stack[ix!(*s)].clone();
+                    self.put_ix(ix!(*d), v);
+                    continue;
+                }
+                Op::IntBin(o, d, a, b, span) => {
+                    let (x, y) = (self.int_ix(ix!(*a)), self.int_ix(ix!(*b)));
+                    match self.int_arith(*o, ix!(*d), x, y, *span) {
+                        Ok(()) => continue,
+                        r => r,
+                    }
+                }
+                Op::IntBinK(o, d, a, y, span) => {
+                    let x = self.int_ix(ix!(*a));
+                    match self.int_arith(*o, ix!(*d), x, *y, *span) {
+                        Ok(()) => continue,
+                        r => r,
+                    }
+                }
+                Op::CmpK(o, d, a, k) => {
+                    let ord = self.order_k(ix!(*a), *k);
+                    let r = holds(*o, ord);
+                    self.put_int_ix(ix!(*d), r as i64);
+                    continue;
+                }
+                Op::IntNeg(d, a, span) => {
+                    let x = self.int_ix(ix!(*a));
+                    self.int_op(IntOp::Sub, 0, x, *span)
+                        .map(|v| self.put_ix(ix!(*d), Value::Int(v)))
+                }
+                Op::ModBin(o, d, a, b, last, span) => {
+                    let (x, y) = (self.int_ix(ix!(*a)), self.int_ix(ix!(*b)));
+                    match crate::check::ir::modular(*o, x, y, *last) {
+                        Some(v) => {
+                            self.put_int_ix(ix!(*d), v);
+                            continue;
+                        }
+                        None => Err(self.check_failed("divide by zero", *span)),
+                    }
+                }
+                Op::FloatBin(o, d, a, b) => {
+                    let x = self.m.stack[ix!(*a)].real();
+                    let yv = &self.m.stack[ix!(*b)];
+                    let v = value::float_op(*o, x, yv);
+                    self.put_real_ix(ix!(*d), v);
+                    continue;
+                }
+                Op::ToReal(d, a) => {
+                    let x = self.m.stack[ix!(*a)].real();
+                    self.put_real_ix(ix!(*d), x);
+                    continue;
+                }
+                Op::Cmp(o, d, a, b) => {
+                    let ord = self.order_ix(ix!(*a), ix!(*b));
+                    let r = holds(*o, ord);
+                    self.put_int_ix(ix!(*d), r as i64);
+                    continue;
+                }
+                Op::Eq(ne, d, a, b) => {
+                    let same = self.m.stack[ix!(*a)] == self.m.stack[ix!(*b)];
+                    self.put_int_ix(ix!(*d), (same != *ne) as i64);
+                    continue;
+                }
+                Op::Logic(o, d, a, b) => {
+                    let (x, y) = (self.int_ix(ix!(*a)) != 0, self.int_ix(ix!(*b)) != 0);
+                    let r = match o {
+                        LogicOp::And | LogicOp::AndThen => x && y,
+                        LogicOp::Or | LogicOp::OrElse => x || y,
+                        LogicOp::Xor => x ^ y,
+                    };
+                    self.put_int_ix(ix!(*d), r as i64);
+                    continue;
+                }
+                Op::Not(d, a) => {
+                    let x = self.int_ix(ix!(*a)) == 0;
+                    self.put_int_ix(ix!(*d), x as i64);
+                    continue;
+                }
+                Op::RangeCheck(a, t, span) => {
+                    let v = self.m.stack[ix!(*a)].clone();
+                    match self.range_check(&v, *t, *span) {
+                        Ok(()) => continue,
+                        r => r,
+                    }
+                }
+                Op::Index(d, arr, ix, span) => {
+                    let mut idx = [0i64; 4];
+                    for (k, v) in ix.iter().enumerate() {
+                        idx[k] = self.int_ix(ix!(*v));
+                    }
+                    load_index!(d, arr, idx, ix.len(), span)
+                }
+                Op::Index1(d, arr, i, span) => {
+                    let idx = [self.int_ix(ix!(*i))];
+                    load_index!(d, arr, idx, 1, span)
+                }
+                Op::Index2(d, arr, [i, j], span) => {
+                    let idx = [self.int_ix(ix!(*i)), self.int_ix(ix!(*j))];
+                    load_index!(d, arr, idx, 2, span)
+                }
+                Op::StoreIndex(arr, ix, src, span) => {
+                    let mut idx = [0i64; 4];
+                    for (k, v) in ix.iter().enumerate() {
+                        idx[k] = self.int_ix(ix!(*v));
+                    }
+                    store_index!(arr, idx, ix.len(), src, span)
+                }
+                Op::StoreIndex1(arr, i, src, span) => {
+                    let idx = [self.int_ix(ix!(*i))];
+                    store_index!(arr, idx, 1, src, span)
+                }
+                Op::StoreIndex2(arr, [i, j], src, span) => {
+                    let idx = [self.int_ix(ix!(*i)), self.int_ix(ix!(*j))];
+                    store_index!(arr, idx, 2, src, span)
+                }
+                Op::Field(d, a, i, span) => {
+                    let got = match &self.m.stack[ix!(*a)] {
+                        Value::Rec(r) => Some(r[*i as usize].clone()),
+                        _ => None,
+                    };
+                    match got {
+                        Some(v) => {
+                            self.put_ix(ix!(*d), v);
+                            continue;
+                        }
+                        None => Err(self.check_failed("discriminant check failed", *span)),
+                    }
+                }
+                Op::DerefField(d, a, i, at_deref, at_field) => {
+                    let got = match &self.m.stack[ix!(*a)] {
+                        Value::Ptr(Some(o)) => match &*o.borrow() {
+                            Value::Rec(r) => Ok(r[*i as usize].clone()),
+                            _ => Err(("discriminant check failed", *at_field)),
+                        },
+                        _ => Err(("access check failed", *at_deref)),
+                    };
+                    match got {
+                        Ok(v) => {
+                            self.put_ix(ix!(*d), v);
+                            continue;
+                        }
+                        Err((what, span)) => Err(self.check_failed(what, span)),
+                    }
+                }
+                Op::Null(d) => {
+                    self.put_ix(ix!(*d), Value::Ptr(None));
+                    continue;
+                }
+                Op::Slice(d, b, [l, h], span) => {
+                    let (l, h) = (self.int_ix(ix!(*l)), self.int_ix(ix!(*h)));
+                    let bi = ix!(*b);
+                    let base = std::mem::take(&mut self.m.stack[bi]);
+                    let r = self.slice_of(&base, l, h, *span);
+                    self.m.stack[bi] = base;
+                    r.map(|v| self.put_ix(ix!(*d), v))
+                }
+                Op::Str(d, v) => {
+                    self.put_ix(ix!(*d), v.clone());
+                    continue;
+                }
+                Op::Concat(c) => {
+                    let (xi, yi) = (ix!(c.x), ix!(c.y));
+                    let x = if c.takes.0 {
+                        std::mem::take(&mut self.m.stack[xi])
+                    } else {
+                        self.m.stack[xi].clone()
+                    };
+                    let y = if c.takes.1 {
+                        std::mem::take(&mut self.m.stack[yi])
+                    } else {
+                        self.m.stack[yi].clone()
+                    };
+                    let (xe, ye) = c.elems;
+                    self.concat(x, y, xe, ye, c.ty, c.span)
+                        .map(|v| self.put_ix(ix!(c.dst), v))
+                }
+                Op::Attr(a) => {
+                    let mut vals = [Value::Undef, Value::Undef];
+                    for ((v, take), val) in a.args.iter().zip(a.temps.iter()).zip(&mut vals) {
+                        let i = ix!(*v);
+                        *val = if *take {
+                            std::mem::take(&mut self.m.stack[i])
+                        } else {
+                            self.m.stack[i].clone()
+                        };
+                    }
+                    let [a0, a1] = vals;
+                    self.attr_of(a.op, a0, a1, a.ty, a.span)
+                        .map(|v| self.put_ix(ix!(a.dst), v))
+                }
+                Op::Eval(d, e, temps) => {
+                    let r = self.eval(e).map(|v| self.put_ix(ix!(*d), v));
+                    for t in temps.iter() {
+                        let i = ix!(*t);
+                        self.m.stack[i] = Value::Undef;
+                    }
+                    r
+                }
+                Op::Assign(t, s) => {
+                    let i = ix!(*s);
+                    let v = std::mem::take(&mut self.m.stack[i]);
+                    self.assign(t, v)
+                }
+                Op::Exec(s) => self.exec(s),
+                Op::Jump(t) => {
+                    pc = *t;
+                    continue;
+                }
+                Op::JumpIfNot(c, t) => {
+                    if self.int_ix(ix!(*c)) == 0 {
+                        pc = *t;
+                    }
+                    continue;
+                }
+                Op::CmpKJumpNot(o, a, k, t) => {
+                    let ord = self.order_k(ix!(*a), *k);
+                    if !holds(*o, ord) {
+                        pc = *t;
+                    }
+                    continue;
+                }
+                Op::CmpJumpNot(o, a, b, t) => {
+                    let ord = self.order_ix(ix!(*a), ix!(*b));
+                    if !holds(*o, ord) {
+                        pc = *t;
+                    }
+                    continue;
+                }
+                Op::JumpIf(c, t) => {
+                    if self.int_ix(ix!(*c)) != 0 {
+                        pc = *t;
+                    }
+                    continue;
+                }
+                Op::Case(x, table, others, span) => {
+                    let v = self.int_ix(ix!(*x));
+                    match table.iter().find(|(l, h, _)| *l <= v && v <= *h) {
+                        Some((_, _, t)) => {
+                            pc = *t;
+                            Ok(())
+                        }
+                        None => match others {
+                            Some(t) => {
+                                pc = *t;
+                                Ok(())
+                            }
+                            None => Err(self.check_failed("case choice not covered", *span)),
+                        },
+                    }
+                }
+                Op::ForStart(v, l, h, rev, exit) => {
+                    let (lo, hi) = (self.int_ix(ix!(*l)), self.int_ix(ix!(*h)));
+                    if lo > hi {
+                        pc = *exit;
+                    } else {
+                        self.put_int_ix(ix!(*v), if *rev { hi } else { lo });
+                    }
+                    continue;
+                }
+                Op::ForNext(v, l, h, rev, body, span) => {
+                    let i = self.int_ix(ix!(*v));
+                    let last = if *rev {
+                        self.int_ix(ix!(*l))
+                    } else {
+                        self.int_ix(ix!(*h))
+                    };
+                    if i == last {
+                        continue;
+                    }
+                    self.put_int_ix(ix!(*v), if *rev { i - 1 } else { i + 1 });
+                    pc = *body;
+                    match self.poll(*span) {
+                        Ok(()) => continue,
+                        r => r,
+                    }
+                }
+                Op::Poll(span) => self.poll(*span),
+                // A motion service while another task's motion runs waits
+                // for it (the services are a monitor).
+                Op::CallWalker(f, _, _, span)
+                    if self.m.sched.active()
+                        && self.is_service(*f)
+                        && self.m.clock.now() < self.robot_free_at(*f) =>
+                {
+                    let until = self.robot_free_at(*f);
+                    self.m.sched.block(tasking::Wait::Delay(until), true, *span);
+                    Ok(())
+                }
+                Op::CallWalker(f, args, d, span) => {
+                    self.rerun();
+                    self.call(*f, args, *span).map(|v| {
+                        if let Some(d) = d {
+                            self.put_ix(ix!(*d), v.unwrap_or_default());
+                        }
+                    })
+                }
+                Op::Call(func, f, _, ops, span) => {
+                    // (The result slot before the call: it changes the display.)
+                    let (args, dst) = match (*func, ops.split_last()) {
+                        (true, Some((d, args))) => (args, ix!(*d)),
+                        _ => (&ops[..], NO_DST),
+                    };
+                    match self.push_call(cache, *f, Args::Slots(args), (lvl, fp), *span) {
+                        Ok(entered) => enter!(entered, dst),
+                        Err(e) => Err(e),
+                    }
+                }
+                Op::CallK(f, a, o, k, d, span, [start, end]) => {
+                    let x = self.int_ix(ix!(*a));
+                    // (Before the call: it changes the display.)
+                    let dst = if *d == NO_VAR { NO_DST } else { ix!(*d) };
+                    let at = || Span {
+                        start: *start,
+                        end: *end,
+                        context: span.context,
+                    };
+                    let entered = self
+                        .int_value_at(*o, x, *k as i64, at)
+                        .and_then(|n| self.push_call(cache, *f, Args::Int(n), (lvl, fp), *span));
+                    match entered {
+                        Ok(entered) => enter!(entered, dst),
+                        Err(e) => Err(e),
+                    }
+                }
+                Op::Return(x) => {
+                    // Cloned, not taken: the value may be a variable of an
+                    // enclosing frame. An integer goes as such (see `Index`).
+                    let value = match x {
+                        Some(x) => match &self.m.stack[ix!(*x)] {
+                            Value::Int(n) => Ok(*n),
+                            v => Err(Some(v.clone())),
+                        },
+                        None => Err(None),
+                    };
+                    ret!(value)
+                }
+                Op::ReturnIntBin(o, a, b, span) => {
+                    let (x, y) = (self.int_ix(ix!(*a)), self.int_ix(ix!(*b)));
+                    match self.int_value(*o, x, y, *span) {
+                        Ok(n) => ret!(Ok(n)),
+                        Err(e) => Err(e),
+                    }
+                }
+                Op::FallOff => Err(Flow::Exit(FALL_OFF)),
+                Op::Dispatch(catches, depth) => {
+                    let occ = pending.take().expect("an occurrence to dispatch");
+                    self.m.current.truncate(current_base + *depth as usize);
+                    match catches.iter().find(|h| match &h.choices {
+                        None => true,
+                        Some(list) => list.contains(&occ.exc),
+                    }) {
+                        Some(h) => {
+                            let occ: Rc<Occurrence> = Rc::from(occ);
+                            if let Some(v) = h.occurrence {
+                                self.put(v, Value::Occ(occ.clone()));
+                            }
+                            self.m.current.push(occ);
+                            pc = h.target;
+                            Ok(())
+                        }
+                        None => Err(Flow::Raise(occ)),
+                    }
+                }
+                Op::PopCurrent => {
+                    self.m.current.pop();
+                    Ok(())
+                }
+                Op::TruncCurrent(n) => {
+                    self.m.current.truncate(current_base + *n as usize);
+                    Ok(())
+                }
+                Op::Delay(x, until, span) => self.op_delay(*x, *until, *span),
+                Op::Activate(span) => self.op_activate(*span),
+                Op::MasterEnter => {
+                    self.tasking_on();
+                    self.m.sched.me().masters.push(Vec::new());
+                    Ok(())
+                }
+                Op::MasterLeave(span) => {
+                    if self.dependents_done(false, *span) {
+                        self.m.sched.me().masters.pop();
+                    }
+                    Ok(())
+                }
+                Op::MasterUnwind(span) => {
+                    if self.dependents_done(false, *span) {
+                        self.m.sched.me().masters.pop();
+                        Err(Flow::Raise(pending.take().expect("an occurrence")))
+                    } else {
+                        Ok(())
+                    }
+                }
+                Op::Settle => {
+                    self.rerun();
+                    if !self.m.sched.ready.is_empty() {
+                        let me = self.m.sched.cur;
+                        self.m.sched.make_ready(me);
+                        self.m.sched.threads[me].reexec = true;
+                        self.m.sched.switch = true;
+                    }
+                    Ok(())
+                }
+                Op::AwaitAll(span) => {
+                    self.dependents_done(true, *span);
+                    Ok(())
+                }
+                Op::Accept(entry, params, span) => {
+                    let me = self.m.sched.cur;
+                    self.m.sched.threads[me].rerun = false;
+                    match self.m.sched.threads[me].entries[*entry as usize].pop_front() {
+                        Some(c) => {
+                            self.begin_rendezvous(c, params);
+                            Ok(())
+                        }
+                        None => {
+                            self.m.sched.block(
+                                tasking::Wait::Accept {
+                                    entries: vec![*entry],
+                                    deadline: None,
+                                    terminate: false,
+                                },
+                                true,
+                                *span,
+                            );
+                            Ok(())
+                        }
+                    }
+                }
+                Op::AcceptEnd(params) => {
+                    self.end_rendezvous(params, None);
+                    Ok(())
+                }
+                Op::AcceptFail => {
+                    let occ = pending.take().expect("an occurrence");
+                    self.end_rendezvous(&[], Some(occ.clone()));
+                    Err(Flow::Raise(occ))
+                }
+                Op::EntryCall(ec) => self.op_entry_call(ec),
+                Op::EntryDone(args, ops, other, span) => match self.entry_done(args, ops, *span) {
+                    Ok(true) => Ok(()),
+                    Ok(false) => {
+                        pc = other.expect("a timed or conditional call");
+                        Ok(())
+                    }
+                    Err(e) => Err(e),
+                },
+                Op::ProtEntry(ec) => match self.op_prot_entry(ec) {
+                    Ok(ProtStep::Body) => {
+                        let sub = &self.c.prots[ec.kind as usize].entries[ec.entry as usize];
+                        let body = sub.body.expect("an entry body");
+                        match self.push_call(cache, body, Args::Slots(&ec.ops), (lvl, fp), ec.span)
+                        {
+                            Ok(e) => {
+                                enter = Some(e);
+                                Ok(())
+                            }
+                            Err(e) => Err(e),
+                        }
+                    }
+                    Ok(ProtStep::Other) => {
+                        // Skip the ProtDone after it.
+                        pc = ec.other;
+                        Ok(())
+                    }
+                    Ok(ProtStep::Wait) => Ok(()),
+                    Err(e) => Err(e),
+                },
+                Op::ProtDone(obj, bargs, span) => self.serve(*obj, bargs, *span),
+                Op::Select(sel) => match self.op_select(sel) {
+                    Ok(Some(t)) => {
+                        pc = t;
+                        Ok(())
+                    }
+                    Ok(None) => Ok(()),
+                    Err(e) => Err(e),
+                },
+                Op::AllocTask(d, e) => {
+                    self.m.sched.alloc_activates = false;
+                    let r = self.eval(e);
+                    self.m.sched.alloc_activates = true;
+                    r.map(|v| self.put_ix(ix!(*d), v))
+                }
+                Op::NoteMaster(v) => {
+                    let code = self.master_code();
+                    self.put_ix(ix!(*v), Value::Int(code));
+                    Ok(())
+                }
+                Op::Abort(ts) => {
+                    for t in ts.iter() {
+                        let t = self.int_ix(ix!(*t)) as usize;
+                        self.abort_task(t);
+                    }
+                    Ok(())
+                }
+            };
+            // The slow way: a thread switch, a frame to enter, a return,
+            // an exit or an exception. Then the running code may differ.
+            'slow: {
+                if self.m.sched.switch {
+                    // The running thread blocked (or ended): save it, run the
+                    // next ready one.
+                    self.m.sched.switch = false;
+                    let th = &mut self.m.sched.threads[self.m.sched.cur];
+                    if std::mem::take(&mut th.reexec) {
+                        pc -= 1;
+                        th.rerun = true;
+                    }
+                    let me = self.m.sched.cur;
+                    let regs = save_regs(&mut frames, cur, pc, current_base, pending.take(), root);
+                    if self.m.sched.threads[me].wait == tasking::Wait::Terminated && me != 0 {
+                        for (b, t) in regs.regions() {
+                            self.free_frame(b, t);
+                        }
+                        self.end_thread(me, false);
+                    } else {
+                        self.m.sched.threads[me].regs = Some(regs);
+                    }
+                    self.swap_registers(me);
+                    let next = loop {
+                        if let Some(n) = self.m.sched.pick() {
+                            break n;
+                        }
+                        if !self.idle() {
+                            return Err(self.deadlock());
+                        }
+                    };
+                    (frames, cur, pc, current_base, pending, root) =
+                        self.resume(cache, level0, next)?;
+                    break 'slow;
+                }
+                if let Some(entered) = enter.take() {
+                    push_frame!(entered, NO_DST);
+                    break 'slow;
+                }
+                let Err(flow) = r else { break 'slow };
+                // Something other than the next instruction: a return, an exit
+                // a statement run by the walker gave back, or an exception.
+                let mut flow = flow;
+                loop {
+                    match flow {
+                        Flow::Exit(id) if id != FALL_OFF => {
+                            if let Some((_, t, depth)) = cur.exits.iter().find(|(l, ..)| *l == id) {
+                                self.m.current.truncate(current_base + *depth as usize);
+                                pc = *t;
+                                break;
+                            }
+                            // Not a loop of this code (the user's stop): leave
+                            // every frame.
+                            while let Some(f) = frames.pop() {
+                                self.pop_frame(&f, cur, current_base);
+                                current_base = f.current;
+                                cur = f.code;
+                            }
+                            return Err(Flow::Exit(id));
+                        }
+                        Flow::Exit(_) | Flow::Return(_) => {
+                            let (value, fell_off) = match flow {
+                                Flow::Return(v) => (v, false),
+                                _ => (None, true),
+                            };
+                            let Some(frame) = frames.pop() else {
+                                self.m.current.truncate(current_base);
+                                if root.is_none() {
+                                    // The end of the level-0 code.
+                                    return Ok(());
+                                }
+                                // The end of a task body.
+                                self.task_ends(root, false);
+                                (frames, cur, pc, current_base, pending, root) =
+                                    self.next_thread(cache, level0)?;
+                                break;
+                            };
+                            let (args, dst) = call_site(frame.code, frame.pc);
+                            // Copy-out values live in the frame.
+                            let mut outs = Vec::new();
+                            for (i, a) in args.iter().enumerate() {
+                                if a.mode != Mode::In {
+                                    outs.push((
+                                        a,
+                                        std::mem::take(&mut self.m.stack[frame.base + i]),
+                                    ));
+                                }
+                            }
+                            let f = cur.func.expect("a called frame");
+                            self.pop_frame(&frame, cur, current_base);
+                            cur = frame.code;
+                            pc = frame.pc;
+                            current_base = frame.current;
+                            let sub = &self.c.funcs[f as usize];
+                            let r = if fell_off && sub.ret.is_some() {
+                                Err(self.raise(
+                                    check::PROGRAM_ERROR,
+                                    format!("{} missing return", self.m.location(sub.span)),
+                                    sub.span,
+                                ))
+                            } else {
+                                (|| {
+                                    for (a, v) in outs {
+                                        if let Some(t) = a.back_check {
+                                            self.range_check(&v, t, a.value.span)?;
+                                        }
+                                        self.assign(&a.value, v)?;
+                                    }
+                                    if let Some(d) = dst {
+                                        self.put(d, value.unwrap_or_default());
+                                    }
+                                    Ok(())
+                                })()
+                            };
+                            match r {
+                                Ok(()) => break,
+                                Err(e) => flow = e,
+                            }
+                        }
+                        Flow::Raise(mut occ) => {
+                            // The calls of the compiled frames, innermost
+                            // first, after the walker's (see `Occurrence::chained`).
+                            if !occ.chained {
+                                occ.chain
+                                    .extend(frames.iter().rev().map(|f| call_span(f.code, f.pc)));
+                                occ.chained = true;
+                            }
+                            let at = pc - 1;
+                            if let Some(r) =
+                                cur.regions.iter().find(|r| r.start <= at && at < r.end)
+                            {
+                                pc = r.dispatch;
+                                pending = Some(occ);
+                                break;
+                            }
+                            let Some(frame) = frames.pop() else {
+                                self.m.current.truncate(current_base);
+                                if root.is_none() {
+                                    return Err(Flow::Raise(occ));
+                                }
+                                // An exception ends a task silently.
+                                self.task_ends(root, true);
+                                (frames, cur, pc, current_base, pending, root) =
+                                    self.next_thread(cache, level0)?;
+                                break;
+                            };
+                            self.pop_frame(&frame, cur, current_base);
+                            cur = frame.code;
+                            pc = frame.pc;
+                            current_base = frame.current;
+                            flow = Flow::Raise(occ);
+                        }
+                    }
+                }
+            }
+            reload!();
+        }
+    }
+}
+
+/// `*slot = v`, a scalar over a scalar written in place (no drop call).
+#[inline(always)]
+pub(super) fn set(slot: &mut Value, v: Value) {
+    match (slot, v) {
+        (Value::Int(y), Value::Int(x)) => *y = x,
+        (Value::Real(y), Value::Real(x)) => *y = x,
+        (s, v) => value::overwrite(s, v),
+    }
+}
+
+/// Whether a comparison holds for operands ordered `ord`.
+pub(super) fn holds(o: CmpOp, ord: std::cmp::Ordering) -> bool {
+    use std::cmp::Ordering::*;
+    match o {
+        CmpOp::Lt => ord == Less,
+        CmpOp::Le => ord != Greater,
+        CmpOp::Gt => ord == Greater,
+        CmpOp::Ge => ord != Less,
+        CmpOp::Eq => ord == Equal,
+        CmpOp::Ne => ord != Equal,
+    }
+}

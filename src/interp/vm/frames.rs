@@ -1,0 +1,286 @@
+//! Call frames of the compiled engine, and the registers of a thread that
+//! is not running.
+
+use super::*;
+
+/// The registers of a thread of the engine that is not running. They do
+/// not borrow the program: each frame's code is found again by its
+/// subprogram (compiled again, identically, in a later run: the REPL keeps
+/// tasks between entries), a call's arguments from the call instruction.
+#[derive(Clone)]
+pub(crate) struct Regs {
+    pub(super) frames: Vec<SavedFrame>,
+    /// The running code's subprogram (None: the level-0 code).
+    pub(super) cur: Option<FuncId>,
+    pub(super) pc: u32,
+    pub(super) current_base: usize,
+    pub(super) pending: Option<Box<Occurrence>>,
+    /// A task's own frame (its body): base and top.
+    pub(super) root: Option<(usize, usize)>,
+}
+
+/// A [`Frame`] saved in [`Regs`].
+#[derive(Clone)]
+pub(super) struct SavedFrame {
+    pub(super) func: Option<FuncId>,
+    pub(super) pc: u32,
+    pub(super) current: usize,
+    /// The callee's frame: base, top, and the display entry it replaced.
+    pub(super) base: usize,
+    pub(super) top: usize,
+    pub(super) saved: usize,
+    /// The caller's frame and result slot (see [`Frame`]).
+    pub(super) fp: usize,
+    pub(super) dst: usize,
+}
+
+impl Regs {
+    /// The stack regions of the thread's frames.
+    pub(crate) fn regions(&self) -> Vec<(usize, usize)> {
+        self.root
+            .into_iter()
+            .chain(self.frames.iter().map(|f| (f.base, f.top)))
+            .collect()
+    }
+}
+
+/// The live registers of the running thread, as the engine's loop holds them.
+pub(super) type Live<'c> = (
+    Vec<Frame<'c>>,
+    &'c Code,
+    u32,
+    usize,
+    Option<Box<Occurrence>>,
+    Option<(usize, usize)>,
+);
+
+/// A call in progress in the compiled engine: what its return goes back
+/// to. The rest of the call is found without storing it: the callee (its
+/// subprogram, level, frame size, whether it has `out` parameters) is the
+/// code that runs until the return, and the arguments and result slot are
+/// in the call instruction before `pc` (see [`call_site`]).
+pub(crate) struct Frame<'c> {
+    /// The caller's code and where it goes on when the callee returns.
+    pub(super) code: &'c Code,
+    pub(super) pc: u32,
+    /// Current occurrences when the callee was entered.
+    pub(super) current: usize,
+    /// Where the callee's frame begins, and the display entry of the
+    /// callee's level that the call replaced.
+    pub(super) base: usize,
+    pub(super) saved: usize,
+    /// Where the caller's own frame begins, and the stack slot a
+    /// function's result goes to (`NO_DST`: none, or the copy-back path):
+    /// a return finds both without the display or the call instruction.
+    pub(super) fp: usize,
+    pub(super) dst: usize,
+}
+
+/// [`Frame::dst`] of a call whose result, if any, is not put by the
+/// quick return.
+pub(super) const NO_DST: usize = usize::MAX;
+
+/// No operand (`Op::CallK` of a procedure).
+pub(super) const NO_VAR: Var = Var {
+    level: u16::MAX,
+    slot: u32::MAX,
+};
+
+/// The arguments of a call: in slots of the caller, or one integer.
+#[derive(Clone, Copy)]
+pub(super) enum Args<'x> {
+    Slots(&'x [Var]),
+    Int(i64),
+}
+
+/// A called frame just set up: the callee's code, where its frame begins,
+/// and the display entry it replaced.
+pub(super) type Entered<'c> = (&'c Code, usize, usize);
+
+/// The compiled bodies of a run, each compiled on its subprogram's first
+/// call. A body stays where it is while others are added, so the engine
+/// holds plain references to them.
+pub(crate) struct Codes<'c> {
+    pub(super) arena: &'c typed_arena::Arena<Code>,
+    pub(super) by_func: Vec<Option<&'c Code>>,
+}
+
+impl<'a> Run<'a> {
+    /// Pushes the frame of a call of `f` whose arguments are in `ops`.
+    #[inline(always)]
+    pub(super) fn push_call<'c>(
+        &mut self,
+        cache: &mut Codes<'c>,
+        f: FuncId,
+        args: Args<'_>,
+        (lvl, fp): (u16, usize),
+        span: Span,
+    ) -> R<Entered<'c>> {
+        // Ctrl-C, also in a recursion that polls no loop.
+        if let Some(flag) = &self.m.interrupted
+            && flag.load(std::sync::atomic::Ordering::Relaxed)
+        {
+            self.poll(span)?;
+        }
+        if self.m.depth >= MAX_DEPTH {
+            return Err(self.raise(
+                check::STORAGE_ERROR,
+                "stack overflow (recursion too deep)",
+                span,
+            ));
+        }
+        let code = self.code_of(cache, f);
+        let level = code.level as usize;
+        let base = self.m.stack.len();
+        // The arguments go straight into the new frame; the display is
+        // still the caller's while they are read (an operand of the
+        // caller's own frame, at `lvl`, begins at `fp`).
+        let ops = match args {
+            Args::Slots(ops) => ops,
+            Args::Int(n) => {
+                self.m.stack.push_int(n);
+                &[]
+            }
+        };
+        for v in ops.iter() {
+            let i = if v.level == lvl {
+                fp + v.slot as usize
+            } else {
+                self.sl(*v)
+            };
+            match &self.m.stack[i] {
+                Value::Int(i) => {
+                    let i = *i;
+                    self.m.stack.push_int(i);
+                }
+                other => {
+                    let x = other.clone();
+                    self.m.stack.push(x);
+                }
+            }
+        }
+        // A frame holds its parameters (see `compile_first`).
+        debug_assert!(code.frame as usize >= self.m.stack.len() - base);
+        let own = (code.frame - code.temps) as usize;
+        let top = base + code.frame as usize;
+        self.m.stack.grow_to_clearing(base + own, top);
+        if self.m.display.len() <= level {
+            self.m.display.resize(level + 1, 0);
+        }
+        let saved = self.m.display[level];
+        self.m.display[level] = base;
+        self.m.depth += 1;
+        Ok((code, base, saved))
+    }
+
+    /// Live registers from saved ones: each frame's code compiled (or
+    /// taken from this run's cache) again.
+    pub(super) fn load_regs<'c>(
+        &mut self,
+        cache: &mut Codes<'c>,
+        level0: &'c Code,
+        r: Regs,
+    ) -> Live<'c> {
+        let mut fetch = |this: &mut Self, func: Option<FuncId>| match func {
+            Some(f) => this.code_of(cache, f),
+            None => level0,
+        };
+        let mut frames = Vec::with_capacity(r.frames.len());
+        for sf in r.frames {
+            frames.push(Frame {
+                code: fetch(self, sf.func),
+                pc: sf.pc,
+                current: sf.current,
+                base: sf.base,
+                saved: sf.saved,
+                fp: sf.fp,
+                dst: sf.dst,
+            });
+        }
+        let cur = fetch(self, r.cur);
+        (frames, cur, r.pc, r.current_base, r.pending, r.root)
+    }
+
+    /// Leaves the frame of a call to `callee`: its slots, display entry,
+    /// depth, and the occurrences it made current (back to
+    /// `entry`, their number when it was entered); no copy-out.
+    #[inline(always)]
+    pub(super) fn pop_frame(&mut self, f: &Frame<'_>, callee: &Code, entry: usize) {
+        let top = f.base + callee.frame as usize;
+        if callee.scalar && self.m.sched.holes.is_empty() && top >= self.m.stack.len() {
+            self.m.stack.truncate_scalars(f.base);
+        } else {
+            self.free_frame(f.base, top);
+        }
+        self.m.display[callee.level as usize] = f.saved;
+        self.m.depth -= 1;
+        // (Tested first: `truncate` calls the drop glue on an empty tail.)
+        if self.m.current.len() > entry {
+            self.m.current.truncate(entry);
+        }
+    }
+}
+
+/// Saves the running thread's registers (see [`Regs`]).
+pub(super) fn save_regs(
+    frames: &mut Vec<Frame<'_>>,
+    cur: &Code,
+    pc: u32,
+    current_base: usize,
+    pending: Option<Box<Occurrence>>,
+    root: Option<(usize, usize)>,
+) -> Regs {
+    // Each frame's callee is the next frame's code, the last one's the
+    // running code.
+    let callees: Vec<u32> = frames
+        .iter()
+        .skip(1)
+        .map(|f| f.code.frame)
+        .chain([cur.frame])
+        .collect();
+    Regs {
+        frames: frames
+            .drain(..)
+            .zip(callees)
+            .map(|(f, size)| SavedFrame {
+                func: f.code.func,
+                pc: f.pc,
+                current: f.current,
+                base: f.base,
+                top: f.base + size as usize,
+                saved: f.saved,
+                fp: f.fp,
+                dst: f.dst,
+            })
+            .collect(),
+        cur: cur.func,
+        pc,
+        current_base,
+        pending,
+        root,
+    }
+}
+
+/// Where the call before `pc` (a frame's resume point) is.
+pub(super) fn call_span(code: &Code, pc: u32) -> Span {
+    match code.ops.get(pc as usize - 1) {
+        Some(Op::Call(.., span) | Op::CallK(_, _, _, _, _, span, _)) => *span,
+        Some(Op::ProtEntry(e)) => e.span,
+        _ => crate::diag::span(0, 0, 0),
+    }
+}
+
+/// The arguments and result slot of the call instruction before `pc` (a
+/// frame's resume point).
+#[inline(always)]
+pub(super) fn call_site(code: &Code, pc: u32) -> (&[Arg], Option<Var>) {
+    match code.ops.get(pc as usize - 1) {
+        Some(Op::CallK(_, _, _, _, dst, ..)) => (&[], Some(*dst).filter(|d| *d != NO_VAR)),
+        Some(Op::Call(func, _, args, ops, _)) => {
+            let dst = if *func { ops.last().copied() } else { None };
+            (args.as_deref().map_or(&[], |a| a), dst)
+        }
+        Some(Op::ProtEntry(e)) => (&e.args, None),
+        _ => (&[], None),
+    }
+}

@@ -1,0 +1,74 @@
+//! The compiled engine. Each subprogram body (and the level-0 statements of
+//! a run) is compiled, once per run and on first call, into a flat list of
+//! instructions over the slots of its frame: the frame's own variables
+//! (`Var { level, slot }`, as the checker numbered them) followed by
+//! temporaries. A loop runs the instructions with explicit frames: a call
+//! pushes a [`Frame`] and jumps, a return pops it, an exception unwinds
+//! through handler regions and frames, with no Rust recursion, so that a
+//! task can be suspended between two instructions.
+//!
+//! Nodes without an instruction of their own (aggregates, allocators,
+//! raise, composite assignments, ...) are evaluated by the tree walker
+//! ([`Run::eval`], [`Run::exec`], [`Run::assign`]), which stays the
+//! reference engine: `Engine::Walker` runs a whole program in it, and the
+//! golden and GNAT tests run every program in both (differential testing).
+//! The compiled engine keeps every Ada check the walker makes; it calls the
+//! walker's own check functions.
+//!
+//! The parts:
+//! - `ops.rs`: the instruction set ([`Op`]) and its metadata (jump targets);
+//! - `compile/`: the compiler, by concern (`expr.rs`, `stmt.rs`,
+//!   `calls.rs`, `rendezvous.rs`; `mod.rs` holds the [`Compiler`] itself);
+//! - `code.rs`: a compiled body ([`Code`], its handler regions) and the
+//!   parts of a long body compiled as they are checked;
+//! - `frames.rs`: call frames and the saved registers of a waiting thread;
+//! - `run.rs`: compiling on first call and starting a run;
+//! - `exec.rs`: the execution loop and its slot helpers;
+//! - `blocking.rs`: the instructions that block or switch threads;
+//! - `tests.rs`: unit tests of the compiler (whole runs are in tests/engine.rs).
+
+use super::*;
+
+mod blocking;
+mod code;
+mod compile;
+mod exec;
+mod frames;
+mod ops;
+mod run;
+#[cfg(test)]
+mod tests;
+
+use blocking::*;
+use code::*;
+pub(crate) use code::{Code, Part, compile_part};
+pub(crate) use compile::effects_unless;
+use compile::*;
+use frames::*;
+pub(crate) use frames::{Codes, Frame, Regs};
+use ops::*;
+
+/// Which engine runs a program.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Engine {
+    /// Compiled instructions with explicit frames (the default).
+    #[default]
+    Compiled,
+    /// The tree walker over the checked program (the reference).
+    Walker,
+}
+
+impl Engine {
+    /// The engine a setting names: `walker` the reference engine; anything
+    /// else, or nothing, the compiled one (the session reads
+    /// `ADAIR_ENGINE`: the machine reads no environment).
+    pub fn named(setting: Option<&str>) -> Engine {
+        match setting {
+            Some("walker") => Engine::Walker,
+            _ => Engine::Compiled,
+        }
+    }
+}
+
+/// The label by which the end of a body is signalled inside the engine.
+const FALL_OFF: u32 = u32::MAX - 1;

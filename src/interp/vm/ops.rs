@@ -1,0 +1,312 @@
+//! The instruction set: one [`Op`] per instruction, its operand structs,
+//! and per-instruction metadata (jump targets).
+
+use super::*;
+
+/// One instruction. Operands are frame slots (`Var`); `Span`s are where a
+/// check that fails raises.
+#[derive(Debug)]
+pub(super) enum Op {
+    Int(Var, i64),
+    Real(Var, f64),
+    Move(Var, Var),
+    IntBin(IntOp, Var, Var, Var, Span),
+    /// `IntBin` with an integer literal on the right.
+    IntBinK(IntOp, Var, Var, i64, Span),
+    IntNeg(Var, Var, Span),
+    /// An operation of a modular type whose values are `0 ..= last`
+    /// (`ir::modular`, which the walker calls too).
+    ModBin(ModOp, Var, Var, Var, u32, Span),
+    FloatBin(FloatOp, Var, Var, Var),
+    ToReal(Var, Var),
+    Cmp(CmpOp, Var, Var, Var),
+    /// `Cmp` of an integer with an integer literal.
+    CmpK(CmpOp, Var, Var, i64),
+    Eq(bool, Var, Var, Var),
+    Logic(LogicOp, Var, Var, Var),
+    Not(Var, Var),
+    RangeCheck(Var, TypeId, Span),
+    /// `dst := arr (ix...)` for an array held in a slot (three or four
+    /// indices; one and two are `Index1`, `Index2`, without an allocation).
+    Index(Var, Var, Box<[Var]>, Span),
+    Index1(Var, Var, Var, Span),
+    Index2(Var, Var, [Var; 2], Span),
+    /// `arr (ix...) := src` (and with one or two indices).
+    StoreIndex(Var, Box<[Var]>, Var, Span),
+    StoreIndex1(Var, Var, Var, Span),
+    StoreIndex2(Var, [Var; 2], Var, Span),
+    Field(Var, Var, u32, Span),
+    /// `dst := ptr.all.field` (a component of the record an access
+    /// designates, not a copy of the record); where the access check and
+    /// where the discriminant check fails.
+    DerefField(Var, Var, u32, Span, Span),
+    /// `dst := null`.
+    Null(Var),
+    /// `dst := "text"`: a string literal's value, made once when the code
+    /// is compiled (a copy of it is one reference count: an assignment
+    /// into it copies it first).
+    Str(Var, Value),
+    /// `dst := x & y` (each an array or an element).
+    Concat(Box<ConcatOp>),
+    /// `dst := base (low .. high)`, and where its check fails.
+    Slice(Var, Var, [Var; 2], Span),
+    /// `dst := P'Attr (args)`, the arguments in slots.
+    Attr(Box<AttrInstr>),
+    /// The walker evaluates an expression into a slot. The expression may
+    /// be a copy whose operands were computed here first (replaced by the
+    /// temporaries holding them, listed last, which are emptied once it is
+    /// evaluated: a chain `F (X) & "a" & ...` would keep every intermediate
+    /// string alive until the frame ends).
+    Eval(Var, Box<Ex>, Box<[Var]>),
+    /// The walker assigns a slot's value to a target.
+    Assign(Box<Ex>, Var),
+    /// The walker executes a statement.
+    Exec(Box<Stmt>),
+    Jump(u32),
+    JumpIfNot(Var, u32),
+    /// `JumpIfNot` of a `CmpK`, in one instruction (`if N < 2 then`).
+    CmpKJumpNot(CmpOp, Var, i64, u32),
+    /// `JumpIfNot` of a `Cmp`.
+    CmpJumpNot(CmpOp, Var, Var, u32),
+    JumpIf(Var, u32),
+    /// Case: the subject, (low, high, target) choices, the `others` target.
+    Case(Var, Box<[(i64, i64, u32)]>, Option<u32>, Span),
+    /// First step of a `for` loop: the counter, low, high, reverse, the
+    /// exit target (an empty range jumps there).
+    ForStart(Var, Var, Var, bool, u32),
+    /// Next step: counter, low, high, reverse, the body's start.
+    ForNext(Var, Var, Var, bool, u32, Span),
+    Poll(Span),
+    /// A call of a subprogram with a body: whether it is a function, its
+    /// arguments when one is not `in` (for the copy-back; None: all `in`,
+    /// or none), their operands followed by the slot for a function's
+    /// result. The arguments are boxed twice, a thin pointer: it keeps `Op`
+    /// at 48 bytes.
+    Call(bool, FuncId, Option<Box<Box<[Arg]>>>, Box<[Var]>, Span),
+    /// A call the walker makes (natives, services, a subprogram without
+    /// body), its `in` arguments with calls in them computed here first.
+    CallWalker(FuncId, Box<[Arg]>, Option<Var>, Span),
+    /// A call whose one argument, `in`, is `x op k` for integers: the
+    /// operation goes straight into the callee's frame (`F (N - 1)`).
+    /// Then a function's result slot (`NO_VAR`: a procedure), the call's
+    /// place and the argument's (in the call's file).
+    CallK(FuncId, Var, IntOp, i32, Var, Span, [u32; 2]),
+    Return(Option<Var>),
+    /// `return x op y` for integers, the operation and the return in one
+    /// instruction (`return F (N - 1) + F (N - 2);`).
+    ReturnIntBin(IntOp, Var, Var, Span),
+    /// The end of a body: a procedure returns, a function raises.
+    FallOff,
+    /// Handler dispatch for the pending occurrence: the handlers, the
+    /// target of each, and the handler depth of the region.
+    Dispatch(Box<[Catch]>, u32),
+    /// Leaves a handler body: its occurrence is no longer current.
+    PopCurrent,
+    /// Back to `frame's depth + n` current occurrences (an `exit` out of
+    /// handler bodies).
+    TruncCurrent(u32),
+    // ---- tasking (see `tasking.rs`) ----
+    /// `delay` (false) or `delay until` (true).
+    Delay(Var, bool, Span),
+    /// Activates the tasks created so far and waits for their activation.
+    Activate(Span),
+    /// A master region begins; its end waits for its tasks.
+    MasterEnter,
+    MasterLeave(Span),
+    /// An exception leaves a master region: wait for its tasks, then
+    /// propagate it.
+    MasterUnwind(Span),
+    /// Library-level tasks, at the end of the run: where the main program
+    /// ended (a deadlock or a Ctrl-C there names it).
+    AwaitAll(Span),
+    /// The end of a REPL entry while tasks live on: the ready tasks run
+    /// until every one has blocked.
+    Settle,
+    /// `accept`: the entry and the parameters' slots.
+    Accept(u32, Box<[(Var, Mode)]>, Span),
+    /// The end of a rendezvous: `out` values go to the caller.
+    AcceptEnd(Box<[(Var, Mode)]>),
+    /// An exception leaves an accept body: the caller gets it too.
+    AcceptFail,
+    /// An entry call of a task.
+    EntryCall(Box<EntryOp>),
+    /// After an entry call: copy-out, the caller's exception, or the jump
+    /// to a timed call's delay (conditional call's else) statements.
+    EntryDone(Box<Box<[Arg]>>, Box<[Var]>, Option<u32>, Span),
+    /// A protected entry call.
+    ProtEntry(Box<EntryOp>),
+    /// After a protected action: the object's queues are served.
+    ProtDone(Var, Box<[Arg]>, Span),
+    Select(Box<SelectOp>),
+    Abort(Box<[Var]>),
+    /// An allocator of a task: the task is activated by the next
+    /// instruction (`Activate`), not left to the walker.
+    AllocTask(Var, Box<Ex>),
+    /// An access type to tasks is declared: note its master.
+    NoteMaster(Var),
+}
+
+/// An entry call: the task (or object), entry, arguments and their
+/// operands, the timeout (delay or time) of a timed call, whether it is
+/// conditional, and where a timed call's delay statements begin.
+#[derive(Debug)]
+pub(super) struct EntryOp {
+    pub(super) target: Var,
+    pub(super) kind: u32,
+    pub(super) entry: u32,
+    pub(super) args: Box<[Arg]>,
+    pub(super) ops: Box<[Var]>,
+    pub(super) timed: Option<(Var, bool)>,
+    pub(super) conditional: bool,
+    pub(super) other: u32,
+    /// The barrier's argument (the object), for protected entries.
+    pub(super) barrier_args: Box<[Arg]>,
+    pub(super) span: Span,
+}
+
+/// A concatenation: where it goes, its operands, whether each is one
+/// element (not an array) and whether each is a temporary that the
+/// operation may take (its last use), the result's type, where a length
+/// check fails.
+#[derive(Debug)]
+pub(super) struct ConcatOp {
+    pub(super) dst: Var,
+    pub(super) x: Var,
+    pub(super) y: Var,
+    pub(super) elems: (bool, bool),
+    pub(super) takes: (bool, bool),
+    pub(super) ty: TypeId,
+    pub(super) span: Span,
+}
+
+/// An attribute: its operation, result slot, arguments (temporaries are
+/// emptied once read), result type and where it fails.
+#[derive(Debug)]
+pub(super) struct AttrInstr {
+    pub(super) op: crate::check::ir::AttrOp,
+    pub(super) dst: Var,
+    pub(super) args: Box<[Var]>,
+    pub(super) temps: Box<[bool]>,
+    pub(super) ty: TypeId,
+    pub(super) span: Span,
+}
+
+/// A handler of a dispatch: its exceptions (None: `others`), the slot of
+/// its occurrence, where its statements begin.
+#[derive(Debug)]
+pub(super) struct Catch {
+    pub(super) choices: Option<Box<[ExcId]>>,
+    pub(super) occurrence: Option<Var>,
+    pub(super) target: u32,
+}
+
+/// A select's accept alternative: guard, entry, parameters, target.
+pub(super) type AcceptAlt = (Option<Var>, u32, Box<[(Var, Mode)]>, u32);
+
+#[derive(Debug)]
+pub(super) struct SelectOp {
+    pub(super) alts: Vec<AcceptAlt>,
+    /// Guard, amount, until, target.
+    pub(super) delay: Option<(Option<Var>, Var, bool, u32)>,
+    pub(super) terminate: Option<Option<Var>>,
+    pub(super) els: Option<u32>,
+    pub(super) span: Span,
+}
+
+/// Moves `op`'s jump targets `by` instructions on (a compiled part
+/// spliced into its body's code).
+pub(super) fn relocate(op: &mut Op, by: u32) {
+    match op {
+        Op::Jump(t)
+        | Op::JumpIfNot(_, t)
+        | Op::JumpIf(_, t)
+        | Op::CmpKJumpNot(.., t)
+        | Op::CmpJumpNot(.., t)
+        | Op::ForStart(.., t)
+        | Op::ForNext(_, _, _, _, t, _) => *t += by,
+        Op::Case(_, table, other, _) => {
+            for (_, _, t) in table.iter_mut() {
+                *t += by;
+            }
+            if let Some(t) = other {
+                *t += by;
+            }
+        }
+        Op::Dispatch(catches, _) => {
+            for c in catches.iter_mut() {
+                c.target += by;
+            }
+        }
+        Op::EntryDone(_, _, other, _) => {
+            if let Some(t) = other {
+                *t += by;
+            }
+        }
+        Op::EntryCall(e) | Op::ProtEntry(e) => e.other += by,
+        Op::Select(sel) => {
+            for a in sel.alts.iter_mut() {
+                a.3 += by;
+            }
+            if let Some(d) = &mut sel.delay {
+                d.3 += by;
+            }
+            if let Some(t) = &mut sel.els {
+                *t += by;
+            }
+        }
+        Op::Int(..)
+        | Op::Real(..)
+        | Op::Move(..)
+        | Op::IntBin(..)
+        | Op::IntBinK(..)
+        | Op::IntNeg(..)
+        | Op::ModBin(..)
+        | Op::FloatBin(..)
+        | Op::ToReal(..)
+        | Op::Cmp(..)
+        | Op::CmpK(..)
+        | Op::Eq(..)
+        | Op::Logic(..)
+        | Op::Not(..)
+        | Op::RangeCheck(..)
+        | Op::Index(..)
+        | Op::Index1(..)
+        | Op::Index2(..)
+        | Op::StoreIndex(..)
+        | Op::StoreIndex1(..)
+        | Op::StoreIndex2(..)
+        | Op::Field(..)
+        | Op::DerefField(..)
+        | Op::Null(..)
+        | Op::Str(..)
+        | Op::Slice(..)
+        | Op::Concat(..)
+        | Op::Attr(..)
+        | Op::Eval(..)
+        | Op::Assign(..)
+        | Op::Exec(..)
+        | Op::Poll(..)
+        | Op::Call(..)
+        | Op::CallK(..)
+        | Op::CallWalker(..)
+        | Op::Return(..)
+        | Op::ReturnIntBin(..)
+        | Op::FallOff
+        | Op::PopCurrent
+        | Op::TruncCurrent(..)
+        | Op::Delay(..)
+        | Op::Activate(..)
+        | Op::MasterEnter
+        | Op::MasterLeave(..)
+        | Op::MasterUnwind(..)
+        | Op::AwaitAll(..)
+        | Op::Settle
+        | Op::Accept(..)
+        | Op::AcceptEnd(..)
+        | Op::AcceptFail
+        | Op::ProtDone(..)
+        | Op::Abort(..)
+        | Op::AllocTask(..)
+        | Op::NoteMaster(..) => {}
+    }
+}
