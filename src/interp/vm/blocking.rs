@@ -369,17 +369,17 @@ impl<'a> Run<'a> {
         let me = self.m.sched.cur;
         let again = self.rerun();
         if std::mem::take(&mut self.m.sched.threads[me].timed_out)
-            && let Some((.., t)) = sel.delay
+            && let Some(d) = sel.delay
         {
-            return Ok(Some(t));
+            return Ok(Some(d.target));
         }
         let open = |this: &Self, g: Option<Var>| g.is_none_or(|g| this.int_at(g) != 0);
-        for (g, entry, params, target) in &sel.alts {
-            if open(self, *g)
-                && let Some(c) = self.m.sched.threads[me].entries[*entry as usize].pop_front()
+        for a in &sel.alts {
+            if open(self, a.guard)
+                && let Some(c) = self.m.sched.threads[me].entries[a.entry as usize].pop_front()
             {
-                self.begin_rendezvous(c, params);
-                return Ok(Some(*target));
+                self.begin_rendezvous(c, &a.params);
+                return Ok(Some(a.target));
             }
         }
         if let Some(t) = sel.els {
@@ -388,10 +388,10 @@ impl<'a> Run<'a> {
         let entries: Vec<u32> = sel
             .alts
             .iter()
-            .filter(|a| open(self, a.0))
-            .map(|a| a.1)
+            .filter(|a| open(self, a.guard))
+            .map(|a| a.entry)
             .collect();
-        let delay = sel.delay.filter(|d| open(self, d.0));
+        let delay = sel.delay.filter(|d| open(self, d.guard));
         let terminate = sel.terminate.is_some_and(|g| open(self, g));
         if entries.is_empty() && delay.is_none() && !terminate {
             return Err(self.raise(
@@ -406,14 +406,14 @@ impl<'a> Run<'a> {
         let deadline = if again {
             self.m.sched.threads[me].deadline
         } else {
-            let d = delay.and_then(|(_, x, until, _)| self.deadline(Some((x, until))));
+            let d = delay.and_then(|d| self.deadline(Some((d.amount, d.until))));
             self.m.sched.threads[me].deadline = d;
             d
         };
-        if let (Some(d), Some((.., t))) = (deadline, delay)
+        if let (Some(d), Some(alt)) = (deadline, delay)
             && d <= self.m.clock.now()
         {
-            return Ok(Some(t));
+            return Ok(Some(alt.target));
         }
         self.m.sched.block(
             tasking::Wait::Accept {
@@ -499,7 +499,14 @@ impl<'a> Run<'a> {
         th.depth = 0;
         th.calls = Vec::new();
         self.swap_registers(t);
-        Ok((Vec::new(), code, 0, 0, None, Some((base, top))))
+        Ok(Live {
+            frames: Vec::new(),
+            cur: code,
+            pc: 0,
+            current_base: 0,
+            pending: None,
+            root: Some((base, top)),
+        })
     }
 
     /// The running task's body has ended (`failed`: by an exception).

@@ -579,7 +579,15 @@ impl<'a> Run<'a> {
                         Err(e) => Err(e),
                     }
                 }
-                Op::CallK(f, a, o, k, d, span, [start, end]) => {
+                Op::CallK {
+                    f,
+                    x: a,
+                    op: o,
+                    k,
+                    dst: d,
+                    span,
+                    arg_at: [start, end],
+                } => {
                     let x = self.int_ix(ix!(*a));
                     // (Before the call: it changes the display.)
                     let dst = if *d == NO_VAR { NO_DST } else { ix!(*d) };
@@ -798,8 +806,14 @@ impl<'a> Run<'a> {
                             return Err(self.deadlock());
                         }
                     };
-                    (frames, cur, pc, current_base, pending, root) =
-                        self.resume(cache, level0, next)?;
+                    Live {
+                        frames,
+                        cur,
+                        pc,
+                        current_base,
+                        pending,
+                        root,
+                    } = self.resume(cache, level0, next)?;
                     break 'slow;
                 }
                 if let Some(entered) = enter.take() {
@@ -840,8 +854,14 @@ impl<'a> Run<'a> {
                                 }
                                 // The end of a task body.
                                 self.task_ends(root, false);
-                                (frames, cur, pc, current_base, pending, root) =
-                                    self.next_thread(cache, level0)?;
+                                Live {
+                                    frames,
+                                    cur,
+                                    pc,
+                                    current_base,
+                                    pending,
+                                    root,
+                                } = self.next_thread(cache, level0)?;
                                 break;
                             };
                             let (args, dst) = call_site(frame.code, frame.pc);
@@ -909,8 +929,14 @@ impl<'a> Run<'a> {
                                 }
                                 // An exception ends a task silently.
                                 self.task_ends(root, true);
-                                (frames, cur, pc, current_base, pending, root) =
-                                    self.next_thread(cache, level0)?;
+                                Live {
+                                    frames,
+                                    cur,
+                                    pc,
+                                    current_base,
+                                    pending,
+                                    root,
+                                } = self.next_thread(cache, level0)?;
                                 break;
                             };
                             self.pop_frame(&frame, cur, current_base);

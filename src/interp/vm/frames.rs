@@ -44,15 +44,21 @@ impl Regs {
     }
 }
 
-/// The live registers of the running thread, as the engine's loop holds them.
-pub(super) type Live<'c> = (
-    Vec<Frame<'c>>,
-    &'c Code,
-    u32,
-    usize,
-    Option<Box<Occurrence>>,
-    Option<(usize, usize)>,
-);
+/// The live registers of the running thread, as the engine's loop holds them
+/// (in local variables of the same names).
+pub(super) struct Live<'c> {
+    /// The callers' frames, innermost last.
+    pub(super) frames: Vec<Frame<'c>>,
+    /// The running code and the next instruction in it.
+    pub(super) cur: &'c Code,
+    pub(super) pc: u32,
+    /// The first of the running frame's current occurrences.
+    pub(super) current_base: usize,
+    /// An exception on its way out of the running code.
+    pub(super) pending: Option<Box<Occurrence>>,
+    /// A task's own frame (its body): base and top.
+    pub(super) root: Option<(usize, usize)>,
+}
 
 /// A call in progress in the compiled engine: what its return goes back
 /// to. The rest of the call is found without storing it: the callee (its
@@ -198,7 +204,14 @@ impl<'a> Run<'a> {
             });
         }
         let cur = fetch(self, r.cur);
-        (frames, cur, r.pc, r.current_base, r.pending, r.root)
+        Live {
+            frames,
+            cur,
+            pc: r.pc,
+            current_base: r.current_base,
+            pending: r.pending,
+            root: r.root,
+        }
     }
 
     /// Leaves the frame of a call to `callee`: its slots, display entry,
@@ -264,7 +277,7 @@ pub(super) fn save_regs(
 /// Where the call before `pc` (a frame's resume point) is.
 pub(super) fn call_span(code: &Code, pc: u32) -> Span {
     match code.ops.get(pc as usize - 1) {
-        Some(Op::Call(.., span) | Op::CallK(_, _, _, _, _, span, _)) => *span,
+        Some(Op::Call(.., span) | Op::CallK { span, .. }) => *span,
         Some(Op::ProtEntry(e)) => e.span,
         _ => crate::diag::span(0, 0, 0),
     }
@@ -275,7 +288,7 @@ pub(super) fn call_span(code: &Code, pc: u32) -> Span {
 #[inline(always)]
 pub(super) fn call_site(code: &Code, pc: u32) -> (&[Arg], Option<Var>) {
     match code.ops.get(pc as usize - 1) {
-        Some(Op::CallK(_, _, _, _, dst, ..)) => (&[], Some(*dst).filter(|d| *d != NO_VAR)),
+        Some(Op::CallK { dst, .. }) => (&[], Some(*dst).filter(|d| *d != NO_VAR)),
         Some(Op::Call(func, _, args, ops, _)) => {
             let dst = if *func { ops.last().copied() } else { None };
             (args.as_deref().map_or(&[], |a| a), dst)

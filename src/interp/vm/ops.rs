@@ -90,7 +90,15 @@ pub(super) enum Op {
     /// operation goes straight into the callee's frame (`F (N - 1)`).
     /// Then a function's result slot (`NO_VAR`: a procedure), the call's
     /// place and the argument's (in the call's file).
-    CallK(FuncId, Var, IntOp, i32, Var, Span, [u32; 2]),
+    CallK {
+        f: FuncId,
+        x: Var,
+        op: IntOp,
+        k: i32,
+        dst: Var,
+        span: Span,
+        arg_at: [u32; 2],
+    },
     Return(Option<Var>),
     /// `return x op y` for integers, the operation and the return in one
     /// instruction (`return F (N - 1) + F (N - 2);`).
@@ -200,14 +208,33 @@ pub(super) struct Catch {
     pub(super) target: u32,
 }
 
-/// A select's accept alternative: guard, entry, parameters, target.
-pub(super) type AcceptAlt = (Option<Var>, u32, Box<[(Var, Mode)]>, u32);
+/// A select's accept alternative.
+#[derive(Debug)]
+pub(super) struct AcceptAlt {
+    /// The guard's value (None: no guard).
+    pub(super) guard: Option<Var>,
+    pub(super) entry: u32,
+    pub(super) params: Box<[(Var, Mode)]>,
+    /// Where the accept's body begins.
+    pub(super) target: u32,
+}
+
+/// A select's delay alternative.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct DelayAlt {
+    pub(super) guard: Option<Var>,
+    /// The duration or time.
+    pub(super) amount: Var,
+    /// `delay until`.
+    pub(super) until: bool,
+    /// Where its statements begin.
+    pub(super) target: u32,
+}
 
 #[derive(Debug)]
 pub(super) struct SelectOp {
     pub(super) alts: Vec<AcceptAlt>,
-    /// Guard, amount, until, target.
-    pub(super) delay: Option<(Option<Var>, Var, bool, u32)>,
+    pub(super) delay: Option<DelayAlt>,
     pub(super) terminate: Option<Option<Var>>,
     pub(super) els: Option<u32>,
     pub(super) span: Span,
@@ -245,10 +272,10 @@ pub(super) fn relocate(op: &mut Op, by: u32) {
         Op::EntryCall(e) | Op::ProtEntry(e) => e.other += by,
         Op::Select(sel) => {
             for a in sel.alts.iter_mut() {
-                a.3 += by;
+                a.target += by;
             }
             if let Some(d) = &mut sel.delay {
-                d.3 += by;
+                d.target += by;
             }
             if let Some(t) = &mut sel.els {
                 *t += by;
@@ -287,7 +314,7 @@ pub(super) fn relocate(op: &mut Op, by: u32) {
         | Op::Exec(..)
         | Op::Poll(..)
         | Op::Call(..)
-        | Op::CallK(..)
+        | Op::CallK { .. }
         | Op::CallWalker(..)
         | Op::Return(..)
         | Op::ReturnIntBin(..)

@@ -34,7 +34,7 @@ mod fused_tests {
         code.ops
             .iter()
             .map(|op| match op {
-                Op::CallK(..) => "CallK".to_string(),
+                Op::CallK { .. } => "CallK".to_string(),
                 Op::ReturnIntBin(..) => "ReturnIntBin".to_string(),
                 Op::Call(..) => "Call".to_string(),
                 other => format!("{other:?}"),

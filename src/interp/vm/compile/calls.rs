@@ -56,7 +56,15 @@ impl<'r> Compiler<'r> {
             let x = self.expr(x);
             let at = [a.value.span.start, a.value.span.end];
             let dst = dst.unwrap_or(NO_VAR);
-            self.ops.push(Op::CallK(f, x, *op, k, dst, span, at));
+            self.ops.push(Op::CallK {
+                f,
+                x,
+                op: *op,
+                k,
+                dst,
+                span,
+                arg_at: at,
+            });
             return;
         }
         let mut ops = Vec::with_capacity(all.len() + 1);

@@ -8,6 +8,16 @@ mod expr;
 mod rendezvous;
 mod stmt;
 
+/// A loop being compiled.
+pub(in crate::interp::vm) struct OpenLoop {
+    pub(in crate::interp::vm) id: u32,
+    /// The jumps to patch with the loop's exit.
+    pub(in crate::interp::vm) exits: Vec<usize>,
+    /// The handler depth and the master regions open at the loop.
+    pub(in crate::interp::vm) hdepth: u32,
+    pub(in crate::interp::vm) masters: u32,
+}
+
 pub(in crate::interp::vm) struct Compiler<'r> {
     pub(in crate::interp::vm) level: u16,
     pub(in crate::interp::vm) own: u32,
@@ -16,9 +26,8 @@ pub(in crate::interp::vm) struct Compiler<'r> {
     pub(in crate::interp::vm) ops: Vec<Op>,
     pub(in crate::interp::vm) regions: Vec<Region>,
     pub(in crate::interp::vm) exits: Vec<(u32, u32, u32)>,
-    /// The loops being compiled: id, jumps to patch with the exit, handler
-    /// depth, master regions open at the loop.
-    pub(in crate::interp::vm) loops: Vec<(u32, Vec<usize>, u32, u32)>,
+    /// The loops being compiled, innermost last.
+    pub(in crate::interp::vm) loops: Vec<OpenLoop>,
     pub(in crate::interp::vm) hdepth: u32,
     /// Master regions open at this point of the code.
     pub(in crate::interp::vm) masters: u32,
@@ -274,7 +283,7 @@ impl<'r> Compiler<'r> {
                 | Op::ForNext(..)
                 | Op::Poll(..)
                 | Op::Call(..)
-                | Op::CallK(..)
+                | Op::CallK { .. }
                 | Op::CallWalker(..)
                 | Op::Return(..)
                 | Op::ReturnIntBin(..)

@@ -147,12 +147,22 @@ impl<'r> Compiler<'r> {
         let mut alts = Vec::new();
         for (g, a, _) in &sel.alts {
             let g = g.as_ref().map(|g| self.expr(g));
-            alts.push((g, a.entry, a.params.as_slice().into(), 0u32));
+            alts.push(AcceptAlt {
+                guard: g,
+                entry: a.entry,
+                params: a.params.as_slice().into(),
+                target: 0,
+            });
         }
         let delay = sel.delay.as_ref().map(|(g, until, d, _)| {
             let g = g.as_ref().map(|g| self.expr(g));
             let x = self.expr(d);
-            (g, x, *until, 0u32)
+            DelayAlt {
+                guard: g,
+                amount: x,
+                until: *until,
+                target: 0,
+            }
         });
         let terminate = sel
             .terminate
@@ -162,20 +172,20 @@ impl<'r> Compiler<'r> {
         self.ops.push(Op::Jump(0));
         let mut ends = Vec::new();
         for (k, (_, a, then)) in sel.alts.iter().enumerate() {
-            alts[k].3 = self.here();
+            alts[k].target = self.here();
             self.accept_rest(a);
             self.stmts(then);
             ends.push(self.ops.len());
             self.ops.push(Op::Jump(0));
         }
-        let delay = delay.map(|(g, x, until, _)| {
-            let t = self.here();
+        let delay = delay.map(|mut alt| {
+            alt.target = self.here();
             if let Some((_, _, _, then)) = &sel.delay {
                 self.stmts(then);
             }
             ends.push(self.ops.len());
             self.ops.push(Op::Jump(0));
-            (g, x, until, t)
+            alt
         });
         let els = sel.els.as_ref().map(|then| {
             let t = self.here();

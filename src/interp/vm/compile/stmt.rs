@@ -103,21 +103,21 @@ impl<'r> Compiler<'r> {
                 self.patch(start, end);
             }
             StmtKind::Exit(id, cond) => {
-                let Some(k) = self.loops.iter().rposition(|(l, ..)| l == id) else {
+                let Some(k) = self.loops.iter().rposition(|l| l.id == *id) else {
                     self.ops.push(Op::Exec(Box::new(s.clone())));
                     return;
                 };
                 let skip = cond.as_ref().map(|c| self.jump_unless(c));
-                let depth = self.loops[k].2;
+                let depth = self.loops[k].hdepth;
                 if depth < self.hdepth {
                     self.ops.push(Op::TruncCurrent(depth));
                 }
-                for _ in self.loops[k].3..self.masters {
+                for _ in self.loops[k].masters..self.masters {
                     self.ops.push(Op::MasterLeave(s.span));
                 }
                 let j = self.ops.len();
                 self.ops.push(Op::Jump(0));
-                self.loops[k].1.push(j);
+                self.loops[k].exits.push(j);
                 if let Some(j) = skip {
                     let next = self.here();
                     self.patch(j, next);
@@ -228,18 +228,23 @@ impl<'r> Compiler<'r> {
     }
 
     pub(in crate::interp::vm) fn loop_body(&mut self, id: u32, body: &[Stmt]) {
-        self.loops.push((id, Vec::new(), self.hdepth, self.masters));
+        self.loops.push(OpenLoop {
+            id,
+            exits: Vec::new(),
+            hdepth: self.hdepth,
+            masters: self.masters,
+        });
         self.stmts(body);
     }
 
     /// Ends the innermost loop: its exits jump here. Returns the target.
     pub(in crate::interp::vm) fn end_loop(&mut self, id: u32) -> u32 {
         let end = self.here();
-        let (_, jumps, depth, _) = self.loops.pop().expect("a loop");
-        for j in jumps {
+        let l = self.loops.pop().expect("a loop");
+        for j in l.exits {
             self.patch(j, end);
         }
-        self.exits.push((id, end, depth));
+        self.exits.push((id, end, l.hdepth));
         end
     }
 }
