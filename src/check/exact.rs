@@ -27,6 +27,25 @@ pub fn of_f64(v: f64) -> Option<Exact> {
     Some(if neg { -r } else { r })
 }
 
+/// The exact value of a machine number: the rational an `f64` is (its
+/// binary value, not the shortest decimal that reads back as it).
+pub fn of_double(v: f64) -> Option<Exact> {
+    BigRational::from_float(v)
+}
+
+/// RM 4.9(38): the machine number of a floating point type nearest to `r`
+/// (every floating point type of adair is a 64-bit double).
+pub fn to_machine(r: &Exact) -> Option<Exact> {
+    of_double(to_f64(r))
+}
+
+/// RM 4.9(38) for a fixed point type of whole nanoseconds (Duration): `r`
+/// truncated toward zero to a multiple of 1 ns, as GNAT does.
+pub fn to_whole_ns(r: &Exact) -> Exact {
+    let ns = BigRational::from_integer(BigInt::from(1_000_000_000u32));
+    (r * &ns).trunc() / ns
+}
+
 pub fn of_int(v: i128) -> Exact {
     BigRational::from_integer(BigInt::from(v))
 }
@@ -82,5 +101,25 @@ mod tests {
         assert_eq!(to_f64(&third), 1.0 / 3.0);
         assert_eq!(pow(&of_int(2), -2).unwrap(), of_int(1) / of_int(4));
         assert!(pow(&of_int(0), -1).is_none());
+    }
+
+    #[test]
+    fn machine_numbers_are_rounded_to_double() {
+        let third = of_int(1) / of_int(3);
+        let m = to_machine(&third).unwrap();
+        assert_ne!(m.clone() * of_int(3), of_int(1));
+        assert_eq!(to_f64(&m), 1.0 / 3.0);
+        // 0.1 as a double is not 1/10.
+        assert_ne!(of_double(0.1).unwrap(), of_f64(0.1).unwrap());
+        assert_eq!(to_machine(&of_int(3)).unwrap(), of_int(3));
+    }
+
+    #[test]
+    fn whole_nanoseconds_truncate_toward_zero() {
+        let ns = |n: i128| of_int(n) / of_int(1_000_000_000);
+        assert_eq!(to_whole_ns(&(of_int(2) / of_int(3))), ns(666_666_666));
+        assert_eq!(to_whole_ns(&(of_int(-2) / of_int(3))), ns(-666_666_666));
+        assert_eq!(to_whole_ns(&(of_int(3) / of_int(2_000_000_000))), ns(1));
+        assert_eq!(to_whole_ns(&of_int(5)), of_int(5));
     }
 }

@@ -275,6 +275,7 @@ impl Checker {
                 .as_ref()
                 .and_then(|e| self.static_value(e))
                 .filter(|_| self.tables.types.is_scalar(t))
+                .map(|v| self.machine_value(v, t))
         } else {
             None
         };
@@ -319,6 +320,25 @@ impl Checker {
         // before the next statement (see `activate_library_tasks`).
         if creates_task && self.tasking.masters.is_empty() {
             self.tasking.library_tasks = true;
+        }
+    }
+
+    /// RM 4.9(38): the value of a static real expression given to a
+    /// constant of a real type is a value of that type (named numbers stay
+    /// exact): the nearest double for a floating point type (adair's
+    /// floating point types are all doubles), whole nanoseconds for Duration
+    /// (truncated, as GNAT does; `coerce` made it so already).
+    fn machine_value(&self, v: Static, t: TypeId) -> Static {
+        match v {
+            Static::Real(r) if self.tables.types.whole_ns(t) => {
+                Static::Real(exact::to_whole_ns(&r))
+            }
+            Static::Real(r)
+                if self.tables.types.is_float(t) && !self.tables.types.is_universal(t) =>
+            {
+                Static::Real(exact::to_machine(&r).unwrap_or(r))
+            }
+            v => v,
         }
     }
 

@@ -12,12 +12,18 @@ impl Checker {
     pub(in crate::check) fn coerce_base(&mut self, ex: Ex, t: TypeId) -> Ex {
         let base = self.tables.types.base(t);
         let saved = self.tables.types.list[base as usize].range.take();
-        let r = self.coerce(ex, base);
+        let r = self.coerce_to(ex, base, false);
         self.tables.types.list[base as usize].range = saved;
         r
     }
 
-    pub(in crate::check) fn coerce(&mut self, mut ex: Ex, t: TypeId) -> Ex {
+    pub(in crate::check) fn coerce(&mut self, ex: Ex, t: TypeId) -> Ex {
+        self.coerce_to(ex, t, true)
+    }
+
+    /// [`Self::coerce`]; `whole` when `ex` is not an operand of a larger
+    /// expression (the value of a static one is then its type's, RM 4.9(38)).
+    fn coerce_to(&mut self, mut ex: Ex, t: TypeId, whole: bool) -> Ex {
         if ex.ty == ERROR || t == ERROR {
             return ex;
         }
@@ -201,6 +207,18 @@ impl Checker {
             ));
             ex.ty = ERROR;
             return ex;
+        }
+        // RM 4.9(38): a static value given to Duration is a whole number
+        // of nanoseconds, truncated toward zero as GNAT does.
+        if whole
+            && self.tables.types.whole_ns(t)
+            && let Some(Static::Real(v)) = self.static_value(&ex)
+        {
+            let ns = exact::to_whole_ns(&v);
+            if ns != v {
+                let (ty, span) = (ex.ty, ex.span);
+                ex = self.real_lit(ns, ty, span);
+            }
         }
         let from = ex.ty;
         if self.tables.types.is_universal(ex.ty)
