@@ -243,6 +243,10 @@ pub fn not_an_exception(span: Span, text: &str) -> Diagnostic {
     d(codes::E0204, span, format!("`{text}` is not an exception"))
 }
 
+pub fn not_a_subprogram(span: Span, text: &str) -> Diagnostic {
+    d(codes::E0204, span, format!("`{text}` is not a subprogram"))
+}
+
 pub fn type_is_not_a_value(span: Span, ty: &str) -> Diagnostic {
     d(
         codes::E0204,
@@ -1127,6 +1131,20 @@ pub fn record_component_unconstrained(span: Span) -> Diagnostic {
     )
 }
 
+// ---- E0313: renaming a value ----
+
+/// `X : T renames 3;`: what is renamed is a value (`what` says which
+/// kind: a literal, an expression, a conversion, a named number).
+pub fn renames_a_value(span: Span, text: &str, what: &str) -> Diagnostic {
+    d(
+        codes::E0313,
+        span,
+        format!("`{text}` is {what}, not an object: only an object can be renamed"),
+    )
+    .with_label("a renaming gives an existing object another name")
+    .with_hint("to keep a value, declare a constant: `Name : constant T := ...;`")
+}
+
 // ---- E0401: return ----
 
 pub fn function_without_return(span: Span, name: &str) -> Diagnostic {
@@ -1235,6 +1253,66 @@ pub fn import_profile_mismatch(
         ),
     )
     .with_label("the service's natives would read the wrong arguments")
+}
+
+// ---- E0406, E0407: subprogram renamings ----
+
+/// `procedure P (A : Float) renames Go;` where no `Go` has P's profile
+/// (`candidates`: the signatures of the subprograms named so).
+pub fn renaming_profile_mismatch<S: AsRef<str>>(
+    span: Span,
+    name: &str,
+    renamed: &str,
+    candidates: &[S],
+) -> Diagnostic {
+    let mut dg = d(
+        codes::E0406,
+        span,
+        format!("no subprogram `{renamed}` has the profile of `{name}`"),
+    )
+    .with_label("the parameter and result types must be those of the renamed subprogram");
+    if !candidates.is_empty() {
+        dg = dg.with_hint(format!(
+            "the subprograms named `{renamed}` are:\n  {}",
+            join(candidates, "\n  ")
+        ));
+    }
+    dg
+}
+
+/// `procedure P renames P;`: a subprogram renaming that names itself.
+pub fn renames_itself(span: Span, name: &str) -> Diagnostic {
+    d(codes::E0406, span, format!("`{name}` cannot rename itself"))
+}
+
+/// A renaming whose parameter `param` has mode `mode` where the renamed
+/// subprogram's has `renamed_mode` (RM 8.5.4(4): mode conformance).
+pub fn renaming_mode_mismatch(
+    span: Span,
+    param: &str,
+    mode: &str,
+    renamed_mode: &str,
+    renamed: &str,
+) -> Diagnostic {
+    d(
+        codes::E0407,
+        span,
+        format!("the parameter `{param}` is `{mode}` here and `{renamed_mode}` in `{renamed}`"),
+    )
+    .with_label("a renaming keeps the modes of the subprogram it renames")
+}
+
+/// A renaming-as-body whose parameter `param` is named `declared` in the
+/// declaration it completes (RM 8.5.4(5): full conformance).
+pub fn renaming_as_body_names(span: Span, param: &str, declared: &str) -> Diagnostic {
+    d(
+        codes::E0407,
+        span,
+        format!(
+            "the parameter `{param}` is named `{declared}` in the declaration this renaming completes"
+        ),
+    )
+    .with_label("a body, a renaming too, repeats its declaration's parameter names")
 }
 
 // ---- E0501: entries and accept ----

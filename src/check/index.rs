@@ -47,6 +47,9 @@ pub struct Def {
     pub ty: Option<TypeId>,
     /// The subprogram a `Subprogram` declares.
     pub func: Option<FuncId>,
+    /// A renaming declaration's renamed name (`Pose.Z` of `Tip : Float
+    /// renames Pose.Z;`).
+    pub renames: Option<Span>,
 }
 
 /// One use of a name: its place and the index of its declaration in
@@ -89,6 +92,9 @@ pub struct Index {
     /// Named numbers and `for E of` element names have no identity but
     /// their name: the latest declaration of the name.
     by_name: PMap<String, u32>,
+    /// Renamings of exceptions, packages and objects: the same entity as
+    /// the renamed one, told apart by the name a use spells.
+    renamings: PMap<(String, Key), u32>,
 }
 
 impl Index {
@@ -202,6 +208,7 @@ impl Checker {
             decl: self.cur_decl.unwrap_or(span),
             ty,
             func,
+            renames: None,
         });
         match key_of(e) {
             Some(key) => {
@@ -229,6 +236,7 @@ impl Checker {
             decl: id.span,
             ty: Some(ty),
             func: None,
+            renames: None,
         });
         self.index.by_key.insert(Key::Field(rec, i), n);
     }
@@ -249,6 +257,7 @@ impl Checker {
             decl: self.cur_decl.unwrap_or(id.span),
             ty: Some(ty),
             func: None,
+            renames: None,
         });
         self.index.by_key.insert(Key::Param(f, i), n);
     }
@@ -292,10 +301,42 @@ impl Checker {
         }
     }
 
+    /// Records a renaming declaration of `name` at `span` (its renamed name
+    /// at `renamed`): an entity that may be the renamed one's, so a use is
+    /// its own when it spells `name`.
+    pub(super) fn index_renaming(
+        &mut self,
+        name: &str,
+        span: Span,
+        e: &Entity,
+        kind: Option<DefKind>,
+        renamed: Span,
+    ) {
+        let i = self.index.defs.len() as u32;
+        let key = key_of(e);
+        let own = key.and_then(|k| self.index.by_key.get(&k).copied());
+        self.index_def(name, span, e, kind);
+        if let Some(d) = self.index.defs.get_mut(i as usize) {
+            d.renames = Some(renamed);
+        }
+        if let Some(key) = key {
+            // The renamed entity's own declaration stays its key's.
+            match own {
+                Some(own) => self.index.by_key.insert(key, own),
+                None => self.index.by_key.remove(&key),
+            };
+            self.index.renamings.insert((name.to_lowercase(), key), i);
+        }
+    }
+
     /// Records that the name at `span` (spelled `key` in lower case) means `e`.
     pub(super) fn index_ref(&mut self, span: Span, key: &str, e: &Entity) {
         let def = match key_of(e) {
-            Some(k) => self.index.by_key.get(&k),
+            Some(k) => self
+                .index
+                .renamings
+                .get(&(key.to_string(), k))
+                .or_else(|| self.index.by_key.get(&k)),
             None => self.index.by_name.get(key),
         };
         if let Some(&def) = def

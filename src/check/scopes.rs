@@ -257,6 +257,22 @@ impl Scopes {
         scope.names.entry(key).or_default().push(e);
     }
 
+    /// A constant of the innermost scope that no name denotes (what a
+    /// renaming evaluated once, RM 8.5.1(6)): known as a constant, so that
+    /// an assignment through the renaming is refused.
+    pub(super) fn declare_hidden(&mut self, var: Var, ty: TypeId) {
+        const KEY: &str = " renamed";
+        self.var_names.insert(var, (KEY.to_string(), true));
+        let e = Entity::Var {
+            var,
+            ty,
+            constant: true,
+            value: None,
+        };
+        let scope = self.stack.last_mut().expect("scope");
+        scope.names.entry(KEY.to_string()).or_default().push(e);
+    }
+
     /// Declares a library-level package (`key` lower case) in the
     /// outermost scope.
     pub(super) fn declare_library_package(&mut self, key: String, p: usize) {
@@ -385,7 +401,8 @@ impl Scopes {
     pub(super) fn visible_names(&self, packages: &PVec<Package>) -> Vec<String> {
         let mut v: Vec<String> = Vec::new();
         for s in &self.stack {
-            v.extend(s.names.keys().cloned());
+            // (Hidden names begin with a space: no identifier does.)
+            v.extend(s.names.keys().filter(|k| !k.starts_with(' ')).cloned());
             for &p in &s.uses {
                 v.extend(packages[p].names.keys().cloned());
             }
@@ -452,6 +469,13 @@ impl Checker {
     /// Declares a name, reporting a clash with a non-overloadable name of the
     /// same declarative region.
     pub(super) fn declare_checked(&mut self, id: &ast::Ident, e: Entity) {
+        self.index_def(&id.name, id.span, &e, None);
+        self.declare_checked_unindexed(id, e);
+    }
+
+    /// [`Self::declare_checked`] for a declaration the caller records in
+    /// the index itself (a renaming).
+    pub(super) fn declare_checked_unindexed(&mut self, id: &ast::Ident, e: Entity) {
         let overloadable = matches!(e, Entity::Func(_) | Entity::EnumLit(..));
         if let Some(prev) = self.scopes.innermost().and_then(|s| s.names.get(&*id.key)) {
             let clash = prev
@@ -463,7 +487,6 @@ impl Checker {
                 self.err(diagnostics::declared_twice(id.span, &id.name));
             }
         }
-        self.index_def(&id.name, id.span, &e, None);
         // A name reported "not declared" earlier in this scope (or one
         // inside it): it was used before its declaration.
         let is_func = matches!(e, Entity::Func(_));

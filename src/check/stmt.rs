@@ -524,7 +524,7 @@ impl Checker {
         if let Some(id) = last_ident(prefix) {
             self.index_ref(id.span, &id.key, &Entity::Func(f));
         }
-        Some(StmtKind::Call(f, a.into()))
+        Some(StmtKind::Call(self.tables.callee(f), a.into()))
     }
 }
 

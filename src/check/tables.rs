@@ -33,6 +33,9 @@ pub struct Tables {
     /// Protected types whose body was seen (missing operations in it are
     /// reported there).
     pub(super) prot_bodied: Vec<u32>,
+    /// Subprogram renamings -> the subprogram they rename: a call of the
+    /// renaming is a call of it (RM 8.5.4(7)).
+    pub(super) renames: PMap<FuncId, FuncId>,
 }
 
 impl Tables {
@@ -49,7 +52,16 @@ impl Tables {
             prot_members: Vec::new(),
             prot_real: HashMap::new(),
             prot_bodied: Vec::new(),
+            renames: PMap::new(),
         }
+    }
+}
+
+impl Tables {
+    /// The subprogram a call of `f` calls: the one it renames, if it is a
+    /// renaming.
+    pub(super) fn callee(&self, f: FuncId) -> FuncId {
+        self.renames.get(&f).copied().unwrap_or(f)
     }
 }
 

@@ -107,8 +107,12 @@ pub enum DeclKind {
     PackageSpec(Box<PackageSpec>),
     PackageBody(Box<PackageBody>),
     Use(Vec<Name>),
-    /// `X : T renames Y;` and friends are outside the subset; kept for messages.
+    /// A declaration outside the subset; kept for messages.
     Unsupported(&'static str),
+    /// A renaming declaration (RM 8.5): `X : T renames Y;`,
+    /// `E : exception renames F;`, `package P renames Q;`,
+    /// `procedure P (...) renames Q;`.
+    Renaming(Box<Renaming>),
     /// An unsupported declaration and the names it would declare (a
     /// generic unit and its formals, an instance, a separate body): the
     /// checker reports it once, and uses of these names raise no
@@ -130,6 +134,27 @@ pub enum DeclKind {
         name: Ident,
         args: Vec<Expr>,
     },
+}
+
+/// A renaming declaration: what it declares, and the name after `renames`
+/// (an expression, as parsed: the checker says whether it is a name of the
+/// right kind).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Renaming {
+    pub what: Renamed,
+    pub renamed: Expr,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Renamed {
+    /// `X : T renames Y;` (the subtype mark alone).
+    Object { name: Ident, ty: Name },
+    /// `E : exception renames F;`
+    Exception(Ident),
+    /// `package P renames Q;`
+    Package(Ident),
+    /// `procedure P (...) renames Q;`, `function "+" (...) return T renames Q;`
+    Subprogram(SubprogramSpec),
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -6,6 +6,7 @@ use super::tasks::BodyKind;
 use super::*;
 use crate::syntax::ast::{DeclKind, TypeDef};
 
+mod renaming;
 mod subprograms;
 mod types;
 
@@ -197,6 +198,7 @@ impl Checker {
             DeclKind::PackageSpec(p) => self.package_spec(p, out),
             DeclKind::PackageBody(p) => self.package_body(p, out),
             DeclKind::Use(names) => self.use_clause(names),
+            DeclKind::Renaming(r) => self.renaming(r, out),
             DeclKind::Unsupported(what) => {
                 if *what == "<error>" || *what == "pragma" {
                     return;

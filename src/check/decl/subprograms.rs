@@ -134,7 +134,7 @@ impl Checker {
     /// flag: a call before the body was elaborated raises Program_Error
     /// (RM 3.11(14)), before anything of the body runs, at the
     /// declaration `span` (the report's call chain shows the call).
-    fn elab_check(&self, f: FuncId, span: Span) -> Option<Stmt> {
+    pub(super) fn elab_check(&self, f: FuncId, span: Span) -> Option<Stmt> {
         let var = *self.elab_flags.get(&f)?;
         let flag = self.mk(ExKind::Var(var), BOOLEAN, span);
         let name = &self.tables.funcs[f as usize].name;

@@ -504,7 +504,7 @@ impl Checker {
                     Some((f, args)) => {
                         self.index_ref(id.span, &id.key, &Entity::Func(f));
                         let r = self.tables.funcs[f as usize].ret.unwrap_or(ERROR);
-                        self.mk(ExKind::Call(f, args.into()), r, sp)
+                        self.mk(ExKind::Call(self.tables.callee(f), args.into()), r, sp)
                     }
                     None => self.err_ex(sp),
                 }
@@ -619,7 +619,11 @@ impl Checker {
                             back_check: None,
                         })
                         .collect();
-                    let callee = self.mk(ExKind::Call(f, defaults.into()), r, p.span);
+                    let callee = self.mk(
+                        ExKind::Call(self.tables.callee(f), defaults.into()),
+                        r,
+                        p.span,
+                    );
                     let idx: Vec<TypeId> = self
                         .tables
                         .types
@@ -640,7 +644,7 @@ impl Checker {
                             self.index_ref(id.span, &id.key, &Entity::Func(f));
                         }
                         let r = self.tables.funcs[f as usize].ret.unwrap_or(ERROR);
-                        self.mk(ExKind::Call(f, a.into()), r, sp)
+                        self.mk(ExKind::Call(self.tables.callee(f), a.into()), r, sp)
                     }
                     None => self.err_ex(sp),
                 }

@@ -93,7 +93,7 @@ impl Checker {
             match this.call(&[f], &args, want, false, sp, op.symbol()) {
                 Some((f, args)) => {
                     let r = this.tables.funcs[f as usize].ret.unwrap_or(ERROR);
-                    this.mk(ExKind::Call(f, args.into()), r, sp)
+                    this.mk(ExKind::Call(this.tables.callee(f), args.into()), r, sp)
                 }
                 None => this.err_ex(sp),
             }
@@ -661,7 +661,7 @@ impl Checker {
                 return match self.call(&user, &args, want, false, sp, op.symbol()) {
                     Some((f, args)) => {
                         let r = self.tables.funcs[f as usize].ret.unwrap_or(ERROR);
-                        self.mk(ExKind::Call(f, args.into()), r, sp)
+                        self.mk(ExKind::Call(self.tables.callee(f), args.into()), r, sp)
                     }
                     None => self.err_ex(sp),
                 };

@@ -246,16 +246,20 @@ fn object_decl<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind
     let Common { expr, st_ind, .. } = c;
     #[derive(Clone)]
     enum ObjTail {
-        Exception,
+        Exception(Option<Expr>),
         Number(Expr),
         Object(bool, SubtypeInd, Option<Expr>),
         AnonArray(bool, TypeDef, Span, Option<Expr>),
-        Renames,
+        /// Where `constant` is, the subtype, the renamed name, an initial value.
+        Renames(Option<Span>, SubtypeInd, Expr, Option<Expr>),
     }
     names()
+        .map_with(|n, e| (n, e.span()))
         .then_ignore(just(Token::Colon))
         .then(choice((
-            kw!(Exception).to(ObjTail::Exception),
+            kw!(Exception)
+                .ignore_then(kw!(Renames).ignore_then(expr.clone()).or_not())
+                .map(ObjTail::Exception),
             kw!(Constant)
                 .ignore_then(just(Token::Assign))
                 .ignore_then(expr.clone())
@@ -268,22 +272,56 @@ fn object_decl<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind
                 .map(|((c, (d, sp)), i)| ObjTail::AnonArray(c.is_some(), d, sp, i)),
             kw!(Aliased)
                 .or_not()
-                .ignore_then(kw!(Constant).or_not())
+                .ignore_then(kw!(Constant).map_with(|_, e| e.span()).or_not())
                 .then_ignore(kw!(Aliased).or_not())
                 .then(st_ind.clone())
-                .then(kw!(Renames).then(expr.clone()).or_not())
+                .then(kw!(Renames).ignore_then(expr.clone()).or_not())
                 .then(init(expr))
-                .map(|(((c, t), ren), i)| {
-                    if ren.is_some() {
-                        ObjTail::Renames
-                    } else {
-                        ObjTail::Object(c.is_some(), t, i)
-                    }
+                .map(|(((c, t), ren), i)| match ren {
+                    Some(r) => ObjTail::Renames(c, t, r, i),
+                    None => ObjTail::Object(c.is_some(), t, i),
                 }),
         )))
         .then_ignore(soft_semi())
-        .map(|(names, tail)| match tail {
-            ObjTail::Exception => DeclKind::Exception { names },
+        .validate(|((names, names_span), tail), _, emitter| {
+            let mut refuse = |at: Span, msg: &str| {
+                emitter.emit(Rich::custom(at, D::custom(codes::E0106, msg)));
+            };
+            let renaming = matches!(tail, ObjTail::Renames(..) | ObjTail::Exception(Some(_)));
+            if renaming && names.len() > 1 {
+                refuse(
+                    names_span,
+                    "a renaming declares one name: write one renaming for each",
+                );
+            }
+            if let ObjTail::Renames(constant, ty, _, init) = &tail {
+                if let Some(at) = constant {
+                    refuse(
+                        *at,
+                        "`constant` is not allowed in a renaming: the renaming of a constant is a constant",
+                    );
+                }
+                if ty.constraint.is_some() {
+                    refuse(
+                        ty.span,
+                        "a renaming names its subtype without a constraint: the renamed object's subtype applies",
+                    );
+                }
+                if let Some(i) = init {
+                    refuse(
+                        i.span,
+                        "a renaming has no initial value: it is another name for an existing object",
+                    );
+                }
+            }
+            (names, tail)
+        })
+        .map(|(mut names, tail)| match tail {
+            ObjTail::Exception(None) => DeclKind::Exception { names },
+            ObjTail::Exception(Some(renamed)) => DeclKind::Renaming(Box::new(Renaming {
+                what: Renamed::Exception(names.swap_remove(0)),
+                renamed,
+            })),
             ObjTail::Number(value) => DeclKind::Number { names, value },
             ObjTail::Object(constant, ty, init) => DeclKind::Object {
                 names,
@@ -307,7 +345,13 @@ fn object_decl<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind
                     anon: Some(Box::new(def)),
                 }
             }
-            ObjTail::Renames => DeclKind::Unsupported("a renaming declaration"),
+            ObjTail::Renames(_, ty, renamed, _) => DeclKind::Renaming(Box::new(Renaming {
+                what: Renamed::Object {
+                    name: names.swap_remove(0),
+                    ty: ty.mark,
+                },
+                renamed,
+            })),
         })
         .boxed()
 }
@@ -327,6 +371,10 @@ fn subprogram<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind,
                 .then(any().and_is(semi().not()).repeated())
                 .then_ignore(semi())
                 .to(SubTail::Unsupported("a generic instantiation")),
+            kw!(Renames)
+                .ignore_then(expr.clone())
+                .then_ignore(semi())
+                .map(SubTail::Renames),
             expression_function(expr),
             subprogram_body(c),
             import_aspect(expr)
@@ -343,6 +391,10 @@ fn subprogram<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind,
                 },
             ),
             SubTail::Decl(import) => DeclKind::SubprogramDecl { spec, import },
+            SubTail::Renames(renamed) => DeclKind::Renaming(Box::new(Renaming {
+                what: Renamed::Subprogram(spec),
+                renamed,
+            })),
             SubTail::Body(decls, body, end_name, missing) => {
                 if let Some(at) = missing {
                     let whole: Span = e.span();
@@ -442,6 +494,8 @@ pub(super) fn params<'t, I: TokIn<'t>>(
 enum SubTail {
     Unsupported(&'static str),
     Decl(Option<String>),
+    /// `renames Name;`
+    Renames(Expr),
     /// Declarations, statements, the name after `end`, and where the
     /// text ended when it ended before the body's `end`.
     Body(Vec<Decl>, Block, Option<(String, Span)>, Option<Span>),
@@ -606,6 +660,16 @@ fn package<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex
                         decls,
                         init,
                         span: e.span(),
+                    }))
+                }),
+            ident()
+                .then_ignore(kw!(Renames))
+                .then(name())
+                .then_ignore(semi())
+                .map(|(n, renamed)| {
+                    DeclKind::Renaming(Box::new(Renaming {
+                        what: Renamed::Package(n),
+                        renamed,
                     }))
                 }),
             ident()
