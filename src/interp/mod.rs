@@ -596,10 +596,24 @@ pub struct Run<'a> {
     svc: Option<&'a mut dyn Services>,
 }
 
-enum Step {
+/// One step of an assignment's path from its root to the part written.
+pub(crate) enum Step {
     Index(Vec<i64>, Span),
     Field(u32),
     Slice(i64, i64, Span),
+}
+
+/// Where an assignment's path begins (see [`Run::store`]).
+pub(crate) enum Root {
+    /// A variable's stack slot.
+    Slot(usize),
+    /// The object an access value designates (`P.all`), and where its
+    /// access check fails.
+    Ptr(Value, Span),
+    /// A device register (its address and type): read, changed, written back.
+    Register(u32, TypeId, Span),
+    /// Not a variable (a checker error left in the program).
+    NotVariable(Span),
 }
 
 impl Run<'_> {
@@ -786,33 +800,12 @@ impl Run<'_> {
             StmtKind::Block(b) => self.body(b),
             StmtKind::Raise(e, msg) => {
                 let m = match msg {
-                    Some(x) => self.eval(x)?.text(),
-                    // GNAT: the place, and for the language-defined checks'
-                    // exceptions "explicit raise" (`file.adb:6 explicit raise`).
-                    None if matches!(
-                        *e,
-                        check::CONSTRAINT_ERROR | check::PROGRAM_ERROR | check::STORAGE_ERROR
-                    ) =>
-                    {
-                        format!("{} explicit raise", self.m.location(s.span))
-                    }
-                    None => self.m.location(s.span),
+                    Some(x) => Some(self.eval(x)?),
+                    None => None,
                 };
-                Err(self.raise(*e, m, s.span))
+                Err(self.raise_stmt(*e, m, s.span))
             }
-            StmtKind::Reraise => {
-                // The handler keeps the current occurrence in a hidden slot.
-                match self.m.current.last().cloned() {
-                    Some(o) => {
-                        let mut o = (*o).clone();
-                        o.reraised.push(s.span);
-                        Err(Flow::Raise(Box::new(o)))
-                    }
-                    None => {
-                        Err(self.raise(check::PROGRAM_ERROR, "no exception to re-raise", s.span))
-                    }
-                }
-            }
+            StmtKind::Reraise => Err(self.reraise(s.span)),
             StmtKind::Delay(until, d) => {
                 let x = self.eval(d)?.real();
                 // Duration is fixed point in Ada: no NaN, no infinity. A
@@ -1067,19 +1060,12 @@ impl Run<'_> {
         loop {
             match &e.kind {
                 ExKind::Var(v) => {
-                    let i = self.slot(*v);
                     steps.reverse();
-                    let root = &mut self.m.stack[i];
-                    return write_path(root, &steps, val, target.span)
-                        .map_err(|(what, sp)| self.check_failed(what, sp));
+                    return self.store(Root::Slot(self.slot(*v)), &steps, val, target.span);
                 }
-                // A device register: read, change, write back.
                 ExKind::Register(a) => {
-                    let mut root = self.read_register(*a, e.ty, e.span)?;
                     steps.reverse();
-                    write_path(&mut root, &steps, val, target.span)
-                        .map_err(|(what, sp)| self.check_failed(what, sp))?;
-                    return self.write_register(*a, &root, e.span);
+                    return self.store(Root::Register(*a, e.ty, e.span), &steps, val, target.span);
                 }
                 ExKind::Index(p, idx) => {
                     let mut ix = Vec::with_capacity(idx.len());
@@ -1100,16 +1086,37 @@ impl Run<'_> {
                 }
                 ExKind::Deref(p) => {
                     let ptr = self.eval(p)?;
-                    let Value::Ptr(Some(rc)) = ptr else {
-                        return Err(self.check_failed("access check failed", e.span));
-                    };
                     steps.reverse();
-                    let mut b = rc.borrow_mut();
-                    return write_path(&mut b, &steps, val, target.span)
-                        .map_err(|(what, sp)| self.check_failed(what, sp));
+                    return self.store(Root::Ptr(ptr, e.span), &steps, val, target.span);
                 }
-                _ => return Err(self.raise(check::PROGRAM_ERROR, "not a variable", e.span)),
+                _ => return self.store(Root::NotVariable(e.span), &[], val, target.span),
             }
+        }
+    }
+
+    /// Writes `val` to the part of `root` that `steps` lead to, with the
+    /// checks of each step and of the value's bounds (what both engines
+    /// run for an assignment to a component, an element, a slice or an
+    /// array).
+    pub(crate) fn store(&mut self, root: Root, steps: &[Step], val: Value, at: Span) -> R<()> {
+        let fail = |this: &Self, (what, sp): (&'static str, Span)| this.check_failed(what, sp);
+        match root {
+            Root::Slot(i) => {
+                write_path(&mut self.m.stack[i], steps, val, at).map_err(|e| fail(self, e))
+            }
+            Root::Ptr(ptr, sp) => {
+                let Value::Ptr(Some(rc)) = ptr else {
+                    return Err(self.check_failed("access check failed", sp));
+                };
+                let mut b = rc.borrow_mut();
+                write_path(&mut b, steps, val, at).map_err(|e| fail(self, e))
+            }
+            Root::Register(a, ty, sp) => {
+                let mut word = self.read_register(a, ty, sp)?;
+                write_path(&mut word, steps, val, at).map_err(|e| fail(self, e))?;
+                self.write_register(a, &word, sp)
+            }
+            Root::NotVariable(sp) => Err(self.raise(check::PROGRAM_ERROR, "not a variable", sp)),
         }
     }
 
@@ -1207,6 +1214,19 @@ impl Run<'_> {
                     None => return Err(self.check_failed("index check failed", e.span)),
                 }
             }
+            ExKind::FloatNeg(a)
+            | ExKind::IntAbs(a)
+            | ExKind::FloatAbs(a)
+            | ExKind::FloatToInt(a)
+            | ExKind::Deref(a)
+            | ExKind::ArrNot(a)
+            | ExKind::ArrayConvert(a, _) => {
+                let v = self.eval(a)?;
+                match UnOp::of(e) {
+                    Some((op, _)) => self.unary_of(op, v, e.span)?,
+                    None => unreachable!("a unary operation"),
+                }
+            }
             ExKind::Slice(p, lh) => {
                 let base = self.eval(p)?;
                 let (l, h) = (self.eval(&lh[0])?.int(), self.eval(&lh[1])?.int());
@@ -1215,10 +1235,6 @@ impl Run<'_> {
             ExKind::Field(p, i) => match self.eval(p)? {
                 Value::Rec(r) => r[*i as usize].clone(),
                 _ => return Err(self.check_failed("discriminant check failed", e.span)),
-            },
-            ExKind::Deref(p) => match self.eval(p)? {
-                Value::Ptr(Some(rc)) => rc.borrow().clone(),
-                _ => return Err(self.check_failed("access check failed", e.span)),
             },
             ExKind::Call(f, args) => match self.call(*f, args, e.span)? {
                 Some(v) => v,
@@ -1286,67 +1302,22 @@ impl Run<'_> {
             ExKind::Not(a) => Value::Int((self.eval(a)?.int() == 0) as i64),
             ExKind::ArrLogic(op, a, b) => {
                 let (x, y) = (self.eval(a)?, self.eval(b)?);
-                let (Value::Arr(x), Value::Arr(y)) = (&x, &y) else {
-                    return Err(self.check_failed("access check failed", e.span));
-                };
-                if x.data.len() != y.data.len() {
-                    return Err(self.check_failed("length check failed", e.span));
-                }
-                bool_array(
-                    x,
-                    x.data.iter().zip(&y.data).map(|(p, q)| {
-                        let (p, q) = (p.int() != 0, q.int() != 0);
-                        match op {
-                            LogicOp::Or | LogicOp::OrElse => p || q,
-                            LogicOp::Xor => p ^ q,
-                            LogicOp::And | LogicOp::AndThen => p && q,
-                        }
-                    }),
-                )
-            }
-            ExKind::ArrNot(a) => {
-                let Value::Arr(x) = self.eval(a)? else {
-                    return Err(self.check_failed("access check failed", e.span));
-                };
-                bool_array(&x, x.data.iter().map(|p| p.int() == 0))
+                self.arr_logic(*op, &x, &y, e.span)?
             }
             ExKind::IntNeg(a) => {
                 let x = self.eval(a)?.int();
                 Value::Int(self.int_op(IntOp::Sub, 0, x, e.span)?)
             }
-            ExKind::FloatNeg(a) => Value::Real(-self.eval(a)?.real()),
-            ExKind::IntAbs(a) => {
-                let x = self.eval(a)?.int();
-                let v = x.abs();
-                if v > i32::MAX as i64 {
-                    return Err(self.check_failed("overflow check failed", e.span));
-                }
-                Value::Int(v)
-            }
-            ExKind::FloatAbs(a) => Value::Real(self.eval(a)?.real().abs()),
             ExKind::Concat(a, b, ae, be) => {
                 let x = self.eval(a)?;
                 let y = self.eval(b)?;
                 self.concat(x, y, *ae, *be, e.ty, e.span)?
             }
             ExKind::IntToFloat(a) => Value::Real(self.eval(a)?.real()),
-            ExKind::FloatToInt(a) => {
-                let x = self.eval(a)?.real();
-                let r = x.round();
-                if !(r >= i32::MIN as f64 && r <= i32::MAX as f64) {
-                    // Outside the 32-bit base type: GNAT's "overflow check".
-                    return Err(self.check_failed("overflow check failed", e.span));
-                }
-                Value::Int(r as i64)
-            }
             ExKind::RangeCheck(a, t) => {
                 let v = self.eval(a)?;
                 self.range_check(&v, *t, e.span)?;
                 v
-            }
-            ExKind::ArrayConvert(a, t) => {
-                let v = self.eval(a)?;
-                self.array_convert(v, *t, e.span)?
             }
             ExKind::Attr(op, args) => self.attr(*op, args, e)?,
             ExKind::TypeFirst(t) => self.type_bounds(*t)?.0,
@@ -1354,12 +1325,16 @@ impl Run<'_> {
             ExKind::InRanges(s, ranges, neg) => {
                 let v = self.eval(s)?;
                 let mut inside = false;
+                // Each range as `V >= Lo and then V <= Hi`, in turn until
+                // one holds V: a bound is evaluated only when GNAT
+                // evaluates it (tests/ada/engine_unary_raise).
                 for (l, h) in ranges.iter() {
                     let lo = self.eval(l)?;
+                    if v.compare(&lo) == std::cmp::Ordering::Less {
+                        continue;
+                    }
                     let hi = self.eval(h)?;
-                    if v.compare(&lo) != std::cmp::Ordering::Less
-                        && v.compare(&hi) != std::cmp::Ordering::Greater
-                    {
+                    if v.compare(&hi) != std::cmp::Ordering::Greater {
                         inside = true;
                         break;
                     }
@@ -1485,7 +1460,7 @@ impl Run<'_> {
     }
 
     /// Low and high bound of a scalar subtype.
-    fn type_bounds(&mut self, t: TypeId) -> R<(Value, Value)> {
+    pub(crate) fn type_bounds(&mut self, t: TypeId) -> R<(Value, Value)> {
         let info = self.c.types.get(t);
         if let Some((l, h)) = info.static_range {
             return Ok((Value::Int(l as i64), Value::Int(h as i64)));
@@ -1535,7 +1510,7 @@ impl Run<'_> {
         Ok(Some(out))
     }
 
-    fn array_convert(&mut self, v: Value, t: TypeId, span: Span) -> R<Value> {
+    pub(crate) fn array_convert(&mut self, v: Value, t: TypeId, span: Span) -> R<Value> {
         let Some(bounds) = self.array_bounds(t)? else {
             return Ok(v);
         };
@@ -1904,6 +1879,94 @@ impl Run<'_> {
         Ok(Value::Arr(Rc::new(Array { bounds, data })))
     }
 
+    /// A unary operation on a value (what both engines run).
+    pub(crate) fn unary_of(&mut self, op: UnOp, v: Value, span: Span) -> R<Value> {
+        Ok(match op {
+            UnOp::FloatNeg => Value::Real(-v.real()),
+            UnOp::FloatAbs => Value::Real(v.real().abs()),
+            UnOp::IntAbs => {
+                let x = v.int().abs();
+                if x > i32::MAX as i64 {
+                    return Err(self.check_failed("overflow check failed", span));
+                }
+                Value::Int(x)
+            }
+            UnOp::FloatToInt => {
+                let r = v.real().round();
+                if !(r >= i32::MIN as f64 && r <= i32::MAX as f64) {
+                    // Outside the 32-bit base type: GNAT's "overflow check".
+                    return Err(self.check_failed("overflow check failed", span));
+                }
+                Value::Int(r as i64)
+            }
+            UnOp::Deref => match v {
+                Value::Ptr(Some(rc)) => rc.borrow().clone(),
+                _ => return Err(self.check_failed("access check failed", span)),
+            },
+            UnOp::ArrNot => {
+                let Value::Arr(x) = v else {
+                    return Err(self.check_failed("access check failed", span));
+                };
+                bool_array(&x, x.data.iter().map(|p| p.int() == 0))
+            }
+            UnOp::ArrayConvert(t) => self.array_convert(v, t, span)?,
+        })
+    }
+
+    /// `x op y` of two Boolean arrays (what both engines run).
+    pub(crate) fn arr_logic(&self, op: LogicOp, x: &Value, y: &Value, span: Span) -> R<Value> {
+        let (Value::Arr(x), Value::Arr(y)) = (x, y) else {
+            return Err(self.check_failed("access check failed", span));
+        };
+        if x.data.len() != y.data.len() {
+            return Err(self.check_failed("length check failed", span));
+        }
+        Ok(bool_array(
+            x,
+            x.data.iter().zip(&y.data).map(|(p, q)| {
+                let (p, q) = (p.int() != 0, q.int() != 0);
+                match op {
+                    LogicOp::Or | LogicOp::OrElse => p || q,
+                    LogicOp::Xor => p ^ q,
+                    LogicOp::And | LogicOp::AndThen => p && q,
+                }
+            }),
+        ))
+    }
+
+    /// The occurrence a `raise E [with Msg];` statement raises (what both
+    /// engines run).
+    pub(crate) fn raise_stmt(&mut self, e: ExcId, msg: Option<Value>, span: Span) -> Flow {
+        let m = match msg {
+            Some(x) => x.text(),
+            // GNAT: the place, and for the language-defined checks'
+            // exceptions "explicit raise" (`file.adb:6 explicit raise`).
+            None if matches!(
+                e,
+                check::CONSTRAINT_ERROR | check::PROGRAM_ERROR | check::STORAGE_ERROR
+            ) =>
+            {
+                format!("{} explicit raise", self.m.location(span))
+            }
+            None => self.m.location(span),
+        };
+        self.raise(e, m, span)
+    }
+
+    /// What a `raise;` statement raises: the handler's occurrence again
+    /// (what both engines run).
+    pub(crate) fn reraise(&mut self, span: Span) -> Flow {
+        // The handler keeps the current occurrence in a hidden slot.
+        match self.m.current.last().cloned() {
+            Some(o) => {
+                let mut o = (*o).clone();
+                o.reraised.push(span);
+                Flow::Raise(Box::new(o))
+            }
+            None => self.raise(check::PROGRAM_ERROR, "no exception to re-raise", span),
+        }
+    }
+
     /// `base (l .. h)` (what both engines run).
     pub(crate) fn slice_of(&mut self, base: &Value, l: i64, h: i64, span: Span) -> R<Value> {
         let Value::Arr(a) = base else {
@@ -2127,6 +2190,37 @@ fn write_path(
             }
             Ok(())
         }
+    }
+}
+
+/// A unary operation that both engines run through [`Run::unary_of`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum UnOp {
+    FloatNeg,
+    IntAbs,
+    FloatAbs,
+    FloatToInt,
+    /// `P.all`.
+    Deref,
+    /// `not` of a Boolean array.
+    ArrNot,
+    /// A conversion to an array type (bounds and length checks).
+    ArrayConvert(TypeId),
+}
+
+impl UnOp {
+    /// The operation and operand of `e` when it is a unary operation.
+    pub(crate) fn of(e: &Ex) -> Option<(UnOp, &Ex)> {
+        Some(match &e.kind {
+            ExKind::FloatNeg(a) => (UnOp::FloatNeg, a),
+            ExKind::IntAbs(a) => (UnOp::IntAbs, a),
+            ExKind::FloatAbs(a) => (UnOp::FloatAbs, a),
+            ExKind::FloatToInt(a) => (UnOp::FloatToInt, a),
+            ExKind::Deref(a) => (UnOp::Deref, a),
+            ExKind::ArrNot(a) => (UnOp::ArrNot, a),
+            ExKind::ArrayConvert(a, t) => (UnOp::ArrayConvert(*t), a),
+            _ => return None,
+        })
     }
 }
 

@@ -462,6 +462,30 @@ impl<'a> Run<'a> {
                     self.attr_of(a.op, a0, a1, a.ty, a.span)
                         .map(|v| self.put_ix(ix!(a.dst), v))
                 }
+                Op::Un(op, d, x, span) => {
+                    let v = self.m.stack[ix!(*x)].clone();
+                    self.unary_of(*op, v, *span)
+                        .map(|v| self.put_ix(ix!(*d), v))
+                }
+                Op::ArrLogic(op, d, x, y, span) => {
+                    let (xi, yi) = (ix!(*x), ix!(*y));
+                    self.arr_logic(*op, &self.m.stack[xi], &self.m.stack[yi], *span)
+                        .map(|v| self.put_ix(ix!(*d), v))
+                }
+                Op::TypeBound(d, t, last) => self.type_bounds(*t).map(|(l, h)| {
+                    self.put_ix(ix!(*d), if *last { h } else { l });
+                }),
+                Op::Default(d, t, span) => self
+                    .default_value(*t, *span)
+                    .map(|v| self.put_ix(ix!(*d), v)),
+                Op::Register(d, a, t, span) => self
+                    .read_register(*a, *t, *span)
+                    .map(|v| self.put_ix(ix!(*d), v)),
+                Op::Raise(e, msg, span) => {
+                    let m = msg.map(|m| self.m.stack[ix!(m)].clone());
+                    Err(self.raise_stmt(*e, m, *span))
+                }
+                Op::Reraise(span) => Err(self.reraise(*span)),
                 Op::Eval(d, e, temps) => {
                     let r = self.eval(e).map(|v| self.put_ix(ix!(*d), v));
                     for t in temps.iter() {

@@ -52,6 +52,20 @@ pub(super) enum Op {
     Slice(Var, Var, [Var; 2], Span),
     /// `dst := P'Attr (args)`, the arguments in slots.
     Attr(Box<AttrInstr>),
+    /// `dst := op x` (`Run::unary_of`, which the walker calls too).
+    Un(UnOp, Var, Var, Span),
+    /// `dst := x op y` of two Boolean arrays (`Run::arr_logic`).
+    ArrLogic(LogicOp, Var, Var, Var, Span),
+    /// `dst := T'First` (false) or `T'Last` (true) of a scalar subtype.
+    TypeBound(Var, TypeId, bool),
+    /// `dst :=` the default value of a type without tasks.
+    Default(Var, TypeId, Span),
+    /// `dst :=` a device register's value (its address, the value's type).
+    Register(Var, u32, TypeId, Span),
+    /// `raise E [with msg];` (`Run::raise_stmt`).
+    Raise(ExcId, Option<Var>, Span),
+    /// `raise;` in a handler (`Run::reraise`).
+    Reraise(Span),
     /// The walker evaluates an expression into a slot. The expression may
     /// be a copy whose operands were computed here first (replaced by the
     /// temporaries holding them, listed last, which are emptied once it is
@@ -309,6 +323,13 @@ pub(super) fn relocate(op: &mut Op, by: u32) {
         | Op::Slice(..)
         | Op::Concat(..)
         | Op::Attr(..)
+        | Op::Un(..)
+        | Op::ArrLogic(..)
+        | Op::TypeBound(..)
+        | Op::Default(..)
+        | Op::Register(..)
+        | Op::Raise(..)
+        | Op::Reraise(..)
         | Op::Eval(..)
         | Op::Assign(..)
         | Op::Exec(..)

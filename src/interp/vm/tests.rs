@@ -76,3 +76,61 @@ mod fused_tests {
         );
     }
 }
+
+#[cfg(test)]
+mod compiled_tests {
+    use super::super::{Compiler, Op};
+
+    /// Whether the body of `name` in `src` compiles to instructions only,
+    /// none handed to the walker.
+    fn walker_ops(src: &str, name: &str) -> Vec<String> {
+        let checked = crate::check::checked_for_tests(src);
+        let prog = checked.program();
+        let f = prog
+            .funcs
+            .iter()
+            .find(|f| f.name.eq_ignore_ascii_case(name))
+            .expect("the function");
+        let walker_calls = |_| false;
+        let own = f.nslots.max(f.params.len() as u32);
+        let mut c = Compiler::new(f.level, own, &walker_calls, prog.types);
+        c.body(f.body.as_deref().expect("its body"));
+        c.finish(None, true, false)
+            .ops
+            .iter()
+            .filter(|op| matches!(op, Op::Eval(..) | Op::Exec(..) | Op::Assign(..)))
+            .map(|op| format!("{op:?}"))
+            .collect()
+    }
+
+    /// `abs`, real negation, rounding to an integer, `.all`, Boolean array
+    /// operations, array conversions, `T'First`/`T'Last` of a dynamic
+    /// subtype, membership tests, a default value, `raise` and `raise;`
+    /// each have instructions of their own.
+    #[test]
+    fn unary_operations_memberships_and_raise_are_compiled() {
+        let src = "procedure P is\n\
+            type Mask is array (1 .. 4) of Boolean;\n\
+            type Vec is array (Positive range <>) of Integer;\n\
+            subtype Vec3 is Vec (1 .. 3);\n\
+            type Ref is access Integer;\n\
+            Jam : exception;\n\
+            function F (N : Integer; R : Ref; M : Mask; V : Vec) return Integer is\n\
+               subtype W is Integer range N .. N + 4;\n\
+               K : Integer := abs N + Integer (-Float (N) * 0.5) + R.all;\n\
+               B : Mask := (not M and (M or M)) xor M;\n\
+               T : Vec3 := Vec3 (V);\n\
+            begin\n\
+               if N in W'First .. W'Last | 20 .. 30 or else N not in W then\n\
+                  raise Jam with \"jam\";\n\
+               end if;\n\
+               if B (1) then raise Jam; end if;\n\
+               return K + T (1);\n\
+            exception\n\
+               when Jam => raise;\n\
+            end F;\n\
+            begin\n   null;\nend P;\n";
+        let left = walker_ops(src, "F");
+        assert!(left.is_empty(), "{left:#?}");
+    }
+}

@@ -253,6 +253,49 @@ impl<'r> Compiler<'r> {
                     span,
                 })));
             }
+            _ if let Some((op, a)) = UnOp::of(e) => {
+                let x = self.expr(a);
+                self.ops.push(Op::Un(op, dst, x, span));
+            }
+            ExKind::ArrLogic(op, a, b) => {
+                let x = self.left(a, b);
+                let y = self.expr(b);
+                self.ops.push(Op::ArrLogic(*op, dst, x, y, span));
+            }
+            ExKind::TypeFirst(t) => self.ops.push(Op::TypeBound(dst, *t, false)),
+            ExKind::TypeLast(t) => self.ops.push(Op::TypeBound(dst, *t, true)),
+            ExKind::Default(t) if !self.has_task(*t) => self.ops.push(Op::Default(dst, *t, span)),
+            ExKind::Register(a) => self.ops.push(Op::Register(dst, *a, e.ty, span)),
+            ExKind::InRanges(s, ranges, neg) => {
+                // The value, then each range as `X >= Lo and then X <= Hi`
+                // in turn until one holds it, as GNAT evaluates it (a bound
+                // only when it is needed): a result slot of its own, so
+                // that `dst` is written once, at the end.
+                let x = self.operand_before(s, ranges.iter().flat_map(|(l, h)| [l, h]));
+                let t = self.temp();
+                self.ops.push(Op::Int(t, 0));
+                let mut ends = Vec::new();
+                for (l, h) in ranges.iter() {
+                    let lo = self.expr(l);
+                    let below = self.ops.len();
+                    self.ops.push(Op::CmpJumpNot(CmpOp::Ge, x, lo, 0));
+                    let hi = self.expr(h);
+                    self.ops.push(Op::Cmp(CmpOp::Le, t, x, hi));
+                    ends.push(self.ops.len());
+                    self.ops.push(Op::JumpIf(t, 0));
+                    let next = self.here();
+                    self.patch(below, next);
+                }
+                let end = self.here();
+                for j in ends {
+                    self.patch(j, end);
+                }
+                if *neg {
+                    self.ops.push(Op::Not(dst, t));
+                } else {
+                    self.ops.push(Op::Move(dst, t));
+                }
+            }
             _ => {
                 let (copy, temps) = self
                     .strict_copy(e)

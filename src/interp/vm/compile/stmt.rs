@@ -137,7 +137,11 @@ impl<'r> Compiler<'r> {
                 self.ops.push(Op::Return(x));
             }
             StmtKind::Block(b) => self.body(b),
-            StmtKind::Raise(..) | StmtKind::Reraise => self.ops.push(Op::Exec(Box::new(s.clone()))),
+            StmtKind::Raise(e, msg) => {
+                let m = msg.as_ref().map(|m| self.expr(m));
+                self.ops.push(Op::Raise(*e, m, s.span));
+            }
+            StmtKind::Reraise => self.ops.push(Op::Reraise(s.span)),
             StmtKind::Delay(until, d) => {
                 let x = self.expr(d);
                 self.ops.push(Op::Delay(x, *until, s.span));
