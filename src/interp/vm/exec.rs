@@ -481,6 +481,30 @@ impl<'a> Run<'a> {
                 Op::Register(d, a, t, span) => self
                     .read_register(*a, *t, *span)
                     .map(|v| self.put_ix(ix!(*d), v)),
+                Op::Store(st) => {
+                    let si = ix!(st.src);
+                    let val = std::mem::take(&mut self.m.stack[si]);
+                    let steps: Vec<Step> = st
+                        .steps
+                        .iter()
+                        .map(|s| match s {
+                            StoreStep::Index(ix, sp) => {
+                                Step::Index(ix.iter().map(|v| self.int_ix(ix!(*v))).collect(), *sp)
+                            }
+                            StoreStep::Field(i) => Step::Field(*i),
+                            StoreStep::Slice(l, h, sp) => {
+                                Step::Slice(self.int_ix(ix!(*l)), self.int_ix(ix!(*h)), *sp)
+                            }
+                        })
+                        .collect();
+                    let root = match &st.root {
+                        StoreRoot::Var(v) => Root::Slot(ix!(*v)),
+                        StoreRoot::Deref(p, sp) => Root::Ptr(self.m.stack[ix!(*p)].clone(), *sp),
+                        StoreRoot::Register(a, t, sp) => Root::Register(*a, *t, *sp),
+                        StoreRoot::NotVariable(sp) => Root::NotVariable(*sp),
+                    };
+                    self.store(root, &steps, val, st.span)
+                }
                 Op::Raise(e, msg, span) => {
                     let m = msg.map(|m| self.m.stack[ix!(m)].clone());
                     Err(self.raise_stmt(*e, m, *span))
@@ -493,11 +517,6 @@ impl<'a> Run<'a> {
                         self.m.stack[i] = Value::Undef;
                     }
                     r
-                }
-                Op::Assign(t, s) => {
-                    let i = ix!(*s);
-                    let v = std::mem::take(&mut self.m.stack[i]);
-                    self.assign(t, v)
                 }
                 Op::Exec(s) => self.exec(s),
                 Op::Jump(t) => {

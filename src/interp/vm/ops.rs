@@ -62,6 +62,9 @@ pub(super) enum Op {
     Default(Var, TypeId, Span),
     /// `dst :=` a device register's value (its address, the value's type).
     Register(Var, u32, TypeId, Span),
+    /// An assignment to a component, an element, a slice, a whole array,
+    /// through an access value or to a device register (`Run::store`).
+    Store(Box<StoreOp>),
     /// `raise E [with msg];` (`Run::raise_stmt`).
     Raise(ExcId, Option<Var>, Span),
     /// `raise;` in a handler (`Run::reraise`).
@@ -72,8 +75,6 @@ pub(super) enum Op {
     /// evaluated: a chain `F (X) & "a" & ...` would keep every intermediate
     /// string alive until the frame ends).
     Eval(Var, Box<Ex>, Box<[Var]>),
-    /// The walker assigns a slot's value to a target.
-    Assign(Box<Ex>, Var),
     /// The walker executes a statement.
     Exec(Box<Stmt>),
     Jump(u32),
@@ -213,6 +214,35 @@ pub(super) struct AttrInstr {
     pub(super) span: Span,
 }
 
+/// An assignment's target, its operands in slots: the root, then the steps
+/// from the root to the part written, then the value (taken: a temporary).
+#[derive(Debug)]
+pub(super) struct StoreOp {
+    pub(super) root: StoreRoot,
+    pub(super) steps: Box<[StoreStep]>,
+    pub(super) src: Var,
+    pub(super) span: Span,
+}
+
+/// Where a [`StoreOp`]'s path begins.
+#[derive(Debug)]
+pub(super) enum StoreRoot {
+    Var(Var),
+    /// The object the access value in the slot designates.
+    Deref(Var, Span),
+    /// A device register: its address and type.
+    Register(u32, TypeId, Span),
+    NotVariable(Span),
+}
+
+/// One step of a [`StoreOp`]'s path.
+#[derive(Debug)]
+pub(super) enum StoreStep {
+    Index(Box<[Var]>, Span),
+    Field(u32),
+    Slice(Var, Var, Span),
+}
+
 /// A handler of a dispatch: its exceptions (None: `others`), the slot of
 /// its occurrence, where its statements begin.
 #[derive(Debug)]
@@ -329,9 +359,9 @@ pub(super) fn relocate(op: &mut Op, by: u32) {
         | Op::Default(..)
         | Op::Register(..)
         | Op::Raise(..)
+        | Op::Store(..)
         | Op::Reraise(..)
         | Op::Eval(..)
-        | Op::Assign(..)
         | Op::Exec(..)
         | Op::Poll(..)
         | Op::Call(..)

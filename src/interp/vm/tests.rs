@@ -98,7 +98,7 @@ mod compiled_tests {
         c.finish(None, true, false)
             .ops
             .iter()
-            .filter(|op| matches!(op, Op::Eval(..) | Op::Exec(..) | Op::Assign(..)))
+            .filter(|op| matches!(op, Op::Eval(..) | Op::Exec(..)))
             .map(|op| format!("{op:?}"))
             .collect()
     }

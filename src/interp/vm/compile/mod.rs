@@ -225,7 +225,7 @@ impl<'r> Compiler<'r> {
             && self.ops.iter().all(|op| match op {
                 Op::Dispatch(catches, _) => catches.iter().all(|c| c.occurrence.is_none()),
                 Op::Eval(..)
-                | Op::Assign(..)
+                | Op::Store(..)
                 | Op::Exec(..)
                 | Op::Delay(..)
                 | Op::Activate(..)

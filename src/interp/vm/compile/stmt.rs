@@ -47,7 +47,7 @@ impl<'r> Compiler<'r> {
                 _ => {
                     let src = self.temp();
                     self.expr_into(e, src);
-                    self.ops.push(Op::Assign(Box::new(t.clone()), src));
+                    self.store(t, src);
                 }
             },
             StmtKind::Call(f, args) => self.call(*f, Some(args), None, s.span),
@@ -229,6 +229,69 @@ impl<'r> Compiler<'r> {
             self.patch(j, end);
         }
         self.ops[at] = Op::Case(x, table.into(), other, span);
+    }
+
+    /// `t := src` for a target with a path (components, elements,
+    /// slices, `.all`, a register) or a whole array: the operands of the
+    /// path are evaluated after the value, from the part written back to
+    /// the root (the walker's order), then `Run::store` writes.
+    pub(in crate::interp::vm) fn store(&mut self, t: &Ex, src: Var) {
+        // The path, from the part written to the root.
+        let mut path = Vec::new();
+        let mut e = t;
+        while let ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _) = &e.kind {
+            path.push(e);
+            e = p;
+        }
+        // Its operands in the order they are evaluated.
+        let mut operands: Vec<&Ex> = Vec::new();
+        for step in &path {
+            match &step.kind {
+                ExKind::Index(_, idx) => operands.extend(idx.iter()),
+                ExKind::Slice(_, lh) => operands.extend(lh.iter()),
+                _ => {}
+            }
+        }
+        if let ExKind::Deref(p) = &e.kind {
+            operands.push(p);
+        }
+        let vars: Vec<Var> = (0..operands.len())
+            .map(|k| self.operand_before(operands[k], operands[k + 1..].iter().copied()))
+            .collect();
+        let mut next = vars.into_iter();
+        let mut steps = Vec::with_capacity(path.len());
+        for step in &path {
+            steps.push(match &step.kind {
+                ExKind::Index(_, idx) => {
+                    StoreStep::Index(next.by_ref().take(idx.len()).collect(), step.span)
+                }
+                ExKind::Slice(..) => {
+                    let (l, h) = (next.next(), next.next());
+                    match (l, h) {
+                        (Some(l), Some(h)) => StoreStep::Slice(l, h, step.span),
+                        _ => unreachable!("a slice has two bounds"),
+                    }
+                }
+                ExKind::Field(_, i) => StoreStep::Field(*i),
+                _ => unreachable!("a step of the path"),
+            });
+        }
+        steps.reverse();
+        let root = match &e.kind {
+            ExKind::Var(v) => StoreRoot::Var(*v),
+            ExKind::Deref(_) => match next.next() {
+                Some(p) => StoreRoot::Deref(p, e.span),
+                None => unreachable!("the access value"),
+            },
+            ExKind::Register(a) => StoreRoot::Register(*a, e.ty, e.span),
+            _ => StoreRoot::NotVariable(e.span),
+        };
+        self.ops.push(Op::Store(Box::new(StoreOp {
+            root,
+            steps: steps.into(),
+            src,
+            span: t.span,
+        })));
     }
 
     pub(in crate::interp::vm) fn loop_body(&mut self, id: u32, body: &[Stmt]) {
