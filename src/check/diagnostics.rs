@@ -1145,6 +1145,125 @@ pub fn renames_a_value(span: Span, text: &str, what: &str) -> Diagnostic {
     .with_hint("to keep a value, declare a constant: `Name : constant T := ...;`")
 }
 
+// ---- E0314: discriminant parts and discriminant constraints ----
+
+pub fn discriminant_not_discrete(span: Span) -> Diagnostic {
+    d(
+        codes::E0314,
+        span,
+        "a discriminant must have a discrete type",
+    )
+    .with_hint("use an integer or enumeration type (`Size : Positive`, `Kind : Tool_Kind`)")
+}
+
+pub fn discriminant_defaults_incomplete(span: Span) -> Diagnostic {
+    d(
+        codes::E0314,
+        span,
+        "incomplete specification of defaults for discriminants",
+    )
+    .with_hint("give every discriminant a default, or none")
+}
+
+pub fn no_discriminants(span: Span, ty: &str) -> Diagnostic {
+    d(
+        codes::E0314,
+        span,
+        format!("invalid constraint: `{ty}` has no discriminants"),
+    )
+}
+
+pub fn discriminant_count(span: Span, ty: &str, too_many: bool) -> Diagnostic {
+    let how = if too_many { "too many" } else { "too few" };
+    d(
+        codes::E0314,
+        span,
+        format!("{how} discriminants given in the constraint of `{ty}`"),
+    )
+}
+
+pub fn no_such_discriminant(span: Span, ty: &str, name: &str, names: &[&str]) -> Diagnostic {
+    d(
+        codes::E0314,
+        span,
+        format!("`{name}` does not match any discriminant of `{ty}`"),
+    )
+    .with_hint(format!("its discriminants: {}", join(names, ", ")))
+}
+
+pub fn discriminant_given_twice(span: Span, name: &str) -> Diagnostic {
+    d(
+        codes::E0314,
+        span,
+        format!("duplicate constraint for discriminant `{name}`"),
+    )
+}
+
+/// An object of a type whose discriminants have no defaults, declared
+/// without a constraint or an initial value.
+pub fn discriminated_object_unconstrained(span: Span, ty: &str) -> Diagnostic {
+    d(
+        codes::E0314,
+        span,
+        format!("an object of `{ty}` needs its discriminants: `{ty}` gives them no defaults"),
+    )
+    .with_label("unconstrained subtype not allowed (need initialization)")
+    .with_hint(format!(
+        "write `{ty} (...)` with the discriminants, give an initial value, or give the discriminants defaults"
+    ))
+}
+
+pub fn discriminated_component_unconstrained(span: Span, ty: &str) -> Diagnostic {
+    d(
+        codes::E0314,
+        span,
+        format!("a component of `{ty}` needs its discriminants: `{ty}` gives them no defaults"),
+    )
+    .with_hint(format!("write `{ty} (...)` with the discriminants"))
+}
+
+pub fn variant_not_discriminant(span: Span, name: &str) -> Diagnostic {
+    d(
+        codes::E0314,
+        span,
+        format!(
+            "`{name}` is not a discriminant of the record: a variant part chooses by a discriminant"
+        ),
+    )
+}
+
+// ---- E0315: record aggregates and the variant their discriminants choose ----
+
+pub fn component_not_in_variant(span: Span, name: &str, discriminants: &str) -> Diagnostic {
+    d(
+        codes::E0315,
+        span,
+        format!("`{name}` is not a component of the aggregate subtype"),
+    )
+    .with_label(format!("not in the variant that {discriminants} chooses"))
+}
+
+pub fn discriminant_not_static(span: Span, name: &str) -> Diagnostic {
+    d(
+        codes::E0315,
+        span,
+        format!("the value for discriminant `{name}` must be static"),
+    )
+    .with_label("it chooses the aggregate's variant")
+    .with_hint("write the discriminant's value as a literal or a static constant, one aggregate per variant")
+}
+
+// ---- E0316: assignments to discriminants ----
+
+pub fn assigned_discriminant(span: Span, name: &str) -> Diagnostic {
+    d(
+        codes::E0316,
+        span,
+        format!("assignment to discriminant `{name}` not allowed"),
+    )
+    .with_hint("assign the whole record instead (`G := (Kind => Vacuum, ...);`), when its discriminants have defaults")
+}
+
 // ---- E0401: return ----
 
 pub fn function_without_return(span: Span, name: &str) -> Diagnostic {
@@ -1694,6 +1813,15 @@ pub fn degrees_for_radians(span: Span, text: &str) -> Diagnostic {
 }
 
 /// A static value outside a static range of `ty`.
+pub fn wrong_discriminant_value(span: Span, name: &str, ty: &str) -> Diagnostic {
+    d(
+        codes::W0004,
+        span,
+        format!("incorrect value for discriminant `{name}` of `{ty}`"),
+    )
+    .with_label("Constraint_Error will be raised here at run time")
+}
+
 pub fn will_raise_constraint_error(
     span: Span,
     value: &str,

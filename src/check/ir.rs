@@ -229,6 +229,11 @@ pub enum ExKind {
     /// One-dimensional slice.
     Slice(Box<Ex>, Box<[Ex; 2]>),
     Field(Box<Ex>, u32),
+    /// The record value of the prefix, once its component `i` is known to
+    /// exist (the record's discriminants choose its variant, else
+    /// `Constraint_Error`): the prefix of a `Field` of a variant, read or
+    /// written.
+    Variant(Box<Ex>, u32),
     Deref(Box<Ex>),
     Call(FuncId, Box<[Arg]>),
     IntBin(IntOp, Box<Ex>, Box<Ex>),
@@ -277,10 +282,95 @@ pub enum ExKind {
     Default(TypeId),
     /// Reads the current exception occurrence of a handler.
     Error,
+    /// Discriminant `i` of the record value being built, in a record
+    /// type's component subtypes and defaults (`Data : String (1 .. Size)`):
+    /// the engines evaluate these while they build a value of the type.
+    Discriminant(u32),
     /// A device register (`for X use at Addr;`): reads see the device,
     /// assignments reach it. Its type is an integer type or an array
     /// `(0 .. 15) of Boolean` (bit I is element I).
     Register(u32),
+}
+
+impl Ex {
+    /// Whether `f` holds for this expression or one inside it.
+    pub fn any(&self, f: &dyn Fn(&Ex) -> bool) -> bool {
+        if f(self) {
+            return true;
+        }
+        let all = |es: &mut dyn Iterator<Item = &Ex>| {
+            for e in es {
+                if e.any(f) {
+                    return true;
+                }
+            }
+            false
+        };
+        match &self.kind {
+            ExKind::Int(_)
+            | ExKind::Real(_)
+            | ExKind::Str(_)
+            | ExKind::Null
+            | ExKind::Var(_)
+            | ExKind::TypeFirst(_)
+            | ExKind::TypeLast(_)
+            | ExKind::Default(_)
+            | ExKind::Error
+            | ExKind::Register(_)
+            | ExKind::Discriminant(_) => false,
+            ExKind::Index(p, idx) => p.any(f) || all(&mut idx.iter()),
+            ExKind::Slice(p, lh) => p.any(f) || all(&mut lh.iter()),
+            ExKind::Field(a, _)
+            | ExKind::Variant(a, _)
+            | ExKind::Deref(a)
+            | ExKind::Not(a)
+            | ExKind::ArrNot(a)
+            | ExKind::IntNeg(a)
+            | ExKind::FloatNeg(a)
+            | ExKind::IntAbs(a)
+            | ExKind::FloatAbs(a)
+            | ExKind::IntToFloat(a)
+            | ExKind::FloatToInt(a)
+            | ExKind::RangeCheck(a, _)
+            | ExKind::ArrayConvert(a, _) => a.any(f),
+            ExKind::Call(_, args) => all(&mut args.iter().map(|a| &a.value)),
+            ExKind::IntBin(_, a, b)
+            | ExKind::ModBin(_, a, b)
+            | ExKind::FloatBin(_, a, b)
+            | ExKind::Cmp(_, a, b)
+            | ExKind::Eq(_, a, b)
+            | ExKind::Logic(_, a, b)
+            | ExKind::ArrLogic(_, a, b)
+            | ExKind::Concat(a, b, ..) => a.any(f) || b.any(f),
+            ExKind::Attr(_, args) => all(&mut args.iter()),
+            ExKind::InRanges(s, rs, _) => s.any(f) || all(&mut rs.iter().flat_map(|(l, h)| [l, h])),
+            ExKind::ArrayAgg(agg) => match &agg.kind {
+                ArrayAggKind::Positional(items, others) => {
+                    all(&mut items.iter()) || others.as_ref().is_some_and(|o| o.any(f))
+                }
+                ArrayAggKind::Named(items, others) => {
+                    items
+                        .iter()
+                        .any(|(rs, v)| v.any(f) || rs.iter().any(|(l, h)| l.any(f) || h.any(f)))
+                        || others.as_ref().is_some_and(|o| o.any(f))
+                }
+            },
+            ExKind::RecordAgg(fields) => all(&mut fields.iter()),
+            ExKind::If(arms, els) => arms.iter().any(|(c, v)| c.any(f) || v.any(f)) || els.any(f),
+            ExKind::Case(c) => {
+                let (s, arms, others) = &**c;
+                s.any(f)
+                    || arms.iter().any(|(_, v)| v.any(f))
+                    || others.as_ref().is_some_and(|o| o.any(f))
+            }
+            ExKind::Alloc(init, _) => init.as_ref().is_some_and(|i| i.any(f)),
+        }
+    }
+}
+
+/// Whether an expression reads a discriminant of the record being built.
+pub fn reads_discriminant(e: &Ex) -> bool {
+    e.any(&|x| matches!(x.kind, ExKind::Discriminant(_)))
 }
 
 /// A `case` expression: subject, (choice ranges, value) arms, `others`.

@@ -144,6 +144,10 @@ pub struct Checker {
     /// While a declaration's subtype indication is checked: the statements
     /// that evaluate its non-static bounds once (`elaborating`).
     bounds_out: Option<Vec<Stmt>>,
+    /// While the components of a record with discriminants are checked:
+    /// a bound that reads a discriminant is evaluated with each value built,
+    /// not once with the declaration.
+    in_discriminated: bool,
     /// What the program declares.
     pub tables: tables::Tables,
     scopes: scopes::Scopes,
@@ -220,6 +224,7 @@ impl Checker {
             parts_here: false,
             erred: false,
             bounds_out: None,
+            in_discriminated: false,
             tables: tables::Tables::new(),
             scopes: scopes::Scopes::new(),
             level: 0,

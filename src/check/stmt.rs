@@ -652,7 +652,9 @@ impl Checker {
 fn is_name(e: &Ex) -> bool {
     match &e.kind {
         ExKind::Var(_) | ExKind::Deref(_) => true,
-        ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _) => is_name(p),
+        ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Variant(p, _) | ExKind::Slice(p, _) => {
+            is_name(p)
+        }
         _ => false,
     }
 }

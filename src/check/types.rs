@@ -52,6 +52,41 @@ pub struct Field {
     pub key: String,
     pub ty: TypeId,
     pub default: Option<Ex>,
+    /// A discriminant (RM 3.7): a record's discriminants are its first
+    /// components.
+    pub discriminant: bool,
+    /// The variant the component belongs to (RM 3.8.1): it exists only
+    /// while each discriminant named here (by index) has one of its
+    /// values; one condition per enclosing variant part.
+    pub variant: Option<Variant>,
+    /// The component's subtype when its constraint reads the discriminants
+    /// (`Data : String (1 .. Size)`): its bounds and values hold
+    /// `ExKind::Discriminant` nodes, evaluated when a value of the record
+    /// is built. `ty` is then the unconstrained type (the object's bounds
+    /// are its value's).
+    pub dependent: Option<TypeId>,
+}
+
+/// The conditions of a variant, one per enclosing variant part.
+pub type Variant = std::rc::Rc<[Governs]>;
+
+/// A condition of a variant: a discriminant (its index) has one of these
+/// values (ranges).
+pub type Governs = (u32, Box<[(i64, i64)]>);
+
+impl Field {
+    /// A component that is no discriminant, in no variant.
+    pub fn plain(name: &str, key: &str, ty: TypeId, default: Option<Ex>) -> Field {
+        Field {
+            name: name.to_string(),
+            key: key.to_string(),
+            ty,
+            default,
+            discriminant: false,
+            variant: None,
+            dependent: None,
+        }
+    }
 }
 
 #[derive(Clone, Debug)]
@@ -83,6 +118,10 @@ pub struct TypeInfo {
     /// point of whole nanoseconds (`Duration'Small` = 1 ns), held as reals
     /// that the engines keep whole (`FloatOp::on_duration`).
     pub whole_ns: bool,
+    /// A discriminant constraint (`Gripper (Vacuum)`, `Buffer (N)`): the
+    /// value of each discriminant, in order (a bound that is not static is
+    /// a slot elaborated with the declaration).
+    pub discr: Option<std::rc::Rc<[Ex]>>,
 }
 
 pub const ERROR: TypeId = 0;
@@ -140,6 +179,7 @@ impl Types {
             master: None,
             modulus: None,
             whole_ns: false,
+            discr: None,
         });
         id
     }
@@ -219,6 +259,27 @@ impl Types {
             TypeKind::Record(f) => Some(f),
             _ => None,
         }
+    }
+    /// The discriminants of a record type (its first components).
+    pub fn discriminants(&self, t: TypeId) -> &[Field] {
+        match self.kind(t) {
+            TypeKind::Record(f) => {
+                let n = f.iter().take_while(|f| f.discriminant).count();
+                &f[..n]
+            }
+            _ => &[],
+        }
+    }
+    /// Whether `t` is a record type with discriminants that have defaults
+    /// (its objects declared without a constraint are mutable, RM 3.7(28)).
+    pub fn discriminant_defaults(&self, t: TypeId) -> bool {
+        self.discriminants(t)
+            .first()
+            .is_some_and(|d| d.default.is_some())
+    }
+    /// The discriminant constraint of a subtype, if it has one.
+    pub fn discriminant_constraint(&self, t: TypeId) -> Option<&[Ex]> {
+        self.list[t as usize].discr.as_deref()
     }
     pub fn enum_lits(&self, t: TypeId) -> Option<&[String]> {
         match self.kind(t) {

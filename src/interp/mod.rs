@@ -16,7 +16,7 @@ pub mod vm;
 
 use crate::check;
 use crate::check::ir::*;
-use crate::check::types::{TypeId, TypeKind};
+use crate::check::types::{Field, TypeId, TypeKind};
 use crate::diag::Span;
 use crate::syntax::ast::Mode;
 use std::cell::RefCell;
@@ -228,6 +228,9 @@ pub struct Machine {
     /// Interrupts raised between runs (`:irq`), delivered when the next run
     /// starts.
     pub pending_irqs: Vec<(crate::devices::Address, f64)>,
+    /// The discriminants of the record values being built (innermost
+    /// last), which `ExKind::Discriminant` reads.
+    discrs: Vec<Vec<Value>>,
 }
 
 const MAX_DEPTH: usize = 20_000;
@@ -261,6 +264,7 @@ impl Machine {
             lost_interrupts: 0,
             realtime: false,
             pending_irqs: Vec::new(),
+            discrs: Vec::new(),
         }
     }
 
@@ -600,6 +604,8 @@ pub struct Run<'a> {
 pub(crate) enum Step {
     Index(Vec<i64>, Span),
     Field(u32),
+    /// The record's discriminants must choose the variant of a component.
+    Variant(value::Variant, Span),
     Slice(i64, i64, Span),
 }
 
@@ -1079,6 +1085,12 @@ impl Run<'_> {
                     steps.push(Step::Field(*i));
                     e = p;
                 }
+                ExKind::Variant(p, i) => {
+                    if let Some(conds) = self.variant_of(p.ty, *i) {
+                        steps.push(Step::Variant(conds, e.span));
+                    }
+                    e = p;
+                }
                 ExKind::Slice(p, lh) => {
                     let (l, h) = (self.eval(&lh[0])?.int(), self.eval(&lh[1])?.int());
                     steps.push(Step::Slice(l, h, e.span));
@@ -1236,6 +1248,13 @@ impl Run<'_> {
                 Value::Rec(r) => r[*i as usize].clone(),
                 _ => return Err(self.check_failed("discriminant check failed", e.span)),
             },
+            ExKind::Variant(p, i) => {
+                let v = self.eval(p)?;
+                if let Some(conds) = self.variant_of(p.ty, *i) {
+                    self.variant_check(&v, &conds, e.span)?;
+                }
+                v
+            }
             ExKind::Call(f, args) => match self.call(*f, args, e.span)? {
                 Some(v) => v,
                 None => Value::Undef,
@@ -1344,8 +1363,27 @@ impl Run<'_> {
             ExKind::ArrayAgg(agg) => self.array_agg(agg, e.span)?,
             ExKind::RecordAgg(fields) => {
                 let mut v = value::Fields::with_capacity(fields.len());
-                for f in fields {
+                let nd = self.c.types.discriminants(e.ty).len();
+                for f in &fields[..nd] {
                     v.push(self.eval(f)?);
+                }
+                if nd == 0 {
+                    for f in fields.iter() {
+                        v.push(self.eval(f)?);
+                    }
+                } else {
+                    // The other components see the discriminants (a
+                    // component's default does), and those of the variant
+                    // chosen fit the subtypes the discriminants give them.
+                    self.m.discrs.push(v.to_vec());
+                    let r = (|| {
+                        for f in &fields[nd..] {
+                            v.push(self.eval(f)?);
+                        }
+                        self.shape_record(e.ty, &mut v, e.span)
+                    })();
+                    self.m.discrs.pop();
+                    r?;
                 }
                 Value::Rec(Rc::new(v))
             }
@@ -1388,6 +1426,18 @@ impl Run<'_> {
                 Value::Ptr(Some(Obj::new(v)))
             }
             ExKind::Default(t) => self.default_value(*t, e.span)?,
+            ExKind::Discriminant(i) => {
+                match self.m.discrs.last().and_then(|d| d.get(*i as usize)) {
+                    Some(v) => v.clone(),
+                    None => {
+                        return Err(self.raise(
+                            check::PROGRAM_ERROR,
+                            "a discriminant read outside its record",
+                            e.span,
+                        ));
+                    }
+                }
+            }
             ExKind::Error => {
                 return Err(self.raise(check::PROGRAM_ERROR, "erroneous expression", e.span));
             }
@@ -1480,6 +1530,9 @@ impl Run<'_> {
     }
 
     fn range_check(&mut self, v: &Value, t: TypeId, span: Span) -> R<()> {
+        if let Value::Rec(r) = v {
+            return self.discriminant_check(r, t, span);
+        }
         let info = self.c.types.get(t);
         let ok = match (v, info.static_range, info.static_frange) {
             (Value::Int(x), Some((l, h)), _) => (l as i64) <= *x && *x <= (h as i64),
@@ -1527,9 +1580,133 @@ impl Run<'_> {
         Ok(Value::Arr(a))
     }
 
+    /// A record value whose component of the variant `conds` is read or
+    /// written: its discriminants choose that variant (RM 4.1.3(15)),
+    /// else "discriminant check failed". Both engines call it.
+    pub(crate) fn variant_check(
+        &self,
+        v: &Value,
+        conds: &[check::types::Governs],
+        span: Span,
+    ) -> R<()> {
+        match v {
+            Value::Rec(r) if value::variant_holds(r, conds) => Ok(()),
+            _ => Err(self.check_failed("discriminant check failed", span)),
+        }
+    }
+
+    /// The variant component `i` of the record type `t` belongs to.
+    pub(crate) fn variant_of(&self, t: TypeId, i: u32) -> Option<value::Variant> {
+        self.c
+            .types
+            .fields(t)
+            .and_then(|f| f.get(i as usize))
+            .and_then(|f| f.variant.clone())
+    }
+
+    /// A record value of the subtype `t` (RM 3.7.1, 4.6(51)): its
+    /// discriminants are those of `t`'s discriminant constraint, if it has
+    /// one ("discriminant check failed").
+    fn discriminant_check(&mut self, r: &value::Fields, t: TypeId, span: Span) -> R<()> {
+        let types = self.c.types;
+        let Some(want) = types.discriminant_constraint(t) else {
+            return Ok(());
+        };
+        for (i, w) in want.iter().enumerate() {
+            let w = self.eval(w)?;
+            if r.get(i) != Some(&w) {
+                return Err(self.check_failed("discriminant check failed", span));
+            }
+        }
+        Ok(())
+    }
+
+    /// A record value of the type `t` just built, with its discriminants
+    /// in reach (`Machine::discrs`): the components of the variants not
+    /// chosen are cleared (so that equality compares the chosen ones), and
+    /// a component whose subtype reads the discriminants fits it (length
+    /// check and sliding of an array, discriminant check of a record).
+    fn shape_record(&mut self, t: TypeId, v: &mut value::Fields, span: Span) -> R<()> {
+        let types = self.c.types;
+        let TypeKind::Record(fields) = types.kind(t) else {
+            return Ok(());
+        };
+        for (i, f) in fields.iter().enumerate() {
+            if let Some(conds) = &f.variant
+                && !value::variant_holds(v, conds)
+            {
+                v[i] = Value::Undef;
+                continue;
+            }
+            if let Some(dep) = f.dependent {
+                let x = std::mem::take(&mut v[i]);
+                v[i] = self.fit_subtype(x, dep, span)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// A value converted to a subtype: an array slides to its bounds (the
+    /// same length), a scalar or record is checked against it.
+    fn fit_subtype(&mut self, x: Value, t: TypeId, span: Span) -> R<Value> {
+        match x {
+            Value::Arr(_) => self.array_convert(x, t, span),
+            _ => {
+                self.range_check(&x, t, span)?;
+                Ok(x)
+            }
+        }
+    }
+
+    /// The default value of a record type with discriminants: those of the
+    /// subtype's constraint, else their defaults; then the components of
+    /// the variant they choose, with the discriminants in reach.
+    fn default_record(&mut self, t: TypeId, fields: &[Field], nd: usize, span: Span) -> R<Value> {
+        let types = self.c.types;
+        let mut v = value::Fields::with_capacity(fields.len());
+        match types.discriminant_constraint(t) {
+            Some(cs) => {
+                for c in cs {
+                    v.push(self.eval(c)?);
+                }
+            }
+            None => {
+                for f in &fields[..nd] {
+                    v.push(match &f.default {
+                        Some(d) => self.eval(d)?,
+                        None => self.default_value(f.ty, span)?,
+                    });
+                }
+            }
+        }
+        self.m.discrs.push(v.to_vec());
+        let r = (|| {
+            for f in &fields[nd..] {
+                if let Some(conds) = &f.variant
+                    && !value::variant_holds(&v, conds)
+                {
+                    v.push(Value::Undef);
+                    continue;
+                }
+                v.push(match &f.default {
+                    Some(d) => self.eval(d)?,
+                    None => self.default_value(f.dependent.unwrap_or(f.ty), span)?,
+                });
+            }
+            Ok(())
+        })();
+        self.m.discrs.pop();
+        r?;
+        Ok(Value::Rec(Rc::new(v)))
+    }
+
     pub fn default_value(&mut self, t: TypeId, span: Span) -> R<Value> {
         Ok(match self.c.types.kind(t).clone() {
             TypeKind::Float => Value::Real(0.0),
+            TypeKind::Record(fields) if fields.first().is_some_and(|f| f.discriminant) => {
+                let nd = fields.iter().take_while(|f| f.discriminant).count();
+                self.default_record(t, &fields, nd, span)?
+            }
             TypeKind::Record(fields) => {
                 let mut v = value::Fields::with_capacity(fields.len());
                 for f in &fields {
@@ -2166,6 +2343,10 @@ fn write_path(
             let r = Rc::make_mut(r);
             write_path(&mut r[*i as usize], rest, val, at)
         }
+        Step::Variant(conds, sp) => match root {
+            Value::Rec(r) if value::variant_holds(r, conds) => write_path(root, rest, val, at),
+            _ => Err(("discriminant check failed", *sp)),
+        },
         Step::Slice(l, h, sp) => {
             let Value::Arr(a) = root else {
                 return Err(("access check failed", *sp));

@@ -38,6 +38,19 @@ pub fn overwrite(slot: &mut Value, v: Value) {
 /// own allocation (a list node is then two allocations, not three).
 pub type Fields = smallvec::SmallVec<[Value; 2]>;
 
+pub use crate::check::types::Variant;
+
+/// Whether a record value's discriminants choose a variant (RM 3.8.1):
+/// each condition (discriminant index, its values) holds. A component of a
+/// variant not chosen does not exist: reading or writing it is
+/// `Constraint_Error` ("discriminant check failed").
+pub fn variant_holds(fields: &[Value], conds: &[crate::check::types::Governs]) -> bool {
+    conds.iter().all(|(d, ranges)| {
+        let x = fields.get(*d as usize).map_or(i64::MIN, Value::int);
+        ranges.iter().any(|(l, h)| *l <= x && x <= *h)
+    })
+}
+
 /// An object made by an allocator (`new`), which access values designate.
 ///
 /// When the last access value to an object goes, the object's value is

@@ -390,12 +390,16 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
                 leaf(n, K::CONSTANT, None);
             }
         }
-        ast::DeclKind::Type { name, def } => {
+        ast::DeclKind::Type {
+            name,
+            discriminants,
+            def,
+        } => {
             let (kind, children) = match def {
-                ast::TypeDef::Record(cs) => (
+                ast::TypeDef::Record(list) => (
                     K::STRUCT,
-                    cs.iter()
-                        .flat_map(|c| {
+                    discriminant_symbols(a, discriminants)
+                        .chain(components(list).into_iter().flat_map(|c| {
                             c.names.iter().map(move |n| Symbol {
                                 name: n.name.to_string(),
                                 detail: Some(a.span_text(c.ty.span).to_string()),
@@ -404,7 +408,7 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
                                 name_span: n.span,
                                 children: Vec::new(),
                             })
-                        })
+                        }))
                         .collect(),
                 ),
                 ast::TypeDef::Enum(lits) => (
@@ -469,6 +473,34 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
         }
         _ => {}
     }
+}
+
+/// A record's discriminants, as fields of its outline.
+fn discriminant_symbols<'a>(
+    a: &'a Analysis,
+    discriminants: &'a [ast::Param],
+) -> impl Iterator<Item = Symbol> + 'a {
+    discriminants.iter().flat_map(move |p| {
+        p.names.iter().map(move |n| Symbol {
+            name: n.name.to_string(),
+            detail: Some(format!("discriminant : {}", a.span_text(p.ty.span))),
+            kind: lsp_types::SymbolKind::FIELD,
+            span: p.span,
+            name_span: n.span,
+            children: Vec::new(),
+        })
+    })
+}
+
+/// Every component of a record, those of its variants included, in order.
+fn components(list: &ast::ComponentList) -> Vec<&ast::Component> {
+    let mut out: Vec<&ast::Component> = list.components.iter().collect();
+    if let Some(v) = &list.variants {
+        for arm in &v.arms {
+            out.extend(components(&arm.body));
+        }
+    }
+    out
 }
 
 fn subprogram_symbol(

@@ -89,6 +89,9 @@ pub enum DeclKind {
     },
     Type {
         name: Ident,
+        /// `type R (Kind : Tool_Kind := Jaws) is ...`: the discriminant
+        /// part (empty without one), read as a parameter list.
+        discriminants: Vec<Param>,
         def: TypeDef,
     },
     Subtype {
@@ -167,8 +170,14 @@ pub struct SubtypeInd {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Constraint {
     Range(Box<Expr>, Box<Expr>),
-    /// Index constraint: `String (1 .. 10)`, `Matrix (1 .. 3, 1 .. 4)`.
+    /// Index constraint: `String (1 .. 10)`, `Matrix (1 .. 3, 1 .. 4)`;
+    /// also a discriminant constraint of positional values only
+    /// (`Buffer (80)`, `Gripper (Vacuum)`), which the checker tells apart
+    /// by the type.
     Index(Vec<DiscreteRange>),
+    /// A discriminant constraint with named values: `Station (Id => 7,
+    /// Speed => 40)`, `Station (7, Speed => 40)` (positional ones first).
+    Discriminants(Vec<Arg>),
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -196,7 +205,7 @@ pub enum TypeDef {
         index: ArrayIndex,
         elem: SubtypeInd,
     },
-    Record(Vec<Component>),
+    Record(ComponentList),
     Access(SubtypeInd),
     /// `type T;` incomplete declaration (for linked structures).
     Incomplete,
@@ -213,6 +222,23 @@ pub enum EnumLit {
 pub enum ArrayIndex {
     Unconstrained(Vec<Name>),
     Constrained(Vec<DiscreteRange>),
+}
+
+/// The components of a record (or of one variant): the components, then
+/// the variant part if there is one.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct ComponentList {
+    pub components: Vec<Component>,
+    pub variants: Option<Box<VariantPart>>,
+}
+
+/// `case Kind is when Jaws => ...; when others => null; end case;`
+#[derive(Clone, Debug, PartialEq)]
+pub struct VariantPart {
+    /// The discriminant that chooses the variant.
+    pub discriminant: Ident,
+    pub arms: Vec<CaseArm<ComponentList>>,
+    pub span: Span,
 }
 
 #[derive(Clone, Debug, PartialEq)]

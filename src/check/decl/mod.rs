@@ -102,7 +102,7 @@ impl Checker {
                 if let Some(def) = anon
                     && let ast::ExprKind::Name(tn) = &ty.mark.kind
                 {
-                    let t = self.type_def(tn, def, d.span);
+                    let t = self.type_def(tn, &[], def, d.span);
                     self.declare(&tn.name, Entity::Type(t));
                 }
                 let t = self.elaborating(out, |c| c.subtype_ind(ty));
@@ -121,7 +121,11 @@ impl Checker {
                     self.declare_checked(n, Entity::Number(v.clone()));
                 }
             }
-            DeclKind::Type { name, def } => {
+            DeclKind::Type {
+                name,
+                discriminants,
+                def,
+            } => {
                 // Completing an incomplete type keeps its id.
                 let prev = self
                     .scopes
@@ -131,7 +135,7 @@ impl Checker {
                 if let Some(Entity::Type(old)) = prev
                     && matches!(self.tables.types.kind(old), TypeKind::Incomplete)
                 {
-                    let t = self.elaborating(out, |c| c.type_def(name, def, d.span));
+                    let t = self.elaborating(out, |c| c.type_def(name, discriminants, def, d.span));
                     let mut info = self.tables.types.get(t).clone();
                     info.base = old;
                     self.tables.types.list[old as usize] = info;
@@ -155,7 +159,7 @@ impl Checker {
                 }
                 // Its bounds (an array's, its components') are evaluated
                 // once, here.
-                let t = self.elaborating(out, |c| c.type_def(name, def, d.span));
+                let t = self.elaborating(out, |c| c.type_def(name, discriminants, def, d.span));
                 self.declare_checked(name, Entity::Type(t));
                 self.collection_master(t, d.span, out);
             }
@@ -265,6 +269,16 @@ impl Checker {
         });
         if init_ex.is_none() && unconstrained_array {
             self.err(diagnostics::unconstrained_object(
+                span,
+                self.tables.types.name(t),
+            ));
+        }
+        if init_ex.is_none()
+            && !self.tables.types.discriminants(t).is_empty()
+            && !self.tables.types.discriminant_defaults(t)
+            && self.tables.types.discriminant_constraint(t).is_none()
+        {
+            self.err(diagnostics::discriminated_object_unconstrained(
                 span,
                 self.tables.types.name(t),
             ));

@@ -33,6 +33,43 @@ impl Checker {
                 let name = self.tables.types.name(t).to_string();
                 self.constrained_scalar(&name, t, lo, hi)
             }
+            Some(ast::Constraint::Discriminants(args)) => {
+                let items: Vec<(Option<&ast::Ident>, &ast::Expr, Span)> = args
+                    .iter()
+                    .map(|a| (a.name.as_ref(), &a.value, a.span))
+                    .collect();
+                self.discriminant_constraint(ind, t, &items)
+            }
+            Some(ast::Constraint::Index(ranges))
+                if matches!(self.tables.types.kind(t), TypeKind::Record(_)) =>
+            {
+                // `Buffer (80)`, `Gripper (Vacuum)`: positional values.
+                let mut items = Vec::new();
+                for r in ranges {
+                    match r {
+                        ast::DiscreteRange::Subtype(ast::SubtypeInd {
+                            mark,
+                            constraint: None,
+                            span,
+                        }) => items.push((None, mark, *span)),
+                        ast::DiscreteRange::Range(a, _) | ast::DiscreteRange::Attr(a) => {
+                            self.err(diagnostics::no_discriminants(
+                                a.span,
+                                self.tables.types.name(t),
+                            ));
+                            return ERROR;
+                        }
+                        ast::DiscreteRange::Subtype(s) => {
+                            self.err(diagnostics::no_discriminants(
+                                s.span,
+                                self.tables.types.name(t),
+                            ));
+                            return ERROR;
+                        }
+                    }
+                }
+                self.discriminant_constraint(ind, t, &items)
+            }
             Some(ast::Constraint::Index(ranges)) => {
                 let Some((index, elem, bounds)) = self
                     .tables
@@ -81,6 +118,76 @@ impl Checker {
         }
     }
 
+    /// A discriminant constraint (RM 3.7.1): each discriminant's value,
+    /// by position or by name, elaborated with the declaration.
+    fn discriminant_constraint(
+        &mut self,
+        ind: &ast::SubtypeInd,
+        t: TypeId,
+        items: &[(Option<&ast::Ident>, &ast::Expr, Span)],
+    ) -> TypeId {
+        let ds = self.tables.types.discriminants(t).to_vec();
+        let tn = self.tables.types.name(t).to_string();
+        if ds.is_empty() {
+            if t != ERROR {
+                self.err(diagnostics::no_discriminants(ind.span, &tn));
+            }
+            return ERROR;
+        }
+        if self.tables.types.discriminant_constraint(t).is_some() {
+            self.err(diagnostics::already_constrained(ind.span, &tn));
+            return t;
+        }
+        let mut vals: Vec<Option<Ex>> = vec![None; ds.len()];
+        let mut pos = 0;
+        let mut failed = false;
+        for (name, value, span) in items {
+            let j = match name {
+                None => {
+                    if pos >= ds.len() {
+                        self.err(diagnostics::discriminant_count(*span, &tn, true));
+                        return ERROR;
+                    }
+                    pos += 1;
+                    pos - 1
+                }
+                Some(n) => match ds.iter().position(|d| *d.key == *n.key) {
+                    Some(j) => {
+                        self.index_field_ref(n.span, t, j as u32);
+                        j
+                    }
+                    None => {
+                        let names: Vec<&str> = ds.iter().map(|d| d.name.as_str()).collect();
+                        self.err(diagnostics::no_such_discriminant(
+                            n.span, &tn, &n.name, &names,
+                        ));
+                        self.expr(value, None);
+                        failed = true;
+                        continue;
+                    }
+                },
+            };
+            if vals[j].is_some() {
+                self.err(diagnostics::discriminant_given_twice(*span, &ds[j].name));
+                failed = true;
+                continue;
+            }
+            let v = self.expr(value, Some(ds[j].ty));
+            let v = self.coerce(v, ds[j].ty);
+            vals[j] = Some(self.elaborate_bound(v));
+        }
+        if failed {
+            return ERROR;
+        }
+        let Some(vals) = vals.into_iter().collect::<Option<Vec<Ex>>>() else {
+            self.err(diagnostics::discriminant_count(ind.span, &tn, false));
+            return ERROR;
+        };
+        let st = self.tables.types.add_subtype(&tn, t);
+        self.tables.types.list[st as usize].discr = Some(vals.into());
+        st
+    }
+
     fn constrained_scalar(
         &mut self,
         name: &str,
@@ -117,7 +224,11 @@ impl Checker {
     /// A bound that is not static, while a declaration is elaborated: a
     /// fresh slot that holds its value from now on.
     pub(in crate::check) fn elaborate_bound(&mut self, e: Ex) -> Ex {
-        if self.bounds_out.is_none() || self.static_value(&e).is_some() || e.ty == ERROR {
+        if self.bounds_out.is_none()
+            || self.static_value(&e).is_some()
+            || e.ty == ERROR
+            || (self.in_discriminated && ir::reads_discriminant(&e))
+        {
             return e;
         }
         let v = self.new_slot();
@@ -210,9 +321,18 @@ impl Checker {
     pub(in crate::check) fn type_def(
         &mut self,
         name: &ast::Ident,
+        discriminants: &[ast::Param],
         def: &TypeDef,
         span: Span,
     ) -> TypeId {
+        if let Some(p) = discriminants.first()
+            && !matches!(def, TypeDef::Record(_) | TypeDef::Unsupported(_))
+        {
+            self.err(diagnostics::unsupported(
+                p.span,
+                "a discriminant part on a type that is not a record",
+            ));
+        }
         match def {
             TypeDef::Enum(lits) => {
                 let images: Vec<String> = lits
@@ -378,37 +498,7 @@ impl Checker {
                     }
                 }
             }
-            TypeDef::Record(components) => {
-                let mut fields: Vec<Field> = Vec::new();
-                for c in components {
-                    let t = self.subtype_ind(&c.ty);
-                    if matches!(self.tables.types.array(t), Some((_, _, None))) {
-                        self.err(diagnostics::record_component_unconstrained(c.ty.span));
-                    }
-                    let default = c.default.as_ref().map(|d| {
-                        let ex = self.expr(d, Some(t));
-                        self.coerce(ex, t)
-                    });
-                    for n in &c.names {
-                        if fields.iter().any(|f| *f.key == *n.key) {
-                            self.err(diagnostics::component_declared_twice(n.span, &n.name));
-                        }
-                        fields.push(Field {
-                            name: n.name.to_string(),
-                            key: n.key.to_string(),
-                            ty: t,
-                            default: default.clone(),
-                        });
-                    }
-                }
-                let names: Vec<&ast::Ident> = components.iter().flat_map(|c| &c.names).collect();
-                let tys: Vec<TypeId> = fields.iter().map(|f| f.ty).collect();
-                let t = self.tables.types.add(&name.name, TypeKind::Record(fields));
-                for (i, (n, ft)) in names.into_iter().zip(tys).enumerate() {
-                    self.index_field(t, i as u32, n, ft);
-                }
-                t
-            }
+            TypeDef::Record(list) => self.record_def(name, discriminants, list),
             TypeDef::Access(ind) => {
                 let t = self.subtype_ind(ind);
                 self.tables.types.add(&name.name, TypeKind::Access(t))
@@ -420,6 +510,189 @@ impl Checker {
                 ERROR
             }
         }
+    }
+
+    /// A record type (RM 3.8), with its discriminant part (RM 3.7) and
+    /// variant parts (RM 3.8.1). The discriminants are its first components;
+    /// inside the definition they stand for the value being built
+    /// (`ExKind::Discriminant`).
+    fn record_def(
+        &mut self,
+        name: &ast::Ident,
+        discriminants: &[ast::Param],
+        list: &ast::ComponentList,
+    ) -> TypeId {
+        let mut fields: Vec<Field> = Vec::new();
+        let mut names: Vec<&ast::Ident> = Vec::new();
+        let mut defaults = (0, 0);
+        for p in discriminants {
+            let t = self.type_mark(&p.ty);
+            if t != ERROR && !self.tables.types.is_discrete(t) {
+                self.err(diagnostics::discriminant_not_discrete(p.ty.span));
+            }
+            let default = p.default.as_ref().map(|d| {
+                let ex = self.expr(d, Some(t));
+                self.coerce(ex, t)
+            });
+            for n in &p.names {
+                if default.is_some() {
+                    defaults.0 += 1;
+                } else {
+                    defaults.1 += 1;
+                }
+                if fields.iter().any(|f| *f.key == *n.key) {
+                    self.err(diagnostics::component_declared_twice(n.span, &n.name));
+                }
+                fields.push(Field {
+                    discriminant: true,
+                    ..Field::plain(&n.name, &n.key, t, default.clone())
+                });
+                names.push(n);
+            }
+        }
+        if defaults.0 > 0 && defaults.1 > 0 {
+            self.err(diagnostics::discriminant_defaults_incomplete(
+                discriminants[0].span,
+            ));
+        }
+        self.scopes.push();
+        for (i, f) in fields.iter().enumerate() {
+            let x = Ex {
+                kind: ExKind::Discriminant(i as u32),
+                ty: f.ty,
+                span: names[i].span,
+            };
+            self.declare(&f.name, Entity::Alias(Box::new(x)));
+        }
+        let outer = std::mem::replace(&mut self.in_discriminated, !fields.is_empty());
+        self.component_list(list, &mut fields, &mut names, None);
+        self.in_discriminated = outer;
+        self.scopes.pop();
+        let tys: Vec<TypeId> = fields.iter().map(|f| f.ty).collect();
+        let t = self.tables.types.add(&name.name, TypeKind::Record(fields));
+        for (i, (n, ft)) in names.into_iter().zip(tys).enumerate() {
+            self.index_field(t, i as u32, n, ft);
+        }
+        t
+    }
+
+    /// The components of a component list, in order, then those of its
+    /// variant part, each under the conditions of its variant.
+    fn component_list<'a>(
+        &mut self,
+        list: &'a ast::ComponentList,
+        fields: &mut Vec<Field>,
+        names: &mut Vec<&'a ast::Ident>,
+        variant: Option<types::Variant>,
+    ) {
+        for c in &list.components {
+            let t = self.subtype_ind(&c.ty);
+            let dependent = self.in_discriminated && self.reads_discriminant(t);
+            if !dependent && matches!(self.tables.types.array(t), Some((_, _, None))) {
+                self.err(diagnostics::record_component_unconstrained(c.ty.span));
+            }
+            if !dependent
+                && !self.tables.types.discriminants(t).is_empty()
+                && !self.tables.types.discriminant_defaults(t)
+                && self.tables.types.discriminant_constraint(t).is_none()
+            {
+                self.err(diagnostics::discriminated_component_unconstrained(
+                    c.ty.span,
+                    self.tables.types.name(t),
+                ));
+            }
+            let default = c.default.as_ref().map(|d| {
+                let ex = self.expr(d, Some(t));
+                self.coerce(ex, t)
+            });
+            let ty = if dependent {
+                self.tables.types.base(t)
+            } else {
+                t
+            };
+            for n in &c.names {
+                if fields.iter().any(|f| *f.key == *n.key) {
+                    self.err(diagnostics::component_declared_twice(n.span, &n.name));
+                }
+                fields.push(Field {
+                    variant: variant.clone(),
+                    dependent: dependent.then_some(t),
+                    ..Field::plain(&n.name, &n.key, ty, default.clone())
+                });
+                names.push(n);
+            }
+        }
+        let Some(vp) = &list.variants else {
+            return;
+        };
+        let Some(d) = fields
+            .iter()
+            .position(|f| f.discriminant && *f.key == *vp.discriminant.key)
+        else {
+            if self.lookup(&vp.discriminant.key).is_empty() {
+                self.err(diagnostics::not_declared(
+                    vp.discriminant.span,
+                    &vp.discriminant.name,
+                ));
+            } else {
+                self.err(diagnostics::variant_not_discriminant(
+                    vp.discriminant.span,
+                    &vp.discriminant.name,
+                ));
+            }
+            for arm in &vp.arms {
+                self.component_list(&arm.body, fields, names, variant.clone());
+            }
+            return;
+        };
+        let dt = fields[d].ty;
+        let choice_lists: Vec<&[ast::Choice]> =
+            vp.arms.iter().map(|a| a.choices.as_slice()).collect();
+        let (mut ranges, others) = self.case_choices(dt, &choice_lists, vp.span);
+        if let Some(o) = others {
+            // `when others`: every value no other arm names.
+            let (lo, hi) = self
+                .tables
+                .types
+                .discrete_bounds(dt)
+                .map(|(l, h)| (l as i64, h as i64))
+                .unwrap_or((i64::MIN, i64::MAX));
+            let mut taken: Vec<(i64, i64)> = ranges.iter().flatten().copied().collect();
+            taken.sort();
+            let mut rest = Vec::new();
+            let mut next = lo;
+            for (a, b) in taken {
+                if a > next {
+                    rest.push((next, a - 1));
+                }
+                next = next.max(b.saturating_add(1));
+            }
+            if next <= hi {
+                rest.push((next, hi));
+            }
+            ranges[o] = rest;
+        }
+        for (arm, rs) in vp.arms.iter().zip(ranges) {
+            let mut conds: Vec<types::Governs> =
+                variant.as_deref().map(|v| v.to_vec()).unwrap_or_default();
+            conds.push((d as u32, rs.into()));
+            self.component_list(&arm.body, fields, names, Some(conds.into()));
+        }
+    }
+
+    /// Whether a component's subtype reads the discriminants of the record
+    /// being defined (its bounds or discriminant values do).
+    fn reads_discriminant(&self, t: TypeId) -> bool {
+        let info = self.tables.types.get(t);
+        let range = info.range.iter().flat_map(|(l, h)| [l, h]);
+        let bounds = match &info.kind {
+            TypeKind::Array {
+                bounds: Some(bs), ..
+            } => bs.iter().flat_map(|(l, h)| [l, h]).collect(),
+            _ => Vec::new(),
+        };
+        let discr = info.discr.iter().flat_map(|d| d.iter());
+        range.chain(bounds).chain(discr).any(ir::reads_discriminant)
     }
 
     /// An access type to a type holding tasks makes its declarative region

@@ -4,83 +4,206 @@
 use super::*;
 
 impl Checker {
-    pub(super) fn aggregate(&mut self, items: &[ast::Assoc], t: TypeId, sp: Span) -> Ex {
-        if let Some(fields) = self.tables.types.fields(t).map(|f| f.to_vec()) {
-            let mut vals: Vec<Option<Ex>> = vec![None; fields.len()];
-            let mut pos = 0;
-            for it in items {
-                if it.choices.is_empty() {
-                    if pos >= fields.len() {
-                        self.err(diagnostics::aggregate_too_many(
-                            it.span,
-                            self.tables.types.name(t),
-                            fields.len(),
-                        ));
+    /// A record aggregate (RM 4.3.1): the discriminants first, then the
+    /// components of the variant they choose (a discriminant that governs
+    /// a variant must be static), each exactly once.
+    fn record_aggregate(
+        &mut self,
+        items: &[ast::Assoc],
+        t: TypeId,
+        fields: &[types::Field],
+        sp: Span,
+    ) -> Ex {
+        let nd = fields.iter().take_while(|f| f.discriminant).count();
+        let tn = self.tables.types.name(t).to_string();
+        // Which component each association names: positional ones in
+        // order (the discriminants, then the components present), named
+        // ones by name, `others` the rest.
+        enum To<'a> {
+            Pos(&'a ast::Assoc),
+            Named(&'a ast::Assoc, usize),
+            Others(&'a ast::Assoc),
+        }
+        let mut assocs: Vec<To> = Vec::new();
+        for it in items {
+            if it.choices.is_empty() {
+                assocs.push(To::Pos(it));
+                continue;
+            }
+            for c in &it.choices {
+                match c {
+                    Choice::Others(_) => assocs.push(To::Others(it)),
+                    Choice::Expr(ast::Expr {
+                        kind: ExprKind::Name(n),
+                        ..
+                    }) => match fields.iter().position(|f| *f.key == *n.key) {
+                        Some(i) => {
+                            self.index_field_ref(n.span, t, i as u32);
+                            assocs.push(To::Named(it, i));
+                        }
+                        None => {
+                            self.err(diagnostics::aggregate_no_component(n.span, &tn, &n.name));
+                        }
+                    },
+                    Choice::Expr(x) | Choice::Range(x, _) => {
+                        self.err(diagnostics::record_aggregate_unnamed(x.span));
+                    }
+                }
+            }
+        }
+        let mut vals: Vec<Option<Ex>> = vec![None; fields.len()];
+        // The discriminants: positional first, then named.
+        let positional: Vec<&ast::Assoc> = assocs
+            .iter()
+            .filter_map(|a| match a {
+                To::Pos(it) => Some(*it),
+                _ => None,
+            })
+            .collect();
+        let given = |c: &mut Self, i: usize, it: &ast::Assoc, vals: &mut Vec<Option<Ex>>| {
+            let f = &fields[i];
+            if matches!(it.value.kind, ExprKind::Error) {
+                // `Name => <>`: the component's default.
+                let ft = f.dependent.unwrap_or(f.ty);
+                vals[i] = Some(f.default.clone().unwrap_or(Ex {
+                    kind: ExKind::Default(ft),
+                    ty: ft,
+                    span: it.span,
+                }));
+                return;
+            }
+            let v = c.expr(&it.value, Some(f.ty));
+            vals[i] = Some(c.coerce(v, f.ty));
+        };
+        for (i, it) in positional.iter().take(nd).enumerate() {
+            given(self, i, it, &mut vals);
+        }
+        for a in &assocs {
+            if let To::Named(it, i) = a
+                && *i < nd
+            {
+                given(self, *i, it, &mut vals);
+            }
+        }
+        // The components present: those of the variant the (static)
+        // discriminants choose.
+        let statics: Vec<Option<i64>> = vals[..nd]
+            .iter()
+            .map(|v| match v.as_ref().and_then(|v| self.static_value(v)) {
+                Some(Static::Int(x)) => i64::try_from(x).ok(),
+                _ => None,
+            })
+            .collect();
+        let mut reported = vec![false; nd];
+        let mut present = vec![true; fields.len()];
+        for (i, f) in fields.iter().enumerate() {
+            let Some(conds) = &f.variant else { continue };
+            for (d, ranges) in conds.iter() {
+                let d = *d as usize;
+                match statics[d] {
+                    Some(x) => {
+                        if !ranges.iter().any(|(l, h)| *l <= x && x <= *h) {
+                            present[i] = false;
+                        }
+                    }
+                    None => {
+                        if let Some(v) = &vals[d]
+                            && !reported[d]
+                            && v.ty != ERROR
+                        {
+                            reported[d] = true;
+                            self.err(diagnostics::discriminant_not_static(
+                                v.span,
+                                &fields[d].name,
+                            ));
+                        }
+                        present[i] = false;
+                    }
+                }
+            }
+        }
+        let chosen = {
+            let shown: Vec<String> = (0..nd)
+                .filter_map(|d| {
+                    vals[d]
+                        .as_ref()
+                        .map(|v| format!("`{} => {}`", fields[d].name, self.snippet(v.span)))
+                })
+                .collect();
+            shown.join(", ")
+        };
+        // The other components.
+        let mut next = nd;
+        for it in positional.iter().skip(nd) {
+            while next < fields.len() && !present[next] {
+                next += 1;
+            }
+            if next >= fields.len() {
+                let count = present.iter().filter(|p| **p).count();
+                if !reported.iter().any(|r| *r) {
+                    self.err(diagnostics::aggregate_too_many(it.span, &tn, count));
+                }
+                self.expr(&it.value, None);
+                continue;
+            }
+            given(self, next, it, &mut vals);
+            next += 1;
+        }
+        for a in &assocs {
+            match a {
+                To::Named(it, i) if *i >= nd => {
+                    if !present[*i] {
+                        if !reported.iter().any(|r| *r) {
+                            let text = chosen.clone();
+                            self.err(diagnostics::component_not_in_variant(
+                                it.choices
+                                    .iter()
+                                    .find_map(|c| match c {
+                                        Choice::Expr(x) => Some(x.span),
+                                        _ => None,
+                                    })
+                                    .unwrap_or(it.span),
+                                &fields[*i].name,
+                                &text,
+                            ));
+                        }
+                        self.expr(&it.value, Some(fields[*i].ty));
                         continue;
                     }
-                    let v = self.expr(&it.value, Some(fields[pos].ty));
-                    vals[pos] = Some(self.coerce(v, fields[pos].ty));
-                    pos += 1;
-                    continue;
+                    given(self, *i, it, &mut vals);
                 }
-                for c in &it.choices {
-                    let targets: Vec<usize> = match c {
-                        Choice::Others(_) => {
-                            (0..fields.len()).filter(|i| vals[*i].is_none()).collect()
+                To::Others(it) => {
+                    for i in 0..fields.len() {
+                        if vals[i].is_none() && present[i] {
+                            given(self, i, it, &mut vals);
                         }
-                        Choice::Expr(ast::Expr {
-                            kind: ExprKind::Name(n),
-                            ..
-                        }) => match fields.iter().position(|f| *f.key == *n.key) {
-                            Some(i) => {
-                                self.index_field_ref(n.span, t, i as u32);
-                                vec![i]
-                            }
-                            None => {
-                                self.err(diagnostics::aggregate_no_component(
-                                    n.span,
-                                    self.tables.types.name(t),
-                                    &n.name,
-                                ));
-                                vec![]
-                            }
-                        },
-                        Choice::Expr(x) | Choice::Range(x, _) => {
-                            self.err(diagnostics::record_aggregate_unnamed(x.span));
-                            vec![]
-                        }
-                    };
-                    for i in targets {
-                        if matches!(it.value.kind, ExprKind::Error) {
-                            // `Name => <>`: the component's default.
-                            let ft = fields[i].ty;
-                            vals[i] = Some(fields[i].default.clone().unwrap_or(Ex {
-                                kind: ExKind::Default(ft),
-                                ty: ft,
-                                span: it.span,
-                            }));
-                            continue;
-                        }
-                        let v = self.expr(&it.value, Some(fields[i].ty));
-                        vals[i] = Some(self.coerce(v, fields[i].ty));
                     }
                 }
+                _ => {}
             }
-            let mut out = Vec::new();
-            for (i, v) in vals.into_iter().enumerate() {
-                match v {
-                    Some(v) => out.push(v),
-                    None => {
-                        self.err(diagnostics::aggregate_lacks(
-                            sp,
-                            &fields[i].name,
-                            self.tables.types.name(t),
-                        ));
-                        out.push(self.err_ex(sp));
+        }
+        let mut out = Vec::with_capacity(fields.len());
+        for (i, v) in vals.into_iter().enumerate() {
+            match v {
+                Some(v) => out.push(v),
+                None if !present[i] => out.push(Ex::int(0)),
+                None => {
+                    if !reported.iter().any(|r| *r) {
+                        self.err(diagnostics::aggregate_lacks(sp, &fields[i].name, &tn));
                     }
+                    out.push(self.err_ex(sp));
                 }
             }
-            return self.mk(ExKind::RecordAgg(out.into()), t, sp);
+        }
+        // Its type is the record type: a constrained subtype expected is
+        // then checked against its discriminants (`coerce`).
+        let ty = if nd > 0 { self.tables.types.base(t) } else { t };
+        self.mk(ExKind::RecordAgg(out.into()), ty, sp)
+    }
+
+    pub(super) fn aggregate(&mut self, items: &[ast::Assoc], t: TypeId, sp: Span) -> Ex {
+        if let Some(fields) = self.tables.types.fields(t).map(|f| f.to_vec()) {
+            return self.record_aggregate(items, t, &fields, sp);
         }
         let Some((idx, el, bounds)) = self
             .tables

@@ -295,6 +295,39 @@ impl Checker {
             ex.ty = t;
             return ex;
         }
+        if ex.ty != t
+            && let Some(want) = self
+                .tables
+                .types
+                .discriminant_constraint(t)
+                .map(|c| c.to_vec())
+        {
+            // A discriminant check (RM 4.6(51)), unless the discriminants
+            // are statically those of the subtype.
+            let want: Vec<Option<Static>> = want.iter().map(|w| self.static_value(w)).collect();
+            let have = self.static_discriminants(&ex);
+            if let Some(have) = have
+                && want.iter().all(Option::is_some)
+            {
+                let bad = want
+                    .iter()
+                    .zip(&have)
+                    .position(|(w, h)| h.as_ref().is_some_and(|h| w.as_ref() != Some(h)));
+                if let Some(i) = bad {
+                    let name = self.tables.types.discriminants(t)[i].name.clone();
+                    self.err(diagnostics::wrong_discriminant_value(
+                        ex.span,
+                        &name,
+                        &self.tname(t),
+                    ));
+                } else if have.iter().all(Option::is_some) {
+                    ex.ty = t;
+                    return ex;
+                }
+            }
+            let span = ex.span;
+            return self.mk(ExKind::RangeCheck(bx(ex), t), t, span);
+        }
         if let Some((_, _, Some(_))) = self.tables.types.array(t)
             && ex.ty != t
         {
@@ -302,6 +335,26 @@ impl Checker {
             return self.mk(ExKind::ArrayConvert(bx(ex), t), t, span);
         }
         ex
+    }
+
+    /// The discriminants of a record value, where the checker knows them:
+    /// an aggregate's static ones, or those of a constrained subtype.
+    fn static_discriminants(&self, ex: &Ex) -> Option<Vec<Option<Static>>> {
+        let n = self.tables.types.discriminants(ex.ty).len();
+        if n == 0 {
+            return None;
+        }
+        if let ExKind::RecordAgg(fields) = &ex.kind {
+            return Some(
+                fields
+                    .get(..n)?
+                    .iter()
+                    .map(|f| self.static_value(f))
+                    .collect(),
+            );
+        }
+        let c = self.tables.types.discriminant_constraint(ex.ty)?;
+        Some(c.iter().map(|f| self.static_value(f)).collect())
     }
 
     fn found_desc(&self, t: TypeId) -> String {

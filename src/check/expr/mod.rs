@@ -57,7 +57,26 @@ impl Checker {
                     }
                     return;
                 }
-                ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _) => e = p,
+                ExKind::Field(p, i)
+                    if self
+                        .tables
+                        .types
+                        .fields(p.ty)
+                        .and_then(|f| f.get(*i as usize))
+                        .is_some_and(|f| f.discriminant) =>
+                {
+                    let name = self
+                        .tables
+                        .types
+                        .fields(p.ty)
+                        .map_or(String::new(), |f| f[*i as usize].name.clone());
+                    self.err(diagnostics::assigned_discriminant(span, &name));
+                    return;
+                }
+                ExKind::Index(p, _)
+                | ExKind::Field(p, _)
+                | ExKind::Variant(p, _)
+                | ExKind::Slice(p, _) => e = p,
                 // A component of the object of a protected function.
                 ExKind::Deref(p) if matches!(p.kind, ExKind::Var(v) if Some(v) == self.tasking.prot_function_obj) =>
                 {
@@ -541,6 +560,11 @@ impl Checker {
                 Some(i) => {
                     let t = fields[i].ty;
                     self.index_field_ref(id.span, pe.ty, i as u32);
+                    if fields[i].variant.is_some() {
+                        // A component of a variant: a discriminant check.
+                        let (pt, psp) = (pe.ty, pe.span);
+                        pe = self.mk(ExKind::Variant(bx(pe), i as u32), pt, psp);
+                    }
                     self.mk(ExKind::Field(bx(pe), i as u32), t, sp)
                 }
                 None => {

@@ -173,12 +173,7 @@ impl Checker {
         let k = self.tables.prots.len() as u32;
         let name = p.name.name.clone();
         // The components: a record with the object's number first.
-        let mut fields = vec![types::Field {
-            name: "<number>".into(),
-            key: "<number>".into(),
-            ty: INTEGER,
-            default: None,
-        }];
+        let mut fields = vec![types::Field::plain("<number>", "<number>", INTEGER, None)];
         for d in &p.private {
             match &d.kind {
                 ast::DeclKind::Object {
@@ -194,12 +189,7 @@ impl Checker {
                         self.coerce(x, t)
                     });
                     for n in names {
-                        fields.push(types::Field {
-                            name: n.name.to_string(),
-                            key: n.key.to_string(),
-                            ty: t,
-                            default: default.clone(),
-                        });
+                        fields.push(types::Field::plain(&n.name, &n.key, t, default.clone()));
                     }
                 }
                 ast::DeclKind::Pragma { .. } => {}

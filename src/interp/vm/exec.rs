@@ -350,6 +350,12 @@ impl<'a> Run<'a> {
                     self.put_int_ix(ix!(*d), x as i64);
                     continue;
                 }
+                Op::Variant(a, conds, span) => {
+                    match self.variant_check(&self.m.stack[ix!(*a)], conds, *span) {
+                        Ok(()) => continue,
+                        r => r,
+                    }
+                }
                 Op::RangeCheck(a, t, span) => {
                     let v = self.m.stack[ix!(*a)].clone();
                     match self.range_check(&v, *t, *span) {
@@ -492,6 +498,7 @@ impl<'a> Run<'a> {
                                 Step::Index(ix.iter().map(|v| self.int_ix(ix!(*v))).collect(), *sp)
                             }
                             StoreStep::Field(i) => Step::Field(*i),
+                            StoreStep::Variant(conds, sp) => Step::Variant(conds.clone(), *sp),
                             StoreStep::Slice(l, h, sp) => {
                                 Step::Slice(self.int_ix(ix!(*l)), self.int_ix(ix!(*h)), *sp)
                             }

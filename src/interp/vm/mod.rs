@@ -28,6 +28,7 @@
 //! - `tests.rs`: unit tests of the compiler (whole runs are in tests/engine.rs).
 
 use super::*;
+use crate::check::types::Variant;
 
 mod blocking;
 mod code;

@@ -26,6 +26,9 @@ pub(super) enum Op {
     Logic(LogicOp, Var, Var, Var),
     Not(Var, Var),
     RangeCheck(Var, TypeId, Span),
+    /// The record in the slot has the variant of a component (a
+    /// discriminant check, `Run::variant_check`).
+    Variant(Var, Variant, Span),
     /// `dst := arr (ix...)` for an array held in a slot (three or four
     /// indices; one and two are `Index1`, `Index2`, without an allocation).
     Index(Var, Var, Box<[Var]>, Span),
@@ -240,6 +243,8 @@ pub(super) enum StoreRoot {
 pub(super) enum StoreStep {
     Index(Box<[Var]>, Span),
     Field(u32),
+    /// The record has the variant of the component written next.
+    Variant(Variant, Span),
     Slice(Var, Var, Span),
 }
 
@@ -340,6 +345,7 @@ pub(super) fn relocate(op: &mut Op, by: u32) {
         | Op::Logic(..)
         | Op::Not(..)
         | Op::RangeCheck(..)
+        | Op::Variant(..)
         | Op::Index(..)
         | Op::Index1(..)
         | Op::Index2(..)

@@ -72,11 +72,12 @@ fn type_decl<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, 
     let Common { expr, .. } = c;
     kw!(Type)
         .ignore_then(ident())
-        .then_ignore(discriminants(expr))
+        .then(params(expr.clone()))
         .then(kw!(Is).ignore_then(type_def(c)).or_not())
         .then_ignore(semi())
-        .map(|(name, def)| DeclKind::Type {
+        .map(|((name, discriminants), def)| DeclKind::Type {
             name,
+            discriminants,
             def: def.unwrap_or(TypeDef::Incomplete),
         })
         .boxed()
@@ -186,7 +187,17 @@ fn array_def<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, TypeDef, E
 }
 
 /// `record ... end record` or `null record`: the components.
-fn record_body<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, Vec<Component>, Ex<'t>> {
+fn record_body<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, ComponentList, Ex<'t>> {
+    component_list(c)
+        .delimited_by(kw!(Record), kw!(End).then(kw!(Record)))
+        .or(kw!(Null).then(kw!(Record)).to(ComponentList::default()))
+        .boxed()
+}
+
+/// The components of a record or of a variant (RM 3.8): components, then
+/// a variant part (`case D is when ... => ...; end case;`) whose arms are
+/// component lists again; or `null;`.
+fn component_list<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, ComponentList, Ex<'t>> {
     let Common { expr, st_ind, .. } = c;
     let component = names()
         .then_ignore(just(Token::Colon))
@@ -200,13 +211,66 @@ fn record_body<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, Vec<Comp
             default,
             span: e.span(),
         });
-    kw!(Null)
-        .then(semi())
-        .to(Vec::new())
-        .or(component.repeated().at_least(1).collect::<Vec<_>>())
-        .delimited_by(kw!(Record), kw!(End).then(kw!(Record)))
-        .or(kw!(Null).then(kw!(Record)).to(Vec::new()))
-        .boxed()
+    let choice_p = kw!(Others)
+        .map_with(|_, e| Choice::Others(e.span()))
+        .or(expr
+            .clone()
+            .then(just(Token::DotDot).ignore_then(expr.clone()).or_not())
+            .map(|(a, b)| match b {
+                Some(b) => Choice::Range(a, b),
+                None => Choice::Expr(a),
+            }));
+    let choices = choice_p
+        .separated_by(just(Token::Bar))
+        .at_least(1)
+        .collect::<Vec<_>>();
+    recursive(|list| {
+        let variant_part = kw!(Case)
+            .ignore_then(ident())
+            .then_ignore(kw!(Is))
+            .then(
+                kw!(When)
+                    .ignore_then(choices.clone())
+                    .then_ignore(just(Token::Arrow))
+                    .then(list)
+                    .map_with(|(choices, body), e| CaseArm {
+                        choices,
+                        body,
+                        span: e.span(),
+                    })
+                    .repeated()
+                    .at_least(1)
+                    .collect::<Vec<_>>(),
+            )
+            .then_ignore(kw!(End))
+            .then_ignore(kw!(Case))
+            .then_ignore(semi())
+            .map_with(|(discriminant, arms), e| VariantPart {
+                discriminant,
+                arms,
+                span: e.span(),
+            });
+        let null = kw!(Null).then(semi()).to(ComponentList::default());
+        let variant_part = variant_part.map(Box::new);
+        choice((
+            null,
+            component
+                .clone()
+                .repeated()
+                .at_least(1)
+                .collect::<Vec<_>>()
+                .then(variant_part.clone().or_not())
+                .map(|(components, variants)| ComponentList {
+                    components,
+                    variants,
+                }),
+            variant_part.map(|v| ComponentList {
+                components: Vec::new(),
+                variants: Some(v),
+            }),
+        ))
+    })
+    .boxed()
 }
 
 /// `type R (N : Integer) is ...`, `task type T (Id : Integer) is ...`:

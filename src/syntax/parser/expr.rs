@@ -565,12 +565,79 @@ pub(super) fn subtype_ind<'t, I: TokIn<'t>>(
         .then(simple.clone())
         .map(|(a, b)| Constraint::Range(Box::new(a), Box::new(b)));
     let dr = discrete_range(expr.clone());
-    let index_c = dr
+    // An index constraint, or a discriminant constraint: positional values
+    // parse as ranges (the checker tells them apart by the type), named
+    // ones make it a discriminant constraint.
+    let named = ident()
+        .then_ignore(just(Token::Arrow))
+        .then(expr.clone())
+        .map_with(|(n, value), e| Arg {
+            name: Some(n),
+            value,
+            span: e.span(),
+        });
+    #[derive(Clone)]
+    enum Item {
+        Named(Arg),
+        Range(Box<DiscreteRange>, Span),
+    }
+    let index_c = named
+        .map(Item::Named)
+        .or(dr.map_with(|r, e| Item::Range(Box::new(r), e.span())))
         .separated_by(just(Token::Comma))
         .at_least(1)
-        .collect()
+        .collect::<Vec<Item>>()
         .delimited_by(just(Token::LParen), just(Token::RParen))
-        .map(Constraint::Index);
+        .validate(|items, _, emitter| {
+            if items.iter().all(|i| matches!(i, Item::Range(..))) {
+                return Constraint::Index(
+                    items
+                        .into_iter()
+                        .filter_map(|i| match i {
+                            Item::Range(r, _) => Some(*r),
+                            Item::Named(_) => None,
+                        })
+                        .collect(),
+                );
+            }
+            let mut args = Vec::with_capacity(items.len());
+            let mut named = false;
+            for item in items {
+                match item {
+                    Item::Named(a) => {
+                        named = true;
+                        args.push(a);
+                    }
+                    Item::Range(r, span) => {
+                        let value = match *r {
+                            DiscreteRange::Subtype(SubtypeInd {
+                                mark,
+                                constraint: None,
+                                ..
+                            }) if !named => mark,
+                            _ => {
+                                let what = if named {
+                                    "a positional discriminant value after a named one"
+                                } else {
+                                    "a range among discriminant values"
+                                };
+                                emitter.emit(Rich::custom(
+                                    span,
+                                    D::custom(codes::E0106, format!("{what} is not allowed")),
+                                ));
+                                continue;
+                            }
+                        };
+                        args.push(Arg {
+                            name: None,
+                            value,
+                            span,
+                        });
+                    }
+                }
+            }
+            Constraint::Discriminants(args)
+        });
     name()
         .then(range_c.or(index_c).or_not())
         .map_with(|(mark, constraint), e| SubtypeInd {

@@ -131,6 +131,13 @@ impl<'r> Compiler<'r> {
                 let x = self.expr(a);
                 self.ops.push(Op::Not(dst, x));
             }
+            ExKind::Variant(a, i) => {
+                let x = self.expr(a);
+                if let Some(conds) = self.variant_of(a.ty, *i) {
+                    self.ops.push(Op::Variant(x, conds, span));
+                }
+                self.ops.push(Op::Move(dst, x));
+            }
             ExKind::RangeCheck(a, t) => {
                 let x = self.expr(a);
                 self.ops.push(Op::RangeCheck(x, *t, span));

@@ -68,6 +68,7 @@ pub(crate) fn effects_unless(e: &Ex, judge: &dyn Fn(&Ex) -> Option<bool>) -> boo
         | ExKind::IntToFloat(a)
         | ExKind::FloatToInt(a)
         | ExKind::RangeCheck(a, _)
+        | ExKind::Variant(a, _)
         | ExKind::Field(a, _) => eff(a),
         ExKind::Index(p, idx) => eff(p) || idx.iter().any(eff),
         ExKind::Concat(a, b, ..) | ExKind::ArrLogic(_, a, b) => eff(a) || eff(b),
@@ -99,6 +100,14 @@ impl<'r> Compiler<'r> {
             types,
             scalar: true,
         }
+    }
+
+    /// The variant component `i` of the record type `t` belongs to.
+    pub(in crate::interp::vm) fn variant_of(&self, t: TypeId, i: u32) -> Option<Variant> {
+        self.types
+            .fields(t)
+            .and_then(|f| f.get(i as usize))
+            .and_then(|f| f.variant.clone())
     }
 
     /// Whether an access type designates a task (its allocator activates it).
@@ -260,6 +269,7 @@ impl<'r> Compiler<'r> {
                 | Op::Logic(..)
                 | Op::Not(..)
                 | Op::RangeCheck(..)
+                | Op::Variant(..)
                 | Op::Index(..)
                 | Op::Index1(..)
                 | Op::Index2(..)

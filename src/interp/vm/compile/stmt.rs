@@ -239,7 +239,11 @@ impl<'r> Compiler<'r> {
         // The path, from the part written to the root.
         let mut path = Vec::new();
         let mut e = t;
-        while let ExKind::Index(p, _) | ExKind::Field(p, _) | ExKind::Slice(p, _) = &e.kind {
+        while let ExKind::Index(p, _)
+        | ExKind::Field(p, _)
+        | ExKind::Variant(p, _)
+        | ExKind::Slice(p, _) = &e.kind
+        {
             path.push(e);
             e = p;
         }
@@ -261,6 +265,12 @@ impl<'r> Compiler<'r> {
         let mut next = vars.into_iter();
         let mut steps = Vec::with_capacity(path.len());
         for step in &path {
+            if let ExKind::Variant(p, i) = &step.kind {
+                if let Some(conds) = self.variant_of(p.ty, *i) {
+                    steps.push(StoreStep::Variant(conds, step.span));
+                }
+                continue;
+            }
             steps.push(match &step.kind {
                 ExKind::Index(_, idx) => {
                     StoreStep::Index(next.by_ref().take(idx.len()).collect(), step.span)
