@@ -1278,3 +1278,133 @@ fn a_with_ed_unit_beside_the_file_is_read_and_its_unsaved_changes_seen() {
     c.finish();
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+const RENAMINGS: &str = "\
+with Ada.Text_IO; use Ada.Text_IO;
+with AdaIR; use AdaIR;
+
+procedure Cell is
+   type Pose is record
+      X, Z : Float;
+   end record;
+   Tool : Pose := (X => 0.0, Z => 120.0);
+   Tool_Tip : Float renames Tool.Z;
+   Reach : exception renames OutOfReach;
+   package IO renames Ada.Text_IO;
+
+   procedure Move_To (Target : Pose) is
+   begin
+      Tool := Target;
+   end Move_To;
+   procedure Go (Goal : Pose) renames Move_To;
+begin
+   Tool_Tip := Tool_Tip - 20.0;
+   Go (Tool);
+   Go (Goal => Tool);
+   Move_To (Target => Tool);
+   IO.Put_Line (Float'Image (Tool_Tip));
+exception
+   when Reach => Put_Line (\"too far\");
+   when OutOfReach => null;
+end Cell;
+";
+
+/// A renaming: hover shows what it renames, a use of the new name goes to
+/// the renaming (a use of the old one to the old declaration), and the
+/// parts of the renamed name resolve.
+#[test]
+fn renamings_hover_and_go_to_definition() {
+    let mut c = Client::start();
+    c.open("demo.air", RENAMINGS);
+    let (d, _) = c.diagnostics("demo.air");
+    assert!(d.is_empty(), "the renamings check: {d:?}");
+    let src = RENAMINGS;
+    // Hover on a use of an object renaming: its declaration.
+    let (text, _) = hover_text(&mut c, pos(src, "Tool_Tip :=", 0, 2));
+    assert!(text.contains("Tool_Tip : Float renames Tool.Z;"), "{text}");
+    // An exception renaming: its declaration and the renamed one's doc.
+    let (text, _) = hover_text(&mut c, pos(src, "when Reach", 0, 6));
+    assert!(
+        text.contains("Reach : exception renames OutOfReach;"),
+        "{text}"
+    );
+    assert!(
+        text.contains("raised when the goal is outside the arm's reach"),
+        "{text}"
+    );
+    let (text, _) = hover_text(&mut c, pos(src, "Go (Tool)", 0, 0));
+    assert!(
+        text.contains("procedure Go (Goal : Pose) renames Move_To;"),
+        "{text}"
+    );
+    let (text, _) = hover_text(&mut c, pos(src, "IO.Put_Line", 0, 0));
+    assert!(text.contains("package IO renames Ada.Text_IO;"), "{text}");
+    // Go to definition: the renaming for its own name...
+    let l = definition(&mut c, pos(src, "Tool_Tip - 20.0", 0, 1));
+    assert_eq!(l.range, range(src, "Tool_Tip", 0));
+    let l = definition(&mut c, pos(src, "when Reach", 0, 6));
+    assert_eq!(l.range, range(src, "Reach", 0));
+    let l = definition(&mut c, pos(src, "Go (Tool)", 0, 0));
+    assert_eq!(l.range, range(src, "Go", 0));
+    let l = definition(&mut c, pos(src, "IO.Put_Line", 0, 0));
+    assert_eq!(l.range.start, pos(src, "IO renames", 0, 0));
+    // ... and the renamed declaration for the old name and the renamed
+    // name's parts.
+    let l = definition(&mut c, pos(src, "Move_To (Target", 0, 1));
+    assert_eq!(l.range, range(src, "Move_To", 0));
+    let l = definition(&mut c, pos(src, "renames Move_To", 0, 9));
+    assert_eq!(l.range, range(src, "Move_To", 0));
+    let l = definition(&mut c, pos(src, "renames Tool.Z", 0, 9));
+    assert_eq!(l.range, range(src, "Tool", 0));
+    let l = definition(&mut c, pos(src, "Tool.Z;", 0, 5));
+    assert_eq!(l.range, range(src, "Z", 0), "a record component");
+    // Named association through the renaming: its own parameter name.
+    let l = definition(&mut c, pos(src, "Goal => Tool", 0, 0));
+    assert_eq!(l.range, range(src, "Goal", 0));
+    // Completion offers the renamings, and a renamed package's names.
+    let l = labels(&completion_at(
+        &mut c,
+        "demo.air",
+        pos(src, "   Go (Tool);", 0, 3),
+    ));
+    for want in ["Tool_Tip", "Reach", "IO", "Go", "Move_To"] {
+        assert!(l.iter().any(|x| x == want), "{want} missing from {l:?}");
+    }
+    let text = src.replace("   Go (Tool);\n", "   Go (Tool);\n   IO.\n");
+    c.change("demo.air", 2, &text);
+    let _ = c.diagnostics("demo.air");
+    let l = labels(&completion_at(
+        &mut c,
+        "demo.air",
+        pos(&text, "   IO.\n", 0, 6),
+    ));
+    assert!(l.iter().any(|x| x == "Put_Line"), "{l:?}");
+    c.change("demo.air", 3, src);
+    let _ = c.diagnostics("demo.air");
+    // The outline shows each renaming and what it renames.
+    let v = c.result(
+        R::DocumentSymbolRequest::METHOD,
+        json!({ "textDocument": { "uri": uri("demo.air") } }),
+    );
+    let syms: Vec<lsp_types::DocumentSymbol> = serde_json::from_value(v).unwrap();
+    let kids: Vec<(String, Option<String>)> = syms[0]
+        .children
+        .as_ref()
+        .unwrap()
+        .iter()
+        .map(|s| (s.name.clone(), s.detail.clone()))
+        .collect();
+    for (name, detail) in [
+        ("Tool_Tip", "Float renames Tool.Z"),
+        ("Reach", "renames OutOfReach"),
+        ("IO", "renames Ada.Text_IO"),
+        ("Go", "renames Move_To"),
+    ] {
+        assert!(
+            kids.iter()
+                .any(|(n, d)| n == name && d.as_deref() == Some(detail)),
+            "{name}: {kids:?}"
+        );
+    }
+    c.finish();
+}

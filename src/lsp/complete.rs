@@ -362,9 +362,30 @@ fn object_type(a: &Analysis, offset: usize, name: &str) -> Option<TypeId> {
     }
 }
 
+/// The package a package renaming visible at `offset` renames (as
+/// written after `renames`), followed through renamings of renamings.
+fn renamed_package(a: &Analysis, offset: usize, prefix: &str) -> Option<String> {
+    let defs = visible_defs(a, offset);
+    let mut name = prefix.to_string();
+    let mut found = None;
+    for _ in 0..8 {
+        let renames = defs.iter().rev().find_map(|&i| {
+            let d = &a.checker.index.defs[i as usize];
+            (d.kind == DefKind::Package && d.name.eq_ignore_ascii_case(&name))
+                .then_some(d.renames)
+                .flatten()
+        });
+        let Some(r) = renames else { break };
+        name = a.span_text(r).to_string();
+        found = Some(name.clone());
+    }
+    found
+}
+
 fn select_items(a: &Analysis, offset: usize, prefix: &str) -> Vec<Item> {
     let c = &a.checker;
-    if let Some(names) = c.package_names(prefix) {
+    let package = renamed_package(a, offset, prefix);
+    if let Some(names) = c.package_names(package.as_deref().unwrap_or(prefix)) {
         return names
             .iter()
             .filter(|k| !k.starts_with(['\'', '"']))

@@ -210,13 +210,20 @@ pub fn describe_def(a: &Analysis, d: &Def) -> String {
         }
         doc.push_str(c);
     }
+    // (A renamed exception's doc is the exception's.)
+    let exception = match d.renames {
+        Some(r) => a.span_text(r).rsplit('.').next().unwrap_or("").trim(),
+        None => &d.name,
+    };
     if d.kind == DefKind::Exception
-        && let Some(e) = crate::services::exception_doc(&d.name)
+        && let Some(e) = crate::services::exception_doc(exception)
     {
         doc = e;
     }
     let ty = d.ty.map(|t| tname(a, t)).unwrap_or_default();
     let mut s = match d.kind {
+        // A renaming: its declaration says what it renames.
+        _ if d.renames.is_some() => code_block(&decl_text(a, d.decl)),
         DefKind::Subprogram => {
             let f = d.func.unwrap_or(u32::MAX);
             let sig = if (f as usize) < a.checker.tables.funcs.len() {
@@ -470,6 +477,22 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
                 decl_symbols(a, x, &mut children);
             }
             out.push(package_symbol(a, &p.name, d.span, children, "package body"));
+        }
+        ast::DeclKind::Renaming(r) => {
+            let renames = format!("renames {}", a.span_text(r.renamed.span));
+            match &r.what {
+                ast::Renamed::Object { name, ty } => {
+                    let detail = format!("{} {renames}", a.span_text(ty.span));
+                    leaf(name, K::VARIABLE, Some(detail));
+                }
+                ast::Renamed::Exception(name) => leaf(name, K::EVENT, Some(renames)),
+                ast::Renamed::Package(name) => leaf(name, K::MODULE, Some(renames)),
+                ast::Renamed::Subprogram(spec) => {
+                    let mut sym = subprogram_symbol(a, spec, d.span, Vec::new());
+                    sym.detail = Some(renames);
+                    out.push(sym);
+                }
+            }
         }
         _ => {}
     }

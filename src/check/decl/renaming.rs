@@ -506,6 +506,9 @@ impl Checker {
             ));
             return Target::Error;
         };
+        if let Some(id) = super::stmt::last_ident(renamed) {
+            self.index_ref(id.span, &id.key, &Entity::Func(g));
+        }
         let theirs = self.tables.funcs[g as usize].params.clone();
         for (mine, their) in params.iter().zip(&theirs) {
             if mine.mode != their.mode {
