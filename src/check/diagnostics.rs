@@ -1586,6 +1586,16 @@ pub fn not_a_protected_operation(
     )
 }
 
+/// A call from outside of an operation of the private part of `prot`.
+pub fn private_protected_operation(span: Span, name: &str, prot: &str) -> Diagnostic {
+    d(
+        codes::E0502,
+        span,
+        format!("`{name}` is declared in the private part of `{prot}`: only the body of `{prot}` can call it"),
+    )
+    .with_hint(format!("declare it before `private` to call it from outside, or call a visible operation of `{prot}` that calls or requeues to it"))
+}
+
 // ---- E0503: devices, registers, interrupts, address clauses ----
 
 /// `name`, the register (`role`) of device `device`, used as `what`.
@@ -1725,6 +1735,110 @@ pub fn entry_call_not_first(span: Span) -> Diagnostic {
         span,
         "an entry call stands only first in a timed or conditional call",
     )
+}
+
+// ---- E0505: entry families ----
+
+/// The range of entry family `entry` is not static.
+pub fn family_range_not_static(span: Span, entry: &str) -> Diagnostic {
+    d(
+        codes::E0505,
+        span,
+        format!("the index range of entry family `{entry}` must be static in AdaIR"),
+    )
+    .with_hint("name a discrete type or subtype with static bounds (`type Priority is (High, Normal, Low);`, `entry Request (Priority) ...`), or write literal bounds (`1 .. 4`)")
+}
+
+/// A family whose low bound is negative (GNAT refuses it).
+pub fn family_low_bound_negative(span: Span, entry: &str, lo: impl Display) -> Diagnostic {
+    d(
+        codes::E0505,
+        span,
+        format!("the low bound of entry family `{entry}` is {lo}; it must be at least 0"),
+    )
+    .with_hint("GNAT refuses entry families with a negative low bound: shift the range (`0 .. 9`)")
+}
+
+/// An interrupt address clause on an entry family.
+pub fn interrupt_entry_family(span: Span, entry: &str) -> Diagnostic {
+    d(
+        codes::E0505,
+        span,
+        format!("entry family `{entry}` cannot be bound to an interrupt"),
+    )
+    .with_hint(
+        "bind a single entry without parameters: `entry Interrupt; for Interrupt use at 8#340#;`",
+    )
+}
+
+/// A family named without an index (`what`: where: an entry call, an
+/// accept, ...).
+pub fn family_needs_index(span: Span, entry: &str, what: &str, example: &str) -> Diagnostic {
+    d(
+        codes::E0505,
+        span,
+        format!("`{entry}` is an entry family: {what} must name one member"),
+    )
+    .with_hint(format!("give the index first: {example}"))
+}
+
+/// An index given for an entry that is not a family.
+pub fn not_a_family(span: Span, entry: &str, example: &str) -> Diagnostic {
+    d(
+        codes::E0505,
+        span,
+        format!("`{entry}` is not an entry family: it takes no index"),
+    )
+    .with_hint(format!("write {example}"))
+}
+
+/// An entry body whose family index does not match the declaration.
+pub fn family_body_differs(span: Span, entry: &str, declared: &str) -> Diagnostic {
+    d(
+        codes::E0505,
+        span,
+        format!("the index of the body of entry family `{entry}` does not match its declaration ({declared})"),
+    )
+    .with_hint(format!("write the declaration's range: `entry {entry} (for I in {declared}) ... when ... is`"))
+}
+
+// ---- E0506: requeue ----
+
+/// `requeue` outside an accept statement or entry body (`here`: where).
+pub fn misplaced_requeue(span: Span, here: &str) -> Diagnostic {
+    d(
+        codes::E0506,
+        span,
+        format!("a requeue statement must stand in an accept statement or an entry body, not in {here}"),
+    )
+    .with_hint("requeue passes on the call being served: it stands directly in the `accept ... do ... end` of that call or in the protected entry's body")
+}
+
+/// The target of a requeue is not an entry.
+pub fn requeue_not_an_entry(span: Span, name: &str) -> Diagnostic {
+    d(
+        codes::E0506,
+        span,
+        format!("`{name}` is not an entry: a requeue statement names an entry"),
+    )
+    .with_hint("requeue to an entry of a task (`requeue Stock.Take;`) or of a protected object (`requeue Wait_For (Kind);`)")
+}
+
+/// The target of a requeue has parameters that differ from those of the
+/// call being served.
+pub fn requeue_profile_differs(
+    span: Span,
+    target: &str,
+    served: &str,
+    target_profile: &str,
+    served_profile: &str,
+) -> Diagnostic {
+    d(
+        codes::E0506,
+        span,
+        format!("`{target}` cannot take the requeued call of `{served}`: its parameters ({target_profile}) differ from those of `{served}` ({served_profile})"),
+    )
+    .with_hint("the target of a requeue takes the same parameters, with the same modes and subtypes, or none at all")
 }
 
 // ---- E0701: outside the subset ----

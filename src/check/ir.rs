@@ -210,9 +210,11 @@ pub enum AttrOp {
     /// `T'Callable`, `T'Terminated` of a task value.
     Callable,
     Terminated,
-    /// `E'Count` of an entry of the running task.
+    /// `E'Count` of an entry of the running task (a member of a family:
+    /// the index is the argument).
     Count(u32),
-    /// `E'Count` of an entry of a protected object (the argument).
+    /// `E'Count` of an entry of a protected object (the first argument; a
+    /// member of a family: the index is the second).
     ProtCount(u32),
 }
 
@@ -449,6 +451,8 @@ pub enum StmtKind {
     Select(Box<Select>),
     /// A timed (`or delay`) or conditional (`else`) entry call.
     TimedCall(Box<TimedCall>),
+    /// `requeue E [with abort];` in an accept statement or an entry body.
+    Requeue(Box<Requeue>),
     Abort(Vec<Ex>),
     /// The statements of a long body, compiled by the engine a part at a
     /// time as they were checked (see [`PartCompiler`]); their checked
@@ -557,16 +561,58 @@ pub struct ForLoop {
 #[derive(Clone, Debug)]
 pub struct Accept {
     pub entry: u32,
+    /// The member of an entry family (a value of the family's subtype).
+    pub index: Option<Ex>,
     pub params: Vec<(Var, Mode)>,
     pub body: Option<Body>,
 }
 
 /// An entry call: of a task (the task value) or of a protected object (the
-/// object, last among the arguments).
+/// object, last among the arguments; the index of a family member just
+/// before it, as the entry body takes them).
 #[derive(Clone, Debug)]
 pub struct EntryCall {
     pub target: CallTarget,
     pub args: Vec<Arg>,
+    /// The member of an entry family (a value of its subtype; of a
+    /// protected entry it is also the argument before the object).
+    pub index: Option<Ex>,
+}
+
+/// `requeue E [with abort];`: the running call goes on to entry E, whose
+/// caller stays blocked until E's call completes (RM 9.5.4).
+#[derive(Clone, Debug)]
+pub struct Requeue {
+    pub target: RequeueTarget,
+    /// The member of an entry family (a value of its subtype).
+    pub index: Option<Ex>,
+    /// `with abort`: a timed call's timeout may still cancel it.
+    pub abort: bool,
+    /// E takes the parameters of the call (false: E has none).
+    pub params: bool,
+    /// In an accept statement: the accept's parameters (their values go to
+    /// the caller first), the statement ends; None: in a protected entry
+    /// body, which returns.
+    pub accept: Option<Vec<(Var, Mode)>>,
+}
+
+#[derive(Clone, Debug)]
+pub enum RequeueTarget {
+    /// An entry of a task (None: of the running task).
+    Task {
+        task: Option<Ex>,
+        ttype: u32,
+        entry: u32,
+    },
+    /// An entry of a protected object (the object's value); `internal`: of
+    /// the object whose entry body requeues, named by the entry alone (the
+    /// call joins its queue within the protected action, RM 9.5.4(13)).
+    Prot {
+        obj: Ex,
+        prot: u32,
+        entry: u32,
+        internal: bool,
+    },
 }
 
 #[derive(Clone, Debug)]
@@ -614,6 +660,74 @@ pub struct EntryDef {
     pub profile: FuncId,
     /// `for E use at Addr;`: an interrupt entry.
     pub interrupt: Option<i64>,
+    pub family: Option<Family>,
+    /// Its first queue among the task's (see [`Family`]).
+    pub first: u32,
+}
+
+/// The index range of an entry family: its subtype and static bounds. A
+/// task or protected object has one queue of callers per entry and per
+/// member of a family, numbered in the order of declaration (an entry's
+/// `first` queue, then one per member from the low bound up).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Family {
+    pub ty: TypeId,
+    pub lo: i64,
+    pub hi: i64,
+}
+
+impl Family {
+    /// How many members (queues) it has.
+    pub fn len(&self) -> u32 {
+        u32::try_from((self.hi - self.lo + 1).max(0)).unwrap_or(u32::MAX)
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.hi < self.lo
+    }
+}
+
+/// The queues of entries laid out from their `first` and family: how
+/// many, and which entry (and family index) queue `q` belongs to.
+pub fn queue_count(entries: impl DoubleEndedIterator<Item = (u32, Option<Family>)>) -> usize {
+    entries.last().map_or(0, |(first, f)| {
+        first as usize + f.map_or(1, |f| f.len() as usize)
+    })
+}
+
+pub fn queue_member(
+    entries: impl Iterator<Item = (u32, Option<Family>)>,
+    q: u32,
+) -> Option<(usize, Option<i64>)> {
+    entries.enumerate().find_map(|(i, (first, f))| match f {
+        None if first == q => Some((i, None)),
+        Some(f) if q >= first && q - first < f.len() => {
+            Some((i, Some(f.lo + i64::from(q - first))))
+        }
+        _ => None,
+    })
+}
+
+impl TaskDef {
+    pub fn queues(&self) -> usize {
+        queue_count(self.entries.iter().map(|e| (e.first, e.family)))
+    }
+
+    /// The entry and family index of queue `q`.
+    pub fn member(&self, q: u32) -> Option<(usize, Option<i64>)> {
+        queue_member(self.entries.iter().map(|e| (e.first, e.family)), q)
+    }
+}
+
+impl ProtDef {
+    pub fn queues(&self) -> usize {
+        queue_count(self.entries.iter().map(|e| (e.first, e.family)))
+    }
+
+    /// The entry and family index of queue `q`.
+    pub fn member(&self, q: u32) -> Option<(usize, Option<i64>)> {
+        queue_member(self.entries.iter().map(|e| (e.first, e.family)), q)
+    }
 }
 
 /// A protected type. Its value is an access to a record whose first
@@ -634,9 +748,13 @@ pub struct ProtDef {
 pub struct ProtEntry {
     pub name: String,
     pub profile: FuncId,
-    /// A function of the object only; and the body (parameters, object).
+    /// A function of the object only (of a family: of the index, then the
+    /// object); and the body (parameters, the index of a family, object).
     pub barrier: Option<FuncId>,
     pub body: Option<FuncId>,
+    pub family: Option<Family>,
+    /// Its first queue among the object's (see [`Family`]).
+    pub first: u32,
 }
 
 /// The alternatives of a `case`: static choice ranges and statements.

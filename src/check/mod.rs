@@ -103,6 +103,9 @@ pub struct Options {
     pub compile_parts: Option<ir::PartCompiler>,
 }
 
+/// The slots of an accept statement's parameters and their modes.
+type AcceptSlots = Vec<(Var, ast::Mode)>;
+
 /// Where the statement being checked stands among tasks, protected bodies
 /// and masters (tasks.md).
 #[derive(Clone, Default)]
@@ -110,8 +113,12 @@ struct TaskContext {
     /// The task types whose bodies are being checked (innermost last).
     task_ctx: Vec<u32>,
     /// The entries whose accept bodies enclose the statement being checked
-    /// (an accept of one of them inside is illegal, RM 9.5.2(15)).
-    accepting: Vec<(u32, u32, Span)>,
+    /// (an accept of one of them inside is illegal, RM 9.5.2(15)), and
+    /// the slots of each accept's parameters (for `requeue`).
+    accepting: Vec<(u32, u32, Span, AcceptSlots)>,
+    /// The protected entry bodies being checked: the body, the protected
+    /// type and the entry (for `requeue`).
+    entry_bodies: Vec<(FuncId, u32, u32)>,
     /// The protected bodies being checked: the type and the slot of the
     /// object parameter of the operation being checked.
     prot_ctx: Vec<(u32, Option<Var>)>,

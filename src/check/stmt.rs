@@ -445,10 +445,15 @@ impl Checker {
             }
             S::Accept {
                 entry,
+                index,
                 params,
                 body,
-            } => match self.accept(entry, params, body.as_deref(), sp) {
+            } => match self.accept(entry, index.as_deref(), params, body.as_deref(), sp) {
                 Some(a) => StmtKind::Accept(Box::new(a)),
+                None => return,
+            },
+            S::Requeue { target, abort } => match self.requeue(target, *abort, sp) {
+                Some(r) => StmtKind::Requeue(Box::new(r)),
                 None => return,
             },
             S::Select(alts) => match self.select(alts, sp) {

@@ -30,6 +30,9 @@ pub struct Tables {
     pub(super) prot_members: Vec<Vec<(String, FuncId, FuncId, bool)>>,
     /// Profile -> real subprogram of protected operations.
     pub(super) prot_real: HashMap<FuncId, (FuncId, u32)>,
+    /// The profiles of the operations declared in a protected type's
+    /// private part (called from its body only).
+    pub(super) prot_private: std::collections::HashSet<FuncId>,
     /// Protected types whose body was seen (missing operations in it are
     /// reported there).
     pub(super) prot_bodied: Vec<u32>,
@@ -51,6 +54,7 @@ impl Tables {
             prots: PVec::new(),
             prot_members: Vec::new(),
             prot_real: HashMap::new(),
+            prot_private: std::collections::HashSet::new(),
             prot_bodied: Vec::new(),
             renames: PMap::new(),
         }

@@ -88,6 +88,8 @@ codes! {
     E0502: "a protected object's rule broken",
     E0503: "a device, register, interrupt or address clause used wrongly",
     E0504: "a `delay` or timed call used wrongly",
+    E0505: "an entry family or its index used wrongly",
+    E0506: "a `requeue` used wrongly",
     E0701: "a feature of Ada that is outside the AdaIR subset",
     E0901: "an exception that no handler caught",
     E0902: "a deadlock: every task is blocked",

@@ -351,7 +351,7 @@ impl Machine {
         // The user's stop in a program with tasks (see `poll`): where each
         // task was, the main program's place first.
         let stopped = (tasks && matches!(r, Err(Flow::Exit(STOP_LABEL))))
-            .then(|| run.m.sched.describe(run.c.tasks, run.c.prots));
+            .then(|| run.m.sched.describe(run.c.tasks, run.c.prots, run.c.types));
         if !(run.m.keep_tasks && alive) {
             // Any frames left by an exception are dropped; level-0 slots stay.
             run.m.stack.truncate(need);
@@ -396,7 +396,7 @@ impl Machine {
     /// `:tasks`: every task and what it waits for.
     pub fn describe_tasks(&self, chk: ProgramRef<'_>) -> Vec<String> {
         self.sched
-            .describe(chk.tasks, chk.prots)
+            .describe(chk.tasks, chk.prots, chk.types)
             .into_iter()
             .map(|(_, l)| l)
             .collect()
@@ -834,7 +834,8 @@ impl Run<'_> {
             StmtKind::Accept(_)
             | StmtKind::EntryCall(_)
             | StmtKind::Select(_)
-            | StmtKind::TimedCall(_) => Err(self.raise(
+            | StmtKind::TimedCall(_)
+            | StmtKind::Requeue(_) => Err(self.raise(
                 check::PROGRAM_ERROR,
                 "tasks run in the compiled engine only (unset ADAIR_ENGINE)",
                 s.span,
@@ -2192,7 +2193,7 @@ impl Run<'_> {
     ) -> R<Value> {
         Ok(match op {
             AttrOp::Callable | AttrOp::Terminated | AttrOp::Count(_) | AttrOp::ProtCount(_) => {
-                self.task_attr(op, std::slice::from_ref(&a0))
+                self.task_attr(op, &[a0, a1])
             }
             AttrOp::ArrFirst(d) | AttrOp::ArrLast(d) | AttrOp::ArrLength(d) => {
                 let Value::Arr(a) = a0 else {

@@ -69,6 +69,32 @@ pub(crate) enum Outcome {
     Done,
     Timeout,
     Error(Box<Occurrence>),
+    /// The call was requeued (`Thread::requeue`): the caller makes it again
+    /// on the new entry.
+    Requeued,
+}
+
+/// Where a requeued call goes (RM 9.5.4): the entry's queue (of a task or
+/// a protected object), the member's index, and whether the call takes
+/// its parameters there and may still time out (`with abort`).
+#[derive(Clone, Debug)]
+pub(crate) struct Requeued {
+    pub to: RequeueTo,
+    pub entry: u32,
+    pub queue: u32,
+    pub index: Option<i64>,
+    pub params: bool,
+    pub abort: bool,
+    /// Already on the protected object's queue (a requeue to an entry of
+    /// the same object joins it within the protected action).
+    pub queued: bool,
+}
+
+#[derive(Clone, Debug)]
+pub(crate) enum RequeueTo {
+    Task(Tid),
+    /// The object's value, its number and its type.
+    Prot(Value, usize, u32),
 }
 
 #[derive(Clone)]
@@ -92,6 +118,15 @@ pub(crate) struct Thread {
     /// The stack slots of the entry call this thread makes (its operands).
     pub call: Vec<usize>,
     pub outcome: Outcome,
+    /// The timeout of the call this thread makes (a timed call's deadline;
+    /// `Some(-inf)`: a conditional call), which a `requeue ... with abort`
+    /// keeps.
+    pub call_deadline: Option<f64>,
+    /// Where its requeued call goes next (see [`Outcome::Requeued`]).
+    pub requeue: Option<Box<Requeued>>,
+    /// The protected object whose entry body it runs for its requeued call:
+    /// the queues are served when the body returns.
+    pub requeue_body: Option<usize>,
     /// The task waiting for this task's activation (until it is reported).
     pub activator: Option<Tid>,
     pub activating: usize,
@@ -142,6 +177,9 @@ impl Thread {
             rendezvous: Vec::new(),
             call: Vec::new(),
             outcome: Outcome::Pending,
+            call_deadline: None,
+            requeue: None,
+            requeue_body: None,
             activator: None,
             activating: 0,
             activation_failed: false,
@@ -376,14 +414,14 @@ impl Sched {
         &self,
         tasks: &crate::check::PVec<TaskDef>,
         prots: &crate::check::PVec<ProtDef>,
+        types: &crate::check::types::Types,
     ) -> Vec<(Span, String)> {
-        let entry_name = |t: Tid, e: u32| {
+        let entry_name = |t: Tid, q: u32| {
             self.threads[t]
                 .ttype
                 .and_then(|k| tasks.get(k as usize))
-                .and_then(|d| d.entries.get(e as usize))
-                .map(|x| x.name.clone())
-                .unwrap_or_else(|| format!("entry {e}"))
+                .and_then(|d| member_name(types, &d.entries, d.member(q), |e| (&e.name, e.family)))
+                .unwrap_or_else(|| format!("entry {q}"))
         };
         self.threads
             .iter()
@@ -420,10 +458,10 @@ impl Sched {
                             .map(|d| {
                                 (
                                     d.name.clone(),
-                                    d.entries
-                                        .get(*entry as usize)
-                                        .map(|e| e.name.clone())
-                                        .unwrap_or_default(),
+                                    member_name(types, &d.entries, d.member(*entry), |e| {
+                                        (&e.name, e.family)
+                                    })
+                                    .unwrap_or_default(),
                                 )
                             })
                             .unwrap_or_default();
@@ -503,7 +541,7 @@ impl Run<'_> {
         } else {
             format!("{} #{}", def.name, same + 1)
         };
-        let mut t = Thread::new(name, Some(k), def.entries.len());
+        let mut t = Thread::new(name, Some(k), def.queues());
         t.priority = priority;
         t.start = Some((body, display));
         let cur = self.m.sched.cur;
@@ -570,7 +608,7 @@ impl Run<'_> {
     pub(crate) fn create_protected(&mut self, k: u32, span: Span) -> R<Value> {
         let def = &self.c.prots[k as usize];
         let rec = def.rec;
-        let n = def.entries.len();
+        let n = def.queues();
         let v = self.default_value(rec, span)?;
         let pid = self.m.sched.prots.len();
         self.m.sched.prots.push(ProtState {
@@ -605,9 +643,10 @@ impl Run<'_> {
             AttrOp::Count(e) => {
                 let n = if self.m.sched.active() {
                     let me = self.m.sched.cur;
-                    self.m.sched.threads[me]
-                        .entries
-                        .get(e as usize)
+                    let q = self.m.sched.threads[me]
+                        .ttype
+                        .and_then(|k| task_queue(&self.c.tasks[k as usize], e, args.first()));
+                    q.and_then(|q| self.m.sched.threads[me].entries.get(q as usize))
                         .map_or(0, |q| q.len())
                 } else {
                     0
@@ -616,14 +655,11 @@ impl Run<'_> {
             }
             AttrOp::ProtCount(e) => {
                 let pid = Self::prot_id(&args[0]);
-                let n = self
-                    .m
-                    .sched
-                    .prots
-                    .get(pid)
-                    .and_then(|p| p.queues.get(e as usize))
-                    .map_or(0, |q| q.len());
-                Value::Int(n as i64)
+                let n = self.m.sched.prots.get(pid).and_then(|p| {
+                    let q = prot_queue(&self.c.prots[p.ptype as usize], e, args.get(1))?;
+                    p.queues.get(q as usize)
+                });
+                Value::Int(n.map_or(0, |q| q.len()) as i64)
             }
             AttrOp::Callable => {
                 let t = args[0].int() as usize;
@@ -923,13 +959,13 @@ impl Run<'_> {
         });
         let line = match bound {
             Some((t, e)) => {
-                self.m.sched.threads[t].entries[e].push_back(INTERRUPT);
-                if self.m.sched.accepting(t, e as u32) {
+                let def = &self.c.tasks[self.m.sched.threads[t].ttype.unwrap_or(0) as usize];
+                let q = def.entries[e].first;
+                self.m.sched.threads[t].entries[q as usize].push_back(INTERRUPT);
+                if self.m.sched.accepting(t, q) {
                     self.m.sched.make_ready(t);
                 }
-                let name = &self.c.tasks[self.m.sched.threads[t].ttype.unwrap_or(0) as usize]
-                    .entries[e]
-                    .name;
+                let name = &def.entries[e].name;
                 format!(
                     "interrupt {} queued on {}.{name}",
                     crate::devices::ada_address(address),
@@ -1014,7 +1050,10 @@ impl Run<'_> {
     /// The deadlock diagnostic: every task and what it waits for (one
     /// line each after the first; their places are the chain).
     pub(crate) fn deadlock(&mut self) -> Flow {
-        let lines = self.m.sched.describe(self.c.tasks, self.c.prots);
+        let lines = self
+            .m
+            .sched
+            .describe(self.c.tasks, self.c.prots, self.c.types);
         let mut msg = String::from(DEADLOCK);
         for (_, l) in &lines {
             msg.push('\n');
@@ -1031,6 +1070,55 @@ impl Run<'_> {
             ending: crate::interp::Ending::Deadlock,
         }))
     }
+}
+
+/// The queue of entry `e` of a task of type `def` (of a family: of the
+/// member `index`, None when it is outside the family).
+pub(crate) fn task_queue(def: &TaskDef, e: u32, index: Option<&Value>) -> Option<u32> {
+    let x = def.entries.get(e as usize)?;
+    member_queue(x.first, x.family, index)
+}
+
+/// The queue of entry `e` of a protected object of type `def`.
+pub(crate) fn prot_queue(def: &ProtDef, e: u32, index: Option<&Value>) -> Option<u32> {
+    let x = def.entries.get(e as usize)?;
+    member_queue(x.first, x.family, index)
+}
+
+fn member_queue(
+    first: u32,
+    family: Option<crate::check::ir::Family>,
+    index: Option<&Value>,
+) -> Option<u32> {
+    match (family, index) {
+        (None, _) => Some(first),
+        (Some(f), Some(v)) => {
+            let i = v.int();
+            (f.lo..=f.hi)
+                .contains(&i)
+                .then(|| first + (i - f.lo) as u32)
+        }
+        (Some(_), None) => None,
+    }
+}
+
+/// The name of a queue's entry (`member`: the entry and family index):
+/// `Request (HIGH)` for a member of a family.
+fn member_name<E>(
+    types: &crate::check::types::Types,
+    entries: &[E],
+    member: Option<(usize, Option<i64>)>,
+    name: impl Fn(&E) -> (&String, Option<crate::check::ir::Family>),
+) -> Option<String> {
+    let (i, index) = member?;
+    let (n, family) = name(entries.get(i)?);
+    Some(match (index, family) {
+        (Some(x), Some(f)) => match types.enum_lits(f.ty) {
+            Some(l) => format!("{n} ({})", l.get(x as usize).map_or("?", |s| s.as_str())),
+            None => format!("{n} ({x})"),
+        },
+        _ => n.clone(),
+    })
 }
 
 /// The first line of the deadlock diagnostic.

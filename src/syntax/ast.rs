@@ -345,6 +345,9 @@ pub struct ProtectedSpec {
     pub ops: Vec<ProtOp>,
     /// The private part: components (object declarations) and more operations.
     pub private: Vec<Decl>,
+    /// The private part's entries (called from the body only: requeue
+    /// targets).
+    pub private_entries: Vec<EntryDecl>,
     pub span: Span,
 }
 
@@ -364,6 +367,9 @@ pub struct ProtectedBody {
 #[derive(Clone, Debug, PartialEq)]
 pub struct EntryBody {
     pub name: Ident,
+    /// `(for I in Range)` of an entry family's body: the index's name and
+    /// the family's range.
+    pub family: Option<(Ident, DiscreteRange)>,
     pub params: Vec<Param>,
     pub barrier: Expr,
     pub decls: Vec<Decl>,
@@ -374,6 +380,8 @@ pub struct EntryBody {
 #[derive(Clone, Debug, PartialEq)]
 pub struct EntryDecl {
     pub name: Ident,
+    /// `entry E (Range) (...)`: an entry family and its index range.
+    pub family: Option<DiscreteRange>,
     pub params: Vec<Param>,
     pub span: Span,
 }
@@ -456,10 +464,17 @@ pub enum StmtKind {
     Abort(Vec<Expr>),
     Accept {
         entry: Box<Ident>,
+        /// `accept E (I) ...`: the member of an entry family.
+        index: Option<Box<Expr>>,
         params: Vec<Param>,
         body: Option<Box<Block>>,
     },
     Select(Vec<SelectAlt>),
+    /// `requeue E [with abort];`
+    Requeue {
+        target: Box<Expr>,
+        abort: bool,
+    },
     /// A declaration among statements (script mode only).
     Decl(Box<Decl>),
     Error,

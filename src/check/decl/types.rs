@@ -246,7 +246,7 @@ impl Checker {
         }
     }
 
-    fn set_range(&mut self, st: TypeId, l: Ex, h: Ex) {
+    pub(in crate::check) fn set_range(&mut self, st: TypeId, l: Ex, h: Ex) {
         let (l, h) = (self.elaborate_bound(l), self.elaborate_bound(h));
         let (sl, sh) = (self.static_value(&l), self.static_value(&h));
         let info = &mut self.tables.types.list[st as usize];

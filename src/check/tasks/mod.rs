@@ -23,6 +23,14 @@ pub(super) enum BodyKind {
 /// The name of the hidden object parameter of protected operations.
 const SELF: &str = "<protected object>";
 
+/// The first queue of the entry after one whose first queue and family
+/// are `prev` (the first entry's: 0).
+fn next_queue(prev: Option<(u32, Option<Family>)>) -> u32 {
+    prev.map_or(0, |(first, f)| {
+        first.saturating_add(f.map_or(1, |f| f.len()))
+    })
+}
+
 impl Checker {
     fn new_func(
         &mut self,
@@ -58,6 +66,48 @@ impl Checker {
         }
     }
 
+    /// The index range of entry family `entry`: a discrete subtype with
+    /// static bounds (a range `1 .. 4` is one of its type).
+    fn entry_family(&mut self, r: &ast::DiscreteRange, entry: &ast::Ident) -> Option<Family> {
+        let (lo, hi, t) = self.discrete_range(r, None);
+        if t == ERROR || !self.tables.types.is_discrete(t) {
+            return None;
+        }
+        let span = match r {
+            ast::DiscreteRange::Range(a, b) => Span {
+                end: b.span.end,
+                ..a.span
+            },
+            ast::DiscreteRange::Subtype(ind) => ind.span,
+            ast::DiscreteRange::Attr(e) => e.span,
+        };
+        let bounds = match (self.static_value(&lo), self.static_value(&hi)) {
+            (Some(Static::Int(a)), Some(Static::Int(b))) => {
+                i64::try_from(a).ok().zip(i64::try_from(b).ok())
+            }
+            _ => None,
+        };
+        let Some((a, b)) = bounds else {
+            self.err(diagnostics::family_range_not_static(span, &entry.name));
+            return None;
+        };
+        if a < 0 {
+            self.err(diagnostics::family_low_bound_negative(span, &entry.name, a));
+            return None;
+        }
+        // The subtype an index is checked against.
+        let ty = match r {
+            ast::DiscreteRange::Subtype(_) => t,
+            _ => {
+                let name = self.tables.types.name(t).to_string();
+                let st = self.tables.types.add_subtype(&name, t);
+                self.set_range(st, lo, hi);
+                st
+            }
+        };
+        Some(Family { ty, lo: a, hi: b })
+    }
+
     pub(super) fn task_spec(&mut self, t: &ast::TaskSpec, span: Span, out: &mut Vec<Stmt>) {
         let k = self.tables.tasks.len() as u32;
         let name = t.name.name.clone();
@@ -70,12 +120,19 @@ impl Checker {
             {
                 self.err(diagnostics::entry_declared_twice(e.name.span, &e.name.name));
             }
+            let family = e
+                .family
+                .as_ref()
+                .and_then(|r| self.entry_family(r, &e.name));
             let params = self.params(&e.params);
             let f = self.new_func(format!("{name}.{}", e.name.name), params, None, e.name.span);
+            let first = next_queue(entries.last().map(|x: &EntryDef| (x.first, x.family)));
             entries.push(EntryDef {
                 name: e.name.name.to_string(),
                 profile: f,
                 interrupt: None,
+                family,
+                first,
             });
         }
         for (id, addr) in &t.addresses {
@@ -86,6 +143,10 @@ impl Checker {
                 self.err(diagnostics::not_an_entry_of_task(id.span, &id.name, &name));
                 continue;
             };
+            if entries[i].family.is_some() {
+                self.err(diagnostics::interrupt_entry_family(id.span, &id.name));
+                continue;
+            }
             if !self.tables.funcs[entries[i].profile as usize]
                 .params
                 .is_empty()
@@ -192,7 +253,8 @@ impl Checker {
                         fields.push(types::Field::plain(&n.name, &n.key, t, default.clone()));
                     }
                 }
-                ast::DeclKind::Pragma { .. } => {}
+                ast::DeclKind::Pragma { .. }
+                | ast::DeclKind::SubprogramDecl { import: None, .. } => {}
                 _ => self.err(diagnostics::unsupported_in_protected_private(d.span)),
             }
         }
@@ -213,7 +275,25 @@ impl Checker {
         };
         let mut members = Vec::new();
         let mut entries = Vec::new();
-        for op in &p.ops {
+        // The visible operations, then the private part's (called from
+        // the body only).
+        let private_subs: Vec<ast::ProtOp> = p
+            .private
+            .iter()
+            .filter_map(|d| match &d.kind {
+                ast::DeclKind::SubprogramDecl { spec, import: None } => {
+                    Some(ast::ProtOp::Sub(spec.clone()))
+                }
+                _ => None,
+            })
+            .chain(p.private_entries.iter().cloned().map(ast::ProtOp::Entry))
+            .collect();
+        let all = p
+            .ops
+            .iter()
+            .map(|o| (o, false))
+            .chain(private_subs.iter().map(|o| (o, true)));
+        for (op, private) in all {
             match op {
                 ast::ProtOp::Sub(spec) => {
                     let params = self.params(&spec.params);
@@ -226,17 +306,30 @@ impl Checker {
                     let real =
                         self.new_func(format!("{name}.{display}"), real_params, ret, spec.span);
                     self.tables.prot_real.insert(profile, (real, k));
+                    if private {
+                        self.tables.prot_private.insert(profile);
+                    }
                     members.push((spec.name.key(), profile, real, ret.is_some()));
                 }
                 ast::ProtOp::Entry(e) => {
+                    let family = e
+                        .family
+                        .as_ref()
+                        .and_then(|r| self.entry_family(r, &e.name));
                     let params = self.params(&e.params);
                     let profile =
                         self.new_func(format!("{name}.{}", e.name.name), params, None, e.span);
+                    let first = next_queue(entries.last().map(|x: &ProtEntry| (x.first, x.family)));
+                    if private {
+                        self.tables.prot_private.insert(profile);
+                    }
                     entries.push(ProtEntry {
                         name: e.name.name.to_string(),
                         profile,
                         barrier: None,
                         body: None,
+                        family,
+                        first,
                     });
                 }
             }
@@ -388,15 +481,28 @@ impl Checker {
         }
         let access = self.prot_access(k);
         let pname = self.tables.prots[k as usize].name.clone();
-        // The barrier: a function of the object alone.
+        // A family's index: a parameter of the barrier and the body, before
+        // the object.
+        let index = self.family_body_index(b, entry.family);
+        let index_param = |id: &ast::Ident, ty| Param {
+            name: id.name.to_string(),
+            mode: ast::Mode::In,
+            ty,
+            default: None,
+        };
+        let self_param = Param {
+            name: SELF.into(),
+            mode: ast::Mode::In,
+            ty: access,
+            default: None,
+        };
+        let mut barrier_params: Vec<Param> =
+            index.iter().map(|(id, t)| index_param(id, *t)).collect();
+        barrier_params.push(self_param.clone());
+        // The barrier: a function of the object alone (and of the index).
         let barrier = self.new_func(
             format!("{pname}.{} barrier", b.name.name),
-            vec![Param {
-                name: SELF.into(),
-                mode: ast::Mode::In,
-                ty: access,
-                default: None,
-            }],
+            barrier_params,
             Some(BOOLEAN),
             b.barrier.span,
         );
@@ -410,29 +516,32 @@ impl Checker {
             span: b.barrier.span,
             lazy: None,
         };
+        let index_name: Vec<&ast::Ident> = index.iter().map(|(id, _)| *id).collect();
         self.check_body(
             barrier,
             "<barrier>",
             &b.name.name,
-            &[],
+            &index_name,
             &[],
             &ret_stmt,
             BodyKind::Protected(k),
         );
         let mut real_params = profile.params.clone();
-        real_params.push(Param {
-            name: SELF.into(),
-            mode: ast::Mode::In,
-            ty: access,
-            default: None,
-        });
+        real_params.extend(index.iter().map(|(id, t)| index_param(id, *t)));
+        real_params.push(self_param);
         let body = self.new_func(
             format!("{pname}.{}", b.name.name),
             real_params,
             None,
             b.span,
         );
-        let written: Vec<&ast::Ident> = b.params.iter().flat_map(|p| p.names.iter()).collect();
+        let written: Vec<&ast::Ident> = b
+            .params
+            .iter()
+            .flat_map(|p| p.names.iter())
+            .chain(index_name.iter().copied())
+            .collect();
+        self.tasking.entry_bodies.push((body, k, i as u32));
         self.check_body(
             body,
             &b.name.key,
@@ -442,9 +551,82 @@ impl Checker {
             &b.body,
             BodyKind::Protected(k),
         );
+        self.tasking.entry_bodies.pop();
         let e = &mut self.tables.prots[k as usize].entries[i];
         e.barrier = Some(barrier);
         e.body = Some(body);
+    }
+
+    /// The index of an entry body (`for I in Range`) and its subtype, when
+    /// the entry is a family (`family`); reported when it does not match
+    /// the declaration.
+    fn family_body_index<'b>(
+        &mut self,
+        b: &'b ast::EntryBody,
+        family: Option<Family>,
+    ) -> Option<(&'b ast::Ident, TypeId)> {
+        match (&b.family, family) {
+            (None, None) => None,
+            (Some((id, r)), Some(f)) => {
+                let (lo, hi, t) = self.discrete_range(r, None);
+                let same = t == ERROR
+                    || (self.tables.types.base(t) == self.tables.types.base(f.ty)
+                        && self.static_value(&lo) == Some(Static::Int(f.lo.into()))
+                        && self.static_value(&hi) == Some(Static::Int(f.hi.into())));
+                if !same {
+                    let declared = self.family_text(f);
+                    self.err(diagnostics::family_body_differs(
+                        id.span,
+                        &b.name.name,
+                        &declared,
+                    ));
+                }
+                Some((id, f.ty))
+            }
+            (None, Some(f)) => {
+                let declared = self.family_text(f);
+                self.err(diagnostics::family_needs_index(
+                    b.name.span,
+                    &b.name.name,
+                    "its body",
+                    &format!(
+                        "`entry {} (for I in {declared}) ... when ... is`",
+                        b.name.name
+                    ),
+                ));
+                None
+            }
+            (Some((id, _)), None) => {
+                self.err(diagnostics::not_a_family(
+                    id.span,
+                    &b.name.name,
+                    &format!(
+                        "`entry {} ... when ... is` without `(for ...)`",
+                        b.name.name
+                    ),
+                ));
+                None
+            }
+        }
+    }
+
+    /// A family's range as the user would write it: its subtype's name, or
+    /// its bounds.
+    pub(super) fn family_text(&self, f: Family) -> String {
+        let name = self.tables.types.name(f.ty);
+        let image = |v: i64| match self.tables.types.enum_lits(f.ty) {
+            Some(l) => l.get(v as usize).cloned().unwrap_or_else(|| v.to_string()),
+            None => v.to_string(),
+        };
+        let base = self.tables.types.base(f.ty);
+        let whole = self.tables.types.discrete_bounds(base) == Some((f.lo.into(), f.hi.into()));
+        match () {
+            _ if whole || name != self.tables.types.name(base) => name.to_string(),
+            _ if self.tables.types.enum_lits(f.ty).is_some() => {
+                format!("{name} range {} .. {}", image(f.lo), image(f.hi))
+            }
+            _ => format!("{} .. {}", f.lo, f.hi),
+        }
     }
 
     /// Inside a protected operation: the components by name, as components

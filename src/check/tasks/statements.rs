@@ -147,6 +147,13 @@ impl Checker {
             ));
             return None;
         }
+        if fs.iter().all(|f| self.private_outside(k, *f)) {
+            let pname = self.tables.prots[k as usize].name.clone();
+            self.err(diagnostics::private_protected_operation(
+                id.span, &id.name, &pname,
+            ));
+            return None;
+        }
         // Not an internal call, even inside a protected body.
         let outer = std::mem::take(&mut self.tasking.prot_ctx);
         let r = self.call(&fs, args, None, procedure, sp, &id.name);
@@ -156,6 +163,13 @@ impl Checker {
         self.index_ref(id.span, &id.key, &Entity::Func(f));
         a.push(self.obj_arg(k, obj));
         Some((real, a))
+    }
+
+    /// Whether `profile`, an operation of protected type `k`, is private
+    /// and the statement being checked is outside `k`'s body.
+    fn private_outside(&self, k: u32, profile: FuncId) -> bool {
+        self.tables.prot_private.contains(&profile)
+            && !self.tasking.prot_ctx.iter().any(|(p, _)| *p == k)
     }
 
     /// A task value: a task object, or an access to one.
@@ -183,6 +197,13 @@ impl Checker {
         args: &[ast::Arg],
         span: Span,
     ) -> Option<Option<StmtKind>> {
+        // `T.E (I) (args)`: a member of an entry family.
+        let (prefix, index) = match &prefix.kind {
+            ast::ExprKind::Apply(p, ia) if matches!(p.kind, ast::ExprKind::Select(..)) => {
+                (&**p, Some(ia.as_slice()))
+            }
+            _ => (prefix, None),
+        };
         let ast::ExprKind::Select(q, id) = &prefix.kind else {
             return None;
         };
@@ -213,13 +234,14 @@ impl Checker {
         if !is_conc(self, obj.ty) {
             return None;
         }
-        Some(self.entry_or_procedure(obj, id, args, span))
+        Some(self.entry_or_procedure(obj, id, index, args, span))
     }
 
     fn entry_or_procedure(
         &mut self,
         obj: Ex,
         id: &ast::Ident,
+        index: Option<&[ast::Arg]>,
         args: &[ast::Arg],
         span: Span,
     ) -> Option<StmtKind> {
@@ -241,8 +263,12 @@ impl Checker {
                     return None;
                 };
                 let profile = def.entries[i].profile;
+                let family = def.entries[i].family;
                 let name = format!("{}.{}", def.name, id.name);
+                let takes = !self.tables.funcs[profile as usize].params.is_empty();
+                let (index, args) = self.member_call(takes, family, &name, index, args, span)?;
                 let (_, a) = self.call(&[profile], args, None, true, span, &name)?;
+                self.index_ref(id.span, &id.key, &Entity::Func(profile));
                 Some(StmtKind::EntryCall(Box::new(EntryCall {
                     target: CallTarget::Task {
                         task: obj,
@@ -250,6 +276,7 @@ impl Checker {
                         entry: i as u32,
                     },
                     args: a,
+                    index,
                 })))
             }
             TypeKind::Protected(k) => {
@@ -259,8 +286,25 @@ impl Checker {
                     .position(|e| e.name.eq_ignore_ascii_case(&id.name))
                 {
                     let profile = self.tables.prots[k as usize].entries[i].profile;
+                    let family = self.tables.prots[k as usize].entries[i].family;
                     let name = format!("{}.{}", self.tables.prots[k as usize].name, id.name);
+                    if self.private_outside(k, profile) {
+                        let pname = self.tables.prots[k as usize].name.clone();
+                        self.err(diagnostics::private_protected_operation(
+                            id.span, &id.name, &pname,
+                        ));
+                        return None;
+                    }
+                    let takes = !self.tables.funcs[profile as usize].params.is_empty();
+                    let (index, args) =
+                        self.member_call(takes, family, &name, index, args, span)?;
                     let (_, mut a) = self.call(&[profile], args, None, true, span, &name)?;
+                    self.index_ref(id.span, &id.key, &Entity::Func(profile));
+                    a.extend(index.clone().map(|value| Arg {
+                        mode: ast::Mode::In,
+                        value,
+                        back_check: None,
+                    }));
                     a.push(self.obj_arg(k, obj));
                     return Some(StmtKind::EntryCall(Box::new(EntryCall {
                         target: CallTarget::Prot {
@@ -268,7 +312,13 @@ impl Checker {
                             entry: i as u32,
                         },
                         args: a,
+                        index,
                     })));
+                }
+                if let Some(ia) = index {
+                    let text = format!("{} ({})", id.name, self.args_text(ia));
+                    self.err(diagnostics::not_a_procedure_or_entry(span, &text));
+                    return None;
                 }
                 let (real, a) = self.prot_subprogram(k, obj, id, args, true, span)?;
                 Some(StmtKind::ProtCall(real, a.into()))
@@ -277,10 +327,91 @@ impl Checker {
         }
     }
 
+    /// The index and the parameters of a call of entry `name` (`family`:
+    /// its range, if a family): `E (I) (args)`; `E (I)` for a family
+    /// without parameters (its one list is the index, as GNAT reads it).
+    fn member_call<'a>(
+        &mut self,
+        takes_params: bool,
+        family: Option<Family>,
+        name: &str,
+        index: Option<&'a [ast::Arg]>,
+        args: &'a [ast::Arg],
+        span: Span,
+    ) -> Option<(Option<Ex>, &'a [ast::Arg])> {
+        match (family, index) {
+            (None, None) => Some((None, args)),
+            (None, Some(_)) => {
+                self.err(diagnostics::not_a_family(
+                    span,
+                    name,
+                    &format!("`{name} (...)` with its parameters only"),
+                ));
+                None
+            }
+            (Some(f), Some(ia)) => Some((Some(self.family_index(f, name, ia, span)?), args)),
+            // One list for a family without parameters: its index.
+            (Some(f), None) if !args.is_empty() && !takes_params => {
+                Some((Some(self.family_index(f, name, args, span)?), &[]))
+            }
+            (Some(f), None) => {
+                let example = format!("`{name} ({}) (...)`", self.family_first_text(f));
+                self.err(diagnostics::family_needs_index(
+                    span, name, "a call", &example,
+                ));
+                None
+            }
+        }
+    }
+
+    /// The index of a member of family `f` of entry `name`: one value of
+    /// its subtype, checked against its range.
+    fn family_index(&mut self, f: Family, name: &str, args: &[ast::Arg], span: Span) -> Option<Ex> {
+        let [
+            ast::Arg {
+                name: None, value, ..
+            },
+        ] = args
+        else {
+            let example = format!("`{name} ({}) (...)`", self.family_first_text(f));
+            self.err(diagnostics::family_needs_index(
+                args.first().map_or(span, |a| a.span),
+                name,
+                "the first parenthesis",
+                &example,
+            ));
+            for a in args {
+                self.expr(&a.value, None);
+            }
+            return None;
+        };
+        let e = self.expr(value, Some(f.ty));
+        Some(self.coerce(e, f.ty))
+    }
+
+    /// The first member of a family as written (for hints).
+    fn family_first_text(&self, f: Family) -> String {
+        match self.tables.types.enum_lits(f.ty) {
+            Some(l) => l
+                .get(f.lo as usize)
+                .map(|x| self.spelled(&x.to_lowercase()))
+                .unwrap_or_default(),
+            None => f.lo.to_string(),
+        }
+    }
+
+    fn args_text(&self, args: &[ast::Arg]) -> String {
+        args.iter()
+            .map(|a| crate::syntax::parser::expr_text(&a.value))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
     /// `accept E (...) [do ... end E];` in the body of the task declaring E.
     pub(in crate::check) fn accept(
         &mut self,
         entry: &ast::Ident,
+        index: Option<&ast::Expr>,
         params: &[ast::Param],
         body: Option<&ast::Block>,
         sp: Span,
@@ -314,15 +445,51 @@ impl Checker {
             ));
             return None;
         };
-        if let Some(&(_, _, outer)) = self
+        if let Some((_, _, outer, _)) = self
             .tasking
             .accepting
             .iter()
-            .find(|(t, e, _)| *t == k && *e == i as u32)
+            .find(|(t, e, ..)| *t == k && *e == i as u32)
         {
-            self.err(diagnostics::nested_accept(sp, &entry.name, outer));
+            self.err(diagnostics::nested_accept(sp, &entry.name, *outer));
             return None;
         }
+        let index = match (def.entries[i].family, index) {
+            (None, None) => None,
+            // Checked against the family's range when the accept (an
+            // open alternative of a select) runs, RM 9.7.1(15).
+            (Some(f), Some(x)) => {
+                let e = self.expr(x, Some(f.ty));
+                Some(self.coerce_base(e, f.ty))
+            }
+            (Some(f), None) => {
+                let example = format!(
+                    "`accept {} ({}) ...`",
+                    entry.name,
+                    self.family_first_text(f)
+                );
+                self.err(diagnostics::family_needs_index(
+                    entry.span,
+                    &entry.name,
+                    "an accept statement",
+                    &example,
+                ));
+                return None;
+            }
+            (None, Some(x)) => {
+                self.err(diagnostics::not_a_family(
+                    x.span,
+                    &entry.name,
+                    &format!("`accept {} ...` without an index", entry.name),
+                ));
+                return None;
+            }
+        };
+        self.index_ref(
+            entry.span,
+            &entry.name.to_lowercase(),
+            &Entity::Func(def.entries[i].profile),
+        );
         let profile = self.tables.funcs[def.entries[i].profile as usize].clone();
         let ps = self.params(params);
         if !self.same_profile(&profile, &ps, None) {
@@ -363,15 +530,288 @@ impl Checker {
             self.declare(&id.name, e);
             slots.push((var, p.mode));
         }
-        self.tasking.accepting.push((k, i as u32, sp));
+        self.tasking
+            .accepting
+            .push((k, i as u32, sp, slots.clone()));
         let body = body.map(|b| self.block(b));
         self.tasking.accepting.pop();
         self.scopes.pop();
         Some(Accept {
             entry: i as u32,
+            index,
             params: slots,
             body,
         })
+    }
+
+    /// `requeue E [with abort];`: directly in an accept statement or a
+    /// protected entry body (not in a subprogram inside one), to an entry
+    /// whose parameters are those of the call being served, or none.
+    pub(in crate::check) fn requeue(
+        &mut self,
+        target: &ast::Expr,
+        abort: bool,
+        sp: Span,
+    ) -> Option<Requeue> {
+        let here = self.ctx.last().and_then(|c| c.func);
+        let accept = self
+            .tasking
+            .accepting
+            .last()
+            .filter(|(k, ..)| here.is_some() && here == self.tables.tasks[*k as usize].body)
+            .cloned();
+        let body = self
+            .tasking
+            .entry_bodies
+            .last()
+            .filter(|(b, ..)| here == Some(*b))
+            .copied();
+        // The entry whose call is served, and where.
+        let (served, own_task, own_prot) = match (&accept, body) {
+            (Some((k, i, ..)), _) => (
+                self.tables.tasks[*k as usize].entries[*i as usize].profile,
+                Some(*k),
+                None,
+            ),
+            (None, Some((_, k, i))) => (
+                self.tables.prots[k as usize].entries[i as usize].profile,
+                None,
+                Some(k),
+            ),
+            (None, None) => {
+                let what = self.here_text();
+                self.err(diagnostics::misplaced_requeue(sp, &what));
+                return None;
+            }
+        };
+        // `E (I)`: a member of a family.
+        let (name, index) = match &target.kind {
+            ast::ExprKind::Apply(p, ia) => (&**p, Some(ia.as_slice())),
+            _ => (target, None),
+        };
+        let not_entry = |this: &mut Self| {
+            let text = crate::syntax::parser::expr_text(name);
+            this.err(diagnostics::requeue_not_an_entry(name.span, &text));
+        };
+        let (to, profile, family, id) = match &name.kind {
+            ast::ExprKind::Name(id) => {
+                let own = |entries: Vec<(String, FuncId, Option<Family>)>| {
+                    entries
+                        .into_iter()
+                        .enumerate()
+                        .find(|(_, (n, ..))| n.eq_ignore_ascii_case(&id.name))
+                };
+                if let Some(k) = own_task
+                    && let Some((i, (_, f, fam))) = own(self.tables.tasks[k as usize]
+                        .entries
+                        .iter()
+                        .map(|e| (e.name.clone(), e.profile, e.family))
+                        .collect())
+                {
+                    let to = RequeueTarget::Task {
+                        task: None,
+                        ttype: k,
+                        entry: i as u32,
+                    };
+                    (to, f, fam, id)
+                } else if let Some(k) = own_prot
+                    && let Some((i, (_, f, fam))) = own(self.tables.prots[k as usize]
+                        .entries
+                        .iter()
+                        .map(|e| (e.name.clone(), e.profile, e.family))
+                        .collect())
+                    && let Some(&(_, Some(obj))) = self.tasking.prot_ctx.last()
+                {
+                    let obj = Ex {
+                        kind: ExKind::Var(obj),
+                        ty: self.prot_access(k),
+                        span: name.span,
+                    };
+                    let to = RequeueTarget::Prot {
+                        obj,
+                        prot: k,
+                        entry: i as u32,
+                        internal: true,
+                    };
+                    (to, f, fam, id)
+                } else {
+                    // Looked up for its own message (not declared, ...).
+                    if !self.lookup(&id.key).is_empty() {
+                        not_entry(self);
+                    } else {
+                        self.expr(name, None);
+                    }
+                    return None;
+                }
+            }
+            ast::ExprKind::Select(q, id) => {
+                let obj = self.expr(q, None);
+                let obj = self.through_access(obj);
+                match self.tables.types.kind(obj.ty).clone() {
+                    TypeKind::Task(k) => {
+                        let Some(i) = self.tables.tasks[k as usize]
+                            .entries
+                            .iter()
+                            .position(|e| e.name.eq_ignore_ascii_case(&id.name))
+                        else {
+                            let tname = self.tables.tasks[k as usize].name.clone();
+                            self.err(diagnostics::not_an_entry_of_task(id.span, &id.name, &tname));
+                            return None;
+                        };
+                        let e = &self.tables.tasks[k as usize].entries[i];
+                        let (f, fam) = (e.profile, e.family);
+                        let to = RequeueTarget::Task {
+                            task: Some(obj),
+                            ttype: k,
+                            entry: i as u32,
+                        };
+                        (to, f, fam, id)
+                    }
+                    TypeKind::Protected(k) => {
+                        let Some(i) = self.tables.prots[k as usize]
+                            .entries
+                            .iter()
+                            .position(|e| e.name.eq_ignore_ascii_case(&id.name))
+                        else {
+                            not_entry(self);
+                            return None;
+                        };
+                        let e = &self.tables.prots[k as usize].entries[i];
+                        let (f, fam) = (e.profile, e.family);
+                        if self.private_outside(k, f) {
+                            let pname = self.tables.prots[k as usize].name.clone();
+                            self.err(diagnostics::private_protected_operation(
+                                id.span, &id.name, &pname,
+                            ));
+                            return None;
+                        }
+                        let obj = Ex {
+                            ty: self.prot_access(k),
+                            ..obj
+                        };
+                        let to = RequeueTarget::Prot {
+                            obj,
+                            prot: k,
+                            entry: i as u32,
+                            internal: false,
+                        };
+                        (to, f, fam, id)
+                    }
+                    TypeKind::Error => return None,
+                    _ => {
+                        not_entry(self);
+                        return None;
+                    }
+                }
+            }
+            _ => {
+                not_entry(self);
+                return None;
+            }
+        };
+        self.index_ref(id.span, &id.key, &Entity::Func(profile));
+        let ename = crate::syntax::parser::expr_text(name);
+        let index = match (family, index) {
+            (None, None) => None,
+            (Some(f), Some(ia)) => Some(self.family_index(f, &ename, ia, sp)?),
+            (Some(f), None) => {
+                let example = format!("`requeue {ename} ({});`", self.family_first_text(f));
+                self.err(diagnostics::family_needs_index(
+                    name.span,
+                    &ename,
+                    "a requeue statement",
+                    &example,
+                ));
+                return None;
+            }
+            (None, Some(_)) => {
+                self.err(diagnostics::not_a_family(
+                    target.span,
+                    &ename,
+                    &format!("`requeue {ename};`"),
+                ));
+                return None;
+            }
+        };
+        let want = self.tables.funcs[served as usize].clone();
+        let got = self.tables.funcs[profile as usize].clone();
+        let params = !got.params.is_empty();
+        let conform = want.params.len() == got.params.len()
+            && want
+                .params
+                .iter()
+                .zip(&got.params)
+                .all(|(a, b)| a.mode == b.mode && self.statically_match(a.ty, b.ty));
+        if params && !conform {
+            let text = |this: &Self, f: &Subprogram| {
+                f.params
+                    .iter()
+                    .map(|p| {
+                        format!(
+                            "{} : {}{}",
+                            p.name,
+                            mode_text(p.mode),
+                            this.tables.types.name(p.ty)
+                        )
+                    })
+                    .collect::<Vec<_>>()
+                    .join("; ")
+            };
+            let served_name = want
+                .name
+                .rsplit('.')
+                .next()
+                .unwrap_or(&want.name)
+                .to_string();
+            let (tp, sp_) = (text(self, &got), text(self, &want));
+            let tp = if tp.is_empty() { "none".into() } else { tp };
+            let sp_ = if sp_.is_empty() { "none".into() } else { sp_ };
+            self.err(diagnostics::requeue_profile_differs(
+                name.span,
+                &ename,
+                &served_name,
+                &tp,
+                &sp_,
+            ));
+            return None;
+        }
+        Some(Requeue {
+            target: to,
+            index,
+            abort,
+            params,
+            accept: accept.map(|(.., slots)| slots),
+        })
+    }
+
+    /// Whether two subtypes statically match (the same subtype, or the
+    /// same type with the same static constraint).
+    fn statically_match(&self, a: TypeId, b: TypeId) -> bool {
+        let t = &self.tables.types;
+        a == b
+            || (t.base(a) == t.base(b)
+                && t.get(a).static_range == t.get(b).static_range
+                && t.get(a).static_frange == t.get(b).static_frange
+                && t.get(a).range.is_some() == t.get(a).static_range.is_some()
+                && t.get(b).range.is_some() == t.get(b).static_range.is_some()
+                && !t.is_array(a))
+    }
+
+    /// Where the statement being checked stands, for messages.
+    fn here_text(&self) -> String {
+        match self.ctx.last().and_then(|c| c.func) {
+            Some(f) => {
+                let sub = &self.tables.funcs[f as usize];
+                if self.tables.tasks.iter().any(|t| t.body == Some(f)) {
+                    format!("the body of task {}", sub.name)
+                } else if sub.ret.is_some() {
+                    format!("function {}", sub.name)
+                } else {
+                    format!("procedure {}", sub.name)
+                }
+            }
+            None => "the main program".into(),
+        }
     }
 
     pub(in crate::check) fn delay_amount(&mut self, until: bool, d: &ast::Expr) -> Ex {
@@ -440,13 +880,16 @@ impl Checker {
                     let guard = self.guard(&a.guard);
                     let ast::StmtKind::Accept {
                         entry,
+                        index,
                         params,
                         body,
                     } = &acc.kind
                     else {
                         continue;
                     };
-                    let Some(x) = self.accept(entry, params, body.as_deref(), acc.span) else {
+                    let Some(x) =
+                        self.accept(entry, index.as_deref(), params, body.as_deref(), acc.span)
+                    else {
                         continue;
                     };
                     let then = self.scoped(then);
@@ -503,8 +946,14 @@ impl Checker {
         sp: Span,
     ) -> Option<Ex> {
         if key == "count" {
-            let ast::ExprKind::Name(id) = &p.kind else {
-                return None;
+            // `E'Count`, `E (I)'Count` of a member of a family.
+            let (id, index) = match &p.kind {
+                ast::ExprKind::Name(id) => (id, None),
+                ast::ExprKind::Apply(q, ia) => match &q.kind {
+                    ast::ExprKind::Name(id) => (id, Some(ia.as_slice())),
+                    _ => return None,
+                },
+                _ => return None,
             };
             if let Some(&(k, obj)) = self.tasking.prot_ctx.last()
                 && let Some(i) = self.tables.prots[k as usize]
@@ -519,8 +968,14 @@ impl Checker {
                     ty: access,
                     span: sp,
                 };
+                let family = self.tables.prots[k as usize].entries[i].family;
+                let mut args = vec![o];
+                match self.count_index(family, &id.name, index, sp) {
+                    Ok(x) => args.extend(x),
+                    Err(()) => return Some(self.err_ex(sp)),
+                }
                 return Some(self.mk(
-                    ExKind::Attr(AttrOp::ProtCount(i as u32), Box::new(vec![o])),
+                    ExKind::Attr(AttrOp::ProtCount(i as u32), Box::new(args)),
                     INTEGER,
                     sp,
                 ));
@@ -531,11 +986,21 @@ impl Checker {
                     .iter()
                     .position(|e| e.name.eq_ignore_ascii_case(&id.name))
             {
+                let family = self.tables.tasks[k as usize].entries[i].family;
+                let Ok(args) = self.count_index(family, &id.name, index, sp) else {
+                    return Some(self.err_ex(sp));
+                };
                 return Some(self.mk(
-                    ExKind::Attr(AttrOp::Count(i as u32), Box::default()),
+                    ExKind::Attr(
+                        AttrOp::Count(i as u32),
+                        Box::new(args.into_iter().collect()),
+                    ),
                     INTEGER,
                     sp,
                 ));
+            }
+            if index.is_some() {
+                return None;
             }
             self.err(diagnostics::count_needs_entry(id.span, &id.name));
             return Some(self.err_ex(sp));
@@ -547,6 +1012,36 @@ impl Checker {
             AttrOp::Terminated
         };
         Some(self.mk(ExKind::Attr(op, Box::new(vec![t])), BOOLEAN, sp))
+    }
+
+    /// The index of `E (I)'Count` when E is a family (Err: reported, when
+    /// it is missing or E is not a family).
+    fn count_index(
+        &mut self,
+        family: Option<Family>,
+        name: &str,
+        index: Option<&[ast::Arg]>,
+        sp: Span,
+    ) -> Result<Option<Ex>, ()> {
+        match (family, index) {
+            (None, None) => Ok(None),
+            (Some(f), Some(ia)) => self.family_index(f, name, ia, sp).map(Some).ok_or(()),
+            (Some(f), None) => {
+                let example = format!("`{name} ({})'Count`", self.family_first_text(f));
+                self.err(diagnostics::family_needs_index(
+                    sp, name, "'Count", &example,
+                ));
+                Err(())
+            }
+            (None, Some(_)) => {
+                self.err(diagnostics::not_a_family(
+                    sp,
+                    name,
+                    &format!("`{name}'Count`"),
+                ));
+                Err(())
+            }
+        }
     }
 
     /// ` (declared at L:C)` for a subprogram or entry profile.

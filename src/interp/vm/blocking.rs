@@ -140,119 +140,204 @@ impl<'a> Run<'a> {
         })
     }
 
-    pub(super) fn op_entry_call(&mut self, ec: &EntryOp) -> R<()> {
-        self.tasking_on();
-        let me = self.m.sched.cur;
-        let s = self.int_at(ec.target) as usize;
+    /// The value of a family member's index operand.
+    fn index_value(&self, index: Option<Var>) -> Option<Value> {
+        index.map(|i| self.m.stack[self.sl(i)].clone())
+    }
+
+    /// Constraint_Error: an index outside its entry family.
+    fn family_check_failed(&self, span: Span) -> Flow {
+        self.check_failed("index check failed (entry family)", span)
+    }
+
+    /// The queue of entry `entry` of task `s` (of a family: of the member
+    /// `index`).
+    fn task_queue_of(
+        &self,
+        s: tasking::Tid,
+        entry: u32,
+        index: Option<&Value>,
+        span: Span,
+    ) -> R<u32> {
+        let k = self.m.sched.threads[s].ttype.unwrap_or(0);
+        tasking::task_queue(&self.c.tasks[k as usize], entry, index)
+            .ok_or_else(|| self.family_check_failed(span))
+    }
+
+    /// Task `s` as the target of an entry call: Program_Error when it is
+    /// not a task yet, Tasking_Error when it has ended.
+    fn callable_task(&self, s: usize, span: Span) -> R<()> {
         let known = self
             .m
             .sched
             .threads
             .get(s)
-            .is_some_and(|t| t.ttype.is_some() && (ec.entry as usize) < t.entries.len());
+            .is_some_and(|t| t.ttype.is_some());
         if !known {
             return Err(self.raise(
                 check::PROGRAM_ERROR,
                 format!(
                     "{} the called task is not elaborated yet",
-                    self.m.location(ec.span)
+                    self.m.location(span)
                 ),
-                ec.span,
+                span,
             ));
         }
-        let alive = self
-            .m
-            .sched
-            .threads
-            .get(s)
-            .is_some_and(|t| t.callable && t.wait != tasking::Wait::Terminated);
-        if !alive {
-            let name = self
-                .m
-                .sched
-                .threads
-                .get(s)
-                .map(|t| t.name.clone())
-                .unwrap_or_default();
+        let t = &self.m.sched.threads[s];
+        if !t.callable || t.wait == tasking::Wait::Terminated {
+            let name = t.name.clone();
             return Err(self.raise(
                 check::TASKING_ERROR,
-                format!(
-                    "{} the called task {name} has ended",
-                    self.m.location(ec.span)
-                ),
-                ec.span,
+                format!("{} the called task {name} has ended", self.m.location(span)),
+                span,
             ));
         }
-        let slots: Vec<usize> = ec.ops.iter().map(|v| self.sl(*v)).collect();
-        self.m.sched.threads[me].call = slots;
-        self.m.sched.threads[me].outcome = tasking::Outcome::Pending;
-        let open = self.m.sched.accepting(s, ec.entry);
-        let deadline = self.deadline(ec.timed);
-        let now = self.m.clock.now();
-        if !open && (ec.conditional || deadline.is_some_and(|d| d <= now)) {
-            self.m.sched.threads[me].outcome = tasking::Outcome::Timeout;
-            return Ok(());
-        }
-        self.m.sched.threads[s].entries[ec.entry as usize].push_back(me);
-        if open {
-            self.m.sched.make_ready(s);
-        }
-        self.m.sched.block(
-            tasking::Wait::Call {
-                server: s,
-                entry: ec.entry,
-                deadline,
-            },
-            false,
-            ec.span,
-        );
         Ok(())
     }
 
-    /// After an entry call: false when it timed out (or was not taken).
-    pub(super) fn entry_done(&mut self, args: &[Arg], ops: &[Var], span: Span) -> R<bool> {
+    pub(super) fn op_entry_call(&mut self, ec: &EntryOp) -> R<()> {
+        self.tasking_on();
+        let me = self.m.sched.cur;
+        let s = self.int_at(ec.target) as usize;
+        self.callable_task(s, ec.span)?;
+        let index = self.index_value(ec.index);
+        let q = self.task_queue_of(s, ec.entry, index.as_ref(), ec.span)?;
+        let slots: Vec<usize> = ec.ops.iter().map(|v| self.sl(*v)).collect();
+        let deadline = if ec.conditional {
+            Some(f64::NEG_INFINITY)
+        } else {
+            self.deadline(ec.timed)
+        };
+        let th = &mut self.m.sched.threads[me];
+        th.call = slots;
+        th.outcome = tasking::Outcome::Pending;
+        th.requeue = None;
+        th.call_deadline = deadline;
+        self.enqueue_call(me, s, q, deadline, ec.span);
+        Ok(())
+    }
+
+    /// Thread `c` calls queue `q` of task `s` (`deadline`: of a timed
+    /// call, -inf: of a conditional one): it waits there, unless the call
+    /// is not taken at once and the deadline has passed (its outcome is
+    /// then Timeout). The running thread blocks; another is put in the
+    /// queue without waking (a requeue).
+    fn enqueue_call(
+        &mut self,
+        c: tasking::Tid,
+        s: tasking::Tid,
+        q: u32,
+        deadline: Option<f64>,
+        span: Span,
+    ) {
+        let open = self.m.sched.accepting(s, q);
+        let now = self.m.clock.now();
+        if !open && deadline.is_some_and(|d| d <= now) {
+            self.m.sched.threads[c].outcome = tasking::Outcome::Timeout;
+            return;
+        }
+        self.m.sched.threads[s].entries[q as usize].push_back(c);
+        if open {
+            self.m.sched.make_ready(s);
+        }
+        let wait = tasking::Wait::Call {
+            server: s,
+            entry: q,
+            deadline: deadline.filter(|d| d.is_finite()),
+        };
+        if c == self.m.sched.cur {
+            self.m.sched.block(wait, false, span);
+        } else {
+            self.m.sched.threads[c].wait = wait;
+        }
+    }
+
+    /// After an entry call: the copy-out; false when it timed out (or was
+    /// not taken); the call's `Requeued` is next when it was requeued.
+    pub(super) fn entry_done(&mut self, d: &DoneOp) -> R<Option<u32>> {
+        if !self.m.sched.active() {
+            self.copy_out(&d.args, &d.ops)?;
+            return Ok(None);
+        }
         let me = self.m.sched.cur;
         match std::mem::take(&mut self.m.sched.threads[me].outcome) {
-            tasking::Outcome::Timeout => Ok(false),
-            tasking::Outcome::Error(mut o) => {
-                if o.span.start == 0 && o.span.end == 0 {
-                    o.span = span;
-                    o.message = format!("{} {}", self.m.location(span), o.message);
-                }
-                Err(Flow::Raise(o))
+            tasking::Outcome::Timeout => Ok(Some(d.other.expect("a timed or conditional call"))),
+            tasking::Outcome::Error(o) => Err(self.caller_error(o, d.span)),
+            tasking::Outcome::Requeued => {
+                self.m.sched.threads[me].outcome = tasking::Outcome::Requeued;
+                Ok(Some(d.requeued))
             }
             tasking::Outcome::Done | tasking::Outcome::Pending => {
-                for (a, v) in args.iter().zip(ops.iter()) {
-                    if a.mode != Mode::In {
-                        let i = self.sl(*v);
-                        let x = std::mem::take(&mut self.m.stack[i]);
-                        if let Some(t) = a.back_check {
-                            self.range_check(&x, t, a.value.span)?;
-                        }
-                        self.assign(&a.value, x)?;
-                    }
-                }
-                Ok(true)
+                self.copy_out(&d.args, &d.ops)?;
+                Ok(None)
             }
         }
     }
 
-    pub(super) fn barrier_open(
-        &mut self,
-        k: u32,
-        entry: u32,
-        bargs: &[Arg],
-        span: Span,
-    ) -> R<bool> {
-        let Some(b) = self.c.prots[k as usize].entries[entry as usize].barrier else {
+    /// The exception a server or the scheduler gave the caller, placed at
+    /// the call when it has no place.
+    fn caller_error(&self, mut o: Box<Occurrence>, span: Span) -> Flow {
+        if o.span.start == 0 && o.span.end == 0 {
+            o.span = span;
+            o.message = format!("{} {}", self.m.location(span), o.message);
+        }
+        Flow::Raise(o)
+    }
+
+    /// An entry call's `out` values from its operands to its actuals.
+    fn copy_out(&mut self, args: &[Arg], ops: &[Var]) -> R<()> {
+        for (a, v) in args.iter().zip(ops.iter()) {
+            if a.mode != Mode::In {
+                let i = self.sl(*v);
+                let x = std::mem::take(&mut self.m.stack[i]);
+                if let Some(t) = a.back_check {
+                    self.range_check(&x, t, a.value.span)?;
+                }
+                self.assign(&a.value, x)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// Whether the barrier of queue `q` of a protected object of type `k`
+    /// is open; `obj`: the object as an argument.
+    pub(super) fn barrier_open(&mut self, k: u32, q: u32, obj: &Arg, span: Span) -> R<bool> {
+        let def = &self.c.prots[k as usize];
+        let Some((e, index)) = def.member(q) else {
             return Ok(false);
         };
-        Ok(self.call(b, bargs, span)?.is_some_and(|v| v.int() != 0))
+        let entry = &def.entries[e];
+        let Some(b) = entry.barrier else {
+            return Ok(false);
+        };
+        match (index, entry.family) {
+            (Some(i), Some(f)) => {
+                let x = Arg {
+                    mode: Mode::In,
+                    value: Ex {
+                        kind: ExKind::Int(i),
+                        ty: f.ty,
+                        span: obj.value.span,
+                    },
+                    back_check: None,
+                };
+                let args = [x, obj.clone()];
+                Ok(self.call(b, &args, span)?.is_some_and(|v| v.int() != 0))
+            }
+            _ => Ok(self
+                .call(b, std::slice::from_ref(obj), span)?
+                .is_some_and(|v| v.int() != 0)),
+        }
     }
 
     pub(super) fn op_prot_entry(&mut self, ec: &EntryOp) -> R<ProtStep> {
+        if ec.timed.is_some() || ec.conditional {
+            // A `requeue ... with abort` of its body keeps its timeout.
+            self.tasking_on();
+        }
         let active = self.m.sched.active();
         let me = self.m.sched.cur;
+        let obj_arg = ec.barrier_args.last().expect("the object");
         if active {
             self.rerun();
             if std::mem::take(&mut self.m.sched.threads[me].timed_out) {
@@ -261,7 +346,7 @@ impl<'a> Run<'a> {
                 // a barrier that reads the entry's 'Count may open now.
                 let obj = self.m.stack[self.sl(ec.target)].clone();
                 let pid = Self::prot_id(&obj);
-                if let Some(w) = self.first_open_call(pid, &ec.barrier_args, ec.span)? {
+                if let Some(w) = self.first_open_call(pid, obj_arg, ec.span)? {
                     self.m.sched.threads[w].granted = true;
                     self.m.sched.make_ready(w);
                 }
@@ -271,16 +356,28 @@ impl<'a> Run<'a> {
                 self.m.sched.threads[me].proxied = true;
                 return Ok(ProtStep::Body);
             }
+            let deadline = if ec.conditional {
+                Some(f64::NEG_INFINITY)
+            } else {
+                self.deadline(ec.timed)
+            };
+            let th = &mut self.m.sched.threads[me];
+            th.outcome = tasking::Outcome::Pending;
+            th.requeue = None;
+            th.call_deadline = deadline;
         }
         let obj = self.m.stack[self.sl(ec.target)].clone();
         let pid = Self::prot_id(&obj);
+        let index = self.index_value(ec.index);
+        let q = tasking::prot_queue(&self.c.prots[ec.kind as usize], ec.entry, index.as_ref())
+            .ok_or_else(|| self.family_check_failed(ec.span))?;
         let queued = self
             .m
             .sched
             .prots
             .get(pid)
-            .is_some_and(|p| !p.queues[ec.entry as usize].is_empty());
-        if !queued && self.barrier_open(ec.kind, ec.entry, &ec.barrier_args, ec.span)? {
+            .is_some_and(|p| !p.queues[q as usize].is_empty());
+        if !queued && self.barrier_open(ec.kind, q, obj_arg, ec.span)? {
             return Ok(ProtStep::Body);
         }
         let deadline = self.deadline(ec.timed);
@@ -289,19 +386,20 @@ impl<'a> Run<'a> {
         }
         self.tasking_on();
         let me = self.m.sched.cur;
-        self.m.sched.prots[pid].queues[ec.entry as usize].push_back(me);
+        self.m.sched.threads[me].call_deadline = deadline;
+        self.m.sched.prots[pid].queues[q as usize].push_back(me);
         // Queuing the call ends a protected action, so the queues are
         // served (RM 9.5.3(7-8)): a barrier that reads an entry's 'Count
         // may have opened now that the queue is longer (the cyclic
         // barrier `when Wait'Count = N or Releasing`).
-        let granted = self.first_open_call(pid, &ec.barrier_args, ec.span)?;
+        let granted = self.first_open_call(pid, obj_arg, ec.span)?;
         if granted == Some(me) {
             return Ok(ProtStep::Body);
         }
         self.m.sched.block(
             tasking::Wait::Prot {
                 obj: pid,
-                entry: ec.entry,
+                entry: q,
                 deadline,
             },
             true,
@@ -315,22 +413,23 @@ impl<'a> Run<'a> {
     }
 
     /// Takes the first queued call of protected object `pid` whose
-    /// barrier is open (entries in declaration order, each queue first
-    /// in, first out) off its queue.
+    /// barrier is open (entries in declaration order, a family's members
+    /// from its low bound, each queue first in, first out) off its queue;
+    /// `obj`: the object as an argument.
     pub(super) fn first_open_call(
         &mut self,
         pid: usize,
-        bargs: &[Arg],
+        obj: &Arg,
         span: Span,
     ) -> R<Option<usize>> {
         let k = self.m.sched.prots[pid].ptype;
         let n = self.m.sched.prots[pid].queues.len();
-        for e in 0..n {
-            if self.m.sched.prots[pid].queues[e].is_empty() {
+        for q in 0..n {
+            if self.m.sched.prots[pid].queues[q].is_empty() {
                 continue;
             }
-            if self.barrier_open(k, e as u32, bargs, span)? {
-                return Ok(self.m.sched.prots[pid].queues[e].pop_front());
+            if self.barrier_open(k, q as u32, obj, span)? {
+                return Ok(self.m.sched.prots[pid].queues[q].pop_front());
             }
         }
         Ok(None)
@@ -343,11 +442,15 @@ impl<'a> Run<'a> {
         if !self.m.sched.active() {
             return Ok(());
         }
-        let me = self.m.sched.cur;
-        let proxied = std::mem::take(&mut self.m.sched.threads[me].proxied);
         let v = self.m.stack[self.sl(obj)].clone();
         let pid = Self::prot_id(&v);
-        match self.first_open_call(pid, bargs, span)? {
+        self.serve_object(pid, bargs.last().expect("the object"), span)
+    }
+
+    fn serve_object(&mut self, pid: usize, obj: &Arg, span: Span) -> R<()> {
+        let me = self.m.sched.cur;
+        let proxied = std::mem::take(&mut self.m.sched.threads[me].proxied);
+        match self.first_open_call(pid, obj, span)? {
             Some(w) => {
                 self.m.sched.threads[w].granted = true;
                 if proxied {
@@ -364,6 +467,299 @@ impl<'a> Run<'a> {
         Ok(())
     }
 
+    /// `accept`: a caller now, or wait for one.
+    pub(super) fn op_accept(&mut self, a: &AcceptOp) -> R<()> {
+        let me = self.m.sched.cur;
+        self.m.sched.threads[me].rerun = false;
+        let index = self.index_value(a.index);
+        let q = self.task_queue_of(me, a.entry, index.as_ref(), a.span)?;
+        match self.m.sched.threads[me].entries[q as usize].pop_front() {
+            Some(c) => self.begin_rendezvous(c, &a.params),
+            None => self.m.sched.block(
+                tasking::Wait::Accept {
+                    entries: vec![q],
+                    deadline: None,
+                    terminate: false,
+                },
+                true,
+                a.span,
+            ),
+        }
+        Ok(())
+    }
+
+    /// `requeue`: the call being served (the rendezvous' caller, or the
+    /// running thread's own protected call) goes on to the target entry.
+    pub(super) fn op_requeue(&mut self, r: &RequeueOp) -> R<()> {
+        self.tasking_on();
+        let me = self.m.sched.cur;
+        let index = self.index_value(r.index);
+        let (to, queue) = if r.prot {
+            let obj = self.m.stack[self.sl(r.target.expect("the object"))].clone();
+            let pid = Self::prot_id(&obj);
+            let q = tasking::prot_queue(&self.c.prots[r.kind as usize], r.entry, index.as_ref())
+                .ok_or_else(|| self.family_check_failed(r.span))?;
+            (tasking::RequeueTo::Prot(obj, pid, r.kind), q)
+        } else {
+            let s = match r.target {
+                Some(t) => self.int_at(t) as usize,
+                None => me,
+            };
+            let q = match self.m.sched.threads.get(s).and_then(|t| t.ttype) {
+                Some(k) => tasking::task_queue(&self.c.tasks[k as usize], r.entry, index.as_ref())
+                    .ok_or_else(|| self.family_check_failed(r.span))?,
+                None => r.entry,
+            };
+            (tasking::RequeueTo::Task(s), q)
+        };
+        let mut rq = tasking::Requeued {
+            to,
+            entry: r.entry,
+            queue,
+            index: index.map(|v| v.int()),
+            params: r.params,
+            abort: r.abort,
+            queued: false,
+        };
+        let Some(params) = &r.accept else {
+            // In a protected entry body: the caller is this thread, which
+            // makes the call again when the body has returned. To an entry
+            // of the same object, the call joins its queue now, within the
+            // protected action (RM 9.5.4(13)).
+            if let tasking::RequeueTo::Prot(_, pid, _) = &rq.to
+                && r.internal
+            {
+                self.m.sched.prots[*pid].queues[queue as usize].push_back(me);
+                rq.queued = true;
+            }
+            let th = &mut self.m.sched.threads[me];
+            th.requeue = Some(Box::new(rq));
+            th.outcome = tasking::Outcome::Requeued;
+            return Ok(());
+        };
+        // In an accept statement: the rendezvous ends without releasing
+        // its caller, whose parameters keep the values they have now.
+        let Some(c) = self.m.sched.threads[me].rendezvous.pop() else {
+            return Ok(());
+        };
+        if c == tasking::INTERRUPT || self.m.sched.threads[c].wait == tasking::Wait::Terminated {
+            return Ok(());
+        }
+        for (i, (v, mode)) in params.iter().enumerate() {
+            if *mode != Mode::In {
+                let x = self.m.stack[self.sl(*v)].clone();
+                let slot = self.m.sched.threads[c].call[i];
+                self.m.stack[slot] = x;
+            }
+        }
+        match rq.to {
+            tasking::RequeueTo::Task(s) => {
+                // Queued on the task at once, as if the caller called.
+                if let Err(Flow::Raise(o)) = self.callable_task(s, r.span) {
+                    self.m.sched.threads[c].outcome = tasking::Outcome::Error(o);
+                    self.m.sched.make_ready(c);
+                    return Ok(());
+                }
+                let deadline = if r.abort {
+                    self.m.sched.threads[c].call_deadline
+                } else {
+                    None
+                };
+                self.enqueue_call(c, s, queue, deadline, r.span);
+                if matches!(self.m.sched.threads[c].outcome, tasking::Outcome::Timeout) {
+                    self.m.sched.make_ready(c);
+                }
+            }
+            tasking::RequeueTo::Prot(..) => {
+                // The caller makes the protected call (its thread runs the
+                // entry body), before this task goes on.
+                let th = &mut self.m.sched.threads[c];
+                th.requeue = Some(Box::new(rq));
+                th.outcome = tasking::Outcome::Requeued;
+                self.m.sched.make_first(me);
+                self.m.sched.make_first(c);
+                self.m.sched.switch = true;
+            }
+        }
+        Ok(())
+    }
+
+    /// A requeued call, made again by its caller: on a task's entry as a
+    /// call; on a protected entry, the caller runs the body (`Body`) when
+    /// the barrier is open, else waits in the queue. When the body returns
+    /// here, the object's queues are served; then the call's outcome: done
+    /// (copy-out), timed out, an exception, or requeued again.
+    pub(super) fn op_requeued(&mut self, r: &RequeuedOp) -> R<RequeueStep> {
+        let me = self.m.sched.cur;
+        self.rerun();
+        if let Some(pid) = self.m.sched.threads[me].requeue_body.take() {
+            let obj = self.object_arg(r, pid);
+            self.serve_object(pid, &obj, r.span)?;
+            if self.m.sched.switch {
+                self.m.sched.threads[me].reexec = true;
+                return Ok(RequeueStep::Wait);
+            }
+        }
+        let other = |this: &mut Self| {
+            this.m.sched.threads[me].requeue = None;
+            Ok(RequeueStep::Jump(
+                r.other.expect("a timed or conditional call"),
+            ))
+        };
+        match std::mem::take(&mut self.m.sched.threads[me].outcome) {
+            tasking::Outcome::Timeout => return other(self),
+            tasking::Outcome::Error(o) => {
+                self.m.sched.threads[me].requeue = None;
+                return Err(self.caller_error(o, r.span));
+            }
+            tasking::Outcome::Done => {
+                self.m.sched.threads[me].requeue = None;
+                self.copy_out(&r.args, &r.ops)?;
+                return Ok(RequeueStep::Jump(r.end));
+            }
+            tasking::Outcome::Requeued | tasking::Outcome::Pending => {}
+        }
+        let Some(rq) = self.m.sched.threads[me].requeue.clone() else {
+            // The requeued call's body has returned: the call is complete.
+            self.copy_out(&r.args, &r.ops)?;
+            return Ok(RequeueStep::Jump(r.end));
+        };
+        let deadline = if rq.abort {
+            self.m.sched.threads[me].call_deadline
+        } else {
+            None
+        };
+        match rq.to.clone() {
+            tasking::RequeueTo::Task(s) => {
+                self.m.sched.threads[me].requeue = None;
+                self.callable_task(s, r.span)?;
+                let slots: Vec<usize> = r.ops.iter().map(|v| self.sl(*v)).collect();
+                self.m.sched.threads[me].call = slots;
+                self.enqueue_call(me, s, rq.queue, deadline, r.span);
+                if matches!(
+                    std::mem::take(&mut self.m.sched.threads[me].outcome),
+                    tasking::Outcome::Timeout
+                ) {
+                    return other(self);
+                }
+                self.m.sched.threads[me].reexec = true;
+                Ok(RequeueStep::Wait)
+            }
+            tasking::RequeueTo::Prot(obj, pid, k) => {
+                self.put(r.obj, obj);
+                if let Some(i) = rq.index {
+                    self.put(r.index, Value::Int(i));
+                }
+                let obj_arg = self.object_arg(r, pid);
+                if rq.queued {
+                    if std::mem::take(&mut self.m.sched.threads[me].timed_out) {
+                        // Left its queue (RM 9.5.3(20)): a protected action.
+                        if let Some(w) = self.first_open_call(pid, &obj_arg, r.span)? {
+                            self.m.sched.threads[w].granted = true;
+                            self.m.sched.make_ready(w);
+                        }
+                        return other(self);
+                    }
+                    if self.m.sched.threads[me].granted {
+                        return Ok(self.requeued_body(r, &rq, pid, k));
+                    }
+                    // Queued within the protected action and not taken at
+                    // its end: a conditional call (or one past its
+                    // timeout) requeued with abort is cancelled.
+                    if deadline.is_some_and(|d| d <= self.m.clock.now()) {
+                        self.m.sched.prots[pid].queues[rq.queue as usize].retain(|c| *c != me);
+                        if let Some(w) = self.first_open_call(pid, &obj_arg, r.span)? {
+                            self.m.sched.threads[w].granted = true;
+                            self.m.sched.make_ready(w);
+                        }
+                        return other(self);
+                    }
+                } else {
+                    let empty = self.m.sched.prots[pid].queues[rq.queue as usize].is_empty();
+                    if empty && self.barrier_open(k, rq.queue, &obj_arg, r.span)? {
+                        self.m.sched.threads[me].granted = true;
+                        return Ok(self.requeued_body(r, &rq, pid, k));
+                    }
+                    if deadline.is_some_and(|d| d <= self.m.clock.now()) {
+                        return other(self);
+                    }
+                    self.m.sched.prots[pid].queues[rq.queue as usize].push_back(me);
+                    if let Some(x) = self.m.sched.threads[me].requeue.as_mut() {
+                        x.queued = true;
+                    }
+                    let granted = self.first_open_call(pid, &obj_arg, r.span)?;
+                    if granted == Some(me) {
+                        self.m.sched.threads[me].granted = true;
+                        return Ok(self.requeued_body(r, &rq, pid, k));
+                    }
+                    if let Some(w) = granted {
+                        self.m.sched.threads[w].granted = true;
+                        self.m.sched.make_first(w);
+                    }
+                }
+                self.m.sched.block(
+                    tasking::Wait::Prot {
+                        obj: pid,
+                        entry: rq.queue,
+                        deadline: deadline.filter(|d| d.is_finite()),
+                    },
+                    true,
+                    r.span,
+                );
+                Ok(RequeueStep::Wait)
+            }
+        }
+    }
+
+    /// The object as the argument of a requeued call's barriers.
+    fn object_arg(&self, r: &RequeuedOp, pid: usize) -> Arg {
+        let k = self.m.sched.prots[pid].ptype;
+        Arg {
+            mode: Mode::In,
+            value: Ex {
+                kind: ExKind::Var(r.obj),
+                ty: self.c.prots[k as usize].access,
+                span: r.span,
+            },
+            back_check: None,
+        }
+    }
+
+    /// The requeued call's entry body runs now (its barrier is open, the
+    /// call granted): from the twin instruction when the entry's
+    /// parameters differ from this one's (see `RequeuedOp`).
+    fn requeued_body(
+        &mut self,
+        r: &RequeuedOp,
+        rq: &tasking::Requeued,
+        pid: usize,
+        k: u32,
+    ) -> RequeueStep {
+        let me = self.m.sched.cur;
+        if rq.params != r.params {
+            if let Some(x) = self.m.sched.threads[me].requeue.as_mut() {
+                x.queued = true;
+            }
+            return RequeueStep::Jump(r.twin);
+        }
+        let th = &mut self.m.sched.threads[me];
+        th.granted = false;
+        th.requeue = None;
+        th.outcome = tasking::Outcome::Pending;
+        th.requeue_body = Some(pid);
+        let entry = &self.c.prots[k as usize].entries[rq.entry as usize];
+        let mut slots: Vec<Var> = if rq.params {
+            r.ops.to_vec()
+        } else {
+            Vec::new()
+        };
+        if entry.family.is_some() {
+            slots.push(r.index);
+        }
+        slots.push(r.obj);
+        RequeueStep::Body(entry.body.expect("an entry body"), slots)
+    }
+
     /// A selective accept: Some(target) when an alternative is taken now.
     pub(super) fn op_select(&mut self, sel: &SelectOp) -> R<Option<u32>> {
         let me = self.m.sched.cur;
@@ -374,23 +770,24 @@ impl<'a> Run<'a> {
             return Ok(Some(d.target));
         }
         let open = |this: &Self, g: Option<Var>| g.is_none_or(|g| this.int_at(g) != 0);
+        // The queues of the open alternatives (a family member's index is
+        // checked when its alternative is open, RM 9.7.1(15)).
+        let mut entries: Vec<u32> = Vec::with_capacity(sel.alts.len());
         for a in &sel.alts {
-            if open(self, a.guard)
-                && let Some(c) = self.m.sched.threads[me].entries[a.entry as usize].pop_front()
-            {
+            if !open(self, a.guard) {
+                continue;
+            }
+            let index = self.index_value(a.index);
+            let q = self.task_queue_of(me, a.entry, index.as_ref(), sel.span)?;
+            if let Some(c) = self.m.sched.threads[me].entries[q as usize].pop_front() {
                 self.begin_rendezvous(c, &a.params);
                 return Ok(Some(a.target));
             }
+            entries.push(q);
         }
         if let Some(t) = sel.els {
             return Ok(Some(t));
         }
-        let entries: Vec<u32> = sel
-            .alts
-            .iter()
-            .filter(|a| open(self, a.guard))
-            .map(|a| a.entry)
-            .collect();
         let delay = sel.delay.filter(|d| open(self, d.guard));
         let terminate = sel.terminate.is_some_and(|g| open(self, g));
         if entries.is_empty() && delay.is_none() && !terminate {
@@ -545,5 +942,17 @@ pub(super) enum ProtStep {
     /// A conditional call not taken, or a timed one that timed out.
     Other,
     /// Queued: the task waits.
+    Wait,
+}
+
+/// What a requeued call (`Op::Requeued`) does now.
+pub(super) enum RequeueStep {
+    /// Goes on at this instruction (the end of the call, a timed call's
+    /// other statements, the twin).
+    Jump(u32),
+    /// Runs this entry body with these operands, then this instruction
+    /// again.
+    Body(FuncId, Vec<Var>),
+    /// Waits (or gives way), then this instruction again.
     Wait,
 }

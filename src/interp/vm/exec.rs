@@ -736,28 +736,7 @@ impl<'a> Run<'a> {
                     self.dependents_done(true, *span);
                     Ok(())
                 }
-                Op::Accept(entry, params, span) => {
-                    let me = self.m.sched.cur;
-                    self.m.sched.threads[me].rerun = false;
-                    match self.m.sched.threads[me].entries[*entry as usize].pop_front() {
-                        Some(c) => {
-                            self.begin_rendezvous(c, params);
-                            Ok(())
-                        }
-                        None => {
-                            self.m.sched.block(
-                                tasking::Wait::Accept {
-                                    entries: vec![*entry],
-                                    deadline: None,
-                                    terminate: false,
-                                },
-                                true,
-                                *span,
-                            );
-                            Ok(())
-                        }
-                    }
-                }
+                Op::Accept(a) => self.op_accept(a),
                 Op::AcceptEnd(params) => {
                     self.end_rendezvous(params, None);
                     Ok(())
@@ -768,10 +747,10 @@ impl<'a> Run<'a> {
                     Err(Flow::Raise(occ))
                 }
                 Op::EntryCall(ec) => self.op_entry_call(ec),
-                Op::EntryDone(args, ops, other, span) => match self.entry_done(args, ops, *span) {
-                    Ok(true) => Ok(()),
-                    Ok(false) => {
-                        pc = other.expect("a timed or conditional call");
+                Op::EntryDone(d) => match self.entry_done(d) {
+                    Ok(None) => Ok(()),
+                    Ok(Some(t)) => {
+                        pc = t;
                         Ok(())
                     }
                     Err(e) => Err(e),
@@ -798,6 +777,27 @@ impl<'a> Run<'a> {
                     Err(e) => Err(e),
                 },
                 Op::ProtDone(obj, bargs, span) => self.serve(*obj, bargs, *span),
+                Op::Requeue(r) => self.op_requeue(r),
+                Op::Requeued(r) => match self.op_requeued(r) {
+                    Ok(RequeueStep::Jump(t)) => {
+                        pc = t;
+                        Ok(())
+                    }
+                    Ok(RequeueStep::Body(f, slots)) => {
+                        match self.push_call(cache, f, Args::Slots(&slots), (lvl, fp), r.span) {
+                            Ok(e) => {
+                                // The body returns to this instruction.
+                                pc -= 1;
+                                enter = Some(e);
+                                Ok(())
+                            }
+                            Err(e) => Err(e),
+                        }
+                    }
+                    Ok(RequeueStep::Wait) => Ok(()),
+                    Err(e) => Err(e),
+                },
+                Op::RequeueArgs(..) => Ok(()),
                 Op::Select(sel) => match self.op_select(sel) {
                     Ok(Some(t)) => {
                         pc = t;

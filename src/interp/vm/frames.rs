@@ -279,6 +279,7 @@ pub(super) fn call_span(code: &Code, pc: u32) -> Span {
     match code.ops.get(pc as usize - 1) {
         Some(Op::Call(.., span) | Op::CallK { span, .. }) => *span,
         Some(Op::ProtEntry(e)) => e.span,
+        Some(Op::RequeueArgs(_, span)) => *span,
         _ => crate::diag::span(0, 0, 0),
     }
 }
@@ -293,7 +294,8 @@ pub(super) fn call_site(code: &Code, pc: u32) -> (&[Arg], Option<Var>) {
             let dst = if *func { ops.last().copied() } else { None };
             (args.as_deref().map_or(&[], |a| a), dst)
         }
-        Some(Op::ProtEntry(e)) => (&e.args, None),
+        Some(Op::ProtEntry(e)) => (&e.back, None),
+        Some(Op::RequeueArgs(back, _)) => (back, None),
         _ => (&[], None),
     }
 }

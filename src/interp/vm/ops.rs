@@ -148,22 +148,33 @@ pub(super) enum Op {
     /// The end of a REPL entry while tasks live on: the ready tasks run
     /// until every one has blocked.
     Settle,
-    /// `accept`: the entry and the parameters' slots.
-    Accept(u32, Box<[(Var, Mode)]>, Span),
+    /// `accept`: the entry, the member's index, the parameters' slots.
+    Accept(Box<AcceptOp>),
     /// The end of a rendezvous: `out` values go to the caller.
     AcceptEnd(Box<[(Var, Mode)]>),
     /// An exception leaves an accept body: the caller gets it too.
     AcceptFail,
     /// An entry call of a task.
     EntryCall(Box<EntryOp>),
-    /// After an entry call: copy-out, the caller's exception, or the jump
-    /// to a timed call's delay (conditional call's else) statements.
-    EntryDone(Box<Box<[Arg]>>, Box<[Var]>, Option<u32>, Span),
-    /// A protected entry call.
+    /// After an entry call: copy-out, the caller's exception, the jump to
+    /// a timed call's delay (conditional call's else) statements, or to
+    /// the call's `Requeued` when it was requeued.
+    EntryDone(Box<DoneOp>),
+    /// A protected entry call (its body's `out` values go to the
+    /// operands, the `EntryDone` after it copies them out).
     ProtEntry(Box<EntryOp>),
     /// After a protected action: the object's queues are served.
     ProtDone(Var, Box<[Arg]>, Span),
     Select(Box<SelectOp>),
+    /// `requeue`: the call being served goes on to another entry.
+    Requeue(Box<RequeueOp>),
+    /// A requeued call, made again by its caller on the new entry (see
+    /// `RequeuedOp`).
+    Requeued(Box<RequeuedOp>),
+    /// Never executed: the copy-back of the entry body that the
+    /// `Requeued` after it calls (a frame's resume point reads the call
+    /// before it, see `call_site`).
+    RequeueArgs(Box<[Arg]>, Span),
     Abort(Box<[Var]>),
     /// An allocator of a task: the task is activated by the next
     /// instruction (`Activate`), not left to the walker.
@@ -180,13 +191,78 @@ pub(super) struct EntryOp {
     pub(super) target: Var,
     pub(super) kind: u32,
     pub(super) entry: u32,
-    pub(super) args: Box<[Arg]>,
+    /// The member of a family (of a protected entry: also an operand).
+    pub(super) index: Option<Var>,
     pub(super) ops: Box<[Var]>,
+    /// A protected entry body's copy-back: its `out` values into the
+    /// operands.
+    pub(super) back: Box<[Arg]>,
     pub(super) timed: Option<(Var, bool)>,
     pub(super) conditional: bool,
     pub(super) other: u32,
     /// The barrier's argument (the object), for protected entries.
     pub(super) barrier_args: Box<[Arg]>,
+    pub(super) span: Span,
+}
+
+/// `accept`: the entry, the member of a family, the parameters' slots.
+#[derive(Debug)]
+pub(super) struct AcceptOp {
+    pub(super) entry: u32,
+    pub(super) index: Option<Var>,
+    pub(super) params: Box<[(Var, Mode)]>,
+    pub(super) span: Span,
+}
+
+/// After an entry call: its arguments and operands (the parameters'), the
+/// timed call's other statements, the call's `Requeued`, whether the
+/// operands are copied out (a task's entry; a protected entry body copies
+/// its `out` values into them too).
+#[derive(Debug)]
+pub(super) struct DoneOp {
+    pub(super) args: Box<[Arg]>,
+    pub(super) ops: Box<[Var]>,
+    pub(super) other: Option<u32>,
+    pub(super) requeued: u32,
+    pub(super) span: Span,
+}
+
+/// `requeue`: the entry (of a task: its value, None for the running
+/// task; of a protected object: its value), the family member, `with
+/// abort`, whether the entry takes the parameters, and in an accept
+/// statement the accept's parameters (their values go to the caller).
+#[derive(Debug)]
+pub(super) struct RequeueOp {
+    pub(super) target: Option<Var>,
+    /// The task type, or the protected type.
+    pub(super) kind: u32,
+    pub(super) prot: bool,
+    /// To an entry of the same protected object, named alone.
+    pub(super) internal: bool,
+    pub(super) entry: u32,
+    pub(super) index: Option<Var>,
+    pub(super) abort: bool,
+    pub(super) params: bool,
+    pub(super) accept: Option<Box<[(Var, Mode)]>>,
+    pub(super) span: Span,
+}
+
+/// A requeued call made again by its caller (see `Thread::requeue`):
+/// the call's arguments and the operands of its parameters, the
+/// temporaries for a protected body's hidden arguments (object, index),
+/// the timed call's other statements, the end of the call, and the twin
+/// instruction: two follow each call, one for an entry that takes the
+/// parameters and one for an entry without (their `RequeueArgs` differ).
+#[derive(Debug)]
+pub(super) struct RequeuedOp {
+    pub(super) args: Box<[Arg]>,
+    pub(super) ops: Box<[Var]>,
+    pub(super) params: bool,
+    pub(super) obj: Var,
+    pub(super) index: Var,
+    pub(super) other: Option<u32>,
+    pub(super) end: u32,
+    pub(super) twin: u32,
     pub(super) span: Span,
 }
 
@@ -263,6 +339,8 @@ pub(super) struct AcceptAlt {
     /// The guard's value (None: no guard).
     pub(super) guard: Option<Var>,
     pub(super) entry: u32,
+    /// The member of an entry family.
+    pub(super) index: Option<Var>,
     pub(super) params: Box<[(Var, Mode)]>,
     /// Where the accept's body begins.
     pub(super) target: u32,
@@ -313,10 +391,18 @@ pub(super) fn relocate(op: &mut Op, by: u32) {
                 c.target += by;
             }
         }
-        Op::EntryDone(_, _, other, _) => {
-            if let Some(t) = other {
+        Op::EntryDone(d) => {
+            if let Some(t) = &mut d.other {
                 *t += by;
             }
+            d.requeued += by;
+        }
+        Op::Requeued(r) => {
+            if let Some(t) = &mut r.other {
+                *t += by;
+            }
+            r.end += by;
+            r.twin += by;
         }
         Op::EntryCall(e) | Op::ProtEntry(e) => e.other += by,
         Op::Select(sel) => {
@@ -389,6 +475,8 @@ pub(super) fn relocate(op: &mut Op, by: u32) {
         | Op::AcceptEnd(..)
         | Op::AcceptFail
         | Op::ProtDone(..)
+        | Op::Requeue(..)
+        | Op::RequeueArgs(..)
         | Op::Abort(..)
         | Op::AllocTask(..)
         | Op::NoteMaster(..) => {}

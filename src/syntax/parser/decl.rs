@@ -3,7 +3,7 @@
 //! and the constructs AdaIR reads only to refuse (generics, representation
 //! clauses, separate bodies). `decl_grammar` chooses among the parts.
 
-use super::errors::{UNCLOSED, assign_or_eq, skip_to_semi, soft_semi};
+use super::errors::{UNCLOSED, assign_or_eq, decls_end, skip_to_semi, soft_semi};
 use super::{Common, Ex, TokIn, ident, mk, name, semi};
 use crate::diag::Span;
 use crate::diag::codes;
@@ -30,7 +30,7 @@ pub(super) fn decl_grammar<'t, I: TokIn<'t>>(
         interrupt_use(&c.expr),
         rep_clause(),
         generic(decl),
-        protected(c),
+        protected(c, decl),
         entry_body(c),
     ))
     .map_with(|kind, e| Decl {
@@ -807,7 +807,11 @@ fn pragma<'t, I: TokIn<'t>>(
 /// A task specification or body.
 fn task<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
     let Common {
-        expr, decls, block, ..
+        expr,
+        drange,
+        decls,
+        block,
+        ..
     } = c;
     #[derive(Clone)]
     enum TaskItem {
@@ -835,7 +839,7 @@ fn task<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t
                     kw!(Is)
                         .ignore_then(
                             choice((
-                                entry_decl(expr).map(TaskItem::Entry),
+                                entry_decl(expr, drange).map(TaskItem::Entry),
                                 interrupt_use(expr).map(TaskItem::Address),
                                 pragma(expr).map(TaskItem::Pragma),
                             ))
@@ -878,28 +882,22 @@ fn task<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t
 /// An entry declaration of a task or protected unit.
 fn entry_decl<'t, I: TokIn<'t>>(
     expr: &Boxed<'t, 't, I, Expr, Ex<'t>>,
+    drange: &Boxed<'t, 't, I, DiscreteRange, Ex<'t>>,
 ) -> Boxed<'t, 't, I, EntryDecl, Ex<'t>> {
-    // `entry E (1 .. 3) (...)`: an entry family, parsed and refused.
+    // `entry E (Priority) (...)`, `entry E (1 .. 3)`: an entry family. A
+    // parameter list `(X : T)` does not parse as a range (its `:`), so the
+    // family is tried first.
     let family = just(Token::LParen)
-        .ignore_then(expr.clone())
-        .then_ignore(just(Token::DotDot).then(expr.clone()).or_not())
-        .then_ignore(just(Token::RParen))
-        .validate(|_, e, emitter| {
-            emitter.emit(Rich::custom(
-                e.span(),
-                D::custom(
-                    codes::E0701,
-                    "an entry family is not supported by AdaIR (see docs/differences.md)",
-                ),
-            ))
-        });
+        .ignore_then(drange.clone())
+        .then_ignore(just(Token::RParen));
     kw!(Entry)
         .ignore_then(ident())
-        .then_ignore(family.or_not())
+        .then(family.or_not())
         .then(params(expr.clone()))
         .then_ignore(semi())
-        .map_with(|(name, params), e| EntryDecl {
+        .map_with(|((name, family), params), e| EntryDecl {
             name,
+            family,
             params,
             span: e.span(),
         })
@@ -921,10 +919,18 @@ fn interrupt_use<'t, I: TokIn<'t>>(
 }
 
 /// A protected unit's specification or body.
-fn protected<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
-    let Common { expr, decls, .. } = c;
+fn protected<'t, I: TokIn<'t>>(
+    c: &Common<'t, I>,
+    decl: &Boxed<'t, 't, I, Decl, Ex<'t>>,
+) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
+    let Common {
+        expr,
+        drange,
+        decls,
+        ..
+    } = c;
     let prot_op = choice((
-        entry_decl(expr).map(|e| Some(ProtOp::Entry(e))),
+        entry_decl(expr, drange).map(|e| Some(ProtOp::Entry(e))),
         subprogram_spec(expr.clone())
             .then_ignore(semi())
             .map(|s| Some(ProtOp::Sub(s))),
@@ -952,16 +958,37 @@ fn protected<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, 
                 .then_ignore(discriminants(expr))
                 .then_ignore(kw!(Is))
                 .then(prot_op.repeated().collect::<Vec<_>>())
-                .then(kw!(Private).ignore_then(decls.clone()).or_not())
+                .then(
+                    // The private part: components, and private entries
+                    // (and subprograms, read as declarations).
+                    kw!(Private)
+                        .ignore_then(
+                            decls_end()
+                                .not()
+                                .rewind()
+                                .ignore_then(choice((
+                                    entry_decl(expr, drange).map(Ok),
+                                    decl.clone().map(Err),
+                                )))
+                                .repeated()
+                                .collect::<Vec<Result<EntryDecl, Decl>>>(),
+                        )
+                        .or_not(),
+                )
                 .then_ignore(kw!(End))
                 .then_ignore(ident().or_not())
                 .then_ignore(semi())
                 .map_with(|(((is_type, name), ops), private), e| {
+                    let (entries, decls): (Vec<_>, Vec<_>) = private
+                        .unwrap_or_default()
+                        .into_iter()
+                        .partition(|x| x.is_ok());
                     DeclKind::ProtectedSpec(Box::new(ProtectedSpec {
                         name,
                         is_type: is_type.is_some(),
                         ops: ops.into_iter().flatten().collect(),
-                        private: private.unwrap_or_default(),
+                        private_entries: entries.into_iter().filter_map(|x| x.ok()).collect(),
+                        private: decls.into_iter().filter_map(|x| x.err()).collect(),
                         span: e.span(),
                     }))
                 }),
@@ -972,10 +999,22 @@ fn protected<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, 
 /// An entry body of a protected unit.
 fn entry_body<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
     let Common {
-        expr, decls, block, ..
+        expr,
+        drange,
+        decls,
+        block,
+        ..
     } = c;
+    // `(for I in Range)`: the index of an entry family's body.
+    let family = just(Token::LParen)
+        .ignore_then(kw!(For))
+        .ignore_then(ident())
+        .then_ignore(kw!(In))
+        .then(drange.clone())
+        .then_ignore(just(Token::RParen));
     kw!(Entry)
         .ignore_then(ident())
+        .then(family.or_not())
         .then(params(expr.clone()))
         .then_ignore(kw!(When))
         .then(expr.clone())
@@ -984,9 +1023,10 @@ fn entry_body<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind,
         .then(block.clone())
         .then_ignore(ident().or_not())
         .then_ignore(semi())
-        .map_with(|((((name, params), barrier), decls), body), e| {
+        .map_with(|(((((name, family), params), barrier), decls), body), e| {
             DeclKind::EntryBody(Box::new(EntryBody {
                 name,
+                family,
                 params,
                 barrier,
                 decls,

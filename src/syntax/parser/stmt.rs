@@ -247,23 +247,15 @@ pub(super) fn stmt_grammar<'t, I: TokIn<'t>>(
         )
         .then_ignore(semi())
         .map(StmtKind::Abort);
-    // `accept E (I) ...` of an entry family: refused as unsupported (once
-    // more if the declaration was), and the rest read on (no cascade).
+    // `accept E (I) ...`: a member of an entry family. A parameter list
+    // `(X : T)` does not parse as `(expression)`, so the index is tried
+    // first.
     let accept = kw!(Accept)
         .ignore_then(ident())
-        .then_ignore(
+        .then(
             just(Token::LParen)
-                .then(expr.clone())
-                .then(just(Token::RParen))
-                .validate(|_, e, emitter| {
-                    emitter.emit(Rich::custom(
-                        e.span(),
-                        D::custom(
-                            codes::E0701,
-                            "an entry family is not supported by AdaIR (see docs/differences.md)",
-                        ),
-                    ))
-                })
+                .ignore_then(expr.clone())
+                .then_ignore(just(Token::RParen))
                 .or_not(),
         )
         .then(params(expr.clone()))
@@ -286,9 +278,10 @@ pub(super) fn stmt_grammar<'t, I: TokIn<'t>>(
                 .or_not(),
         )
         .then_ignore(semi())
-        .map_with(|((entry, params), body), e| Stmt {
+        .map_with(|(((entry, index), params), body), e| Stmt {
             kind: StmtKind::Accept {
                 entry: Box::new(entry),
+                index: index.map(Box::new),
                 params,
                 body: body.map(Box::new),
             },
@@ -362,10 +355,13 @@ pub(super) fn stmt_grammar<'t, I: TokIn<'t>>(
             StmtKind::Select(alts)
         });
     let requeue = kw!(Requeue)
-        .then(expr.clone())
+        .ignore_then(expr.clone())
         .then(kw!(With).then(kw!(Abort)).or_not())
-        .then(semi())
-        .map_with(|_, e| StmtKind::Decl(Box::new(unsupported(e.span(), "`requeue`"))));
+        .then_ignore(semi())
+        .map(|(target, abort)| StmtKind::Requeue {
+            target: Box::new(target),
+            abort: abort.is_some(),
+        });
     let goto = kw!(Goto)
         .then(ident())
         .then(semi())

@@ -31,6 +31,10 @@ pub(in crate::interp::vm) struct Compiler<'r> {
     pub(in crate::interp::vm) hdepth: u32,
     /// Master regions open at this point of the code.
     pub(in crate::interp::vm) masters: u32,
+    /// The accept bodies being compiled: the jumps of their `requeue`s to
+    /// the end of the accept statement, the handler depth and the master
+    /// regions open at the accept.
+    pub(in crate::interp::vm) accepts: Vec<(Vec<usize>, u32, u32)>,
     /// Which subprograms the walker calls (bound to natives or without body).
     pub(in crate::interp::vm) walker_calls: &'r dyn Fn(FuncId) -> bool,
     pub(in crate::interp::vm) types: &'r crate::check::types::Types,
@@ -96,6 +100,7 @@ impl<'r> Compiler<'r> {
             loops: Vec::new(),
             hdepth: 0,
             masters: 0,
+            accepts: Vec::new(),
             walker_calls,
             types,
             scalar: true,
@@ -251,6 +256,9 @@ impl<'r> Compiler<'r> {
                 | Op::ProtEntry(..)
                 | Op::ProtDone(..)
                 | Op::Select(..)
+                | Op::Requeue(..)
+                | Op::Requeued(..)
+                | Op::RequeueArgs(..)
                 | Op::Abort(..)
                 | Op::AllocTask(..)
                 | Op::NoteMaster(..) => false,

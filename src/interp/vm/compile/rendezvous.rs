@@ -31,19 +31,97 @@ impl<'r> Compiler<'r> {
     /// `accept`: wait for a caller, then the body (whose exception the
     /// caller gets too), then the end of the rendezvous.
     pub(in crate::interp::vm) fn accept(&mut self, a: &Accept, span: Span) {
-        self.ops
-            .push(Op::Accept(a.entry, a.params.as_slice().into(), span));
+        let index = a.index.as_ref().map(|x| self.expr(x));
+        self.ops.push(Op::Accept(Box::new(AcceptOp {
+            entry: a.entry,
+            index,
+            params: a.params.as_slice().into(),
+            span,
+        })));
         self.accept_rest(a);
     }
 
     pub(in crate::interp::vm) fn accept_rest(&mut self, a: &Accept) {
         match &a.body {
-            Some(b) => self.guarded(
-                |c| c.body(b),
-                Op::AcceptEnd(a.params.as_slice().into()),
-                Op::AcceptFail,
-            ),
+            Some(b) => {
+                self.accepts.push((Vec::new(), self.hdepth, self.masters));
+                self.guarded(
+                    |c| c.body(b),
+                    Op::AcceptEnd(a.params.as_slice().into()),
+                    Op::AcceptFail,
+                );
+                // A `requeue` ends the accept statement here.
+                let (jumps, ..) = self.accepts.pop().expect("the accept");
+                let after = self.here();
+                for j in jumps {
+                    self.patch(j, after);
+                }
+            }
             None => self.ops.push(Op::AcceptEnd(a.params.as_slice().into())),
+        }
+    }
+
+    /// `requeue`: in an accept statement, the accept ends (its handlers
+    /// and master regions are left); in a protected entry body, the body
+    /// returns.
+    pub(in crate::interp::vm) fn requeue(&mut self, r: &Requeue, span: Span) {
+        let (target, kind, prot, entry, internal) = match &r.target {
+            RequeueTarget::Task { task, ttype, entry } => (
+                task.as_ref().map(|t| self.expr(t)),
+                *ttype,
+                false,
+                *entry,
+                false,
+            ),
+            RequeueTarget::Prot {
+                obj,
+                prot,
+                entry,
+                internal,
+            } => (Some(self.expr(obj)), *prot, true, *entry, *internal),
+        };
+        let index = r.index.as_ref().map(|x| self.expr(x));
+        let op = Op::Requeue(Box::new(RequeueOp {
+            target,
+            kind,
+            prot,
+            internal,
+            entry,
+            index,
+            abort: r.abort,
+            params: r.params,
+            accept: r.accept.as_deref().map(Box::from),
+            span,
+        }));
+        match &r.accept {
+            Some(_) => {
+                let Some(&(_, depth, masters)) = self.accepts.last() else {
+                    self.ops.push(Op::Exec(Box::new(Stmt {
+                        kind: StmtKind::Null,
+                        span,
+                    })));
+                    return;
+                };
+                if depth < self.hdepth {
+                    self.ops.push(Op::TruncCurrent(depth));
+                }
+                for _ in masters..self.masters {
+                    self.ops.push(Op::MasterLeave(span));
+                }
+                self.ops.push(op);
+                let j = self.ops.len();
+                self.ops.push(Op::Jump(0));
+                if let Some(a) = self.accepts.last_mut() {
+                    a.0.push(j);
+                }
+            }
+            None => {
+                for _ in 0..self.masters {
+                    self.ops.push(Op::MasterLeave(span));
+                }
+                self.ops.push(op);
+                self.ops.push(Op::Return(None));
+            }
         }
     }
 
@@ -60,7 +138,7 @@ impl<'r> Compiler<'r> {
         }])
     }
 
-    /// An entry call; returns the instruction whose `other` target (timed
+    /// An entry call; returns the instructions whose `other` target (timed
     /// and conditional calls) is to be set.
     pub(in crate::interp::vm) fn entry_call(
         &mut self,
@@ -68,7 +146,7 @@ impl<'r> Compiler<'r> {
         timed: Option<(Var, bool)>,
         conditional: bool,
         span: Span,
-    ) -> Option<usize> {
+    ) -> Vec<usize> {
         // Each argument in a temporary of its own: the server writes the
         // `out` values there.
         let (target, kind, entry) = match &ec.target {
@@ -88,56 +166,155 @@ impl<'r> Compiler<'r> {
                 t
             })
             .collect();
+        // The parameters' arguments and operands (a protected entry's
+        // index and object follow them).
+        let n = match &ec.target {
+            CallTarget::Task { .. } => ops.len(),
+            CallTarget::Prot { .. } => ops.len() - 1 - usize::from(ec.index.is_some()),
+        };
         let is_timed = timed.is_some() || conditional;
+        let mut others = Vec::new();
+        let index = match (&ec.target, &ec.index) {
+            (CallTarget::Task { .. }, Some(x)) => {
+                let t = self.temp();
+                self.expr_into(x, t);
+                Some(t)
+            }
+            (CallTarget::Prot { .. }, Some(_)) => Some(ops[n]),
+            (_, None) => None,
+        };
+        let back = self.back_args(&ec.args[..n], &ops[..n]);
         match &ec.target {
             CallTarget::Task { .. } => {
                 self.ops.push(Op::EntryCall(Box::new(EntryOp {
                     target,
                     kind,
                     entry,
-                    args: ec.args.as_slice().into(),
+                    index,
                     ops: ops.clone().into(),
+                    back: Box::new([]),
                     timed,
                     conditional,
                     other: 0,
                     barrier_args: Box::new([]),
                     span,
                 })));
-                let at = self.ops.len();
-                self.ops.push(Op::EntryDone(
-                    Box::new(ec.args.as_slice().into()),
-                    ops.into(),
-                    None,
-                    span,
-                ));
-                is_timed.then_some(at)
             }
             CallTarget::Prot { .. } => {
                 let obj = *ops.last().expect("the object");
                 let last = &ec.args.last().expect("the object").value;
-                let bargs = self.obj_args(obj, last);
-                let at = self.ops.len();
+                let mut bargs = Vec::new();
+                if let (Some(i), Some(x)) = (index, &ec.index) {
+                    bargs.push(Arg {
+                        mode: Mode::In,
+                        value: Ex {
+                            kind: ExKind::Var(i),
+                            ty: x.ty,
+                            span: x.span,
+                        },
+                        back_check: None,
+                    });
+                }
+                bargs.extend(self.obj_args(obj, last).into_vec());
+                let bargs: Box<[Arg]> = bargs.into();
+                if is_timed {
+                    others.push(self.ops.len());
+                }
                 self.ops.push(Op::ProtEntry(Box::new(EntryOp {
                     target: obj,
                     kind,
                     entry,
-                    args: ec.args.as_slice().into(),
-                    ops: ops.into(),
+                    index,
+                    ops: ops.clone().into(),
+                    back,
                     timed,
                     conditional,
                     other: 0,
-                    barrier_args: bargs.clone(),
+                    barrier_args: bargs,
                     span,
                 })));
-                self.ops.push(Op::ProtDone(obj, bargs, span));
-                is_timed.then_some(at)
+                let obj_arg = self.obj_args(obj, last);
+                self.ops.push(Op::ProtDone(obj, obj_arg, span));
             }
         }
+        // Then the copy-out (or the timed call's other way, or the
+        // requeued call), and the requeued call made again: twice, for an
+        // entry with the parameters and one without (see `RequeuedOp`).
+        let args: Box<[Arg]> = ec.args[..n].into();
+        let pops: Box<[Var]> = ops[..n].into();
+        if is_timed && matches!(ec.target, CallTarget::Task { .. }) {
+            others.push(self.ops.len());
+        }
+        let done = self.ops.len();
+        self.ops.push(Op::EntryDone(Box::new(DoneOp {
+            args: args.clone(),
+            ops: pops.clone(),
+            other: None,
+            requeued: 0,
+            span,
+        })));
+        let skip = self.ops.len();
+        self.ops.push(Op::Jump(0));
+        let (obj, idx) = (self.temp(), self.temp());
+        let mut twins = Vec::new();
+        for params in [true, false] {
+            let back = if params {
+                self.back_args(&args, &pops)
+            } else {
+                Box::new([])
+            };
+            self.ops.push(Op::RequeueArgs(back, span));
+            twins.push(self.ops.len());
+            if is_timed {
+                others.push(self.ops.len());
+            }
+            self.ops.push(Op::Requeued(Box::new(RequeuedOp {
+                args: args.clone(),
+                ops: pops.clone(),
+                params,
+                obj,
+                index: idx,
+                other: None,
+                end: 0,
+                twin: 0,
+                span,
+            })));
+        }
+        let end = self.here();
+        self.patch(skip, end);
+        if let Op::EntryDone(d) = &mut self.ops[done] {
+            d.requeued = twins[0] as u32;
+        }
+        for (k, &at) in twins.iter().enumerate() {
+            if let Op::Requeued(r) = &mut self.ops[at] {
+                r.end = end;
+                r.twin = twins[1 - k] as u32;
+            }
+        }
+        others
+    }
+
+    /// The copy-back of an entry body into the call's operands: each
+    /// parameter's mode, its operand as the target.
+    fn back_args(&self, args: &[Arg], ops: &[Var]) -> Box<[Arg]> {
+        args.iter()
+            .zip(ops)
+            .map(|(a, v)| Arg {
+                mode: a.mode,
+                value: Ex {
+                    kind: ExKind::Var(*v),
+                    ty: a.value.ty,
+                    span: a.value.span,
+                },
+                back_check: None,
+            })
+            .collect()
     }
 
     pub(in crate::interp::vm) fn set_other(&mut self, at: usize, target: u32) {
         match &mut self.ops[at] {
-            Op::EntryDone(_, _, other, _) => *other = Some(target),
+            Op::EntryDone(d) => d.other = Some(target),
+            Op::Requeued(r) => r.other = Some(target),
             Op::ProtEntry(e) => e.other = target,
             _ => unreachable!("an entry call"),
         }
@@ -146,10 +323,12 @@ impl<'r> Compiler<'r> {
     pub(in crate::interp::vm) fn select(&mut self, sel: &Select, span: Span) {
         let mut alts = Vec::new();
         for (g, a, _) in &sel.alts {
-            let g = g.as_ref().map(|g| self.expr(g));
+            let guard = g.as_ref().map(|g| self.expr(g));
+            let index = a.index.as_ref().map(|x| self.expr(x));
             alts.push(AcceptAlt {
-                guard: g,
+                guard,
                 entry: a.entry,
+                index,
                 params: a.params.as_slice().into(),
                 target: 0,
             });

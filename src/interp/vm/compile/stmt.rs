@@ -161,7 +161,7 @@ impl<'r> Compiler<'r> {
             StmtKind::Accept(a) => self.accept(a, s.span),
             StmtKind::EntryCall(ec) => {
                 let other = self.entry_call(ec, None, false, s.span);
-                debug_assert!(other.is_none());
+                debug_assert!(other.is_empty());
             }
             StmtKind::TimedCall(tc) => {
                 let amount = tc.delay.as_ref().map(|(until, d)| (self.expr(d), *until));
@@ -170,7 +170,7 @@ impl<'r> Compiler<'r> {
                 let j = self.ops.len();
                 self.ops.push(Op::Jump(0));
                 let other = self.here();
-                if let Some(at) = at {
+                for at in at {
                     self.set_other(at, other);
                 }
                 self.stmts(&tc.other);
@@ -184,6 +184,7 @@ impl<'r> Compiler<'r> {
                 self.ops.push(Op::ProtDone(obj, bargs, s.span));
             }
             StmtKind::Select(sel) => self.select(sel, s.span),
+            StmtKind::Requeue(r) => self.requeue(r, s.span),
             StmtKind::Compiled(p) => {
                 match p.take::<Part>() {
                     Some(part) => self.splice(part),
