@@ -388,6 +388,83 @@ pub fn not_an_entry_of_protected(span: Span, name: &str, prot: &str) -> Diagnost
     )
 }
 
+// ---- E0207: private types and deferred constants without their completion ----
+
+/// `type T is private;` outside the visible part of a package.
+pub fn private_type_context(span: Span) -> Diagnostic {
+    d(
+        codes::E0207,
+        span,
+        "a private type can only be declared in the visible part of a package",
+    )
+    .with_hint("declare it between `package P is` and `private`, and its full type after `private`")
+}
+
+pub fn private_type_not_completed(span: Span, name: &str, pkg: &str) -> Diagnostic {
+    d(
+        codes::E0207,
+        span,
+        format!("private type `{name}` has no full declaration in the private part of `{pkg}`"),
+    )
+    .with_hint(format!(
+        "declare its full type after `private`: `type {name} is record ... end record;`"
+    ))
+}
+
+pub fn deferred_constant_not_completed(span: Span, name: &str, pkg: &str) -> Diagnostic {
+    d(
+        codes::E0207,
+        span,
+        format!(
+            "deferred constant `{name}` has no full declaration in the private part of `{pkg}`"
+        ),
+    )
+    .with_hint(format!(
+        "give it its value after `private`: `{name} : constant ... := ...;`"
+    ))
+}
+
+/// The full type of a private type declared in the visible part.
+pub fn full_view_in_visible_part(span: Span, name: &str) -> Diagnostic {
+    d(
+        codes::E0207,
+        span,
+        format!("the full declaration of private type `{name}` must be in the private part"),
+    )
+    .with_hint("move it after `private`")
+}
+
+/// A deferred constant completed with another type.
+pub fn deferred_type_mismatch(span: Span, name: &str, declared: &str, at: Span) -> Diagnostic {
+    d(
+        codes::E0207,
+        span,
+        format!("`{name}` is declared a constant of type `{declared}`: its full declaration must have that type"),
+    )
+    .with_note(at, "the deferred constant is declared here")
+}
+
+pub fn limited_completion_of_nonlimited(span: Span, name: &str) -> Diagnostic {
+    d(
+        codes::E0207,
+        span,
+        format!("private type `{name}` is not limited, so its full type cannot be limited"),
+    )
+    .with_hint(format!("declare it `type {name} is limited private;`"))
+}
+
+/// An object of a private type before its full declaration.
+pub fn premature_private_object(span: Span, ty: &str) -> Diagnostic {
+    d(
+        codes::E0207,
+        span,
+        format!(
+            "`{ty}` has no full declaration yet: an object of it can only be declared after it"
+        ),
+    )
+    .with_hint("declare the object after the package, or make it a deferred constant")
+}
+
 // ---- E0301: the wrong type ----
 
 /// `found` describes the value (`` `Float` ``, "a number", ...);
@@ -1262,6 +1339,90 @@ pub fn assigned_discriminant(span: Span, name: &str) -> Diagnostic {
         format!("assignment to discriminant `{name}` not allowed"),
     )
     .with_hint("assign the whole record instead (`G := (Kind => Vacuum, ...);`), when its discriminants have defaults")
+}
+
+// ---- E0317: the full view of a private type where only its partial view is visible ----
+
+pub fn private_component(span: Span, component: &str, ty: &str, pkg: &str) -> Diagnostic {
+    d(
+        codes::E0317,
+        span,
+        format!(
+            "`{ty}` is a private type: its component `{component}` is not visible outside `{pkg}`"
+        ),
+    )
+    .with_hint(format!("use the operations `{pkg}` declares for `{ty}`"))
+}
+
+pub fn private_aggregate(span: Span, ty: &str, pkg: &str) -> Diagnostic {
+    d(
+        codes::E0317,
+        span,
+        format!("`{ty}` is a private type: an aggregate of it can only be written inside `{pkg}`"),
+    )
+    .with_hint(format!(
+        "use the operations or constants `{pkg}` declares for `{ty}`"
+    ))
+}
+
+/// What else needs the full view: a literal, an index, an attribute, a
+/// predefined operator or a conversion of the full type.
+pub fn private_full_view(span: Span, what: &str, ty: &str, pkg: &str) -> Diagnostic {
+    d(
+        codes::E0317,
+        span,
+        format!("`{ty}` is a private type: {what} is not visible outside `{pkg}`"),
+    )
+    .with_hint(format!("use the operations `{pkg}` declares for `{ty}`"))
+}
+
+// ---- E0318: values of limited types copied or compared ----
+
+pub fn limited_assignment(span: Span, ty: &str) -> Diagnostic {
+    d(
+        codes::E0318,
+        span,
+        format!("`{ty}` is a limited type: its objects cannot be assigned"),
+    )
+}
+
+pub fn limited_copy(span: Span, ty: &str) -> Diagnostic {
+    d(
+        codes::E0318,
+        span,
+        format!(
+            "`{ty}` is a limited type: an object of it is initialized by an aggregate or a function call, not a copy"
+        ),
+    )
+}
+
+pub fn limited_return(span: Span, ty: &str) -> Diagnostic {
+    d(
+        codes::E0318,
+        span,
+        format!(
+            "`{ty}` is a limited type: `return` gives an aggregate or a function call, not a copy of an object"
+        ),
+    )
+}
+
+pub fn limited_equality(span: Span, op: &str, ty: &str) -> Diagnostic {
+    d(
+        codes::E0318,
+        span,
+        format!("`{op}` is not defined for `{ty}`, a limited type"),
+    )
+    .with_hint(format!(
+        "declare `function \"=\" (Left, Right : {ty}) return Boolean;` beside the type to compare its values"
+    ))
+}
+
+/// What makes a type limited, when it is not so by its own declaration.
+pub fn limited_because(d: Diagnostic, why: Option<String>) -> Diagnostic {
+    match why {
+        Some(w) => d.with_hint(w),
+        None => d,
+    }
 }
 
 // ---- E0401: return ----

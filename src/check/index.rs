@@ -159,6 +159,16 @@ impl Index {
             .get(&Key::Type(t))
             .and_then(|i| self.defs.get(*i as usize))
     }
+
+    /// The components of record type `from`, declared by the full
+    /// declaration of private type `to`, are `to`'s.
+    pub(super) fn retarget_fields(&mut self, from: TypeId, to: TypeId, n: u32) {
+        for i in 0..n {
+            if let Some(&d) = self.by_key.get(&Key::Field(from, i)) {
+                self.by_key.insert(Key::Field(to, i), d);
+            }
+        }
+    }
 }
 
 fn key_of(e: &Entity) -> Option<Key> {

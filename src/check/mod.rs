@@ -396,7 +396,11 @@ impl Checker {
         // afterwards: a later REPL entry that uses it is told so.)
         self.unsupported_names.clear();
         let (tasks0, prots0) = (self.tables.tasks.len(), self.tables.prots.len());
+        // The checker sees private types as their place allows; the
+        // engines (and the tools, after the check) see every full view.
+        self.tables.types.views = true;
         let r = self.check_unit_items(unit);
+        self.tables.types.views = false;
         // Every task and protected type declared here has its body here.
         let mut missing: Vec<Diagnostic> = self
             .tables
@@ -516,7 +520,9 @@ impl Checker {
     /// Checks one expression in the top-level scope (a REPL entry), with no
     /// expected type. Errors are left in `diags`.
     pub fn check_expr(&mut self, e: &ast::Expr) -> Ex {
+        self.tables.types.views = true;
         let ex = self.expr(e, None);
+        self.tables.types.views = false;
         if self.tables.types.is_universal(ex.ty) {
             let t = if self.tables.types.is_float(ex.ty) {
                 FLOAT

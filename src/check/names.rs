@@ -24,11 +24,37 @@ impl Checker {
             _ => return Vec::new(),
         };
         let ty = self.tables.types.designated(ty).unwrap_or(ty);
+        if !self.components_visible_at(ty, None) {
+            return Vec::new();
+        }
         self.tables
             .types
             .fields(ty)
             .map(|f| f.iter().map(|x| x.name.clone()).collect())
             .unwrap_or_default()
+    }
+
+    /// Whether the components (and the rest of the full view) of type `t`
+    /// are visible at `at` (a source and an offset in it; `None`: at the
+    /// top level, after what the checker has checked): not when `t` is a
+    /// private type and `at` is outside its package's spec and body.
+    pub fn components_visible_at(&self, t: TypeId, at: Option<(u32, usize)>) -> bool {
+        let types = &self.tables.types;
+        if !types.hidden.contains_key(&types.base(t)) {
+            return true;
+        }
+        let Some((file, offset)) = at else {
+            return false;
+        };
+        types
+            .private_view(t)
+            .and_then(|v| self.tables.packages.get(v.package as usize))
+            .is_some_and(|p| {
+                p.full_view_at.iter().any(|s| {
+                    use crate::diag::Offsets as _;
+                    s.context == file && s.lo() <= offset && offset <= s.hi()
+                })
+            })
     }
 
     /// The names a package declares visibly (lower case), for completion
@@ -293,6 +319,9 @@ impl Checker {
             name: full.to_string(),
             names: PMap::new(),
             private: PMap::new(),
+            deferred: Vec::new(),
+            private_types: Vec::new(),
+            full_view_at: Vec::new(),
         });
         match full.rsplit_once('.') {
             Some((parent, last)) => {

@@ -150,7 +150,10 @@ impl Scopes {
     pub(super) fn pop(&mut self) {
         let i = self.stack.len() as u32 - 1;
         if let Some(s) = self.stack.pop() {
-            for e in s.names.values().flatten() {
+            // A package's objects are still named outside it (`P.C := 1;`
+            // assigns a constant); a later object of the same slot
+            // replaces the entry.
+            for e in s.names.values().flatten().filter(|_| s.package.is_none()) {
                 if let Entity::Var { var, .. } = e {
                     self.var_names.remove(var);
                 }

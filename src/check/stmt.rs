@@ -45,7 +45,10 @@ impl Checker {
                         own: ctx.next_slot,
                         master: self.tasking.masters.last().copied().unwrap_or(false),
                     };
+                    // The engine sees every full view.
+                    self.tables.types.views = false;
                     let temps = compile(self.program(), at, part, &code);
+                    self.tables.types.views = true;
                     self.ctx.last_mut().expect("a body's context").next_slot += temps;
                     return;
                 } else if self.options.diagnostics_only {
@@ -168,6 +171,7 @@ impl Checker {
                     self.set_read(v, false);
                 }
                 self.check_variable(&t, target.span, "the target of an assignment");
+                self.limited_assignment(t.ty, target.span);
                 let ty = t.ty;
                 // An aggregate assigned to a slice takes the slice's bounds
                 // (`A (2 .. 4) := (others => 9);`).
@@ -355,7 +359,9 @@ impl Checker {
                 match (v, ret) {
                     (Some(v), Some(t)) => {
                         let e = self.expr(v, Some(t));
-                        StmtKind::Return(Some(self.coerce(e, t)))
+                        let e = self.coerce(e, t);
+                        self.limited_return(&e, t);
+                        StmtKind::Return(Some(e))
                     }
                     (None, None) if is_sub => StmtKind::Return(None),
                     (None, None) => {

@@ -10,6 +10,27 @@ pub struct Package {
     pub(super) names: PMap<String, Vec<Entity>>,
     /// Names of the package body (and private part), visible inside it only.
     pub(super) private: PMap<String, Vec<Entity>>,
+    /// The deferred constants of its visible part (`C : constant T;`),
+    /// which its private part completes.
+    pub(super) deferred: Vec<Deferred>,
+    /// Its private types (and the types derived from them while their
+    /// full views are hidden), whose full views its body sees.
+    pub(super) private_types: Vec<TypeId>,
+    /// Its spec and body (their text), where those full views are
+    /// visible: for the tools, which ask after the check.
+    pub(super) full_view_at: Vec<Span>,
+}
+
+/// A deferred constant: its name, slot and type, where it is declared,
+/// and whether the private part has completed it.
+#[derive(Debug, Clone)]
+pub(super) struct Deferred {
+    pub key: String,
+    pub name: String,
+    pub var: Var,
+    pub ty: TypeId,
+    pub span: Span,
+    pub completed: bool,
 }
 
 /// What the program declares, by id: the tables a `TypeId`, `FuncId`,

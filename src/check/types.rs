@@ -25,6 +25,10 @@ pub enum TypeKind {
     Access(TypeId),
     /// `type T;` not yet completed.
     Incomplete,
+    /// A private type's partial view (`type T is [limited] private;`):
+    /// before its full declaration, and where only the partial view is
+    /// visible (see [`Types::hidden`]).
+    Private,
     /// The type of integer literals and named numbers.
     UnivInt,
     /// The type of real literals.
@@ -122,7 +126,21 @@ pub struct TypeInfo {
     /// value of each discriminant, in order (a bound that is not static is
     /// a slot elaborated with the declaration).
     pub discr: Option<std::rc::Rc<[Ex]>>,
+    /// A private type (and its subtypes and derived types): the package
+    /// whose private part completes it, and whether it is limited.
+    pub private: Option<PrivateView>,
 }
+
+/// What a private type's partial view says (`type T is [limited] private;`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PrivateView {
+    /// The package (index into the checker's packages) that declares it.
+    pub package: u32,
+    pub limited: bool,
+}
+
+/// The kind a private type has where its full view is hidden.
+const PRIVATE: &TypeKind = &TypeKind::Private;
 
 pub const ERROR: TypeId = 0;
 pub const UNIV_INT: TypeId = 1;
@@ -146,6 +164,14 @@ pub const INT_LAST: i128 = i32::MAX as i128;
 #[derive(Clone, Debug, Default)]
 pub struct Types {
     pub list: super::PVec<TypeInfo>,
+    /// The private types whose full view is hidden where the checker
+    /// stands (outside their package's private part and body): the
+    /// checker's questions about their kind see `TypeKind::Private`, so
+    /// their components, literals, aggregates and operations are refused.
+    pub hidden: super::PMap<TypeId, ()>,
+    /// Whether `hidden` applies: while the checker checks. The engines see
+    /// every full view (`false` otherwise).
+    pub views: bool,
 }
 
 impl Types {
@@ -160,7 +186,29 @@ impl Types {
         self.list[self.base(t) as usize].whole_ns
     }
     pub fn kind(&self, t: TypeId) -> &TypeKind {
+        let b = self.base(t);
+        if self.is_hidden(b) {
+            return PRIVATE;
+        }
+        &self.list[b as usize].kind
+    }
+    /// The kind of the full view, wherever the checker stands: what the
+    /// objects of `t` hold (tasks), not what may be done with them.
+    pub fn full_kind(&self, t: TypeId) -> &TypeKind {
         &self.list[self.base(t) as usize].kind
+    }
+    /// Whether the full view of `t` (a private type) is hidden here.
+    pub fn is_hidden(&self, t: TypeId) -> bool {
+        self.views && !self.hidden.is_empty() && self.hidden.contains_key(&self.base(t))
+    }
+    /// The partial view of a private type (of its base type), if it is one.
+    pub fn private_view(&self, t: TypeId) -> Option<PrivateView> {
+        self.list[self.base(t) as usize].private
+    }
+    /// Whether a private type has its full declaration (a type that is not
+    /// private has).
+    pub fn completed(&self, t: TypeId) -> bool {
+        !matches!(self.list[self.base(t) as usize].kind, TypeKind::Private)
     }
     pub fn name(&self, t: TypeId) -> &str {
         &self.list[t as usize].name
@@ -180,6 +228,7 @@ impl Types {
             modulus: None,
             whole_ns: false,
             discr: None,
+            private: None,
         });
         id
     }
@@ -203,6 +252,9 @@ impl Types {
     /// The modulus of a modular type (of its base type), None for every
     /// other type.
     pub fn modulus(&self, t: TypeId) -> Option<i64> {
+        if self.is_hidden(t) {
+            return None;
+        }
         self.list[self.base(t) as usize].modulus
     }
     /// The last value of a modular type (`modulus - 1`, which fits a u32):
@@ -245,6 +297,9 @@ impl Types {
     }
     /// Array information of `t` (which may be a constrained subtype).
     pub fn array(&self, t: TypeId) -> Option<ArrayInfo<'_>> {
+        if self.is_hidden(t) {
+            return None;
+        }
         match &self.list[t as usize].kind {
             TypeKind::Array {
                 index,
@@ -293,7 +348,7 @@ impl Types {
         // A constrained array subtype keeps its own kind (its bounds).
         let kind = match &self.list[t as usize].kind {
             k @ TypeKind::Array { .. } => k,
-            _ => self.kind(t),
+            _ => self.full_kind(t),
         };
         match kind {
             TypeKind::Task(_) => true,
@@ -305,7 +360,7 @@ impl Types {
     /// Whether a default value of `t` must be built once per component
     /// (tasks and protected objects are not copied).
     pub fn is_unique(&self, t: TypeId) -> bool {
-        match self.kind(t) {
+        match self.full_kind(t) {
             TypeKind::Task(_) | TypeKind::Protected(_) => true,
             TypeKind::Array { elem, .. } => self.is_unique(*elem),
             TypeKind::Record(fs) => fs.iter().any(|f| self.is_unique(f.ty)),
@@ -344,6 +399,9 @@ impl Types {
 
     /// Static bounds of a discrete subtype, if known.
     pub fn discrete_bounds(&self, t: TypeId) -> Option<(i128, i128)> {
+        if self.is_hidden(t) {
+            return None;
+        }
         let info = self.get(t);
         if let Some(r) = info.static_range {
             return Some(r);

@@ -411,12 +411,15 @@ fn select_items(a: &Analysis, offset: usize, prefix: &str) -> Vec<Item> {
     let Some(mut ty) = object_type(a, offset, first) else {
         return Vec::new();
     };
+    // A private type's components are not offered outside its package.
+    let here = Some((a.file, offset));
     for p in parts {
         let t = c.tables.types.designated(ty).unwrap_or(ty);
         let Some(f) = c
             .tables
             .types
             .fields(t)
+            .filter(|_| c.components_visible_at(t, here))
             .and_then(|fs| fs.iter().find(|f| f.key == p.to_lowercase()))
         else {
             return Vec::new();
@@ -424,6 +427,9 @@ fn select_items(a: &Analysis, offset: usize, prefix: &str) -> Vec<Item> {
         ty = f.ty;
     }
     let t = c.tables.types.designated(ty).unwrap_or(ty);
+    if !c.components_visible_at(t, here) {
+        return Vec::new();
+    }
     c.tables
         .types
         .fields(t)

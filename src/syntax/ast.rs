@@ -209,6 +209,11 @@ pub enum TypeDef {
     Access(SubtypeInd),
     /// `type T;` incomplete declaration (for linked structures).
     Incomplete,
+    /// `type T is private;` / `type T is limited private;` in a package's
+    /// visible part, completed in its private part.
+    Private {
+        limited: bool,
+    },
     Unsupported(&'static str),
 }
 

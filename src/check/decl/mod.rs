@@ -6,6 +6,7 @@ use super::tasks::BodyKind;
 use super::*;
 use crate::syntax::ast::{DeclKind, TypeDef};
 
+mod private;
 mod renaming;
 mod subprograms;
 mod types;
@@ -106,6 +107,15 @@ impl Checker {
                     self.declare(&tn.name, Entity::Type(t));
                 }
                 let t = self.elaborating(out, |c| c.subtype_ind(ty));
+                // Deferred constants: declared in a package's visible part,
+                // completed in its private part.
+                if *constant && anon.is_none() {
+                    match init {
+                        None if self.deferred_constant(names, t) => return,
+                        Some(v) if self.complete_deferred(names, t, v, d.span, out) => return,
+                        _ => {}
+                    }
+                }
                 self.object(names, *constant, t, init.as_ref(), d.span, out);
             }
             DeclKind::Number { names, value } => {
@@ -132,6 +142,23 @@ impl Checker {
                     .innermost()
                     .and_then(|s| s.names.get(&*name.key))
                     .and_then(|es| es.last().cloned());
+                if let Some(old) = self
+                    .completes_private(prev.as_ref())
+                    .filter(|_| !matches!(def, TypeDef::Private { .. } | TypeDef::Incomplete))
+                {
+                    self.complete_private(old, name, discriminants, def, d.span, out);
+                    return;
+                }
+                if let TypeDef::Private { limited } = def {
+                    if let Some(p) = discriminants.first() {
+                        self.err(diagnostics::unsupported(
+                            p.span,
+                            "a discriminant part on a private type",
+                        ));
+                    }
+                    self.private_type(name, *limited, d.span);
+                    return;
+                }
                 if let Some(Entity::Type(old)) = prev
                     && matches!(self.tables.types.kind(old), TypeKind::Incomplete)
                 {
@@ -285,6 +312,13 @@ impl Checker {
         }
         if constant && init_ex.is_none() {
             self.err(diagnostics::constant_without_value(span));
+        }
+        if !self.tables.types.completed(t) && self.tables.types.private_view(t).is_some() {
+            let tn = self.tname(t);
+            self.err(diagnostics::premature_private_object(span, &tn));
+        }
+        if let Some(e) = &init_ex {
+            self.limited_init(e, t);
         }
         let static_v = if constant {
             init_ex

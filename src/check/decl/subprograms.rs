@@ -364,6 +364,9 @@ impl Checker {
                 name: full.clone(),
                 names: PMap::new(),
                 private: PMap::new(),
+                deferred: Vec::new(),
+                private_types: Vec::new(),
+                full_view_at: Vec::new(),
             });
             if let ast::ExprKind::Name(id) = &p.name.kind {
                 self.declare_checked(id, Entity::Package(idx));
@@ -387,6 +390,8 @@ impl Checker {
         self.decls(&p.decls, out);
         self.scopes.set_package(idx, true);
         self.decls(&p.private, out);
+        self.end_of_package_spec(idx);
+        self.tables.packages[idx].full_view_at.push(p.span);
         for _ in name.split('.') {
             self.unit_path.pop();
         }
@@ -404,6 +409,8 @@ impl Checker {
         };
         self.scopes.push();
         self.scopes.set_package(idx, true);
+        self.full_views(idx, true);
+        self.tables.packages[idx].full_view_at.push(p.span);
         self.unit_path.extend(name.split('.').map(str::to_string));
         self.decls_completed(&p.decls, out);
         if let Some(init) = &p.init {
@@ -417,6 +424,7 @@ impl Checker {
             self.unit_path.pop();
         }
         self.scopes.pop();
+        self.full_views(idx, false);
         // Every subprogram declared in the spec needs a body.
         let missing: Vec<String> = self.tables.packages[idx]
             .names

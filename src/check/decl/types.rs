@@ -429,6 +429,14 @@ impl Checker {
                 let id = self.tables.types.list.len() as TypeId;
                 info.name = name.name.to_string();
                 info.base = id;
+                if self.tables.types.is_hidden(parent) {
+                    // From a private type whose full view is hidden here:
+                    // its full view is the parent's, hidden too.
+                    info.kind = self.tables.types.full_kind(parent).clone();
+                    self.tables.types.list.push(info);
+                    self.derived_from_private(parent, id);
+                    return id;
+                }
                 if let TypeKind::Enum(_) = &info.kind {
                     // Derived enumeration types get their own literals.
                     let lits = self
@@ -504,6 +512,10 @@ impl Checker {
                 self.tables.types.add(&name.name, TypeKind::Access(t))
             }
             TypeDef::Incomplete => self.tables.types.add(&name.name, TypeKind::Incomplete),
+            TypeDef::Private { .. } => {
+                self.err(diagnostics::private_type_context(span));
+                ERROR
+            }
             TypeDef::Unsupported(what) => {
                 self.err(diagnostics::unsupported(span, what));
                 // The error type itself: what uses the name says nothing more.

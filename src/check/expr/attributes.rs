@@ -18,6 +18,24 @@ impl Checker {
             return x;
         }
         let type_prefix = self.denote_quiet_type(p);
+        // Of a private type where its full view is hidden: none.
+        let prefix_type = match type_prefix {
+            Some(t) => Some(t),
+            None => self.interps(p).first().copied(),
+        };
+        if let Some(t) = prefix_type
+            && self.tables.types.is_hidden(t)
+        {
+            let pkg = self.private_package(t);
+            let what = format!("its attribute `'{}`", a.name);
+            self.err(diagnostics::private_full_view(
+                sp,
+                &what,
+                &self.tname(t),
+                &pkg,
+            ));
+            return self.err_ex(sp);
+        }
         let arg = |this: &mut Self, i: usize, t: Option<TypeId>| -> Ex {
             match args.get(i) {
                 Some(x) => {

@@ -148,6 +148,20 @@ impl Checker {
                     ));
                 }
             }
+            if self.tables.types.is_hidden(t)
+                && (self.tables.types.is_universal(ex.ty)
+                    || matches!(
+                        self.tables.types.kind(ex.ty),
+                        TypeKind::Null | TypeKind::AnyComposite
+                    ))
+            {
+                d = d.with_hint(format!(
+                    "`{}` is a private type: outside `{}` its values come from what `{}` declares",
+                    self.tname(t),
+                    self.private_package(t),
+                    self.private_package(t)
+                ));
+            }
             self.err(d);
             ex.ty = ERROR;
             return ex;

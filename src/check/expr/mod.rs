@@ -342,6 +342,11 @@ impl Checker {
                 )
             }
             ExprKind::Aggregate(items) => match want {
+                Some(t) if self.tables.types.is_hidden(t) => {
+                    let pkg = self.private_package(t);
+                    self.err(diagnostics::private_aggregate(sp, &self.tname(t), &pkg));
+                    self.err_ex(sp)
+                }
                 Some(t) if t != ERROR && !self.tables.types.is_universal(t) => {
                     self.aggregate(items, t, sp)
                 }
@@ -555,6 +560,16 @@ impl Checker {
         if pe.ty == ERROR {
             return self.err_ex(sp);
         }
+        if self.tables.types.is_hidden(pe.ty) {
+            let pkg = self.private_package(pe.ty);
+            self.err(diagnostics::private_component(
+                id.span,
+                &id.name,
+                &self.tname(pe.ty),
+                &pkg,
+            ));
+            return self.err_ex(sp);
+        }
         match self.tables.types.fields(pe.ty).map(|f| f.to_vec()) {
             Some(fields) => match fields.iter().position(|f| *f.key == *id.key) {
                 Some(i) => {
@@ -690,6 +705,16 @@ impl Checker {
                     for a in args {
                         self.expr(&a.value, None);
                     }
+                    return self.err_ex(sp);
+                }
+                if self.tables.types.is_hidden(pe.ty) {
+                    let pkg = self.private_package(pe.ty);
+                    self.err(diagnostics::private_full_view(
+                        sp,
+                        "indexing",
+                        &self.tname(pe.ty),
+                        &pkg,
+                    ));
                     return self.err_ex(sp);
                 }
                 let Some((idx, el, _)) = self

@@ -188,6 +188,9 @@ impl Checker {
                     return self.mk(ExKind::Int(r as i64), BOOLEAN, sp);
                 }
                 if matches!(op, BinOp::Eq | BinOp::Ne) {
+                    if self.limited_equality(t, op.symbol(), sp) {
+                        return self.mk(ExKind::Error, BOOLEAN, sp);
+                    }
                     return self.mk(ExKind::Eq(op == BinOp::Ne, bx(x), bx(y)), BOOLEAN, sp);
                 }
                 let ordered =
@@ -319,6 +322,15 @@ impl Checker {
                 op.symbol(),
                 fname(self, x.ty),
                 self.snippet(b.span)
+            ));
+        } else if let Some(t) = [x.ty, y.ty]
+            .into_iter()
+            .find(|t| self.tables.types.is_hidden(*t))
+        {
+            let pkg = self.private_package(t);
+            d = d.with_hint(format!(
+                "`{}` is a private type: outside `{pkg}` only the operators `{pkg}` declares apply",
+                self.tname(t)
             ));
         }
         self.err(d);

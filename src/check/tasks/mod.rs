@@ -183,7 +183,7 @@ impl Checker {
             span,
         });
         if t.is_type {
-            self.declare_checked(&t.name, Entity::Type(ty));
+            self.declare_type_or_full_view(&t.name, ty);
         } else {
             self.object(std::slice::from_ref(&t.name), false, ty, None, span, out);
         }
@@ -344,7 +344,7 @@ impl Checker {
             span: p.span,
         });
         if p.is_type {
-            self.declare_checked(&p.name, Entity::Type(ty));
+            self.declare_type_or_full_view(&p.name, ty);
         } else {
             self.object(std::slice::from_ref(&p.name), false, ty, None, p.span, out);
         }

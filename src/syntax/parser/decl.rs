@@ -136,8 +136,8 @@ fn type_def<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, TypeDef, Ex
             .to(TypeDef::Unsupported("an abstract tagged type")),
         kw!(Limited)
             .then(kw!(Private))
-            .to(TypeDef::Unsupported("a private type")),
-        kw!(Private).to(TypeDef::Unsupported("a private type")),
+            .to(TypeDef::Private { limited: true }),
+        kw!(Private).to(TypeDef::Private { limited: false }),
         kw!(Mod).ignore_then(expr.clone()).map(TypeDef::Modular),
         kw!(Delta)
             .ignore_then(expr.clone())
