@@ -945,6 +945,16 @@ pub fn attribute_unsupported_on_arrays(span: Span, attr: &str) -> Diagnostic {
     )
 }
 
+/// RM 3.7.2(2): `X'Constrained` of an object without discriminants.
+pub fn constrained_without_discriminants(span: Span, ty: &str) -> Diagnostic {
+    d(
+        codes::E0308,
+        span,
+        "the prefix of `'Constrained` must be an object of a type with discriminants",
+    )
+    .with_label(format!("an object of type `{ty}`"))
+}
+
 pub fn attribute_unsupported_here(span: Span, attr: &str) -> Diagnostic {
     d(
         codes::E0308,

@@ -383,6 +383,7 @@ impl Checker {
 /// completion after `'`).
 pub const ATTRIBUTES: &[&str] = &[
     "Ceiling",
+    "Constrained",
     "Digits",
     "First",
     "Floor",

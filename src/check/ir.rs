@@ -237,6 +237,11 @@ pub enum ExKind {
     /// written.
     Variant(Box<Ex>, u32),
     Deref(Box<Ex>),
+    /// `[value, target, when]`: the value of an assignment to an object
+    /// constrained by its initial value or by its actual; when `when` is
+    /// True, its discriminants must be those of the target's value
+    /// (`Constraint_Error` otherwise).
+    KeepDiscriminants(Box<[Ex; 3]>),
     Call(FuncId, Box<[Arg]>),
     IntBin(IntOp, Box<Ex>, Box<Ex>),
     /// An operation of the modular type `Ex::ty` (its modulus is in the
@@ -321,6 +326,7 @@ impl Ex {
             | ExKind::Register(_)
             | ExKind::Discriminant(_) => false,
             ExKind::Index(p, idx) => p.any(f) || all(&mut idx.iter()),
+            ExKind::KeepDiscriminants(parts) => all(&mut parts.iter()),
             ExKind::Slice(p, lh) => p.any(f) || all(&mut lh.iter()),
             ExKind::Field(a, _)
             | ExKind::Variant(a, _)

@@ -8,6 +8,7 @@
 use crate::diag::Offsets as _;
 mod decl;
 mod diagnostics;
+mod discriminants;
 pub mod exact;
 mod expr;
 pub mod index;
@@ -207,6 +208,13 @@ pub struct Checker {
     /// of the declaration's declarative region, False from the declaration
     /// on, True from the body on. The body begins by checking it.
     elab_flags: HashMap<FuncId, Var>,
+    /// The subprograms whose `out` and `in out` formals of a mutable
+    /// record type get a hidden flag (see `discriminants.rs`).
+    flagged_funcs: std::collections::HashSet<FuncId>,
+    /// In the body being checked: each flagged formal's flag; None for an
+    /// `out` or `in out` formal of a mutable record type of an entry or a
+    /// protected operation, which has no flag and counts as constrained.
+    constrained_flags: HashMap<Var, Option<Var>>,
 }
 
 /// A node of the expression being checked: its source range and its kind.
@@ -262,6 +270,8 @@ impl Checker {
             unsupported_names: Default::default(),
             devices: Rc::new(crate::devices::Devices::default_set()),
             elab_flags: HashMap::new(),
+            flagged_funcs: Default::default(),
+            constrained_flags: HashMap::new(),
         };
         c.standard();
         c

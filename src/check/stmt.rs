@@ -200,6 +200,7 @@ impl Checker {
                 } else {
                     let v = self.expr(value, Some(vty));
                     let v = self.coerce(v, vty);
+                    let v = self.keep_discriminants(&t, v);
                     StmtKind::Assign(t, v)
                 }
             }

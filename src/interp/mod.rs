@@ -1249,6 +1249,16 @@ impl Run<'_> {
                 Value::Rec(r) => r[*i as usize].clone(),
                 _ => return Err(self.check_failed("discriminant check failed", e.span)),
             },
+            ExKind::KeepDiscriminants(parts) => {
+                let [v, target, when] = &**parts;
+                let v = self.eval(v)?;
+                if self.eval_int(when)? != 0 {
+                    let cur = self.eval(target)?;
+                    let n = self.c.types.discriminants(target.ty).len();
+                    self.same_discriminants(&v, &cur, n, e.span)?;
+                }
+                v
+            }
             ExKind::Variant(p, i) => {
                 let v = self.eval(p)?;
                 if let Some(conds) = self.variant_of(p.ty, *i) {
@@ -1592,6 +1602,16 @@ impl Run<'_> {
     ) -> R<()> {
         match v {
             Value::Rec(r) if value::variant_holds(r, conds) => Ok(()),
+            _ => Err(self.check_failed("discriminant check failed", span)),
+        }
+    }
+
+    /// The value assigned to a record object constrained by its initial
+    /// value or by its actual: its `n` discriminants are the object's
+    /// (RM 5.2(10)), else "discriminant check failed". Both engines call it.
+    pub(crate) fn same_discriminants(&self, v: &Value, cur: &Value, n: usize, span: Span) -> R<()> {
+        match (v, cur) {
+            (Value::Rec(a), Value::Rec(b)) if a.get(..n) == b.get(..n) => Ok(()),
             _ => Err(self.check_failed("discriminant check failed", span)),
         }
     }

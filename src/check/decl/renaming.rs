@@ -564,6 +564,34 @@ impl Checker {
                 back_check,
             });
         }
+        // The hidden flags of `g`'s mutable formals: `f`'s own (the same
+        // formals) when it has them, else True.
+        let mine_flagged = self.flagged_formals(f);
+        let theirs_flagged = self.flagged_formals(g);
+        let nflags = if mine_flagged == theirs_flagged {
+            mine_flagged.len()
+        } else {
+            0
+        };
+        for (k, _) in theirs_flagged.iter().enumerate() {
+            let value = if k < nflags {
+                self.mk(
+                    ExKind::Var(Var {
+                        level,
+                        slot: (mine.len() + k) as u32,
+                    }),
+                    BOOLEAN,
+                    span,
+                )
+            } else {
+                self.mk(ExKind::Int(1), BOOLEAN, span)
+            };
+            args.push(Arg {
+                mode: ast::Mode::In,
+                value,
+                back_check: None,
+            });
+        }
         let call = match self.tables.funcs[g as usize].ret {
             Some(r) => {
                 let ret = self.tables.funcs[f as usize].ret.unwrap_or(r);
@@ -574,8 +602,9 @@ impl Checker {
         };
         let mut stmts: Vec<Stmt> = self.elab_check(f, decl).into_iter().collect();
         stmts.push(Stmt { kind: call, span });
+        let nslots = (mine.len() + mine_flagged.len()) as u32;
         let sub = &mut self.tables.funcs[f as usize];
-        sub.nslots = mine.len() as u32;
+        sub.nslots = nslots;
         sub.body = Some(Rc::new(Body {
             stmts,
             handlers: Vec::new(),

@@ -93,6 +93,7 @@ impl Checker {
             span: spec.span,
         });
         self.tables.imports.push(None);
+        self.flag_formals(id);
         let tys: Vec<TypeId> = self.tables.funcs[id as usize]
             .params
             .iter()
@@ -228,8 +229,10 @@ impl Checker {
         self.unit_path.push(display.to_string());
         let mut written = written.iter();
         let mut last = None;
+        let mut param_vars = Vec::with_capacity(params.len());
         for (i, p) in params.iter().enumerate() {
             let var = self.new_slot();
+            param_vars.push(var);
             last = Some(var);
             let e = Entity::Var {
                 var,
@@ -246,6 +249,23 @@ impl Checker {
                 }
                 // The hidden object parameter of a protected operation.
                 None => self.declare(&p.name, e),
+            }
+        }
+        // The hidden flags of `out` and `in out` formals of a mutable
+        // record type: the slots after the parameters.
+        let mut flagged = Vec::new();
+        if self.flagged_funcs.contains(&f) {
+            for j in self.flagged_formals(f) {
+                let flag = self.new_slot();
+                self.constrained_flags.insert(param_vars[j], Some(flag));
+                flagged.push(param_vars[j]);
+            }
+        } else {
+            for (p, v) in params.iter().zip(&param_vars) {
+                if self.needs_constrained_flag(p.mode, p.ty) {
+                    self.constrained_flags.insert(*v, None);
+                    flagged.push(*v);
+                }
             }
         }
         let outer_function_obj = self.tasking.prot_function_obj;
@@ -273,6 +293,9 @@ impl Checker {
         self.tasking.prot_function_obj = outer_function_obj;
         self.unit_path.pop();
         self.scopes.pop();
+        for v in flagged {
+            self.constrained_flags.remove(&v);
+        }
         let ctx = self.ctx.pop().expect("ctx");
         self.report_unread();
         self.level -= 1;

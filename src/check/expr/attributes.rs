@@ -318,6 +318,19 @@ impl Checker {
                 }
             };
         }
+        if key == "constrained" {
+            if self.tables.types.discriminants(pe.ty).is_empty() {
+                if pe.ty != ERROR {
+                    let ty = self.tables.types.name(pe.ty).to_string();
+                    self.err(diagnostics::constrained_without_discriminants(pe.span, &ty));
+                }
+                return self.err_ex(sp);
+            }
+            // RM 3.7.2: whether the object's discriminants can change.
+            return self
+                .constrained_ex(&pe)
+                .unwrap_or_else(|| self.mk(ExKind::Int(1), BOOLEAN, sp));
+        }
         if key == "image" && self.tables.types.is_scalar(pe.ty) {
             let t = if self.tables.types.is_universal(pe.ty) {
                 if self.tables.types.is_float(pe.ty) {

@@ -262,7 +262,10 @@ impl Checker {
                 }
             }
         }
-        Some(self.internal_prot_call(f, out, span))
+        let (g, mut out) = self.internal_prot_call(f, out, span);
+        let flags = self.constrained_flag_args(g, &out);
+        out.extend(flags);
+        Some((g, out))
     }
 
     pub fn signature(&self, f: FuncId) -> String {

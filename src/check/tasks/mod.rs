@@ -305,6 +305,7 @@ impl Checker {
                     real_params.push(self_param(access));
                     let real =
                         self.new_func(format!("{name}.{display}"), real_params, ret, spec.span);
+                    self.flag_formals(real);
                     self.tables.prot_real.insert(profile, (real, k));
                     if private {
                         self.tables.prot_private.insert(profile);

@@ -162,6 +162,8 @@ impl Checker {
         let real = self.tables.prot_real.get(&f)?.0;
         self.index_ref(id.span, &id.key, &Entity::Func(f));
         a.push(self.obj_arg(k, obj));
+        let flags = self.constrained_flag_args(real, &a);
+        a.extend(flags);
         Some((real, a))
     }
 
@@ -528,6 +530,9 @@ impl Checker {
             };
             self.index_def(&id.name, id.span, &e, None);
             self.declare(&id.name, e);
+            if self.needs_constrained_flag(p.mode, p.ty) {
+                self.constrained_flags.insert(var, None);
+            }
             slots.push((var, p.mode));
         }
         self.tasking
@@ -536,6 +541,9 @@ impl Checker {
         let body = body.map(|b| self.block(b));
         self.tasking.accepting.pop();
         self.scopes.pop();
+        for (v, _) in &slots {
+            self.constrained_flags.remove(v);
+        }
         Some(Accept {
             entry: i as u32,
             index,

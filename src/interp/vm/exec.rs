@@ -350,6 +350,13 @@ impl<'a> Run<'a> {
                     self.put_int_ix(ix!(*d), x as i64);
                     continue;
                 }
+                Op::SameDiscriminants(a, b, n, span) => {
+                    let (x, y) = (&self.m.stack[ix!(*a)], &self.m.stack[ix!(*b)]);
+                    match self.same_discriminants(x, y, *n as usize, *span) {
+                        Ok(()) => continue,
+                        r => r,
+                    }
+                }
                 Op::Variant(a, conds, span) => {
                     match self.variant_check(&self.m.stack[ix!(*a)], conds, *span) {
                         Ok(()) => continue,

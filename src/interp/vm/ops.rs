@@ -29,6 +29,9 @@ pub(super) enum Op {
     /// The record in the slot has the variant of a component (a
     /// discriminant check, `Run::variant_check`).
     Variant(Var, Variant, Span),
+    /// The value in the first slot has the first `n` discriminants of the
+    /// record in the second (`Run::same_discriminants`).
+    SameDiscriminants(Var, Var, u32, Span),
     /// `dst := arr (ix...)` for an array held in a slot (three or four
     /// indices; one and two are `Index1`, `Index2`, without an allocation).
     Index(Var, Var, Box<[Var]>, Span),
@@ -432,6 +435,7 @@ pub(super) fn relocate(op: &mut Op, by: u32) {
         | Op::Not(..)
         | Op::RangeCheck(..)
         | Op::Variant(..)
+        | Op::SameDiscriminants(..)
         | Op::Index(..)
         | Op::Index1(..)
         | Op::Index2(..)

@@ -131,6 +131,19 @@ impl<'r> Compiler<'r> {
                 let x = self.expr(a);
                 self.ops.push(Op::Not(dst, x));
             }
+            ExKind::KeepDiscriminants(parts) => {
+                let [v, target, when] = &**parts;
+                let x = self.operand_before(v, [when, target]);
+                let w = self.expr(when);
+                let j = self.ops.len();
+                self.ops.push(Op::JumpIfNot(w, 0));
+                let cur = self.expr(target);
+                let n = self.types.discriminants(target.ty).len() as u32;
+                self.ops.push(Op::SameDiscriminants(x, cur, n, span));
+                let end = self.here();
+                self.patch(j, end);
+                self.ops.push(Op::Move(dst, x));
+            }
             ExKind::Variant(a, i) => {
                 let x = self.expr(a);
                 if let Some(conds) = self.variant_of(a.ty, *i) {

@@ -278,6 +278,7 @@ impl<'r> Compiler<'r> {
                 | Op::Not(..)
                 | Op::RangeCheck(..)
                 | Op::Variant(..)
+                | Op::SameDiscriminants(..)
                 | Op::Index(..)
                 | Op::Index1(..)
                 | Op::Index2(..)
