@@ -1408,3 +1408,142 @@ fn renamings_hover_and_go_to_definition() {
     }
     c.finish();
 }
+
+const PRIVATE_TYPES: &str = "\
+with Ada.Text_IO; use Ada.Text_IO;
+
+procedure Cell is
+   package Axes is
+      type Axis_Handle is private;
+      type Gripper is limited private;
+      Home : constant Axis_Handle;
+      function Make (Joint : Positive) return Axis_Handle;
+      procedure Close (G : in out Gripper);
+   private
+      type Axis_Handle is record
+         Joint : Positive := 1;
+         Angle : Float := 0.0;
+      end record;
+      type Gripper is record
+         Closed : Boolean := False;
+      end record;
+      Home : constant Axis_Handle := (Joint => 1, Angle => 0.0);
+   end Axes;
+
+   package body Axes is
+      function Make (Joint : Positive) return Axis_Handle is
+         H : Axis_Handle;
+      begin
+         H.Joint := Joint;
+         return H;
+      end Make;
+      procedure Close (G : in out Gripper) is
+      begin
+         G.Closed := True;
+      end Close;
+   end Axes;
+
+   use Axes;
+   Shoulder : Axis_Handle := Make (2);
+   Hand : Gripper;
+begin
+   Close (Hand);
+   if Shoulder = Home then
+      Put_Line (\"home\");
+   end if;
+end Cell;
+";
+
+/// Private types in the tools: hover on the type shows its partial view
+/// (not the full declaration), go to definition goes there from a client
+/// and from the full declaration, a deferred constant hovers as a
+/// constant, completion after a dot offers the components inside the
+/// package only, and the outline lists both views.
+#[test]
+fn private_types_in_hover_definition_completion_and_outline() {
+    let mut c = Client::start();
+    c.open("demo.air", PRIVATE_TYPES);
+    let (d, _) = c.diagnostics("demo.air");
+    assert!(d.is_empty(), "the private types check: {d:?}");
+    let src = PRIVATE_TYPES;
+    // Hover on a client's use of the type: its partial view.
+    let (text, _) = hover_text(&mut c, pos(src, "Axis_Handle := Make", 0, 1));
+    assert!(text.contains("type Axis_Handle is private;"), "{text}");
+    assert!(!text.contains("Angle"), "the full view is hidden: {text}");
+    let (text, _) = hover_text(&mut c, pos(src, "Hand : Gripper", 0, 8));
+    assert!(text.contains("type Gripper is limited private;"), "{text}");
+    // On an object of it: its type, and the type's partial view.
+    let (text, _) = hover_text(&mut c, pos(src, "Close (Hand)", 0, 8));
+    assert!(text.contains("Hand : Gripper"), "{text}");
+    assert!(text.contains("type Gripper is limited private;"), "{text}");
+    // A deferred constant.
+    let (text, _) = hover_text(&mut c, pos(src, "= Home", 0, 3));
+    assert!(text.contains("Home : constant Axis_Handle"), "{text}");
+    // Go to definition: the partial view, from a client and from the
+    // full declaration's name.
+    let l = definition(&mut c, pos(src, "Axis_Handle := Make", 0, 1));
+    assert_eq!(l.range, range(src, "Axis_Handle", 0));
+    let l = definition(&mut c, pos(src, "type Axis_Handle is record", 0, 6));
+    assert_eq!(l.range, range(src, "Axis_Handle", 0));
+    let l = definition(&mut c, pos(src, "= Home", 0, 3));
+    assert_eq!(l.range, range(src, "Home", 0));
+    // A component inside the body goes to the full declaration's.
+    let l = definition(&mut c, pos(src, "H.Joint", 0, 3));
+    assert_eq!(l.range, range(src, "Joint", 1));
+    // Completion after a dot: the components inside the package...
+    let inside = src.replace("H.Joint := Joint;", "H.Joint := Joint;\n         H.");
+    c.change("demo.air", 2, &inside);
+    let _ = c.diagnostics("demo.air");
+    let l = labels(&completion_at(
+        &mut c,
+        "demo.air",
+        pos(&inside, "H.\n", 0, 2),
+    ));
+    assert!(l.iter().any(|x| x == "Angle"), "{l:?}");
+    // ... none in a client.
+    let outside = src.replace("   end if;\nend Cell", "   end if;\n   Shoulder.\nend Cell");
+    c.change("demo.air", 3, &outside);
+    let _ = c.diagnostics("demo.air");
+    let l = labels(&completion_at(
+        &mut c,
+        "demo.air",
+        pos(&outside, "Shoulder.\n", 0, 9),
+    ));
+    assert!(!l.iter().any(|x| x == "Angle" || x == "Joint"), "{l:?}");
+    c.change("demo.air", 4, src);
+    let _ = c.diagnostics("demo.air");
+    // The outline: the package lists the partial views and the full
+    // declarations.
+    let v = c.result(
+        R::DocumentSymbolRequest::METHOD,
+        json!({ "textDocument": { "uri": uri("demo.air") } }),
+    );
+    let syms: Vec<lsp_types::DocumentSymbol> = serde_json::from_value(v).unwrap();
+    let pkg = syms[0]
+        .children
+        .as_ref()
+        .unwrap()
+        .iter()
+        .find(|s| s.name == "Axes")
+        .expect("the package in the outline");
+    let kids: Vec<(String, Option<String>)> = pkg
+        .children
+        .as_ref()
+        .unwrap()
+        .iter()
+        .map(|s| (s.name.clone(), s.detail.clone()))
+        .collect();
+    for (name, detail) in [
+        ("Axis_Handle", "private type"),
+        ("Gripper", "limited private type"),
+        ("Axis_Handle", "type"),
+        ("Home", "Axis_Handle"),
+    ] {
+        assert!(
+            kids.iter()
+                .any(|(n, d)| n == name && d.as_deref() == Some(detail)),
+            "{name}: {kids:?}"
+        );
+    }
+    c.finish();
+}

@@ -62,6 +62,46 @@ fn main() {
                 }
             })
         })
-        .collect();
+        .collect::<Vec<_>>();
+    let mut trials = trials;
+    trials.push(Trial::test(
+        "repl::private_components_are_not_completed",
+        private_components_are_not_completed,
+    ));
     libtest_mimic::run(&Arguments::from_args(), trials).exit();
+}
+
+/// Tab after `Var.` offers a record's components, but not those of a
+/// private type outside its package (its full view is hidden there).
+fn private_components_are_not_completed() -> Result<(), Failed> {
+    let mut s = adair::session::Session::new(Box::new(std::io::sink()));
+    let script = "\
+package Axes is
+   type Axis_Handle is private;
+   function Make (Joint : Positive) return Axis_Handle;
+private
+   type Axis_Handle is record
+      Joint : Positive := 1;
+   end record;
+end Axes;
+package body Axes is
+   function Make (Joint : Positive) return Axis_Handle is ((Joint => Joint));
+end Axes;
+type Plain is record
+   Joint : Positive := 1;
+end record;
+Shoulder : Axes.Axis_Handle := Axes.Make (2);
+Elbow : Plain;
+";
+    s.check_source("<entry 1>", script, true)
+        .map_err(|d| Failed::from(format!("{d:?}")))?;
+    let c = &s.front.checker;
+    let plain = c.record_fields_of("Elbow");
+    let private = c.record_fields_of("Shoulder");
+    if plain != ["Joint"] || !private.is_empty() {
+        return Err(Failed::from(format!(
+            "Elbow. offers {plain:?}, Shoulder. offers {private:?}"
+        )));
+    }
+    Ok(())
 }

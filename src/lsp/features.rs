@@ -436,9 +436,14 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
                 ),
                 _ => (K::CLASS, Vec::new()),
             };
+            let detail = match def {
+                ast::TypeDef::Private { limited: true } => "limited private type",
+                ast::TypeDef::Private { limited: false } => "private type",
+                _ => "type",
+            };
             out.push(Symbol {
                 name: name.name.to_string(),
-                detail: Some("type".into()),
+                detail: Some(detail.into()),
                 kind,
                 span: d.span,
                 name_span: name.span,

@@ -330,7 +330,9 @@ impl Repl {
                 Some(id) => self.session.front.checker.may_name_a_procedure(&id.key),
                 None => matches!(e.kind, ExprKind::Select(..) | ExprKind::Apply(..)),
             };
-            if !diags.is_empty() && !callable {
+            // Nor a component of a private type selected where it is hidden.
+            let hidden = diags.iter().any(|d| d.code == crate::diag::codes::E0317);
+            if !diags.is_empty() && (!callable || hidden) {
                 self.session.front.checker = snapshot;
                 return Reply {
                     text: self.render(&diags),
