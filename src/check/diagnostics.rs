@@ -1243,6 +1243,18 @@ pub fn discriminant_not_discrete(span: Span) -> Diagnostic {
     .with_hint("use an integer or enumeration type (`Size : Positive`, `Kind : Tool_Kind`)")
 }
 
+/// RM 9.1(2), 9.4(2): only a task or protected *type* has discriminants.
+pub fn single_unit_discriminants(span: Span, unit: &str, name: &str) -> Diagnostic {
+    d(
+        codes::E0314,
+        span,
+        format!("a discriminant part is not allowed on a single {unit}"),
+    )
+    .with_hint(format!(
+        "declare `{unit} type {name} (...)` and an object of it with its discriminants"
+    ))
+}
+
 pub fn discriminant_defaults_incomplete(span: Span) -> Diagnostic {
     d(
         codes::E0314,
@@ -1297,6 +1309,33 @@ pub fn discriminated_object_unconstrained(span: Span, ty: &str) -> Diagnostic {
     .with_label("unconstrained subtype not allowed (need initialization)")
     .with_hint(format!(
         "write `{ty} (...)` with the discriminants, give an initial value, or give the discriminants defaults"
+    ))
+}
+
+/// RM 3.8(12): a discriminant in a component's constraint is the whole
+/// bound or value, not part of an expression.
+pub fn discriminant_not_alone(span: Span) -> Diagnostic {
+    d(
+        codes::E0314,
+        span,
+        "a discriminant in a component's constraint must appear alone",
+    )
+    .with_label("an expression of a discriminant")
+    .with_hint(
+        "use the discriminant itself as the bound (`String (1 .. Size)`), not an expression of it",
+    )
+}
+
+/// RM 4.8(4): `new T` of a type whose discriminants have no defaults.
+pub fn allocator_unconstrained(span: Span, ty: &str) -> Diagnostic {
+    d(
+        codes::E0314,
+        span,
+        format!("an allocator of `{ty}` needs its discriminants: `{ty}` gives them no defaults"),
+    )
+    .with_label("uninitialized unconstrained allocation not allowed")
+    .with_hint(format!(
+        "write `new {ty} (...)` with the discriminants, or `new {ty}'(...)` with a value"
     ))
 }
 

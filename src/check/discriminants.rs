@@ -19,6 +19,15 @@ impl Checker {
             && self.tables.types.discriminant_constraint(t).is_none()
     }
 
+    /// Whether an object of subtype `t` needs a discriminant constraint
+    /// or an initial value: its discriminants have no defaults (RM 3.7(26)).
+    pub(super) fn needs_discriminants(&self, t: TypeId) -> bool {
+        let types = &self.tables.types;
+        !types.discriminants(t).is_empty()
+            && !types.discriminant_defaults(t)
+            && types.discriminant_constraint(t).is_none()
+    }
+
     /// Gives `f`'s mutable formals their hidden flags, if it has any.
     pub(super) fn flag_formals(&mut self, f: FuncId) {
         if self.tables.funcs[f as usize]

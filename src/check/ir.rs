@@ -207,6 +207,8 @@ pub enum AttrOp {
     Ceiling,
     Truncation,
     Rounding,
+    /// Discriminant `i` of a task value (`Controller.Axis`).
+    TaskDiscriminant(u32),
     /// `T'Callable`, `T'Terminated` of a task value.
     Callable,
     Terminated,
@@ -651,6 +653,8 @@ pub struct TimedCall {
 #[derive(Clone, Debug)]
 pub struct TaskDef {
     pub name: String,
+    /// Its discriminants (RM 9.1): the body's parameters.
+    pub discriminants: Vec<super::types::Field>,
     pub entries: Vec<EntryDef>,
     /// The task body: a subprogram without parameters, one level below the
     /// type's declaration.

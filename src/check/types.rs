@@ -172,6 +172,10 @@ pub struct Types {
     /// Whether `hidden` applies: while the checker checks. The engines see
     /// every full view (`false` otherwise).
     pub views: bool,
+    /// The discriminants of task and protected types (RM 9.1, 9.4), by
+    /// type: a task's are its body's parameters, a protected object's are
+    /// the first components after its number.
+    pub conc_discrs: std::collections::HashMap<TypeId, Vec<Field>>,
 }
 
 impl Types {
@@ -315,13 +319,18 @@ impl Types {
             _ => None,
         }
     }
-    /// The discriminants of a record type (its first components).
+    /// The discriminants of a record type (its first components), of a
+    /// task or a protected type.
     pub fn discriminants(&self, t: TypeId) -> &[Field] {
         match self.kind(t) {
             TypeKind::Record(f) => {
                 let n = f.iter().take_while(|f| f.discriminant).count();
                 &f[..n]
             }
+            TypeKind::Task(_) | TypeKind::Protected(_) => self
+                .conc_discrs
+                .get(&self.base(t))
+                .map_or(&[], |v| v.as_slice()),
             _ => &[],
         }
     }

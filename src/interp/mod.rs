@@ -1683,8 +1683,20 @@ impl Run<'_> {
     /// subtype's constraint, else their defaults; then the components of
     /// the variant they choose, with the discriminants in reach.
     fn default_record(&mut self, t: TypeId, fields: &[Field], nd: usize, span: Span) -> R<Value> {
+        let v = self.discriminant_values(t, &fields[..nd], span)?;
+        self.record_of_discriminants(fields, v, span)
+    }
+
+    /// The discriminants of a new object of subtype `t` (its `ds`): its
+    /// constraint's values, else their defaults.
+    pub(crate) fn discriminant_values(
+        &mut self,
+        t: TypeId,
+        ds: &[Field],
+        span: Span,
+    ) -> R<Vec<Value>> {
         let types = self.c.types;
-        let mut v = value::Fields::with_capacity(fields.len());
+        let mut v = Vec::with_capacity(ds.len());
         match types.discriminant_constraint(t) {
             Some(cs) => {
                 for c in cs {
@@ -1692,7 +1704,7 @@ impl Run<'_> {
                 }
             }
             None => {
-                for f in &fields[..nd] {
+                for f in ds {
                     v.push(match &f.default {
                         Some(d) => self.eval(d)?,
                         None => self.default_value(f.ty, span)?,
@@ -1700,7 +1712,21 @@ impl Run<'_> {
                 }
             }
         }
-        self.m.discrs.push(v.to_vec());
+        Ok(v)
+    }
+
+    /// A record value of these components whose discriminants (the first
+    /// ones) are `discrs`: the other components' defaults, read under them.
+    pub(crate) fn record_of_discriminants(
+        &mut self,
+        fields: &[Field],
+        discrs: Vec<Value>,
+        span: Span,
+    ) -> R<Value> {
+        let nd = discrs.len();
+        let mut v = value::Fields::with_capacity(fields.len());
+        v.extend(discrs.iter().cloned());
+        self.m.discrs.push(discrs);
         let r = (|| {
             for f in &fields[nd..] {
                 if let Some(conds) = &f.variant
@@ -1738,8 +1764,8 @@ impl Run<'_> {
                 }
                 Value::Rec(Rc::new(v))
             }
-            TypeKind::Task(k) => self.create_task(k, span)?,
-            TypeKind::Protected(k) => self.create_protected(k, span)?,
+            TypeKind::Task(k) => self.create_task(k, t, span)?,
+            TypeKind::Protected(k) => self.create_protected(k, t, span)?,
             TypeKind::Array { elem, .. } => {
                 let bounds = self.array_bounds(t)?.unwrap_or_default();
                 let n: i64 = bounds
@@ -2212,9 +2238,11 @@ impl Run<'_> {
         sp: Span,
     ) -> R<Value> {
         Ok(match op {
-            AttrOp::Callable | AttrOp::Terminated | AttrOp::Count(_) | AttrOp::ProtCount(_) => {
-                self.task_attr(op, &[a0, a1])
-            }
+            AttrOp::Callable
+            | AttrOp::Terminated
+            | AttrOp::Count(_)
+            | AttrOp::ProtCount(_)
+            | AttrOp::TaskDiscriminant(_) => self.task_attr(op, &[a0, a1]),
             AttrOp::ArrFirst(d) | AttrOp::ArrLast(d) | AttrOp::ArrLength(d) => {
                 let Value::Arr(a) = a0 else {
                     return Err(self.check_failed("access check failed", sp));

@@ -157,6 +157,9 @@ pub(crate) struct Thread {
     pub seq: u64,
     /// The task's type (None: the environment task).
     pub ttype: Option<u32>,
+    /// Its discriminants (RM 9.1): its body's parameters, and what
+    /// `T.Id` reads from outside.
+    pub discrs: Vec<Value>,
     /// Where it blocked last.
     pub at: Span,
 }
@@ -196,6 +199,7 @@ impl Thread {
             callable: true,
             seq: 0,
             ttype,
+            discrs: Vec::new(),
             at: crate::diag::span(0, 0, 0),
         }
     }
@@ -495,7 +499,7 @@ impl Run<'_> {
     /// A new task of type `k` (a declaration's default value or an
     /// allocator): not activated; its master is the running thread's
     /// innermost master region.
-    pub(crate) fn create_task(&mut self, k: u32, span: Span) -> R<Value> {
+    pub(crate) fn create_task(&mut self, k: u32, t: TypeId, span: Span) -> R<Value> {
         if self.m.engine == vm::Engine::Walker {
             return Err(self.raise(
                 check::PROGRAM_ERROR,
@@ -512,6 +516,7 @@ impl Run<'_> {
                 span,
             ));
         };
+        let discrs = self.discriminant_values(t, &def.discriminants, span)?;
         let priority = match &def.priority {
             Some(p) => self.eval(p)?.int(),
             None => DEFAULT_PRIORITY,
@@ -543,6 +548,7 @@ impl Run<'_> {
         };
         let mut t = Thread::new(name, Some(k), def.queues());
         t.priority = priority;
+        t.discrs = discrs;
         t.start = Some((body, display));
         let cur = self.m.sched.cur;
         t.parent = Some(cur);
@@ -605,23 +611,22 @@ impl Run<'_> {
     }
 
     /// A new protected object of type `k`.
-    pub(crate) fn create_protected(&mut self, k: u32, span: Span) -> R<Value> {
+    /// Its components: its number, its discriminants (those of its
+    /// subtype `t`), the private part's.
+    pub(crate) fn create_protected(&mut self, k: u32, t: TypeId, span: Span) -> R<Value> {
+        let types = self.c.types;
         let def = &self.c.prots[k as usize];
         let rec = def.rec;
         let n = def.queues();
-        let v = self.default_value(rec, span)?;
         let pid = self.m.sched.prots.len();
         self.m.sched.prots.push(ProtState {
             queues: vec![VecDeque::new(); n],
             ptype: k,
         });
-        let v = match v {
-            Value::Rec(mut r) => {
-                Rc::make_mut(&mut r)[0] = Value::Int(pid as i64);
-                Value::Rec(r)
-            }
-            other => other,
-        };
+        let mut discrs = vec![Value::Int(pid as i64)];
+        discrs.extend(self.discriminant_values(t, types.discriminants(t), span)?);
+        let fields = types.fields(rec).unwrap_or_default();
+        let v = self.record_of_discriminants(fields, discrs, span)?;
         Ok(Value::Ptr(Some(Obj::new(v))))
     }
 
@@ -660,6 +665,16 @@ impl Run<'_> {
                     p.queues.get(q as usize)
                 });
                 Value::Int(n.map_or(0, |q| q.len()) as i64)
+            }
+            AttrOp::TaskDiscriminant(i) => {
+                let t = args[0].int() as usize;
+                self.m
+                    .sched
+                    .threads
+                    .get(t)
+                    .and_then(|t| t.discrs.get(i as usize))
+                    .cloned()
+                    .unwrap_or(Value::Undef)
             }
             AttrOp::Callable => {
                 let t = args[0].int() as usize;

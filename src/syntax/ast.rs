@@ -334,6 +334,8 @@ pub struct PackageBody {
 #[derive(Clone, Debug, PartialEq)]
 pub struct TaskSpec {
     pub name: Ident,
+    /// `task type T (Id : Positive) is`: its discriminant part.
+    pub discriminants: Vec<Param>,
     pub entries: Vec<EntryDecl>,
     pub is_type: bool,
     /// `for E use at Addr;` inside the spec.
@@ -345,6 +347,8 @@ pub struct TaskSpec {
 #[derive(Clone, Debug, PartialEq)]
 pub struct ProtectedSpec {
     pub name: Ident,
+    /// `protected type P (Size : Positive) is`: its discriminant part.
+    pub discriminants: Vec<Param>,
     pub is_type: bool,
     /// Subprogram declarations and entries (as `SubprogramDecl` and `Entry`).
     pub ops: Vec<ProtOp>,

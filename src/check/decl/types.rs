@@ -38,10 +38,13 @@ impl Checker {
                     .iter()
                     .map(|a| (a.name.as_ref(), &a.value, a.span))
                     .collect();
-                self.discriminant_constraint(ind, t, &items)
+                self.discriminant_constraint(ind.span, t, &items)
             }
             Some(ast::Constraint::Index(ranges))
-                if matches!(self.tables.types.kind(t), TypeKind::Record(_)) =>
+                if matches!(
+                    self.tables.types.kind(t),
+                    TypeKind::Record(_) | TypeKind::Task(_) | TypeKind::Protected(_)
+                ) =>
             {
                 // `Buffer (80)`, `Gripper (Vacuum)`: positional values.
                 let mut items = Vec::new();
@@ -68,7 +71,7 @@ impl Checker {
                         }
                     }
                 }
-                self.discriminant_constraint(ind, t, &items)
+                self.discriminant_constraint(ind.span, t, &items)
             }
             Some(ast::Constraint::Index(ranges)) => {
                 let Some((index, elem, bounds)) = self
@@ -120,9 +123,9 @@ impl Checker {
 
     /// A discriminant constraint (RM 3.7.1): each discriminant's value,
     /// by position or by name, elaborated with the declaration.
-    fn discriminant_constraint(
+    pub(in crate::check) fn discriminant_constraint(
         &mut self,
-        ind: &ast::SubtypeInd,
+        at: Span,
         t: TypeId,
         items: &[(Option<&ast::Ident>, &ast::Expr, Span)],
     ) -> TypeId {
@@ -130,12 +133,12 @@ impl Checker {
         let tn = self.tables.types.name(t).to_string();
         if ds.is_empty() {
             if t != ERROR {
-                self.err(diagnostics::no_discriminants(ind.span, &tn));
+                self.err(diagnostics::no_discriminants(at, &tn));
             }
             return ERROR;
         }
         if self.tables.types.discriminant_constraint(t).is_some() {
-            self.err(diagnostics::already_constrained(ind.span, &tn));
+            self.err(diagnostics::already_constrained(at, &tn));
             return t;
         }
         let mut vals: Vec<Option<Ex>> = vec![None; ds.len()];
@@ -180,7 +183,7 @@ impl Checker {
             return ERROR;
         }
         let Some(vals) = vals.into_iter().collect::<Option<Vec<Ex>>>() else {
-            self.err(diagnostics::discriminant_count(ind.span, &tn, false));
+            self.err(diagnostics::discriminant_count(at, &tn, false));
             return ERROR;
         };
         let st = self.tables.types.add_subtype(&tn, t);
@@ -470,6 +473,12 @@ impl Checker {
                 if matches!(self.tables.types.array(et), Some((_, _, None))) {
                     self.err(diagnostics::array_component_unconstrained(elem.span));
                 }
+                if self.needs_discriminants(et) {
+                    self.err(diagnostics::discriminated_component_unconstrained(
+                        elem.span,
+                        self.tables.types.name(et),
+                    ));
+                }
                 match index {
                     ast::ArrayIndex::Unconstrained(marks) => {
                         let idx: Vec<TypeId> = marks.iter().map(|m| self.type_mark(m)).collect();
@@ -534,6 +543,34 @@ impl Checker {
         discriminants: &[ast::Param],
         list: &ast::ComponentList,
     ) -> TypeId {
+        let (mut fields, mut names) = self.discriminant_part(discriminants);
+        self.scopes.push();
+        for (i, f) in fields.iter().enumerate() {
+            let x = Ex {
+                kind: ExKind::Discriminant(i as u32),
+                ty: f.ty,
+                span: names[i].span,
+            };
+            self.declare(&f.name, Entity::Alias(Box::new(x)));
+        }
+        let outer = std::mem::replace(&mut self.in_discriminated, !fields.is_empty());
+        self.component_list(list, &mut fields, &mut names, None);
+        self.in_discriminated = outer;
+        self.scopes.pop();
+        let tys: Vec<TypeId> = fields.iter().map(|f| f.ty).collect();
+        let t = self.tables.types.add(&name.name, TypeKind::Record(fields));
+        for (i, (n, ft)) in names.into_iter().zip(tys).enumerate() {
+            self.index_field(t, i as u32, n, ft);
+        }
+        t
+    }
+
+    /// A discriminant part (RM 3.7) of a record, task or protected type:
+    /// its discriminants as components, and their names.
+    pub(in crate::check) fn discriminant_part<'a>(
+        &mut self,
+        discriminants: &'a [ast::Param],
+    ) -> (Vec<Field>, Vec<&'a ast::Ident>) {
         let mut fields: Vec<Field> = Vec::new();
         let mut names: Vec<&ast::Ident> = Vec::new();
         let mut defaults = (0, 0);
@@ -567,25 +604,7 @@ impl Checker {
                 discriminants[0].span,
             ));
         }
-        self.scopes.push();
-        for (i, f) in fields.iter().enumerate() {
-            let x = Ex {
-                kind: ExKind::Discriminant(i as u32),
-                ty: f.ty,
-                span: names[i].span,
-            };
-            self.declare(&f.name, Entity::Alias(Box::new(x)));
-        }
-        let outer = std::mem::replace(&mut self.in_discriminated, !fields.is_empty());
-        self.component_list(list, &mut fields, &mut names, None);
-        self.in_discriminated = outer;
-        self.scopes.pop();
-        let tys: Vec<TypeId> = fields.iter().map(|f| f.ty).collect();
-        let t = self.tables.types.add(&name.name, TypeKind::Record(fields));
-        for (i, (n, ft)) in names.into_iter().zip(tys).enumerate() {
-            self.index_field(t, i as u32, n, ft);
-        }
-        t
+        (fields, names)
     }
 
     /// The components of a component list, in order, then those of its
@@ -600,6 +619,9 @@ impl Checker {
         for c in &list.components {
             let t = self.subtype_ind(&c.ty);
             let dependent = self.in_discriminated && self.reads_discriminant(t);
+            if dependent {
+                self.check_discriminants_alone(t, c.ty.span);
+            }
             if !dependent && matches!(self.tables.types.array(t), Some((_, _, None))) {
                 self.err(diagnostics::record_component_unconstrained(c.ty.span));
             }
@@ -694,7 +716,34 @@ impl Checker {
 
     /// Whether a component's subtype reads the discriminants of the record
     /// being defined (its bounds or discriminant values do).
-    fn reads_discriminant(&self, t: TypeId) -> bool {
+    pub(in crate::check) fn reads_discriminant(&self, t: TypeId) -> bool {
+        self.constraint_parts(t)
+            .into_iter()
+            .any(ir::reads_discriminant)
+    }
+
+    /// A component's subtype that reads the discriminants reads each alone
+    /// (RM 3.8(12)): `String (1 .. Size)`, not `String (1 .. Size + 1)`.
+    pub(in crate::check) fn check_discriminants_alone(&mut self, t: TypeId, span: Span) {
+        fn alone(e: &Ex) -> bool {
+            match &e.kind {
+                ExKind::Discriminant(_) => true,
+                ExKind::RangeCheck(x, _) => alone(x),
+                _ => false,
+            }
+        }
+        if self
+            .constraint_parts(t)
+            .into_iter()
+            .any(|e| ir::reads_discriminant(e) && !alone(e))
+        {
+            self.err(diagnostics::discriminant_not_alone(span));
+        }
+    }
+
+    /// The expressions of a subtype's constraint: its range, its bounds,
+    /// its discriminants' values.
+    fn constraint_parts(&self, t: TypeId) -> Vec<&Ex> {
         let info = self.tables.types.get(t);
         let range = info.range.iter().flat_map(|(l, h)| [l, h]);
         let bounds = match &info.kind {
@@ -704,7 +753,7 @@ impl Checker {
             _ => Vec::new(),
         };
         let discr = info.discr.iter().flat_map(|d| d.iter());
-        range.chain(bounds).chain(discr).any(ir::reads_discriminant)
+        range.chain(bounds).chain(discr).collect()
     }
 
     /// An access type to a type holding tasks makes its declarative region

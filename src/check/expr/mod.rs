@@ -427,7 +427,7 @@ impl Checker {
                     return self.err_ex(sp);
                 };
                 let d = self.tables.types.designated(w).unwrap_or(ERROR);
-                let t = self.type_mark(tm);
+                let t = self.allocated_subtype(tm);
                 if !self.tables.types.compatible(t, d) {
                     self.err(diagnostics::designates_other_type(
                         tm.span,
@@ -440,9 +440,33 @@ impl Checker {
                     let v = self.expr(x, Some(t));
                     bx(self.coerce(v, t))
                 });
+                if init.is_none() && self.needs_discriminants(t) {
+                    self.err(diagnostics::allocator_unconstrained(
+                        tm.span,
+                        self.tables.types.name(t),
+                    ));
+                }
                 self.mk(ExKind::Alloc(init, t), w, sp)
             }
         }
+    }
+
+    /// The subtype an allocator names: `new Station (Id => 9, Speed => 0)`
+    /// with a discriminant constraint (RM 4.8(3)), else a type mark.
+    fn allocated_subtype(&mut self, tm: &ast::Expr) -> TypeId {
+        if let ExprKind::Apply(p, args) = &tm.kind
+            && let ExprKind::Name(id) = &p.kind
+            && let Some(Entity::Type(t)) = self.lookup(&id.key).first().cloned()
+            && !self.tables.types.discriminants(t).is_empty()
+        {
+            let t = self.type_mark(p);
+            let items: Vec<(Option<&ast::Ident>, &ast::Expr, Span)> = args
+                .iter()
+                .map(|a| (a.name.as_ref(), &a.value, a.span))
+                .collect();
+            return self.discriminant_constraint(tm.span, t, &items);
+        }
+        self.type_mark(tm)
     }
 
     /// An unconstrained array type with the same index and element types.
@@ -550,12 +574,21 @@ impl Checker {
     }
 
     fn component(&mut self, mut pe: Ex, id: &ast::Ident, sp: Span) -> Ex {
+        if let Some(x) = self.conc_discriminant(&pe, id, sp) {
+            return x;
+        }
         if let TypeKind::Protected(k) = self.tables.types.kind(pe.ty).clone() {
             return self.prot_function(k, pe, id, &[], sp);
         }
         if let Some(d) = self.tables.types.designated(pe.ty) {
             let psp = pe.span;
             pe = self.mk(ExKind::Deref(bx(pe)), d, psp);
+            if let Some(x) = self.conc_discriminant(&pe, id, sp) {
+                return x;
+            }
+            if let TypeKind::Protected(k) = self.tables.types.kind(pe.ty).clone() {
+                return self.prot_function(k, pe, id, &[], sp);
+            }
         }
         if pe.ty == ERROR {
             return self.err_ex(sp);
@@ -601,6 +634,40 @@ impl Checker {
                 ));
                 self.err_ex(sp)
             }
+        }
+    }
+
+    /// `T.Id` of a task `T`, `P.Size` of a protected object `P`: a
+    /// discriminant (RM 9.1(12), 9.4(12)).
+    fn conc_discriminant(&mut self, pe: &Ex, id: &ast::Ident, sp: Span) -> Option<Ex> {
+        let types = &self.tables.types;
+        let j = types
+            .discriminants(pe.ty)
+            .iter()
+            .position(|d| *d.key == *id.key)?;
+        let t = types.discriminants(pe.ty)[j].ty;
+        if matches!(
+            types.kind(pe.ty),
+            TypeKind::Task(_) | TypeKind::Protected(_)
+        ) {
+            self.index_field_ref(id.span, pe.ty, j as u32);
+        }
+        let types = &self.tables.types;
+        match types.kind(pe.ty).clone() {
+            TypeKind::Task(_) => Some(self.mk(
+                ExKind::Attr(
+                    AttrOp::TaskDiscriminant(j as u32),
+                    Box::new(vec![pe.clone()]),
+                ),
+                t,
+                sp,
+            )),
+            TypeKind::Protected(k) => {
+                let rec = self.tables.prots[k as usize].rec;
+                let obj = self.mk(ExKind::Deref(bx(pe.clone())), rec, pe.span);
+                Some(self.mk(ExKind::Field(bx(obj), j as u32 + 1), t, sp))
+            }
+            _ => None,
         }
     }
 

@@ -112,6 +112,7 @@ impl Checker {
         let k = self.tables.tasks.len() as u32;
         let name = t.name.name.clone();
         let ty = self.tables.types.add(&name, TypeKind::Task(k));
+        let discriminants = self.conc_discriminants(ty, &t.discriminants, t.is_type, "task", &name);
         let mut entries = Vec::new();
         for e in &t.entries {
             if entries
@@ -177,6 +178,7 @@ impl Checker {
         });
         self.tables.tasks.push(TaskDef {
             name: name.to_string(),
+            discriminants,
             entries,
             body: None,
             priority,
@@ -187,6 +189,33 @@ impl Checker {
         } else {
             self.object(std::slice::from_ref(&t.name), false, ty, None, span, out);
         }
+    }
+
+    /// The discriminant part of the task or protected type `ty` (RM 9.1,
+    /// 9.4): none on a single task or protected object.
+    fn conc_discriminants(
+        &mut self,
+        ty: TypeId,
+        ps: &[ast::Param],
+        is_type: bool,
+        unit: &str,
+        name: &str,
+    ) -> Vec<types::Field> {
+        let Some(first) = ps.first() else {
+            return Vec::new();
+        };
+        if !is_type {
+            self.err(diagnostics::single_unit_discriminants(
+                first.span, unit, name,
+            ));
+            return Vec::new();
+        }
+        let (fields, names) = self.discriminant_part(ps);
+        for (i, (n, f)) in names.into_iter().zip(&fields).enumerate() {
+            self.index_field(ty, i as u32, n, f.ty);
+        }
+        self.tables.types.conc_discrs.insert(ty, fields.clone());
+        fields
     }
 
     /// The task or protected type a body names.
@@ -215,7 +244,18 @@ impl Checker {
             self.err(diagnostics::task_body_twice(b.name.span, &b.name.name));
             return;
         }
-        let f = self.new_func(b.name.name.to_string(), Vec::new(), None, span);
+        // The discriminants: the body's parameters (RM 9.1(12)).
+        let params = self.tables.tasks[k as usize]
+            .discriminants
+            .iter()
+            .map(|d| Param {
+                name: d.name.clone(),
+                mode: ast::Mode::In,
+                ty: d.ty,
+                default: None,
+            })
+            .collect();
+        let f = self.new_func(b.name.name.to_string(), params, None, span);
         self.tables.tasks[k as usize].body = Some(f);
         self.tasking.task_ctx.push(k);
         self.check_body(
@@ -233,8 +273,29 @@ impl Checker {
     pub(super) fn protected_spec(&mut self, p: &ast::ProtectedSpec, out: &mut Vec<Stmt>) {
         let k = self.tables.prots.len() as u32;
         let name = p.name.name.clone();
-        // The components: a record with the object's number first.
-        let mut fields = vec![types::Field::plain("<number>", "<number>", INTEGER, None)];
+        let ty = self.tables.types.add(&name, TypeKind::Protected(k));
+        // The components: a record with the object's number first, then
+        // the discriminants (the record's discriminants, the number
+        // included), then the private part's components.
+        let mut fields = vec![types::Field {
+            discriminant: true,
+            ..types::Field::plain("<number>", "<number>", INTEGER, None)
+        }];
+        let discriminants =
+            self.conc_discriminants(ty, &p.discriminants, p.is_type, "protected object", &name);
+        fields.extend(discriminants.iter().cloned());
+        // In the private part a discriminant stands for the value being
+        // built (a bound: `Items : Part_Array (1 .. Size)`).
+        self.scopes.push();
+        for (i, f) in fields.iter().enumerate().skip(1) {
+            let x = Ex {
+                kind: ExKind::Discriminant(i as u32),
+                ty: f.ty,
+                span: p.name.span,
+            };
+            self.declare(&f.name, Entity::Alias(Box::new(x)));
+        }
+        let outer = std::mem::replace(&mut self.in_discriminated, !discriminants.is_empty());
         for d in &p.private {
             match &d.kind {
                 ast::DeclKind::Object {
@@ -245,12 +306,24 @@ impl Checker {
                     anon: None,
                 } => {
                     let t = self.subtype_ind(ty);
+                    let dependent = self.in_discriminated && self.reads_discriminant(t);
+                    if dependent {
+                        self.check_discriminants_alone(t, ty.span);
+                    }
                     let default = init.as_ref().map(|e| {
                         let x = self.expr(e, Some(t));
                         self.coerce(x, t)
                     });
+                    let ft = if dependent {
+                        self.tables.types.base(t)
+                    } else {
+                        t
+                    };
                     for n in names {
-                        fields.push(types::Field::plain(&n.name, &n.key, t, default.clone()));
+                        fields.push(types::Field {
+                            dependent: dependent.then_some(t),
+                            ..types::Field::plain(&n.name, &n.key, ft, default.clone())
+                        });
                     }
                 }
                 ast::DeclKind::Pragma { .. }
@@ -258,6 +331,8 @@ impl Checker {
                 _ => self.err(diagnostics::unsupported_in_protected_private(d.span)),
             }
         }
+        self.in_discriminated = outer;
+        self.scopes.pop();
         let rec = self
             .tables
             .types
@@ -266,7 +341,6 @@ impl Checker {
             .tables
             .types
             .add(&format!("{name} object"), TypeKind::Access(rec));
-        let ty = self.tables.types.add(&name, TypeKind::Protected(k));
         let self_param = |ty| Param {
             name: SELF.into(),
             mode: ast::Mode::In,

@@ -888,6 +888,15 @@ impl<'a> Run<'a> {
         let base = self.m.stack.len().max(self.m.sched.floor);
         let top = base + own + code.temps as usize;
         self.m.stack.grow_to(top);
+        // The discriminants: the body's parameters.
+        for (i, v) in self.m.sched.threads[t]
+            .discrs
+            .clone()
+            .into_iter()
+            .enumerate()
+        {
+            self.m.stack[base + i] = v;
+        }
         display.resize(level + 1, 0);
         display[level] = base;
         let th = &mut self.m.sched.threads[t];

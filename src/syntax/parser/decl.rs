@@ -273,26 +273,6 @@ fn component_list<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, Compo
     .boxed()
 }
 
-/// `type R (N : Integer) is ...`, `task type T (Id : Integer) is ...`:
-/// said once, and the rest of the declaration is read as without them.
-fn discriminants<'t, I: TokIn<'t>>(
-    expr: &Boxed<'t, 't, I, Expr, Ex<'t>>,
-) -> Boxed<'t, 't, I, (), Ex<'t>> {
-    params(expr.clone())
-        .validate(|ps, e, emitter| {
-            if !ps.is_empty() {
-                emitter.emit(Rich::custom(
-                    e.span(),
-                    D::custom(
-                        codes::E0701,
-                        "discriminants are not supported by AdaIR (see docs/differences.md)",
-                    ),
-                ));
-            }
-        })
-        .boxed()
-}
-
 /// `subtype S is ...;`.
 fn subtype_decl<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
     let Common { st_ind, .. } = c;
@@ -834,7 +814,7 @@ fn task<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t
             kw!(Type)
                 .or_not()
                 .then(ident())
-                .then_ignore(discriminants(expr))
+                .then(params(expr.clone()))
                 .then(
                     kw!(Is)
                         .ignore_then(
@@ -851,9 +831,10 @@ fn task<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t
                         .or_not(),
                 )
                 .then_ignore(semi())
-                .map(|((is_type, name), items)| {
+                .map(|(((is_type, name), discriminants), items)| {
                     let mut spec = TaskSpec {
                         name,
+                        discriminants,
                         entries: Vec::new(),
                         is_type: is_type.is_some(),
                         addresses: Vec::new(),
@@ -955,7 +936,7 @@ fn protected<'t, I: TokIn<'t>>(
             kw!(Type)
                 .or_not()
                 .then(ident())
-                .then_ignore(discriminants(expr))
+                .then(params(expr.clone()))
                 .then_ignore(kw!(Is))
                 .then(prot_op.repeated().collect::<Vec<_>>())
                 .then(
@@ -978,13 +959,14 @@ fn protected<'t, I: TokIn<'t>>(
                 .then_ignore(kw!(End))
                 .then_ignore(ident().or_not())
                 .then_ignore(semi())
-                .map_with(|(((is_type, name), ops), private), e| {
+                .map_with(|((((is_type, name), discriminants), ops), private), e| {
                     let (entries, decls): (Vec<_>, Vec<_>) = private
                         .unwrap_or_default()
                         .into_iter()
                         .partition(|x| x.is_ok());
                     DeclKind::ProtectedSpec(Box::new(ProtectedSpec {
                         name,
+                        discriminants,
                         is_type: is_type.is_some(),
                         ops: ops.into_iter().flatten().collect(),
                         private_entries: entries.into_iter().filter_map(|x| x.ok()).collect(),
