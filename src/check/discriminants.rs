@@ -75,7 +75,9 @@ impl Checker {
         if types.discriminants(e.ty).is_empty()
             || types.discriminant_constraint(e.ty).is_some()
             || !types.discriminant_defaults(e.ty)
+            || matches!(types.kind(e.ty), TypeKind::Task(_) | TypeKind::Protected(_))
         {
+            // A task or a protected object is limited: constrained.
             return yes(true);
         }
         match &e.kind {

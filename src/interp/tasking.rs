@@ -518,7 +518,12 @@ impl Run<'_> {
         };
         let discrs = self.discriminant_values(t, &def.discriminants, span)?;
         let priority = match &def.priority {
-            Some(p) => self.eval(p)?.int(),
+            Some(p) => {
+                self.m.discrs.push(discrs.clone());
+                let v = self.eval(p);
+                self.m.discrs.pop();
+                v?.int()
+            }
             None => DEFAULT_PRIORITY,
         };
         if !PRIORITY_RANGE.contains(&priority) {

@@ -172,10 +172,21 @@ impl Checker {
                 }
             }
         }
+        // The priority may read the discriminants (RM D.1(17)).
+        self.scopes.push();
+        for (i, d) in discriminants.iter().enumerate() {
+            let x = Ex {
+                kind: ExKind::Discriminant(i as u32),
+                ty: d.ty,
+                span: t.name.span,
+            };
+            self.declare(&d.name, Entity::Alias(Box::new(x)));
+        }
         let priority = t.priority.as_ref().map(|p| {
             let e = self.expr(p, Some(INTEGER));
             self.coerce(e, INTEGER)
         });
+        self.scopes.pop();
         self.tables.tasks.push(TaskDef {
             name: name.to_string(),
             discriminants,
