@@ -2396,6 +2396,26 @@ fn write_path(
             Value::Rec(r) if value::variant_holds(r, conds) => write_path(root, rest, val, at),
             _ => Err(("discriminant check failed", *sp)),
         },
+        // A component or a slice of a slice (`Code (6 .. 8)(7)`, an element
+        // of a renamed slice): of the sliced array, within the slice.
+        Step::Slice(l, h, sp) if !rest.is_empty() => {
+            let Value::Arr(a) = root else {
+                return Err(("access check failed", *sp));
+            };
+            let (lo, hi) = a.bounds[0];
+            if l <= h && (*l < lo || *h > hi) {
+                return Err(("range check failed", *sp));
+            }
+            match &rest[0] {
+                Step::Index(ix, isp) if ix[0] < *l || ix[0] > *h => {
+                    Err(("index check failed", *isp))
+                }
+                Step::Slice(l2, h2, s2) if l2 <= h2 && (l2 < l || h2 > h) => {
+                    Err(("range check failed", *s2))
+                }
+                _ => write_path(root, rest, val, at),
+            }
+        }
         Step::Slice(l, h, sp) => {
             let Value::Arr(a) = root else {
                 return Err(("access check failed", *sp));
