@@ -100,3 +100,79 @@ fn the_vscode_manifest_starts_the_server_and_references_the_grammar() {
     );
     assert!(pkg["dependencies"]["vscode-languageclient"].is_string());
 }
+
+/// The name a line's declaration gives, and its scope, as the grammar's
+/// `declaration` patterns capture them (the first pattern that matches, as
+/// a TextMate engine takes it).
+fn declared(line: &str) -> Option<(String, String)> {
+    let g = grammar();
+    for p in g["repository"]["declaration"]["patterns"]
+        .as_array()
+        .unwrap()
+    {
+        let re = regex::Regex::new(p["match"].as_str().unwrap()).unwrap();
+        if let Some(c) = re.captures(line) {
+            let scope = p["captures"]["2"]["name"].as_str().unwrap();
+            return Some((c[2].to_string(), scope.to_string()));
+        }
+    }
+    None
+}
+
+#[test]
+fn the_grammar_names_what_each_kind_of_declaration_declares() {
+    let cases = [
+        ("procedure Home;", "Home", "entity.name.function.adair"),
+        (
+            "procedure Feed (Id : Part_Id) renames Queue.Put;",
+            "Feed",
+            "entity.name.function.adair",
+        ),
+        (
+            "function \"+\" (L, R : Pose) return Pose renames Add;",
+            "",
+            "",
+        ),
+        ("type Word is mod 2**16;", "Word", "entity.name.type.adair"),
+        (
+            "type Handle is limited private;",
+            "Handle",
+            "entity.name.type.adair",
+        ),
+        (
+            "type Gripper (Kind : Tool_Kind := Vacuum) is record",
+            "Gripper",
+            "entity.name.type.adair",
+        ),
+        (
+            "task type Cell (Id : Positive) is",
+            "Cell",
+            "entity.name.type.adair",
+        ),
+        ("task body Loader is", "Loader", "entity.name.type.adair"),
+        (
+            "protected type Buffer (Size : Positive) is",
+            "Buffer",
+            "entity.name.type.adair",
+        ),
+        ("PROTECTED BODY Queue is", "Queue", "entity.name.type.adair"),
+        (
+            "entry Slot (Station) (Part : out Part_Id) when Ready (Station) is",
+            "Slot",
+            "entity.name.function.adair",
+        ),
+        (
+            "package body Cell_Io is",
+            "Cell_Io",
+            "entity.name.namespace.adair",
+        ),
+    ];
+    for (line, name, scope) in cases {
+        let got = declared(line);
+        if name.is_empty() {
+            assert_eq!(got, None, "{line}");
+        } else {
+            assert_eq!(got, Some((name.to_string(), scope.to_string())), "{line}");
+        }
+    }
+}

@@ -1547,3 +1547,142 @@ fn private_types_in_hover_definition_completion_and_outline() {
     }
     c.finish();
 }
+
+const CELL: &str = "\
+with Ada.Text_IO; use Ada.Text_IO;
+
+procedure Cell is
+   type Station is range 1 .. 3;
+   type Word is mod 2**16;
+
+   --  The part buffer of the three stations.
+   protected Loader is
+      entry Load (Station) (Part : Natural);
+      entry Retry (Part : Natural);
+      function Total return Natural;
+   private
+      Sum : Natural := 0;
+   end Loader;
+
+   protected body Loader is
+      entry Load (for S in Station) (Part : Natural) when S /= 2 is
+      begin
+         Sum := Sum + Part;
+      end Load;
+      entry Retry (Part : Natural) when True is
+      begin
+         requeue Load (1);
+      end Retry;
+      function Total return Natural is
+      begin
+         return Sum;
+      end Total;
+   end Loader;
+
+   task Press is
+      entry Stroke (Station) (Force : Word);
+   end Press;
+
+   task body Press is
+   begin
+      accept Stroke (1) (Force : Word) do
+         Put_Line (Word'Image (Force));
+      end Stroke;
+   end Press;
+
+   procedure Load_Last (Part : Natural) renames Loader.Load (3);
+begin
+   Loader.Load (1) (10);
+   Load_Last (5);
+   Press.Stroke (1) (16#FF#);
+   Put_Line (Natural'Image (Loader.Total));
+end Cell;
+";
+
+/// Tasks, protected objects, entry families and `requeue`: hover, go to
+/// definition, completion after the object's name, and the outline.
+#[test]
+fn entry_families_and_requeue_in_hover_definition_completion_and_outline() {
+    let mut c = Client::start();
+    c.open("demo.air", CELL);
+    let (d, _) = c.diagnostics("demo.air");
+    assert!(d.is_empty(), "the cell checks: {d:?}");
+    let src = CELL;
+    // Hover on a call of a family member: the entry's declaration.
+    let (text, _) = hover_text(&mut c, pos(src, "Load (1) (10)", 0, 1));
+    assert!(
+        text.contains("entry Load (Station) (Part : Natural)"),
+        "{text}"
+    );
+    let (text, _) = hover_text(&mut c, pos(src, "Stroke (1) (16#FF#)", 0, 1));
+    assert!(
+        text.contains("entry Stroke (Station) (Force : Word)"),
+        "{text}"
+    );
+    let (text, _) = hover_text(&mut c, pos(src, "Loader.Load (1) (10)", 0, 1));
+    assert!(text.contains("protected Loader"), "{text}");
+    // Go to definition: of the entry from a call, from `requeue` and
+    // from the renaming; of the protected object and the task.
+    let load = {
+        let p = pos(src, "entry Load", 0, 6);
+        Range::new(p, Position::new(p.line, p.character + 4))
+    };
+    let l = definition(&mut c, pos(src, "Load (1) (10)", 0, 1));
+    assert_eq!(l.range, load);
+    let l = definition(&mut c, pos(src, "requeue Load", 0, 9));
+    assert_eq!(l.range, load);
+    let l = definition(&mut c, pos(src, "Loader.Load (3)", 0, 8));
+    assert_eq!(l.range, load);
+    let l = definition(&mut c, pos(src, "Press.Stroke (1)", 0, 1));
+    assert_eq!(l.range, range(src, "Press", 0));
+    let l = definition(&mut c, pos(src, "Load_Last (5)", 0, 1));
+    assert_eq!(l.range, range(src, "Load_Last", 0));
+    // Completion after the protected object's name: its operations.
+    let text = src.replace("   Load_Last (5);\n", "   Load_Last (5);\n   Loader.\n");
+    c.change("demo.air", 2, &text);
+    let _ = c.diagnostics("demo.air");
+    let l = labels(&completion_at(
+        &mut c,
+        "demo.air",
+        pos(&text, "   Loader.\n", 0, 10),
+    ));
+    for want in ["Load", "Retry", "Total"] {
+        assert!(l.iter().any(|x| x == want), "{want} missing from {l:?}");
+    }
+    c.change("demo.air", 3, src);
+    let _ = c.diagnostics("demo.air");
+    // The outline: the protected object and the task with their entries.
+    let v = c.result(
+        R::DocumentSymbolRequest::METHOD,
+        json!({ "textDocument": { "uri": uri("demo.air") } }),
+    );
+    let syms: Vec<lsp_types::DocumentSymbol> = serde_json::from_value(v).unwrap();
+    let kids = syms[0].children.as_ref().unwrap();
+    let names = |s: &lsp_types::DocumentSymbol| -> Vec<String> {
+        s.children
+            .iter()
+            .flatten()
+            .map(|k| k.name.clone())
+            .collect()
+    };
+    let loader = kids.iter().find(|s| s.name == "Loader").expect("Loader");
+    let press = kids.iter().find(|s| s.name == "Press").expect("Press");
+    for want in ["Load", "Retry", "Total"] {
+        assert!(
+            names(loader).iter().any(|x| x == want),
+            "{:?}",
+            names(loader)
+        );
+    }
+    assert!(
+        names(press).iter().any(|x| x == "Stroke"),
+        "{:?}",
+        names(press)
+    );
+    assert!(
+        kids.iter().any(|s| s.name == "Load_Last"),
+        "{:?}",
+        kids.iter().map(|s| &s.name).collect::<Vec<_>>()
+    );
+    c.finish();
+}

@@ -75,7 +75,9 @@ fn help_on_types_and_exceptions() {
     );
     let none = repl.entry(":help Nonsense").text;
     assert!(
-        none.contains("no service, subprogram, type or exception named `Nonsense`"),
+        none.contains(
+            "no service, subprogram, type, exception or other declaration named `Nonsense`"
+        ),
         "{none}"
     );
 }

@@ -29,6 +29,9 @@ pub enum DefKind {
     Exception,
     Package,
     Field,
+    /// An entry (or entry family) of a task or protected type: a member,
+    /// named after its object (`Loader.Load`).
+    Entry,
 }
 
 /// One declared name.
@@ -230,6 +233,22 @@ impl Checker {
         }
     }
 
+    /// Records the declaration of an entry (its whole declaration at
+    /// `decl`), whose calls, `accept`s and `requeue`s refer to `profile`.
+    pub(super) fn index_entry(&mut self, id: &crate::syntax::ast::Ident, decl: Span, f: FuncId) {
+        let n = self.index.defs.len() as u32;
+        self.index.defs.push(Def {
+            name: id.name.to_string(),
+            kind: DefKind::Entry,
+            span: id.span,
+            decl,
+            ty: None,
+            func: Some(f),
+            renames: None,
+        });
+        self.index.by_key.insert(Key::Func(f), n);
+    }
+
     /// Records a record component's declaration.
     pub(super) fn index_field(
         &mut self,
@@ -371,6 +390,23 @@ impl Checker {
         }
     }
 
+    /// The declaration a name spelled `key` (lower case) that means `e`
+    /// refers to: a renaming's own when `key` is the renaming's name (`Gone
+    /// : exception renames Constraint_Error;`), else the entity's (as
+    /// [`Checker::index_ref`] records a use).
+    pub fn def_named(&self, key: &str, e: &Entity) -> Option<&Def> {
+        let def = match key_of(e) {
+            Some(k) => self
+                .index
+                .renamings
+                .get(&(key.to_string(), k))
+                .or_else(|| self.index.by_key.get(&k)),
+            // An object renaming, a named number: by its name.
+            None => self.index.by_name.get(key),
+        };
+        def.and_then(|i| self.index.defs.get(*i as usize))
+    }
+
     /// The declaration recorded for an entity (not for named numbers).
     pub fn def_of(&self, e: &Entity) -> Option<&Def> {
         key_of(e)
@@ -401,3 +437,29 @@ pub const ATTRIBUTES: &[&str] = &[
     "Val",
     "Value",
 ];
+
+/// The first lines (at most 15) of the declaration at `decl` in `src`, its
+/// continuation lines unindented by the indentation of its first: what
+/// hover and the REPL's `:help` show of a declaration.
+pub fn declaration_text(src: &str, decl: Span) -> String {
+    const MAX: usize = 15;
+    let start = decl.lo().min(src.len());
+    let indent = src[..start]
+        .rsplit('\n')
+        .next()
+        .map_or(0, |l| l.len() - l.trim_start().len());
+    let t = src.get(decl.range()).unwrap_or("");
+    let lines: Vec<&str> = t
+        .lines()
+        .enumerate()
+        .map(|(i, l)| {
+            let ws = l.len() - l.trim_start().len();
+            if i == 0 { l } else { &l[ws.min(indent)..] }
+        })
+        .collect();
+    let mut out = lines[..lines.len().min(MAX)].join("\n");
+    if lines.len() > MAX {
+        out.push_str("\n...");
+    }
+    out
+}

@@ -236,7 +236,11 @@ pub fn visible_defs(a: &Analysis, offset: usize) -> Vec<u32> {
     let inside = |r: &Span, s: usize, e: usize| r.lo() <= s && e <= r.hi();
     let mut v = Vec::new();
     for (i, d) in a.checker.index.defs.iter().enumerate() {
-        if d.span.context != a.file || d.kind == DefKind::Field || d.span.lo() > offset {
+        // Components and entries are named through their record or object.
+        if d.span.context != a.file
+            || matches!(d.kind, DefKind::Field | DefKind::Entry)
+            || d.span.lo() > offset
+        {
             continue;
         }
         // A subprogram or package is declared in the region around its own.
@@ -266,6 +270,7 @@ fn kind_of(k: DefKind) -> CK {
         DefKind::Exception => CK::EVENT,
         DefKind::Package => CK::MODULE,
         DefKind::Field => CK::FIELD,
+        DefKind::Entry => CK::METHOD,
     }
 }
 
@@ -427,6 +432,20 @@ fn select_items(a: &Analysis, offset: usize, prefix: &str) -> Vec<Item> {
         ty = f.ty;
     }
     let t = c.tables.types.designated(ty).unwrap_or(ty);
+    // A task's entries; a protected object's entries and subprograms.
+    let ops = c.operations_of(t);
+    if !ops.is_empty() {
+        return ops
+            .into_iter()
+            .map(|(name, f, entry)| {
+                let mut it = Item::new(name, if entry { CK::METHOD } else { CK::FUNCTION });
+                it.detail = c.index.def_of_func(f).map(|d| {
+                    crate::check::index::declaration_text(a.sources.text(d.decl.context), d.decl)
+                });
+                it
+            })
+            .collect();
+    }
     if !c.components_visible_at(t, here) {
         return Vec::new();
     }

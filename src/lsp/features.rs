@@ -119,30 +119,10 @@ fn comment_beside(text: &str, end: usize) -> Option<&str> {
     line.trim().strip_prefix("--").map(str::trim)
 }
 
-/// The first lines of a declaration's text, its continuation lines
-/// unindented by the indentation of its first.
+/// The first lines of a declaration's text (see
+/// [`crate::check::index::declaration_text`]).
 fn decl_text(a: &Analysis, s: Span) -> String {
-    const MAX: usize = 15;
-    let src = a.sources.text(s.context);
-    let start = s.lo().min(src.len());
-    let indent = src[..start]
-        .rsplit('\n')
-        .next()
-        .map_or(0, |l| l.len() - l.trim_start().len());
-    let t = a.span_text(s);
-    let lines: Vec<&str> = t
-        .lines()
-        .enumerate()
-        .map(|(i, l)| {
-            let ws = l.len() - l.trim_start().len();
-            if i == 0 { l } else { &l[ws.min(indent)..] }
-        })
-        .collect();
-    let mut out = lines[..lines.len().min(MAX)].join("\n");
-    if lines.len() > MAX {
-        out.push_str("\n...");
-    }
-    out
+    crate::check::index::declaration_text(a.sources.text(s.context), s)
 }
 
 /// Hover text (markdown) and the range it is about.
@@ -187,7 +167,7 @@ pub fn hover(a: &Analysis, offset: usize) -> Option<(String, Span)> {
     }
     let es = a.checker.entities_of(&word.to_lowercase());
     let e = es.first()?;
-    if let Some(d) = a.checker.def_of(e) {
+    if let Some(d) = a.checker.def_named(&word.to_lowercase(), e) {
         return Some((describe_def(a, d), span));
     }
     let text = match e {
@@ -245,7 +225,7 @@ pub fn describe_def(a: &Analysis, d: &Def) -> String {
         DefKind::LoopVariable => code_block(&format!("{} : {ty}  -- loop variable", d.name)),
         DefKind::Field => code_block(&format!("{} : {ty}  -- record component", d.name)),
         DefKind::EnumLiteral => code_block(&format!("{} : {ty}  -- enumeration literal", d.name)),
-        DefKind::Type | DefKind::Number => code_block(&decl_text(a, d.decl)),
+        DefKind::Type | DefKind::Number | DefKind::Entry => code_block(&decl_text(a, d.decl)),
         DefKind::Exception => code_block(&format!("{} : exception", d.name)),
         DefKind::Package => code_block(&format!("package {}", d.name)),
     };
@@ -499,7 +479,129 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
                 }
             }
         }
+        // A task or protected object (or type) and its entries, subprograms
+        // and private components; their bodies with what they declare.
+        ast::DeclKind::TaskSpec(t) => {
+            let children = t.entries.iter().map(|e| entry_symbol(a, e)).collect();
+            let (kind, detail) = if t.is_type {
+                (K::CLASS, "task type")
+            } else {
+                (K::OBJECT, "task")
+            };
+            out.push(unit_symbol(&t.name, d.span, children, kind, detail));
+        }
+        ast::DeclKind::ProtectedSpec(p) => {
+            let mut children = Vec::new();
+            for op in &p.ops {
+                match op {
+                    ast::ProtOp::Sub(spec) => {
+                        children.push(subprogram_symbol(a, spec, spec.span, Vec::new()));
+                    }
+                    ast::ProtOp::Entry(e) => children.push(entry_symbol(a, e)),
+                }
+            }
+            children.extend(p.private_entries.iter().map(|e| entry_symbol(a, e)));
+            for x in &p.private {
+                decl_symbols(a, x, &mut children);
+            }
+            let (kind, detail) = if p.is_type {
+                (K::CLASS, "protected type")
+            } else {
+                (K::OBJECT, "protected")
+            };
+            out.push(unit_symbol(&p.name, d.span, children, kind, detail));
+        }
+        ast::DeclKind::TaskBody(t) => {
+            let mut children = Vec::new();
+            for x in &t.decls {
+                decl_symbols(a, x, &mut children);
+            }
+            out.push(unit_symbol(
+                &t.name,
+                d.span,
+                children,
+                K::CLASS,
+                "task body",
+            ));
+        }
+        ast::DeclKind::ProtectedBody(p) => {
+            let mut children = Vec::new();
+            for x in &p.decls {
+                decl_symbols(a, x, &mut children);
+            }
+            out.push(unit_symbol(
+                &p.name,
+                d.span,
+                children,
+                K::CLASS,
+                "protected body",
+            ));
+        }
+        ast::DeclKind::EntryBody(e) => {
+            let mut children = Vec::new();
+            for x in &e.decls {
+                decl_symbols(a, x, &mut children);
+            }
+            let detail = match &e.family {
+                Some((i, r)) => format!("entry body (for {} in {})", i.name, range_text(a, r)),
+                None => "entry body".into(),
+            };
+            out.push(Symbol {
+                name: e.name.name.to_string(),
+                detail: Some(detail),
+                kind: K::METHOD,
+                span: d.span,
+                name_span: e.name.span,
+                children,
+            });
+        }
         _ => {}
+    }
+}
+
+/// An entry of a task or protected declaration: a family says its range.
+fn entry_symbol(a: &Analysis, e: &ast::EntryDecl) -> Symbol {
+    let detail = match &e.family {
+        Some(r) => format!("entry family ({})", range_text(a, r)),
+        None => "entry".into(),
+    };
+    Symbol {
+        name: e.name.name.to_string(),
+        detail: Some(detail),
+        kind: lsp_types::SymbolKind::EVENT,
+        span: e.span,
+        name_span: e.name.span,
+        children: Vec::new(),
+    }
+}
+
+/// A discrete range as written.
+fn range_text(a: &Analysis, r: &ast::DiscreteRange) -> String {
+    let span = match r {
+        ast::DiscreteRange::Range(l, h) => {
+            crate::diag::span(l.span.context, l.span.lo(), h.span.hi())
+        }
+        ast::DiscreteRange::Subtype(ind) => ind.span,
+        ast::DiscreteRange::Attr(e) => e.span,
+    };
+    a.span_text(span).to_string()
+}
+
+/// A task or protected declaration or body.
+fn unit_symbol(
+    name: &ast::Ident,
+    span: Span,
+    children: Vec<Symbol>,
+    kind: lsp_types::SymbolKind,
+    what: &str,
+) -> Symbol {
+    Symbol {
+        name: name.name.to_string(),
+        detail: Some(what.into()),
+        kind,
+        span,
+        name_span: name.span,
+        children,
     }
 }
 

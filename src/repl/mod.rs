@@ -287,7 +287,11 @@ impl Repl {
     /// Checks and runs one entry (`entry` in view.rs tells the live view).
     fn entry_inner(&mut self, text: &str) -> Reply {
         let trimmed = text.trim();
-        if trimmed.is_empty() {
+        // Nothing, or comments only: nothing to check or run.
+        if trimmed.lines().all(|l| {
+            let l = l.trim();
+            l.is_empty() || l.starts_with("--")
+        }) {
             return Reply::default();
         }
         if let Some(cmd) = trimmed.strip_prefix(':') {
@@ -447,7 +451,7 @@ impl Repl {
                 Some(n) => match self.help_on(n) {
                     Some(t) => ok(t),
                     None => fail(format!(
-                        "no service, subprogram, type or exception named `{n}`; `:help` lists them\n"
+                        "no service, subprogram, type, exception or other declaration named `{n}`; `:help` lists them\n"
                     )),
                 },
             },
@@ -687,11 +691,18 @@ impl Repl {
             .filter(|f| c.tables.funcs[*f as usize].name.eq_ignore_ascii_case(&key))
             .collect();
         if funcs.is_empty() {
-            return stdlib_type_doc(name).or_else(|| exception_doc(name));
+            return stdlib_type_doc(name)
+                .or_else(|| exception_doc(name))
+                .or_else(|| self.declared_doc(&key));
         }
         let mut s = String::new();
         for f in &funcs {
-            s.push_str(&c.signature(*f));
+            // A renaming (`procedure Feed (Id : Part_Id) renames Queue.Put;`)
+            // is shown as written: it says what it renames.
+            match c.index.def_of_func(*f).filter(|d| d.renames.is_some()) {
+                Some(d) => s.push_str(&self.declaration(d)),
+                None => s.push_str(&c.signature(*f)),
+            }
             s.push('\n');
         }
         let svc = crate::services::table::by_name(name);
@@ -706,6 +717,29 @@ impl Repl {
             s.push_str(&doc);
         }
         Some(s)
+    }
+
+    /// What `:help` says of a name declared in a program or an entry (a
+    /// type, an object, a task, a protected object, a package, an
+    /// exception): its declarations as written, and where.
+    fn declared_doc(&self, key: &str) -> Option<String> {
+        let c = &self.session.front.checker;
+        let mut s = String::new();
+        for e in c.entities_of(key) {
+            if let Some(d) = c.def_named(key, &e) {
+                s.push_str(&self.declaration(d));
+                s.push_str(&format!(
+                    "\n  -- declared in {}\n",
+                    self.session.front.sources.name(d.span.context)
+                ));
+            }
+        }
+        (!s.is_empty()).then_some(s)
+    }
+
+    fn declaration(&self, d: &crate::check::index::Def) -> String {
+        let src = self.session.front.sources.text(d.decl.context);
+        crate::check::index::declaration_text(src, d.decl)
     }
 
     /// Which arm the REPL drives and how: `simulated RV-M1`, or `RV-M1 on
@@ -840,7 +874,13 @@ impl Repl {
             }
             (Value::Rec(r), TypeKind::Record(fields)) => {
                 let mut s = String::new();
-                for (f, x) in fields.iter().zip(r.iter()) {
+                // Only the components of the variant the discriminants choose.
+                let present = fields.iter().zip(r.iter()).filter(|(f, _)| {
+                    f.variant
+                        .as_ref()
+                        .is_none_or(|v| crate::interp::value::variant_holds(r, v))
+                });
+                for (f, x) in present {
                     let shown = self.show_in(x, f.ty, accesses);
                     if shown.contains('\n') {
                         s.push_str(&format!("{}:\n  {}\n", f.name, shown.replace('\n', "\n  ")));

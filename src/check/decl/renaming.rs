@@ -459,6 +459,15 @@ impl Checker {
                     None => Target::Error,
                 };
             }
+            // A member of an entry family (`Station.Load (3)`): called by a
+            // body, whose call evaluates the index each time, as GNAT does.
+            K::Apply(p, args)
+                if matches!(p.kind, K::Select(..))
+                    && matches!(&args[..], [a] if a.name.is_none())
+                    && self.denote(p, false).is_empty() =>
+            {
+                return Target::Call(None);
+            }
             K::Error => return Target::Error,
             _ => {
                 let text = self.snippet(renamed.span);
@@ -650,7 +659,10 @@ impl Checker {
             }),
         };
         let name = spec.name.display();
-        let text = renamed_text(renamed);
+        let text = match renamed.kind {
+            K::Apply(..) => self.snippet(span),
+            _ => renamed_text(renamed),
+        };
         let Some(call) = call else {
             self.err(diagnostics::renaming_profile_mismatch(
                 span,

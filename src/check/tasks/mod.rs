@@ -127,6 +127,7 @@ impl Checker {
                 .and_then(|r| self.entry_family(r, &e.name));
             let params = self.params(&e.params);
             let f = self.new_func(format!("{name}.{}", e.name.name), params, None, e.name.span);
+            self.index_entry(&e.name, e.span, f);
             let first = next_queue(entries.last().map(|x: &EntryDef| (x.first, x.family)));
             entries.push(EntryDef {
                 name: e.name.name.to_string(),
@@ -198,6 +199,9 @@ impl Checker {
         if t.is_type {
             self.declare_type_or_full_view(&t.name, ty);
         } else {
+            // A single task: its anonymous type is recorded too, so hover on
+            // the object shows the declaration.
+            self.index_def(&t.name.name, t.name.span, &Entity::Type(ty), None);
             self.object(std::slice::from_ref(&t.name), false, ty, None, span, out);
         }
     }
@@ -405,6 +409,7 @@ impl Checker {
                     let params = self.params(&e.params);
                     let profile =
                         self.new_func(format!("{name}.{}", e.name.name), params, None, e.span);
+                    self.index_entry(&e.name, e.span, profile);
                     let first = next_queue(entries.last().map(|x: &ProtEntry| (x.first, x.family)));
                     if private {
                         self.tables.prot_private.insert(profile);
@@ -432,6 +437,8 @@ impl Checker {
         if p.is_type {
             self.declare_type_or_full_view(&p.name, ty);
         } else {
+            // As for a single task.
+            self.index_def(&p.name.name, p.name.span, &Entity::Type(ty), None);
             self.object(std::slice::from_ref(&p.name), false, ty, None, p.span, out);
         }
     }
@@ -745,6 +752,42 @@ impl Checker {
                 span: sp,
             };
             self.declare(&f.name, Entity::Alias(Box::new(x)));
+        }
+    }
+}
+
+impl Checker {
+    /// The operations a task or protected object of type `t` offers to
+    /// callers (not those of a private part): each one's name as declared,
+    /// its profile, and whether it is an entry. Empty for other types.
+    pub fn operations_of(&self, t: TypeId) -> Vec<(String, FuncId, bool)> {
+        let t = self.tables.types.base(t);
+        let spelled = |f: FuncId| {
+            let n = &self.tables.funcs[f as usize].name;
+            n.rsplit('.').next().unwrap_or(n).to_string()
+        };
+        match *self.tables.types.kind(t) {
+            TypeKind::Task(k) => self.tables.tasks[k as usize]
+                .entries
+                .iter()
+                .map(|e| (e.name.clone(), e.profile, true))
+                .collect(),
+            TypeKind::Protected(k) => {
+                let p = &self.tables.prots[k as usize];
+                let subs = self
+                    .tables
+                    .prot_members
+                    .get(k as usize)
+                    .into_iter()
+                    .flatten();
+                p.entries
+                    .iter()
+                    .map(|e| (e.name.clone(), e.profile, true))
+                    .chain(subs.map(|(_, f, _, _)| (spelled(*f), *f, false)))
+                    .filter(|(_, f, _)| !self.tables.prot_private.contains(f))
+                    .collect()
+            }
+            _ => Vec::new(),
         }
     }
 }
