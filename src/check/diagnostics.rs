@@ -453,6 +453,20 @@ pub fn limited_completion_of_nonlimited(span: Span, name: &str) -> Diagnostic {
     .with_hint(format!("declare it `type {name} is limited private;`"))
 }
 
+/// The full type of a private type (without discriminants) that needs a
+/// constraint: an unconstrained array, discriminants without defaults.
+pub fn indefinite_full_view(span: Span, name: &str) -> Diagnostic {
+    d(
+        codes::E0207,
+        span,
+        format!("the full type of private type `{name}` must not need a constraint"),
+    )
+    .with_label("one is constrained, the other unconstrained")
+    .with_hint(format!(
+        "outside the package, objects of `{name}` are declared without bounds or discriminants: constrain the array (`array (1 .. 8) of ...`) or give the discriminants defaults"
+    ))
+}
+
 /// An object of a private type before its full declaration.
 pub fn premature_private_object(span: Span, ty: &str) -> Diagnostic {
     d(

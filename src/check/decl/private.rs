@@ -123,6 +123,16 @@ impl Checker {
                 name.span, &name.name,
             ));
         }
+        // RM 7.3(13): a partial view without discriminants promises
+        // objects that need no constraint, so the full type is definite.
+        let types = &self.tables.types;
+        let indefinite = types.array(t).is_some_and(|a| a.2.is_none())
+            || (!types.discriminants(t).is_empty()
+                && !types.discriminant_defaults(t)
+                && types.discriminant_constraint(t).is_none());
+        if t != ERROR && indefinite {
+            self.err(diagnostics::indefinite_full_view(name.span, &name.name));
+        }
         let prev = self.tables.types.get(old).clone();
         let mut info = self.tables.types.get(t).clone();
         info.base = old;
