@@ -68,7 +68,8 @@ impl Gen {
                     let i = self.below(self.loop_vars.len() as u64) as usize;
                     self.loop_vars[i].clone()
                 }
-                3 => "R.A".into(),
+                3 if self.below(2) == 0 => "R.A".into(),
+                3 => "G1.Id".into(),
                 4 => "S'Length".into(),
                 _ => self.pick(&["I1", "I2", "I3"]).into(),
             }
@@ -95,6 +96,12 @@ impl Gen {
                 }
                 8 => format!("Integer ({})", self.float()),
                 9 => format!("Twice ({}, {})", self.int(), self.int()),
+                10 if self.below(3) == 0 => {
+                    // A variant's component: Constraint_Error (discriminant
+                    // check) when the record holds the other variant.
+                    self.pick(&["G1.Suction", "G1.Width", "G2.Width", "G2.Id"])
+                        .into()
+                }
                 10 => format!("Character'Pos (S ({}))", self.int()),
                 _ => format!(
                     "(if {} then {} else {})",
@@ -214,6 +221,15 @@ impl Gen {
                     let op = self.pick(&["and", "or", "xor", "and then", "or else"]);
                     format!("({} {op} {})", self.boolean(), self.boolean())
                 }
+                4 if self.below(3) == 0 => self
+                    .pick(&[
+                        "(G1.K = Vacuum)",
+                        "(G1 = G2)",
+                        "(G1 /= (Fingers, 0, 2))",
+                        "G1'Constrained",
+                        "G2'Constrained",
+                    ])
+                    .into(),
                 4 => format!("(not {})", self.boolean()),
                 _ => format!("({} in 1 .. {})", self.int(), self.int()),
             }
@@ -322,6 +338,7 @@ impl Gen {
                      {pad}      Put_Line (\"Oops\");\n{pad}end;\n"
                 ));
             }
+            13 if self.below(2) == 0 => self.grip_stmt(out, &pad),
             13 => out.push_str(&format!(
                 "{pad}R := (A => {}, B => {}, C => {});\n",
                 self.int(),
@@ -333,6 +350,26 @@ impl Gen {
                 self.float()
             )),
         }
+    }
+
+    /// A statement on the discriminated records: `G1` is mutable (its
+    /// discriminant has a default), `G2` is constrained to `Fingers`.
+    fn grip_stmt(&mut self, out: &mut String, pad: &str) {
+        let line = match self.below(7) {
+            0 => format!("G1 := (Fingers, {}, {});", self.int(), self.int()),
+            1 => format!(
+                "G1 := (K => Vacuum, Id => {}, Suction => {});",
+                self.int(),
+                self.int()
+            ),
+            2 => format!("G1.Suction := {};", self.int()),
+            3 => format!("G2.Width := {};", self.int()),
+            // Constraint_Error when G1 holds the other variant.
+            4 => "G2 := G1;".into(),
+            5 => "G1 := G2;".into(),
+            _ => "Put_Line (Kind'Image (G1.K) & Integer'Image (G1.Id));".into(),
+        };
+        out.push_str(&format!("{pad}{line}\n"));
     }
 
     fn program(&mut self) -> String {
@@ -365,6 +402,9 @@ impl Gen {
              \x20  B1 : Boolean := True;\n   B2 : Boolean := False;\n\
              \x20  A : Vec := (others => 3);\n\
              \x20  R : Rec := (A => 1, B => 2.0, C => True);\n\
+             \x20  type Kind is (Vacuum, Fingers);\n\
+             \x20  type Grip (K : Kind := Vacuum) is record\n      Id : Integer := 0;\n      case K is\n         when Vacuum => Suction : Integer := 1;\n         when Fingers => Width : Integer := 2;\n      end case;\n   end record;\n\
+             \x20  G1 : Grip;\n   G2 : Grip (Fingers);\n\
              \x20  S : String (1 .. 4) := \"abcd\";\n\
              \x20  Oops : exception;\n\
              \x20  function Twice (X, Y : Integer) return Integer is\n   begin\n      return {twice};\n   end Twice;\n\
@@ -484,6 +524,10 @@ fn the_generator_covers_what_it_claims() {
         "Ring'Image (",
         " xor ",
         "(not ",
+        "G1 := (Fingers",
+        "G2 := G1;",
+        "G1.Suction",
+        "'Constrained",
     ] {
         assert!(text.contains(construct), "never generated: {construct}");
     }
