@@ -1686,3 +1686,60 @@ fn entry_families_and_requeue_in_hover_definition_completion_and_outline() {
     );
     c.finish();
 }
+
+/// A discriminant of a task or protected type, named in a constraint or
+/// selected from an object, goes to its declaration in the discriminant part.
+#[test]
+fn go_to_definition_of_task_and_protected_discriminants() {
+    let src = "\
+task type Axis_Controller (Axis : Positive) is
+   entry Go;
+end Axis_Controller;
+task body Axis_Controller is
+begin
+   accept Go;
+end Axis_Controller;
+protected type Part_Buffer (Size : Positive) is
+   function Free return Natural;
+end Part_Buffer;
+protected body Part_Buffer is
+   function Free return Natural is
+   begin
+      return Size;
+   end Free;
+end Part_Buffer;
+Shoulder : Axis_Controller (Axis => 2);
+Belt : Part_Buffer (Size => 3);
+Put_Line (Positive'Image (Shoulder.Axis) & Positive'Image (Belt.Size));
+Shoulder.Go;
+";
+    let mut c = Client::start();
+    c.open("demo.air", src);
+    let (d, _) = c.diagnostics("demo.air");
+    assert!(
+        d.is_empty(),
+        "task and protected discriminants check: {d:?}"
+    );
+    let axis = range(src, "Axis :", 0);
+    let axis = Range::new(
+        axis.start,
+        Position::new(axis.start.line, axis.start.character + 4),
+    );
+    let size = range(src, "Size :", 0);
+    let size = Range::new(
+        size.start,
+        Position::new(size.start.line, size.start.character + 4),
+    );
+    let l = definition(&mut c, pos(src, "Shoulder.Axis", 0, 10));
+    assert_eq!(
+        l.range, axis,
+        "a task's discriminant selected from an object"
+    );
+    let l = definition(&mut c, pos(src, "Axis => 2", 0, 1));
+    assert_eq!(l.range, axis, "named in a constraint");
+    let l = definition(&mut c, pos(src, "Belt.Size", 0, 6));
+    assert_eq!(l.range, size, "a protected object's discriminant");
+    let l = definition(&mut c, pos(src, "Size => 3", 0, 1));
+    assert_eq!(l.range, size, "named in a constraint");
+    c.finish();
+}
