@@ -6,6 +6,14 @@ use super::*;
 impl Checker {
     pub(in crate::check) fn params(&mut self, ps: &[ast::Param]) -> Vec<Param> {
         let mut out = Vec::new();
+        // Two parameters (or discriminants) of one name: GNAT's "conflicts
+        // with declaration", reported at the second.
+        let mut seen = std::collections::HashSet::new();
+        for id in ps.iter().flat_map(|p| &p.names) {
+            if !seen.insert(id.key.to_string()) {
+                self.err(diagnostics::declared_twice(id.span, &id.name));
+            }
+        }
         for p in ps {
             let t = self.type_mark(&p.ty);
             let default = p.default.as_ref().map(|d| {
