@@ -129,6 +129,10 @@ pub struct TypeInfo {
     /// A private type (and its subtypes and derived types): the package
     /// whose private part completes it, and whether it is limited.
     pub private: Option<PrivateView>,
+    /// The root of a derived type's derivation (`type Tool_Pose is new
+    /// Pose;`: Pose's base type, or Pose's own root): types of one root
+    /// convert to each other (RM 4.6(21)).
+    pub root: Option<TypeId>,
 }
 
 /// What a private type's partial view says (`type T is [limited] private;`).
@@ -214,6 +218,12 @@ impl Types {
     pub fn completed(&self, t: TypeId) -> bool {
         !matches!(self.list[self.base(t) as usize].kind, TypeKind::Private)
     }
+    /// The root of `t`'s derivation: the base type it was derived from
+    /// (through every derivation), or its own base type.
+    pub fn derivation_root(&self, t: TypeId) -> TypeId {
+        let b = self.base(t);
+        self.list[b as usize].root.unwrap_or(b)
+    }
     pub fn name(&self, t: TypeId) -> &str {
         &self.list[t as usize].name
     }
@@ -233,6 +243,7 @@ impl Types {
             whole_ns: false,
             discr: None,
             private: None,
+            root: None,
         });
         id
     }

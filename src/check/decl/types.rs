@@ -432,6 +432,7 @@ impl Checker {
                 let id = self.tables.types.list.len() as TypeId;
                 info.name = name.name.to_string();
                 info.base = id;
+                info.root = Some(self.tables.types.derivation_root(parent));
                 if self.tables.types.is_hidden(parent) {
                     // From a private type whose full view is hidden here:
                     // its full view is the parent's, hidden too.

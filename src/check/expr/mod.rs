@@ -888,6 +888,16 @@ impl Checker {
             }
         } else if self.tables.types.base(ex.ty) == self.tables.types.base(t) {
             ex
+        } else if self.tables.types.fields(t).is_some()
+            && self.tables.types.derivation_root(ex.ty) == self.tables.types.derivation_root(t)
+            && self.tables.types.discriminants(t).is_empty()
+        {
+            // Between record types of one derivation (`Pose (T)` of a
+            // `Tool_Pose`): the same components, the value as it is.
+            Ex {
+                ty: self.tables.types.base(t),
+                ..ex
+            }
         } else if let (Some((i1, e1, _)), Some((i2, e2, _))) =
             (self.tables.types.array(ex.ty), self.tables.types.array(t))
         {
