@@ -252,6 +252,15 @@ fn demo() -> Client {
     c
 }
 
+/// The outline (document symbols) of `demo.air`.
+fn outline(c: &mut Client) -> Vec<lsp_types::DocumentSymbol> {
+    let v = c.result(
+        R::DocumentSymbolRequest::METHOD,
+        json!({ "textDocument": { "uri": uri("demo.air") } }),
+    );
+    serde_json::from_value(v).unwrap()
+}
+
 fn hover_text(c: &mut Client, p: Position) -> (String, Option<Range>) {
     let v = c.result(R::HoverRequest::METHOD, at("demo.air", p));
     let h: lsp_types::Hover = serde_json::from_value(v).expect("a hover");
@@ -699,11 +708,7 @@ fn find_references_of_a_variable_and_a_subprogram() {
 #[test]
 fn document_symbols_give_the_outline() {
     let mut c = demo();
-    let v = c.result(
-        R::DocumentSymbolRequest::METHOD,
-        json!({ "textDocument": { "uri": uri("demo.air") } }),
-    );
-    let syms: Vec<lsp_types::DocumentSymbol> = serde_json::from_value(v).unwrap();
+    let syms = outline(&mut c);
     assert_eq!(syms.len(), 1);
     assert_eq!(syms[0].name, "Demo");
     assert_eq!(syms[0].selection_range, range(DEMO, "Demo", 0));
@@ -1382,11 +1387,7 @@ fn renamings_hover_and_go_to_definition() {
     c.change("demo.air", 3, src);
     let _ = c.diagnostics("demo.air");
     // The outline shows each renaming and what it renames.
-    let v = c.result(
-        R::DocumentSymbolRequest::METHOD,
-        json!({ "textDocument": { "uri": uri("demo.air") } }),
-    );
-    let syms: Vec<lsp_types::DocumentSymbol> = serde_json::from_value(v).unwrap();
+    let syms = outline(&mut c);
     let kids: Vec<(String, Option<String>)> = syms[0]
         .children
         .as_ref()
@@ -1514,11 +1515,7 @@ fn private_types_in_hover_definition_completion_and_outline() {
     let _ = c.diagnostics("demo.air");
     // The outline: the package lists the partial views and the full
     // declarations.
-    let v = c.result(
-        R::DocumentSymbolRequest::METHOD,
-        json!({ "textDocument": { "uri": uri("demo.air") } }),
-    );
-    let syms: Vec<lsp_types::DocumentSymbol> = serde_json::from_value(v).unwrap();
+    let syms = outline(&mut c);
     let pkg = syms[0]
         .children
         .as_ref()
@@ -1652,11 +1649,7 @@ fn entry_families_and_requeue_in_hover_definition_completion_and_outline() {
     c.change("demo.air", 3, src);
     let _ = c.diagnostics("demo.air");
     // The outline: the protected object and the task with their entries.
-    let v = c.result(
-        R::DocumentSymbolRequest::METHOD,
-        json!({ "textDocument": { "uri": uri("demo.air") } }),
-    );
-    let syms: Vec<lsp_types::DocumentSymbol> = serde_json::from_value(v).unwrap();
+    let syms = outline(&mut c);
     let kids = syms[0].children.as_ref().unwrap();
     let names = |s: &lsp_types::DocumentSymbol| -> Vec<String> {
         s.children

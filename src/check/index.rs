@@ -360,15 +360,7 @@ impl Checker {
 
     /// Records that the name at `span` (spelled `key` in lower case) means `e`.
     pub(super) fn index_ref(&mut self, span: Span, key: &str, e: &Entity) {
-        let def = match key_of(e) {
-            Some(k) => self
-                .index
-                .renamings
-                .get(&(key.to_string(), k))
-                .or_else(|| self.index.by_key.get(&k)),
-            None => self.index.by_name.get(key),
-        };
-        if let Some(&def) = def
+        if let Some(def) = self.def_index(key, e)
             && self.index.uses
         {
             self.index.refs.push(Ref { span, def });
@@ -395,7 +387,13 @@ impl Checker {
     /// : exception renames Constraint_Error;`), else the entity's (as
     /// [`Checker::index_ref`] records a use).
     pub fn def_named(&self, key: &str, e: &Entity) -> Option<&Def> {
-        let def = match key_of(e) {
+        self.def_index(key, e)
+            .and_then(|i| self.index.defs.get(i as usize))
+    }
+
+    /// The index in [`Index::defs`] of what [`Checker::def_named`] finds.
+    fn def_index(&self, key: &str, e: &Entity) -> Option<u32> {
+        match key_of(e) {
             Some(k) => self
                 .index
                 .renamings
@@ -403,8 +401,8 @@ impl Checker {
                 .or_else(|| self.index.by_key.get(&k)),
             // An object renaming, a named number: by its name.
             None => self.index.by_name.get(key),
-        };
-        def.and_then(|i| self.index.defs.get(*i as usize))
+        }
+        .copied()
     }
 
     /// The declaration recorded for an entity (not for named numbers).
