@@ -36,11 +36,25 @@ pub fn run(args: RunArgs, color: bool, devices: Option<adair::devices::Devices>)
         eprintln!("adair: --plot {}: {e}", p.display());
         return 2;
     }
-    let desc = match robot.description() {
-        Ok(d) => d,
-        Err(e) => {
-            eprintln!("adair: {e}");
-            return 2;
+    // A built-in robot on the simulator, with nothing that reads the robot
+    // before the program names the AdaIR package, is built only then: a
+    // program that never moves the arm does not read its description
+    // (start-up, issue 32). A description file is read now, for its errors.
+    let lazy = robot.robot_file.is_none()
+        && robot.serial.port.is_none()
+        && record.is_none()
+        && plot.is_none()
+        && view.view.is_none()
+        && adair::kinematics::RobotDescription::builtin_text(&robot.robot).is_some();
+    let desc = if lazy {
+        None
+    } else {
+        match robot.description() {
+            Ok(d) => Some(d),
+            Err(e) => {
+                eprintln!("adair: {e}");
+                return 2;
+            }
         }
     };
     let text = match crate::read(&file) {
@@ -85,9 +99,20 @@ pub fn run(args: RunArgs, color: bool, devices: Option<adair::devices::Devices>)
     }
     s.machine.interrupted = Some(flag.clone());
     // The live view is paced to the wall clock.
-    match robot.serial.settings() {
-        None => s.set_robot(desc, trace(), robot.realtime || view.live()),
-        Some(settings) => {
+    match (robot.serial.settings(), desc) {
+        (_, None) => {
+            let name = robot.robot.clone();
+            s.set_robot_lazily(
+                Box::new(move || {
+                    adair::kinematics::RobotDescription::builtin(&name)
+                        .expect("a built-in robot's description is valid")
+                }),
+                trace(),
+                robot.realtime,
+            )
+        }
+        (None, Some(desc)) => s.set_robot(desc, trace(), robot.realtime || view.live()),
+        (Some(settings), Some(desc)) => {
             s.front.checker.options.simulator_only = adair::services::SIMULATOR_ONLY;
             if robot.rehearse {
                 let name = file.to_string_lossy();

@@ -165,6 +165,14 @@ impl Frontend {
         }
     }
 
+    /// Whether the stdlib file that declares package `name` is checked.
+    pub fn stdlib_loaded(&self, name: &str) -> bool {
+        STDLIB
+            .iter()
+            .position(|u| u.provides.iter().any(|p| p.eq_ignore_ascii_case(name)))
+            .is_some_and(|i| self.loaded.get(i).copied().unwrap_or(false))
+    }
+
     /// Makes the package `name` of the stdlib visible to later checks
     /// (nothing when no stdlib file declares it); whether one does.
     pub fn need_package(&mut self, name: &str, host: &mut dyn Host) -> bool {

@@ -136,6 +136,30 @@ pub struct Session {
     /// The robot `adair check` judges targets for when no robot is chosen
     /// (`--robot`, a script's `-- adair: --robot`; None: the RV-M1).
     pub check_robot: Option<crate::kinematics::RobotDescription>,
+    /// A robot chosen but not built yet ([`Session::set_robot_lazily`]).
+    pending_robot: Option<PendingRobot>,
+}
+
+/// The simulated robot of [`Session::set_robot_lazily`]: what builds its
+/// description, the trace writer and the pacing.
+struct PendingRobot {
+    desc: Box<dyn FnOnce() -> crate::kinematics::RobotDescription>,
+    trace: Option<Box<dyn Write>>,
+    realtime: bool,
+}
+
+impl PendingRobot {
+    /// The robot state, on the simulator.
+    fn build(self, checker: &Checker) -> crate::services::RobotState {
+        let desc = (self.desc)();
+        let sim = Box::new(crate::driver::sim::Simulator::new(desc.clone()));
+        let excs = crate::services::ExcIds::bind(checker)
+            .unwrap_or_else(|_| crate::services::ExcIds::unbound());
+        let mut st = crate::services::RobotState::with_driver(desc, excs, sim);
+        st.trace = self.trace;
+        st.realtime = self.realtime;
+        st
+    }
 }
 
 /// The engine's side of the pipeline: each source is shown to the
@@ -143,6 +167,7 @@ pub struct Session {
 struct MachineHost<'a> {
     machine: &'a mut Machine,
     robot: &'a mut Option<crate::services::RobotState>,
+    pending_robot: &'a mut Option<PendingRobot>,
 }
 
 impl Host for MachineHost<'_> {
@@ -151,6 +176,13 @@ impl Host for MachineHost<'_> {
     }
     fn stdlib_checked(&mut self, checker: &Checker, stmts: &[Stmt], provides: &[&str]) {
         let _ = self.machine.run(checker.program(), stmts, None, None);
+        // A program reaches the services through the AdaIR package only:
+        // a robot chosen lazily is built now.
+        if provides.contains(&"AdaIR")
+            && let Some(p) = self.pending_robot.take()
+        {
+            *self.robot = Some(p.build(checker));
+        }
         // The robot's exceptions are the AdaIR package's.
         if provides.contains(&"AdaIR")
             && let Some(st) = self.robot
@@ -194,6 +226,7 @@ impl Session {
             &mut MachineHost {
                 machine: &mut machine,
                 robot: &mut robot,
+                pending_robot: &mut None,
             },
         );
         Session {
@@ -204,6 +237,7 @@ impl Session {
             warnings_to: None,
             robot,
             check_robot: None,
+            pending_robot: None,
         }
     }
 
@@ -214,6 +248,7 @@ impl Session {
             MachineHost {
                 machine: &mut self.machine,
                 robot: &mut self.robot,
+                pending_robot: &mut self.pending_robot,
             },
         )
     }
@@ -251,6 +286,37 @@ impl Session {
         self.set_driver(desc, sim, trace, realtime);
     }
 
+    /// As [`Session::set_robot`], but the robot (and its description,
+    /// which `desc` gives) is built only when a program names the AdaIR
+    /// package, the only way to a service, or when the pendant or a
+    /// recording needs it: a program that never moves the arm does not
+    /// pay for its kinematics (`adair run`'s start-up, issue 32). Until
+    /// then [`Session::robot_state`] is `None`.
+    pub fn set_robot_lazily(
+        &mut self,
+        desc: Box<dyn FnOnce() -> crate::kinematics::RobotDescription>,
+        trace: Option<Box<dyn Write>>,
+        realtime: bool,
+    ) {
+        self.robot = None;
+        self.machine.realtime = realtime;
+        self.pending_robot = Some(PendingRobot {
+            desc,
+            trace,
+            realtime,
+        });
+        if self.front.stdlib_loaded("AdaIR") {
+            self.build_pending_robot();
+        }
+    }
+
+    /// Builds the robot of [`Session::set_robot_lazily`] now, if pending.
+    fn build_pending_robot(&mut self) {
+        if let Some(p) = self.pending_robot.take() {
+            self.robot = Some(p.build(&self.front.checker));
+        }
+    }
+
     /// As [`Session::set_robot`] with any driver; a driver whose motions take
     /// real time (a real arm) brings the wall clock with it.
     pub fn set_driver(
@@ -272,6 +338,7 @@ impl Session {
         let mut st = crate::services::RobotState::with_driver(desc, excs, driver);
         st.trace = trace;
         st.realtime = realtime;
+        self.pending_robot = None;
         self.robot = Some(st);
     }
 
@@ -292,6 +359,7 @@ impl Session {
 
     /// Records every motion's support points from now on (`--record`, `--plot`).
     pub fn start_recording(&mut self) {
+        self.build_pending_robot();
         if let Some(st) = &mut self.robot {
             st.record = Some(Vec::new());
         }
@@ -299,6 +367,7 @@ impl Session {
 
     /// Installs the screen teach pendant behind `TeachBox`.
     pub fn install_pendant(&mut self, pendant: Box<dyn crate::services::Pendant>) {
+        self.build_pending_robot();
         if let Some(st) = &mut self.robot {
             st.pendant = Some(pendant);
         }
@@ -409,6 +478,12 @@ impl Session {
 
     /// W0005 and W0006 (see `services::lint`) for a checked program.
     fn lint(&self, checked: &Checked) -> Vec<Diagnostic> {
+        // A program reaches the services through the AdaIR package only:
+        // without it there is nothing to warn about, and no robot
+        // description to read.
+        if !self.front.stdlib_loaded("AdaIR") {
+            return Vec::new();
+        }
         let chosen = self
             .robot
             .as_ref()

@@ -11,6 +11,7 @@ mod bad_floats;
 mod exceptions;
 mod file_kinds;
 mod gripper;
+mod lazy_robot;
 mod path_memory;
 mod props;
 mod realtime;
