@@ -1545,6 +1545,68 @@ fn private_types_in_hover_definition_completion_and_outline() {
     c.finish();
 }
 
+const PRIVATE_DISCRIMINANTS: &str = "\
+with Ada.Text_IO; use Ada.Text_IO;
+
+procedure Cell is
+   package Samples is
+      type Buffer (Size : Positive) is private;
+      function Make (N : Positive) return Buffer;
+   private
+      type Buffer (Size : Positive) is record
+         Count : Natural := 0;
+      end record;
+   end Samples;
+
+   package body Samples is
+      function Make (N : Positive) return Buffer is ((Size => N, Count => 0));
+   end Samples;
+
+   use Samples;
+   Trace : Buffer (8);
+begin
+   Trace := Make (8);
+   Put_Line (Positive'Image (Trace.Size));
+end Cell;
+";
+
+/// A private type with discriminants: hover on a client's use shows the
+/// partial view with its discriminant part; a discriminant read outside
+/// the package goes to the partial view's, which the full declaration's
+/// names too; completion after a dot outside offers the discriminants
+/// only.
+#[test]
+fn private_type_discriminants_in_hover_definition_and_completion() {
+    let mut c = Client::start();
+    c.open("demo.air", PRIVATE_DISCRIMINANTS);
+    let (d, _) = c.diagnostics("demo.air");
+    assert!(d.is_empty(), "the program checks: {d:?}");
+    let src = PRIVATE_DISCRIMINANTS;
+    let (text, _) = hover_text(&mut c, pos(src, "Buffer (8)", 0, 1));
+    assert!(
+        text.contains("type Buffer (Size : Positive) is private;"),
+        "{text}"
+    );
+    assert!(!text.contains("Count"), "the full view is hidden: {text}");
+    let (text, _) = hover_text(&mut c, pos(src, "Trace.Size", 0, 7));
+    assert!(text.contains("Size : Positive"), "{text}");
+    let l = definition(&mut c, pos(src, "Trace.Size", 0, 7));
+    assert_eq!(l.range, range(src, "Size", 0));
+    let l = definition(&mut c, pos(src, "Size : Positive) is record", 0, 1));
+    assert_eq!(l.range, range(src, "Size", 0));
+    let outside = src.replace("Trace.Size));", "Trace.Size));\n   Trace.");
+    c.change("demo.air", 2, &outside);
+    let _ = c.diagnostics("demo.air");
+    let l = labels(&completion_at(
+        &mut c,
+        "demo.air",
+        pos(&outside, "Trace.\n", 0, 6),
+    ));
+    assert!(l.iter().any(|x| x == "Size"), "{l:?}");
+    assert!(!l.iter().any(|x| x == "Count"), "{l:?}");
+    c.finish();
+}
+
 const CELL: &str = "\
 with Ada.Text_IO; use Ada.Text_IO;
 

@@ -453,6 +453,49 @@ pub fn limited_completion_of_nonlimited(span: Span, name: &str) -> Diagnostic {
     .with_hint(format!("declare it `type {name} is limited private;`"))
 }
 
+/// The full declaration of a private type whose partial view has
+/// discriminants (`type Buffer (Size : Positive) is private;`) declares
+/// other ones (RM 7.3(13), 6.3.1: full conformance). `what`: GNAT's
+/// reason (`name "Count" does not match`, `too few discriminants`).
+pub fn discriminants_not_conformant(
+    span: Span,
+    name: &str,
+    what: &str,
+    partial: Span,
+) -> Diagnostic {
+    d(
+        codes::E0207,
+        span,
+        format!("the discriminants of `{name}` are not fully conformant with its partial view: {what}"),
+    )
+    .with_note(partial, "the partial view declares its discriminants here")
+    .with_hint("the full declaration repeats the discriminant part of `type ... is private;`: the same names, subtypes and defaults, in order")
+}
+
+/// The full declaration of a private type whose partial view has
+/// discriminants declares none.
+pub fn full_view_missing_discriminants(span: Span, name: &str, partial: Span) -> Diagnostic {
+    d(
+        codes::E0207,
+        span,
+        format!("missing discriminants in the full declaration of `{name}`"),
+    )
+    .with_label("its partial view has discriminants")
+    .with_note(partial, "the partial view declares its discriminants here")
+    .with_hint("repeat the discriminant part of `type ... is private;` in the full declaration: a record, task or protected type")
+}
+
+/// `(<>)` on a type that is not a private type's partial view.
+pub fn unknown_discriminants_on_full_type(span: Span) -> Diagnostic {
+    d(
+        codes::E0207,
+        span,
+        "a full type declaration cannot have unknown discriminants",
+    )
+    .with_label("`(<>)` is for a private type's partial view")
+    .with_hint("declare `type T (<>) is private;` in a package's visible part, and the full type, with or without discriminants, in its private part")
+}
+
 /// The full type of a private type (without discriminants) that needs a
 /// constraint: an unconstrained array, discriminants without defaults.
 pub fn indefinite_full_view(span: Span, name: &str) -> Diagnostic {
@@ -1324,6 +1367,42 @@ pub fn discriminated_object_unconstrained(span: Span, ty: &str) -> Diagnostic {
     .with_hint(format!(
         "write `{ty} (...)` with the discriminants, give an initial value, or give the discriminants defaults"
     ))
+}
+
+/// An object (`what`: "an object", "an allocator", "a component", "an
+/// array element") of
+/// a private type with unknown discriminants (`type T (<>) is private;`)
+/// without an initial value, outside its package.
+pub fn unknown_discriminants_unconstrained(span: Span, ty: &str, what: &str) -> Diagnostic {
+    let (label, hint) = if what == "an object" {
+        (
+            "unconstrained subtype not allowed (need initialization)",
+            format!(
+                "give it an initial value, from a function of the package that declares `{ty}`: `X : {ty} := Make (...);`"
+            ),
+        )
+    } else if what == "an allocator" {
+        (
+            "uninitialized unconstrained allocation not allowed",
+            format!(
+                "give the allocator a value, from a function of the package that declares `{ty}`: `new {ty}'(Make (...))`"
+            ),
+        )
+    } else {
+        (
+            "unconstrained subtype not allowed here",
+            format!(
+                "only objects with an initial value can be of `{ty}` outside its package; hold an access value, or give the partial view known discriminants"
+            ),
+        )
+    };
+    d(
+        codes::E0314,
+        span,
+        format!("{what} of `{ty}` needs an initial value: `{ty}` has unknown discriminants"),
+    )
+    .with_label(label)
+    .with_hint(hint)
 }
 
 /// RM 3.8(12): a discriminant in a component's constraint is the whole

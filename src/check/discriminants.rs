@@ -7,6 +7,14 @@
 //! an `out` or `in out` formal of a mutable type is as constrained as its
 //! actual, which the caller says in a hidden `in` argument after the
 //! others (a slot of the callee after its parameters).
+//!
+//! Whether an object's discriminants can change is a property of its
+//! type's full view, outside the package too: a private type's partial
+//! view without discriminants or with unknown ones (`(<>)`) may hide a
+//! record whose discriminants have defaults (RM 3.7(28)). So these
+//! questions look at the full view; a subprogram declared before the
+//! full view of one of its formals' types gets its flags at the end of
+//! the package spec, when the full view is known.
 
 use super::*;
 
@@ -15,27 +23,58 @@ impl Checker {
     /// whether its actual is constrained.
     pub(super) fn needs_constrained_flag(&self, mode: ast::Mode, t: TypeId) -> bool {
         mode != ast::Mode::In
-            && self.tables.types.discriminant_defaults(t)
+            && self.tables.types.full_discriminant_defaults(t)
             && self.tables.types.discriminant_constraint(t).is_none()
     }
 
     /// Whether an object of subtype `t` needs a discriminant constraint
-    /// or an initial value: its discriminants have no defaults (RM 3.7(26)).
+    /// or an initial value: its discriminants have no defaults (RM 3.7(26)),
+    /// or they are unknown (`type T (<>) is private;`, RM 3.3(23)).
     pub(super) fn needs_discriminants(&self, t: TypeId) -> bool {
         let types = &self.tables.types;
-        !types.discriminants(t).is_empty()
+        (!types.discriminants(t).is_empty()
             && !types.discriminant_defaults(t)
-            && types.discriminant_constraint(t).is_none()
+            && types.discriminant_constraint(t).is_none())
+            || types.unknown_discriminants(t)
     }
 
-    /// Gives `f`'s mutable formals their hidden flags, if it has any.
+    /// Gives `f`'s mutable formals their hidden flags, if it has any; when
+    /// one of its formals is of a private type not completed yet, at the
+    /// end of the package spec ([`Checker::flag_pending_formals`]).
     pub(super) fn flag_formals(&mut self, f: FuncId) {
+        let types = &self.tables.types;
+        if self.tables.funcs[f as usize].params.iter().any(|p| {
+            p.mode != ast::Mode::In && types.private_view(p.ty).is_some() && !types.completed(p.ty)
+        }) {
+            self.pending_flags.push(f);
+            return;
+        }
         if self.tables.funcs[f as usize]
             .params
             .iter()
             .any(|p| self.needs_constrained_flag(p.mode, p.ty))
         {
             self.flagged_funcs.insert(f);
+        }
+    }
+
+    /// The subprograms waiting for the full views of their formals'
+    /// types that have them now (at the end of a package spec): their
+    /// flags. One called before (an expression function of the visible
+    /// part) has none: its formals count as constrained.
+    pub(super) fn flag_pending_formals(&mut self) {
+        let pending = std::mem::take(&mut self.pending_flags);
+        for f in pending {
+            let types = &self.tables.types;
+            if self.tables.funcs[f as usize]
+                .params
+                .iter()
+                .any(|p| types.private_view(p.ty).is_some() && !types.completed(p.ty))
+            {
+                self.pending_flags.push(f);
+            } else {
+                self.flag_formals(f);
+            }
         }
     }
 
@@ -52,8 +91,11 @@ impl Checker {
 
     /// The hidden arguments of a call of `f`: for each flagged formal,
     /// whether its actual is constrained.
-    pub(super) fn constrained_flag_args(&self, f: FuncId, args: &[Arg]) -> Vec<Arg> {
-        self.flagged_formals(self.tables.callee(f))
+    pub(super) fn constrained_flag_args(&mut self, f: FuncId, args: &[Arg]) -> Vec<Arg> {
+        // Called before its flags were decided: it has none.
+        let callee = self.tables.callee(f);
+        self.pending_flags.retain(|&g| g != callee);
+        self.flagged_formals(callee)
             .into_iter()
             .filter_map(|j| args.get(j))
             .map(|a| Arg {
@@ -72,10 +114,13 @@ impl Checker {
     pub(super) fn constrained_ex(&self, e: &Ex) -> Option<Ex> {
         let types = &self.tables.types;
         let yes = |v: bool| Some(self.mk(ExKind::Int(v as i64), BOOLEAN, e.span));
-        if types.discriminants(e.ty).is_empty()
+        if types.full_discriminants(e.ty).is_empty()
             || types.discriminant_constraint(e.ty).is_some()
-            || !types.discriminant_defaults(e.ty)
-            || matches!(types.kind(e.ty), TypeKind::Task(_) | TypeKind::Protected(_))
+            || !types.full_discriminant_defaults(e.ty)
+            || matches!(
+                types.full_kind(e.ty),
+                TypeKind::Task(_) | TypeKind::Protected(_)
+            )
         {
             // A task or a protected object is limited: constrained.
             return yes(true);
@@ -124,14 +169,14 @@ impl Checker {
     /// must be the object's (RM 5.2(10): "discriminant check failed").
     pub(super) fn keep_discriminants(&mut self, target: &Ex, value: Ex) -> Ex {
         let types = &self.tables.types;
-        if types.discriminants(target.ty).is_empty()
+        if types.full_discriminants(target.ty).is_empty()
             || types.discriminant_constraint(target.ty).is_some()
             || value.ty == ERROR
             || target.ty == ERROR
         {
             return value;
         }
-        let when = if types.discriminant_defaults(target.ty) {
+        let when = if types.full_discriminant_defaults(target.ty) {
             match &target.kind {
                 ExKind::Var(v) => match self.constrained_flags.get(v) {
                     Some(Some(flag)) => self.mk(ExKind::Var(*flag), BOOLEAN, target.span),

@@ -163,6 +163,24 @@ impl Index {
             .and_then(|i| self.defs.get(*i as usize))
     }
 
+    /// Where component (or discriminant) `i` of type `t` is declared.
+    pub fn def_of_field(&self, t: TypeId, i: u32) -> Option<&Def> {
+        self.by_key
+            .get(&Key::Field(t, i))
+            .and_then(|i| self.defs.get(*i as usize))
+    }
+
+    /// Components `from .. n` of record type `from_ty`, declared by the full
+    /// declaration of private type `to`, are `to`'s (its partial view
+    /// declared the discriminants before them).
+    pub(super) fn retarget_fields_from(&mut self, from_ty: TypeId, to: TypeId, from: u32, n: u32) {
+        for i in from..n {
+            if let Some(&d) = self.by_key.get(&Key::Field(from_ty, i)) {
+                self.by_key.insert(Key::Field(to, i), d);
+            }
+        }
+    }
+
     /// The components of record type `from`, declared by the full
     /// declaration of private type `to`, are `to`'s.
     pub(super) fn retarget_fields(&mut self, from: TypeId, to: TypeId, n: u32) {

@@ -211,6 +211,14 @@ pub struct Checker {
     /// The subprograms whose `out` and `in out` formals of a mutable
     /// record type get a hidden flag (see `discriminants.rs`).
     flagged_funcs: std::collections::HashSet<FuncId>,
+    /// Private types with known discriminants one of which was read
+    /// (`B.Size`) before the full declaration: as a record's component,
+    /// where (a task or protected completion is then refused).
+    early_discriminant_reads: HashMap<TypeId, Span>,
+    /// Subprograms declared before the full view of one of their `out`
+    /// or `in out` formals' types: their hidden flags wait for it (see
+    /// `discriminants.rs`).
+    pending_flags: Vec<FuncId>,
     /// In the body being checked: each flagged formal's flag; None for an
     /// `out` or `in out` formal of a mutable record type of an entry or a
     /// protected operation, which has no flag and counts as constrained.
@@ -271,6 +279,8 @@ impl Checker {
             devices: Rc::new(crate::devices::Devices::default_set()),
             elab_flags: HashMap::new(),
             flagged_funcs: Default::default(),
+            early_discriminant_reads: HashMap::new(),
+            pending_flags: Vec::new(),
             constrained_flags: HashMap::new(),
         };
         c.standard();

@@ -25,7 +25,14 @@ impl Checker {
         };
         let ty = self.tables.types.designated(ty).unwrap_or(ty);
         if !self.components_visible_at(ty, None) {
-            return Vec::new();
+            // Only the partial view's discriminants.
+            let b = self.tables.types.base(ty);
+            return self
+                .tables
+                .types
+                .partial_discrs
+                .get(&b)
+                .map_or(Vec::new(), |ds| ds.iter().map(|d| d.name.clone()).collect());
         }
         self.tables
             .types

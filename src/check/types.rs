@@ -141,6 +141,9 @@ pub struct PrivateView {
     /// The package (index into the checker's packages) that declares it.
     pub package: u32,
     pub limited: bool,
+    /// `type T (<>) is private;`: unknown discriminants (RM 3.7(1)): where
+    /// the full view is hidden, objects of `T` need an initial value.
+    pub unknown: bool,
 }
 
 /// The kind a private type has where its full view is hidden.
@@ -180,6 +183,12 @@ pub struct Types {
     /// type: a task's are its body's parameters, a protected object's are
     /// the first components after its number.
     pub conc_discrs: std::collections::HashMap<TypeId, Vec<Field>>,
+    /// The known discriminants of private types' partial views (`type
+    /// Buffer (Size : Positive) is private;`), by type: where the full
+    /// view is hidden (or not declared yet) they are the type's. They
+    /// conform to the full view's (RM 7.3(13)), whose come first in the
+    /// same order.
+    pub partial_discrs: std::collections::HashMap<TypeId, Vec<Field>>,
 }
 
 impl Types {
@@ -331,9 +340,14 @@ impl Types {
         }
     }
     /// The discriminants of a record type (its first components), of a
-    /// task or a protected type.
+    /// task or a protected type, or of a private type's partial view where
+    /// its full view is hidden.
     pub fn discriminants(&self, t: TypeId) -> &[Field] {
         match self.kind(t) {
+            TypeKind::Private => self
+                .partial_discrs
+                .get(&self.base(t))
+                .map_or(&[], |v| v.as_slice()),
             TypeKind::Record(f) => {
                 let n = f.iter().take_while(|f| f.discriminant).count();
                 &f[..n]
@@ -344,6 +358,40 @@ impl Types {
                 .map_or(&[], |v| v.as_slice()),
             _ => &[],
         }
+    }
+    /// The discriminants of `t`'s full view, wherever the checker stands
+    /// (the partial view's before the full declaration): what its
+    /// objects hold at run time, so whether they can change (see
+    /// `check/discriminants.rs`), not what may be named.
+    pub fn full_discriminants(&self, t: TypeId) -> &[Field] {
+        match self.full_kind(t) {
+            TypeKind::Record(f) => {
+                let n = f.iter().take_while(|f| f.discriminant).count();
+                &f[..n]
+            }
+            TypeKind::Task(_) | TypeKind::Protected(_) => self
+                .conc_discrs
+                .get(&self.base(t))
+                .map_or(&[], |v| v.as_slice()),
+            TypeKind::Private => self
+                .partial_discrs
+                .get(&self.base(t))
+                .map_or(&[], |v| v.as_slice()),
+            _ => &[],
+        }
+    }
+    /// Whether the full view of `t` has discriminants with defaults: its
+    /// objects declared without a constraint are mutable (RM 3.7(28)),
+    /// outside the package too, whatever its partial view says.
+    pub fn full_discriminant_defaults(&self, t: TypeId) -> bool {
+        self.full_discriminants(t)
+            .first()
+            .is_some_and(|d| d.default.is_some())
+    }
+    /// Whether `t` is a private type declared with unknown discriminants
+    /// (`type T (<>) is private;`) whose full view is hidden here.
+    pub fn unknown_discriminants(&self, t: TypeId) -> bool {
+        matches!(self.kind(t), TypeKind::Private) && self.private_view(t).is_some_and(|v| v.unknown)
     }
     /// Whether `t` is a record type with discriminants that have defaults
     /// (its objects declared without a constraint are mutable, RM 3.7(28)).

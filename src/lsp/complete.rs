@@ -446,12 +446,15 @@ fn select_items(a: &Analysis, offset: usize, prefix: &str) -> Vec<Item> {
             })
             .collect();
     }
-    if !c.components_visible_at(t, here) {
-        return Vec::new();
-    }
-    c.tables
-        .types
-        .fields(t)
+    // Outside its package, a private type's partial view shows only its
+    // discriminants.
+    let fields = if c.components_visible_at(t, here) {
+        c.tables.types.fields(t)
+    } else {
+        let b = c.tables.types.base(t);
+        c.tables.types.partial_discrs.get(&b).map(|v| v.as_slice())
+    };
+    fields
         .map(|fs| {
             fs.iter()
                 .map(|f| {

@@ -381,6 +381,7 @@ fn decl_symbols(a: &Analysis, d: &ast::Decl, out: &mut Vec<Symbol>) {
             name,
             discriminants,
             def,
+            ..
         } => {
             let (kind, children) = match def {
                 ast::TypeDef::Record(list) => (

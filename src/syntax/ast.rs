@@ -92,6 +92,9 @@ pub enum DeclKind {
         /// `type R (Kind : Tool_Kind := Jaws) is ...`: the discriminant
         /// part (empty without one), read as a parameter list.
         discriminants: Vec<Param>,
+        /// `type T (<>) is private;`: unknown discriminants (RM 3.7(1)),
+        /// where the box is.
+        unknown_discriminants: Option<Span>,
         def: TypeDef,
     },
     Subtype {

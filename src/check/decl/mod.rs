@@ -134,8 +134,22 @@ impl Checker {
             DeclKind::Type {
                 name,
                 discriminants,
+                unknown_discriminants,
                 def,
             } => {
+                let private = matches!(def, TypeDef::Private { .. });
+                if let Some(box_span) = *unknown_discriminants
+                    && !private
+                {
+                    if matches!(def, TypeDef::Incomplete) {
+                        self.err(diagnostics::unsupported(
+                            box_span,
+                            "unknown discriminants on an incomplete type",
+                        ));
+                    } else {
+                        self.err(diagnostics::unknown_discriminants_on_full_type(box_span));
+                    }
+                }
                 // Completing an incomplete type keeps its id.
                 let prev = self
                     .scopes
@@ -150,13 +164,13 @@ impl Checker {
                     return;
                 }
                 if let TypeDef::Private { limited } = def {
-                    if let Some(p) = discriminants.first() {
-                        self.err(diagnostics::unsupported(
-                            p.span,
-                            "a discriminant part on a private type",
-                        ));
-                    }
-                    self.private_type(name, *limited, d.span);
+                    self.private_type(
+                        name,
+                        *limited,
+                        discriminants,
+                        unknown_discriminants.is_some(),
+                        d.span,
+                    );
                     return;
                 }
                 if let Some(Entity::Type(old)) = prev
@@ -300,11 +314,13 @@ impl Checker {
                 self.tables.types.name(t),
             ));
         }
-        if init_ex.is_none()
-            && !self.tables.types.discriminants(t).is_empty()
-            && !self.tables.types.discriminant_defaults(t)
-            && self.tables.types.discriminant_constraint(t).is_none()
-        {
+        if init_ex.is_none() && self.tables.types.unknown_discriminants(t) {
+            self.err(diagnostics::unknown_discriminants_unconstrained(
+                span,
+                &self.tname(t),
+                "an object",
+            ));
+        } else if init_ex.is_none() && self.needs_discriminants(t) {
             self.err(diagnostics::discriminated_object_unconstrained(
                 span,
                 self.tables.types.name(t),

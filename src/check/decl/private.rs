@@ -22,8 +22,16 @@ impl Checker {
         self.scopes.innermost().and_then(|s| s.package)
     }
 
-    /// `type T is [limited] private;`
-    pub(super) fn private_type(&mut self, name: &ast::Ident, limited: bool, span: Span) {
+    /// `type T [(discriminants)] is [limited] private;` (`unknown`: the
+    /// discriminant part is `(<>)`).
+    pub(super) fn private_type(
+        &mut self,
+        name: &ast::Ident,
+        limited: bool,
+        discriminants: &[ast::Param],
+        unknown: bool,
+        span: Span,
+    ) {
         let package = match self.innermost_package() {
             Some((p, false)) => Some(p),
             _ => {
@@ -35,7 +43,17 @@ impl Checker {
         self.tables.types.list[t as usize].private = package.map(|p| PrivateView {
             package: p as u32,
             limited,
+            unknown,
         });
+        if !discriminants.is_empty() {
+            // Known discriminants (RM 7.3(3)): outside the package they are
+            // the type's; the full declaration repeats them.
+            let (fields, names) = self.discriminant_part(discriminants);
+            for (i, (n, f)) in names.into_iter().zip(&fields).enumerate() {
+                self.index_field(t, i as u32, n, f.ty);
+            }
+            self.tables.types.partial_discrs.insert(t, fields);
+        }
         if let Some(p) = package {
             self.tables.packages[p].private_types.push(t);
         }
@@ -74,7 +92,7 @@ impl Checker {
             ));
         }
         let t = self.elaborating(out, |c| c.type_def(name, discriminants, def, span));
-        self.install_full_view(old, t, name);
+        self.install_full_view(old, t, name, discriminants, span);
         // Access types declared before the completion that now designate
         // tasks get their master here (same region).
         let before: Vec<TypeId> = (old + 1..self.tables.types.list.len() as TypeId)
@@ -89,7 +107,13 @@ impl Checker {
 
     /// Declares task or protected type `t`, or makes it the full view of
     /// the private type its name declared in the visible part.
-    pub(in crate::check) fn declare_type_or_full_view(&mut self, name: &ast::Ident, t: TypeId) {
+    pub(in crate::check) fn declare_type_or_full_view(
+        &mut self,
+        name: &ast::Ident,
+        t: TypeId,
+        discriminants: &[ast::Param],
+        span: Span,
+    ) {
         let prev = self
             .scopes
             .innermost()
@@ -103,19 +127,21 @@ impl Checker {
                         name.span, &name.name,
                     ));
                 }
-                self.install_full_view(old, t, name);
+                self.install_full_view(old, t, name, discriminants, span);
             }
             None => self.declare_checked(name, Entity::Type(t)),
         }
     }
 
-    /// Makes type `t` (just declared by the full declaration `name`) the
-    /// full view of private type `old`.
+    /// Makes type `t` (just declared by the full declaration `name`, with
+    /// `discriminants`, at `span`) the full view of private type `old`.
     pub(in crate::check) fn install_full_view(
         &mut self,
         old: TypeId,
         t: TypeId,
         name: &ast::Ident,
+        discriminants: &[ast::Param],
+        span: Span,
     ) {
         let view = self.tables.types.private_view(old).expect("a private type");
         if !view.limited && t != ERROR && self.limited_part(t).is_some() {
@@ -123,15 +149,35 @@ impl Checker {
                 name.span, &name.name,
             ));
         }
+        let known = self.tables.types.partial_discrs.contains_key(&old);
+        if known && t != ERROR {
+            self.conform_discriminants(old, t, name, discriminants, span);
+        }
         // RM 7.3(13): a partial view without discriminants promises
         // objects that need no constraint, so the full type is definite.
+        // Unknown discriminants (`(<>)`) promise nothing.
         let types = &self.tables.types;
         let indefinite = types.array(t).is_some_and(|a| a.2.is_none())
             || (!types.discriminants(t).is_empty()
                 && !types.discriminant_defaults(t)
                 && types.discriminant_constraint(t).is_none());
-        if t != ERROR && indefinite {
+        if t != ERROR && indefinite && !known && !view.unknown {
             self.err(diagnostics::indefinite_full_view(name.span, &name.name));
+        }
+        if let Some(&at) = self.early_discriminant_reads.get(&old)
+            && matches!(
+                self.tables.types.full_kind(t),
+                TypeKind::Task(_) | TypeKind::Protected(_)
+            )
+        {
+            self.err(diagnostics::unsupported(
+                at,
+                "reading a discriminant of a private type completed by a task or protected type before its full declaration",
+            ));
+        }
+        // The discriminants of a task or protected full view, by its type.
+        if let Some(ds) = self.tables.types.conc_discrs.remove(&t) {
+            self.tables.types.conc_discrs.insert(old, ds);
         }
         let prev = self.tables.types.get(old).clone();
         let mut info = self.tables.types.get(t).clone();
@@ -147,10 +193,107 @@ impl Checker {
         self.retarget_enum_lits(t, old);
         self.retarget_package_lits(view.package as usize, t, old);
         let fields = self.tables.types.fields(old).map_or(0, |f| f.len());
-        self.index.retarget_fields(t, old, fields as u32);
+        if known {
+            // The partial view's discriminants are the declarations its
+            // full declaration's repeat (go to definition, rename).
+            let n = self.tables.types.partial_discrs[&old].len();
+            for (i, id) in discriminants
+                .iter()
+                .flat_map(|p| &p.names)
+                .enumerate()
+                .take(n)
+            {
+                self.index_field_ref(id.span, old, i as u32);
+            }
+            self.index
+                .retarget_fields_from(t, old, n as u32, fields as u32);
+        } else {
+            self.index.retarget_fields(t, old, fields as u32);
+        }
         // The full declaration's name names the type its partial view
         // declared (go to definition, references, rename).
         self.index_ref(name.span, &name.key, &Entity::Type(old));
+    }
+
+    /// RM 7.3(13), 6.3.1(17): the full declaration of a private type
+    /// whose partial view has known discriminants repeats them, fully
+    /// conformant: the same names, subtypes and defaults (the same
+    /// lexical elements, spaces aside), in order. The report is GNAT's:
+    /// at the first discriminant that differs.
+    fn conform_discriminants(
+        &mut self,
+        old: TypeId,
+        t: TypeId,
+        name: &ast::Ident,
+        discriminants: &[ast::Param],
+        span: Span,
+    ) {
+        let partial = self.tables.types.partial_discrs[&old].clone();
+        let at = self
+            .index
+            .def_of_field(old, 0)
+            .map_or(name.span, |d| d.span);
+        if discriminants.is_empty() {
+            self.err(diagnostics::full_view_missing_discriminants(
+                Span {
+                    end: span.start + 4,
+                    ..span
+                },
+                &name.name,
+                at,
+            ));
+            return;
+        }
+        let full = self.tables.types.discriminants(t).to_vec();
+        let written: Vec<(&ast::Ident, Option<&ast::Expr>)> = discriminants
+            .iter()
+            .flat_map(|p| p.names.iter().map(move |n| (n, p.default.as_ref())))
+            .collect();
+        let text = |c: &Self, s: Span| -> String {
+            c.snippet(s)
+                .chars()
+                .filter(|ch| !ch.is_whitespace())
+                .flat_map(char::to_lowercase)
+                .collect()
+        };
+        for (i, (id, default)) in written.iter().enumerate() {
+            let Some(p) = partial.get(i) else {
+                self.err(diagnostics::discriminants_not_conformant(
+                    id.span,
+                    &name.name,
+                    "too many discriminants",
+                    at,
+                ));
+                return;
+            };
+            let what = if full.get(i).is_none_or(|f| f.ty != p.ty) {
+                format!("the subtype of `{}` does not match", id.name)
+            } else if *p.key != *id.key {
+                format!("name `{}` does not match `{}`", id.name, p.name)
+            } else if default.map(|d| text(self, d.span))
+                != p.default.as_ref().map(|d| text(self, d.span))
+            {
+                format!("the default expression for `{}` does not match", id.name)
+            } else {
+                continue;
+            };
+            let partial_at = self
+                .index
+                .def_of_field(old, i as u32)
+                .map_or(at, |d| d.span);
+            self.err(diagnostics::discriminants_not_conformant(
+                id.span, &name.name, &what, partial_at,
+            ));
+            return;
+        }
+        if written.len() < partial.len() {
+            self.err(diagnostics::discriminants_not_conformant(
+                name.span,
+                &name.name,
+                "too few discriminants",
+                at,
+            ));
+        }
     }
 
     /// The literals of a full view, in its package's table of private
@@ -315,6 +458,7 @@ impl Checker {
         for d in missing {
             self.err(d);
         }
+        self.flag_pending_formals();
         self.full_views(pk, false);
     }
 

@@ -43,7 +43,10 @@ impl Checker {
             Some(ast::Constraint::Index(ranges))
                 if matches!(
                     self.tables.types.kind(t),
-                    TypeKind::Record(_) | TypeKind::Task(_) | TypeKind::Protected(_)
+                    TypeKind::Record(_)
+                        | TypeKind::Task(_)
+                        | TypeKind::Protected(_)
+                        | TypeKind::Private
                 ) =>
             {
                 // `Buffer (80)`, `Gripper (Vacuum)`: positional values.
@@ -474,7 +477,13 @@ impl Checker {
                 if matches!(self.tables.types.array(et), Some((_, _, None))) {
                     self.err(diagnostics::array_component_unconstrained(elem.span));
                 }
-                if self.needs_discriminants(et) {
+                if self.tables.types.unknown_discriminants(et) {
+                    self.err(diagnostics::unknown_discriminants_unconstrained(
+                        elem.span,
+                        &self.tname(et),
+                        "an array element",
+                    ));
+                } else if self.needs_discriminants(et) {
                     self.err(diagnostics::discriminated_component_unconstrained(
                         elem.span,
                         self.tables.types.name(et),
@@ -626,11 +635,13 @@ impl Checker {
             if !dependent && matches!(self.tables.types.array(t), Some((_, _, None))) {
                 self.err(diagnostics::record_component_unconstrained(c.ty.span));
             }
-            if !dependent
-                && !self.tables.types.discriminants(t).is_empty()
-                && !self.tables.types.discriminant_defaults(t)
-                && self.tables.types.discriminant_constraint(t).is_none()
-            {
+            if !dependent && self.tables.types.unknown_discriminants(t) {
+                self.err(diagnostics::unknown_discriminants_unconstrained(
+                    c.ty.span,
+                    &self.tname(t),
+                    "a component",
+                ));
+            } else if !dependent && self.needs_discriminants(t) {
                 self.err(diagnostics::discriminated_component_unconstrained(
                     c.ty.span,
                     self.tables.types.name(t),

@@ -23,8 +23,10 @@ impl Checker {
             Some(t) => Some(t),
             None => self.interps(p).first().copied(),
         };
+        // `B'Constrained` of an object is the partial view's (RM 3.7.2).
         if let Some(t) = prefix_type
             && self.tables.types.is_hidden(t)
+            && !(key == "constrained" && type_prefix.is_none())
         {
             let pkg = self.private_package(t);
             let what = format!("its attribute `'{}`", a.name);

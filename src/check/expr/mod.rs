@@ -43,6 +43,18 @@ impl Checker {
         }
     }
 
+    /// The name of component `i` of record type `t` when it is a
+    /// discriminant (of the partial view, where a private type's full
+    /// view is hidden).
+    fn discriminant_of(&self, t: TypeId, i: u32) -> Option<String> {
+        let types = &self.tables.types;
+        let f = match types.fields(t) {
+            Some(fs) => fs.get(i as usize)?,
+            None => types.discriminants(t).get(i as usize)?,
+        };
+        f.discriminant.then(|| f.name.clone())
+    }
+
     /// Reports an error unless `ex` is a variable that may be assigned.
     pub(super) fn check_variable(&mut self, ex: &Ex, span: Span, what: &str) {
         let mut e = ex;
@@ -57,19 +69,8 @@ impl Checker {
                     }
                     return;
                 }
-                ExKind::Field(p, i)
-                    if self
-                        .tables
-                        .types
-                        .fields(p.ty)
-                        .and_then(|f| f.get(*i as usize))
-                        .is_some_and(|f| f.discriminant) =>
-                {
-                    let name = self
-                        .tables
-                        .types
-                        .fields(p.ty)
-                        .map_or(String::new(), |f| f[*i as usize].name.clone());
+                ExKind::Field(p, i) if self.discriminant_of(p.ty, *i).is_some() => {
+                    let name = self.discriminant_of(p.ty, *i).unwrap_or_default();
                     self.err(diagnostics::assigned_discriminant(span, &name));
                     return;
                 }
@@ -440,7 +441,13 @@ impl Checker {
                     let v = self.expr(x, Some(t));
                     bx(self.coerce(v, t))
                 });
-                if init.is_none() && self.needs_discriminants(t) {
+                if init.is_none() && self.tables.types.unknown_discriminants(t) {
+                    self.err(diagnostics::unknown_discriminants_unconstrained(
+                        tm.span,
+                        &self.tname(t),
+                        "an allocator",
+                    ));
+                } else if init.is_none() && self.needs_discriminants(t) {
                     self.err(diagnostics::allocator_unconstrained(
                         tm.span,
                         self.tables.types.name(t),
@@ -638,7 +645,9 @@ impl Checker {
     }
 
     /// `T.Id` of a task `T`, `P.Size` of a protected object `P`: a
-    /// discriminant (RM 9.1(12), 9.4(12)).
+    /// discriminant (RM 9.1(12), 9.4(12)); `B.Size` of an object of a
+    /// private type whose partial view has discriminants, where its full
+    /// view is hidden (RM 7.3(3)): the full view's discriminant.
     fn conc_discriminant(&mut self, pe: &Ex, id: &ast::Ident, sp: Span) -> Option<Ex> {
         let types = &self.tables.types;
         let j = types
@@ -646,14 +655,32 @@ impl Checker {
             .iter()
             .position(|d| *d.key == *id.key)?;
         let t = types.discriminants(pe.ty)[j].ty;
-        if matches!(
-            types.kind(pe.ty),
-            TypeKind::Task(_) | TypeKind::Protected(_)
-        ) {
+        let private = matches!(types.kind(pe.ty), TypeKind::Private);
+        if private
+            || matches!(
+                types.kind(pe.ty),
+                TypeKind::Task(_) | TypeKind::Protected(_)
+            )
+        {
             self.index_field_ref(id.span, pe.ty, j as u32);
         }
         let types = &self.tables.types;
-        match types.kind(pe.ty).clone() {
+        if private {
+            match types.full_kind(pe.ty) {
+                TypeKind::Task(_) | TypeKind::Protected(_) => {}
+                kind => {
+                    // A record (or, before the full declaration, what
+                    // will be one: a task or protected completion then
+                    // is refused, see `install_full_view`).
+                    if matches!(kind, TypeKind::Private) {
+                        self.early_discriminant_reads
+                            .insert(types.base(pe.ty), id.span);
+                    }
+                    return Some(self.mk(ExKind::Field(bx(pe.clone()), j as u32), t, sp));
+                }
+            }
+        }
+        match types.full_kind(pe.ty).clone() {
             TypeKind::Task(_) => Some(self.mk(
                 ExKind::Attr(
                     AttrOp::TaskDiscriminant(j as u32),

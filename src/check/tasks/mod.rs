@@ -197,7 +197,7 @@ impl Checker {
             span,
         });
         if t.is_type {
-            self.declare_type_or_full_view(&t.name, ty);
+            self.declare_type_or_full_view(&t.name, ty, &t.discriminants, span);
         } else {
             // A single task: its anonymous type is recorded too, so hover on
             // the object shows the declaration.
@@ -435,7 +435,7 @@ impl Checker {
             span: p.span,
         });
         if p.is_type {
-            self.declare_type_or_full_view(&p.name, ty);
+            self.declare_type_or_full_view(&p.name, ty, &p.discriminants, p.span);
         } else {
             // As for a single task.
             self.index_def(&p.name.name, p.name.span, &Entity::Type(ty), None);

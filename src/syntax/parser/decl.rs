@@ -70,16 +70,28 @@ fn init<'t, I: TokIn<'t>>(
 /// `type T is ...;` (or `type T;`, a type completed later).
 fn type_decl<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind, Ex<'t>> {
     let Common { expr, .. } = c;
+    // `(<>)`: unknown discriminants.
+    let unknown = just(Token::LParen)
+        .then(just(Token::Box))
+        .then(just(Token::RParen))
+        .map_with(|_, e| e.span());
     kw!(Type)
         .ignore_then(ident())
-        .then(params(expr.clone()))
+        .then(
+            unknown
+                .map(|s| (Vec::new(), Some(s)))
+                .or(params(expr.clone()).map(|p| (p, None))),
+        )
         .then(kw!(Is).ignore_then(type_def(c)).or_not())
         .then_ignore(semi())
-        .map(|((name, discriminants), def)| DeclKind::Type {
-            name,
-            discriminants,
-            def: def.unwrap_or(TypeDef::Incomplete),
-        })
+        .map(
+            |((name, (discriminants, unknown_discriminants)), def)| DeclKind::Type {
+                name,
+                discriminants,
+                unknown_discriminants,
+                def: def.unwrap_or(TypeDef::Incomplete),
+            },
+        )
         .boxed()
 }
 
