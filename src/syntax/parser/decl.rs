@@ -4,7 +4,7 @@
 //! clauses, separate bodies). `decl_grammar` chooses among the parts.
 
 use super::errors::{UNCLOSED, assign_or_eq, decls_end, skip_to_semi, soft_semi};
-use super::{Common, Ex, TokIn, ident, mk, name, semi};
+use super::{Common, Ex, PErr, TokIn, ident, mk, name, semi};
 use crate::diag::Span;
 use crate::diag::codes;
 use crate::syntax::ast::*;
@@ -341,7 +341,7 @@ fn object_decl<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind
         .then_ignore(soft_semi())
         .validate(|((names, names_span), tail), _, emitter| {
             let mut refuse = |at: Span, msg: &str| {
-                emitter.emit(Rich::custom(at, D::custom(codes::E0106, msg)));
+                emitter.emit(PErr::custom(at, D::custom(codes::E0106, msg)));
             };
             let renaming = matches!(tail, ObjTail::Renames(..) | ObjTail::Exception(Some(_)));
             if renaming && names.len() > 1 {
@@ -454,7 +454,7 @@ fn subprogram<'t, I: TokIn<'t>>(c: &Common<'t, I>) -> Boxed<'t, 't, I, DeclKind,
             SubTail::Body(decls, body, end_name, missing) => {
                 if let Some(at) = missing {
                     let whole: Span = e.span();
-                    emitter.emit(Rich::custom(at, format!("{UNCLOSED}body {}", whole.start)));
+                    emitter.emit(PErr::custom(at, format!("{UNCLOSED}body {}", whole.start)));
                 }
                 DeclKind::SubprogramBody(Box::new(SubprogramBody {
                     spec,
@@ -507,7 +507,7 @@ pub(super) fn params<'t, I: TokIn<'t>>(
         select! { Token::Ident(s) if s.eq_ignore_ascii_case("inout") => () }
             .then(ident().rewind())
             .validate(|_, e, emitter| {
-                emitter.emit(Rich::custom(
+                emitter.emit(PErr::custom(
                     e.span(),
                     D::custom(
                         codes::E0104,
@@ -573,7 +573,7 @@ fn expression_function<'t, I: TokIn<'t>>(
                     | ExprKind::If { .. }
                     | ExprKind::Case { .. }
             ) {
-                emitter.emit(Rich::custom(
+                emitter.emit(PErr::custom(
                     x.span,
                     D::custom(
                         codes::E0106,

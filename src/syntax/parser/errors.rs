@@ -3,7 +3,7 @@
 //! an unclosed `if`, `case`, loop, block or body), where a skip stops, and
 //! how chumsky's errors become [`Diagnostic`]s.
 
-use super::{Ex, TokIn, semi};
+use super::{Ex, PErr, TokIn, semi};
 use crate::diag::codes;
 use crate::diag::{Diagnostic, Span};
 use crate::syntax::diagnostics as D;
@@ -21,7 +21,7 @@ pub(super) fn soft_kw<'t, I: TokIn<'t>>(k: Kw) -> impl Parser<'t, I, (), Ex<'t>>
         .ignored()
         .or(starts_stmt.rewind().validate(move |_, e, emitter| {
             let sp: Span = e.span();
-            emitter.emit(Rich::custom(
+            emitter.emit(PErr::custom(
                 Span {
                     start: sp.start,
                     end: sp.start,
@@ -91,7 +91,7 @@ macro_rules! unclosed {
         |(x, missing): (_, Option<Span>), e, emitter| {
             if let Some(at) = missing {
                 let whole: Span = e.span();
-                emitter.emit(Rich::custom(
+                emitter.emit(PErr::custom(
                     at,
                     format!("{UNCLOSED}{} {}", $word, whole.start),
                 ));
@@ -114,7 +114,7 @@ pub(super) fn soft_semi<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>> + 
         .ignored()
         .or(starts_next.rewind().validate(|_, e, emitter| {
             let sp: Span = e.span();
-            emitter.emit(Rich::custom(
+            emitter.emit(PErr::custom(
                 Span {
                     start: sp.start,
                     end: sp.start,
@@ -131,7 +131,7 @@ pub(super) fn assign_or_eq<'t, I: TokIn<'t>>() -> impl Parser<'t, I, (), Ex<'t>>
     just(Token::Assign)
         .ignored()
         .or(just(Token::Eq).validate(|_, e, emitter| {
-            emitter.emit(Rich::custom(
+            emitter.emit(PErr::custom(
                 e.span(),
                 D::custom(
                     codes::E0104,

@@ -3,7 +3,7 @@
 //! operators folded by hand, aggregates, `if`/`case` expressions, subtype
 //! indications and discrete ranges.
 
-use super::{Ex, TokIn, exact, first_and, ident, join, mk};
+use super::{Ex, PErr, TokIn, exact, first_and, ident, join, mk};
 use crate::diag::Span;
 use crate::diag::codes;
 use crate::syntax::ast::*;
@@ -105,7 +105,7 @@ pub fn expr<'t, I: TokIn<'t>>() -> Boxed<'t, 't, I, Expr, Ex<'t>> {
             .validate(|(first, rest), _, emitter| {
                 if let Some(w) = rest.windows(2).find(|w| w[0].0.0 != w[1].0.0) {
                     let (a, b) = (w[0].0.0.symbol(), w[1].0.0.symbol());
-                    emitter.emit(Rich::custom(
+                    emitter.emit(PErr::custom(
                         w[1].0.1,
                         D::custom(
                             codes::E0106,
@@ -255,7 +255,7 @@ fn paren_part<'t, I: TokIn<'t>>(
                     span,
                 },
                 (None, _) => {
-                    emitter.emit(Rich::custom(
+                    emitter.emit(PErr::custom(
                         span,
                         D::custom(codes::E0106, "a choice needs `=>` and a value"),
                     ));
@@ -418,7 +418,7 @@ fn simple_expr<'t, I: TokIn<'t>>(
         // is followed by `(` is taken (a string literal cannot be called).
         let op_call = select! { Token::Str(s) = e => (s, e.span()) }
             .try_map(|(s, sp): (std::rc::Rc<str>, Span), _| {
-                operator_of(&s).map(|o| (o, sp)).ok_or_else(|| Rich::custom(sp, D::custom(codes::E0106, "not an operator symbol")))
+                operator_of(&s).map(|o| (o, sp)).ok_or_else(|| PErr::custom(sp, D::custom(codes::E0106, "not an operator symbol")))
             })
             .then(
                 expr.clone()
@@ -448,7 +448,7 @@ fn simple_expr<'t, I: TokIn<'t>>(
                         mk(ExprKind::Binary(b, l, r), sp)
                     }
                     _ => {
-                        emitter.emit(Rich::custom(
+                        emitter.emit(PErr::custom(
                             sp,
                             D::custom(
                                 codes::E0106,
@@ -491,7 +491,7 @@ fn simple_expr<'t, I: TokIn<'t>>(
             ))
             .validate(|x, _, emitter| {
                 unary_sign_first(&x, true, &mut |sp| {
-                    emitter.emit(Rich::custom(
+                    emitter.emit(PErr::custom(
                         sp,
                         D::custom(
                             codes::E0106,
@@ -621,7 +621,7 @@ pub(super) fn subtype_ind<'t, I: TokIn<'t>>(
                                 } else {
                                     "a range among discriminant values"
                                 };
-                                emitter.emit(Rich::custom(
+                                emitter.emit(PErr::custom(
                                     span,
                                     D::custom(codes::E0106, format!("{what} is not allowed")),
                                 ));

@@ -58,15 +58,23 @@ pub fn parse_stmts(
         crate::work::tick();
         (t, s)
     });
-    let (out, errs) = parsers(false)
+    let grammar = parsers(false)
         .stmt
         .repeated()
         .collect::<Vec<_>>()
         .map(exact)
-        .then_ignore(chumsky::primitive::end())
-        .parse(input)
-        .into_output_errors();
-    let diags = errs.into_iter().map(|e| rich_to_diag(e, tokens)).collect();
+        .then_ignore(chumsky::primitive::end());
+    // Leanly first (see `lean`): statements without errors are parsed once.
+    let (out, errs) = super::lean::leanly(|| grammar.parse(input.clone()).into_output_errors());
+    if errs.is_empty() {
+        return (out, Vec::new());
+    }
+    let (out, errs) = grammar.parse(input).into_output_errors();
+    let diags = errs
+        .into_iter()
+        .filter_map(super::PErr::rich)
+        .map(|e| rich_to_diag(e, tokens))
+        .collect();
     (out, diags)
 }
 

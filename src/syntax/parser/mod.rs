@@ -15,7 +15,7 @@ use chumsky::prelude::*;
 /// A token and where it is.
 pub type Tok = (Token, Span);
 
-type Ex<'t> = extra::Err<Rich<'t, Token, Span>>;
+type Ex<'t> = extra::Err<PErr<'t>>;
 
 /// Everything a parser function needs from its input.
 pub trait TokIn<'t>: ValueInput<'t, Token = Token, Span = Span> {}
@@ -31,6 +31,7 @@ mod decl;
 mod errors;
 mod expr;
 mod lazy;
+mod lean;
 mod limits;
 mod stmt;
 
@@ -42,6 +43,7 @@ pub use limits::{MAX_CHAIN, MAX_NESTING};
 use decl::decl_grammar;
 use errors::{decls_end, explain_unclosed, missing_after, rich_to_diag, seq_end};
 use expr::{discrete_range, subtype_ind};
+use lean::PErr;
 use limits::too_deep;
 use stmt::stmt_grammar;
 
@@ -269,6 +271,18 @@ pub fn parse_with(
     src_len: usize,
     lazy: bool,
 ) -> (Option<CompilationUnit>, Vec<Diagnostic>) {
+    parse_passes(tokens, file, src_len, lazy, true)
+}
+
+/// [`parse_with`], leanly first (see `lean`) or, when not `lean_first`,
+/// with rich errors only (the tests compare the two).
+pub fn parse_passes(
+    tokens: &[(Token, Span)],
+    file: FileId,
+    src_len: usize,
+    lazy: bool,
+    lean_first: bool,
+) -> (Option<CompilationUnit>, Vec<Diagnostic>) {
     let src_len = crate::diag::offset(src_len);
     let eoi = Span {
         start: src_len,
@@ -282,8 +296,20 @@ pub fn parse_with(
         crate::work::tick();
         (t, s)
     });
-    let (out, errs) = compilation(lazy).parse(input).into_output_errors();
-    let mut diags: Vec<Diagnostic> = errs.into_iter().map(|e| rich_to_diag(e, tokens)).collect();
+    // Leanly first (see `lean`): a text without errors is parsed once.
+    let grammar = compilation(lazy);
+    if lean_first {
+        let (out, errs) = lean::leanly(|| grammar.parse(input.clone()).into_output_errors());
+        if errs.is_empty() {
+            return (out, Vec::new());
+        }
+    }
+    let (out, errs) = grammar.parse(input).into_output_errors();
+    let mut diags: Vec<Diagnostic> = errs
+        .into_iter()
+        .filter_map(PErr::rich)
+        .map(|e| rich_to_diag(e, tokens))
+        .collect();
     diags.dedup_by(|a, b| a.span == b.span);
     missing_after(&mut diags, tokens);
     explain_unclosed(&mut diags, tokens, src_len);
@@ -309,5 +335,6 @@ pub fn parse_expr_entry(tokens: &[(Token, Span)], file: FileId, src_len: usize) 
     let p = expr()
         .then_ignore(just(Token::Semi).or_not())
         .then_ignore(end());
-    p.parse(input).into_result().ok()
+    // Its errors are not reported: a lean pass (see `lean`) is enough.
+    lean::leanly(|| p.parse(input).into_result().ok())
 }

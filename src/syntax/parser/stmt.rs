@@ -4,7 +4,7 @@
 
 use super::decl::params;
 use super::errors::{UNCLOSED, closing, skip_to_semi, soft_kw, soft_semi, unclosed};
-use super::{Common, Ex, TokIn, first_and, ident, name, semi};
+use super::{Common, Ex, PErr, TokIn, first_and, ident, name, semi};
 use crate::diag::Span;
 use crate::diag::codes;
 use crate::syntax::ast::*;
@@ -181,7 +181,7 @@ pub(super) fn stmt_grammar<'t, I: TokIn<'t>>(
         .validate(|(decls, (body, missing)), e, emitter| {
             if let Some(at) = missing {
                 let whole: Span = e.span();
-                emitter.emit(Rich::custom(at, format!("{UNCLOSED}block {}", whole.start)));
+                emitter.emit(PErr::custom(at, format!("{UNCLOSED}block {}", whole.start)));
             }
             (Some(decls), body)
         });
@@ -388,7 +388,7 @@ pub(super) fn stmt_grammar<'t, I: TokIn<'t>>(
                 },
                 None,
             ) => {
-                emitter.emit(Rich::custom(
+                emitter.emit(PErr::custom(
                     span,
                     D::custom(
                         codes::E0104,
