@@ -6,6 +6,7 @@
 //! in which every name is already a slot or an index: nothing here looks a
 //! name up by string.
 
+mod aggregate;
 pub mod builtins;
 pub mod diagnostics;
 pub mod memory;
@@ -943,6 +944,50 @@ impl Run<'_> {
         )
     }
 
+    /// A native subprogram or a robot service called with its arguments'
+    /// values (its `out` values are left in `vals`).
+    fn call_binding(
+        &mut self,
+        binding: Binding,
+        vals: &mut [Value],
+        span: Span,
+    ) -> R<Option<Value>> {
+        self.m.calls.push(span);
+        let r = match binding {
+            Binding::Native(native) => native(self, vals, span),
+            Binding::Service(i) => self.call_service(i, vals, span),
+        };
+        self.m.calls.pop();
+        r
+    }
+
+    /// The compiled engine's call of a subprogram it does not compile: a
+    /// native or service (`out` values left in `vals`), or one without a
+    /// body (Program_Error).
+    pub(crate) fn call_native(
+        &mut self,
+        f: FuncId,
+        vals: &mut [Value],
+        span: Span,
+    ) -> R<Option<Value>> {
+        if self
+            .m
+            .interrupted
+            .as_ref()
+            .is_some_and(|f| f.load(std::sync::atomic::Ordering::Relaxed))
+        {
+            self.poll(span)?;
+        }
+        match self.m.natives.get(f as usize).copied().flatten() {
+            Some(binding) => self.call_binding(binding, vals, span),
+            None => Err(self.raise(
+                check::PROGRAM_ERROR,
+                format!("`{}` has no body", self.c.funcs[f as usize].name),
+                span,
+            )),
+        }
+    }
+
     /// Calls a subprogram with copy-in/copy-out parameters.
     pub fn call(&mut self, f: FuncId, args: &[Arg], span: Span) -> R<Option<Value>> {
         let mut vals = Vec::with_capacity(args.len());
@@ -967,13 +1012,7 @@ impl Run<'_> {
             ));
         }
         let result = if let Some(binding) = self.m.natives.get(f as usize).copied().flatten() {
-            self.m.calls.push(span);
-            let r = match binding {
-                Binding::Native(native) => native(self, &mut vals, span),
-                Binding::Service(i) => self.call_service(i, &mut vals, span),
-            };
-            self.m.calls.pop();
-            r?
+            self.call_binding(binding, &mut vals, span)?
         } else {
             let Some(body) = sub.body.clone() else {
                 return Err(self.raise(
@@ -1378,25 +1417,22 @@ impl Run<'_> {
                 for f in &fields[..nd] {
                     v.push(self.eval(f)?);
                 }
-                if nd == 0 {
-                    for f in fields.iter() {
+                // The other components see the discriminants (a component's
+                // default does).
+                if nd > 0 {
+                    self.m.discrs.push(v.to_vec());
+                }
+                let r = (|| {
+                    for f in &fields[nd..] {
                         v.push(self.eval(f)?);
                     }
-                } else {
-                    // The other components see the discriminants (a
-                    // component's default does), and those of the variant
-                    // chosen fit the subtypes the discriminants give them.
-                    self.m.discrs.push(v.to_vec());
-                    let r = (|| {
-                        for f in &fields[nd..] {
-                            v.push(self.eval(f)?);
-                        }
-                        self.shape_record(e.ty, &mut v, e.span)
-                    })();
+                    Ok(())
+                })();
+                if nd > 0 {
                     self.m.discrs.pop();
-                    r?;
                 }
-                Value::Rec(Rc::new(v))
+                r?;
+                self.record_agg(e.ty, v, e.span)?
             }
             ExKind::If(arms, els) => {
                 for (c, v) in arms.iter() {
@@ -1423,32 +1459,15 @@ impl Run<'_> {
                 let v = match init {
                     Some(x) => self.eval(x)?,
                     None => {
-                        // Its tasks belong to the master of the access type.
-                        let outer = self.m.sched.alloc_master;
-                        self.m.sched.alloc_master = self.collection_master(e.ty);
-                        let v = self.default_value(*t, e.span);
-                        self.m.sched.alloc_master = outer;
-                        let v = v?;
+                        let v = self.allocated_default(e.ty, *t, e.span)?;
                         self.activate_allocated();
                         v
                     }
                 };
-                self.reserve(4, e.span)?;
-                Value::Ptr(Some(Obj::new(v)))
+                self.allocate(v, e.span)?
             }
             ExKind::Default(t) => self.default_value(*t, e.span)?,
-            ExKind::Discriminant(i) => {
-                match self.m.discrs.last().and_then(|d| d.get(*i as usize)) {
-                    Some(v) => v.clone(),
-                    None => {
-                        return Err(self.raise(
-                            check::PROGRAM_ERROR,
-                            "a discriminant read outside its record",
-                            e.span,
-                        ));
-                    }
-                }
-            }
+            ExKind::Discriminant(i) => self.discriminant(*i, e.span)?,
             ExKind::Error => {
                 return Err(self.raise(check::PROGRAM_ERROR, "erroneous expression", e.span));
             }
@@ -1860,192 +1879,17 @@ impl Run<'_> {
         })))
     }
 
-    fn array_agg(&mut self, agg: &ArrayAgg, span: Span) -> R<Value> {
-        let t = agg.ty;
-        let fixed = self.array_bounds(t)?;
-        // Rows of a multi-dimensional aggregate are flattened, also when the
-        // type is unconstrained and the bounds come from the rows.
-        let dims = self.c.types.array(t).map_or(1, |(i, _, _)| i.len());
-        let index_first = || -> i64 {
-            self.c
-                .types
-                .array(t)
-                .and_then(|(i, _, _)| i.first().copied())
-                .map(|it| match self.c.types.get(it).static_range {
-                    Some((l, _)) => l as i64,
-                    None => match self.c.types.kind(it) {
-                        TypeKind::Enum(_) => 0,
-                        _ => i32::MIN as i64,
-                    },
-                })
-                .unwrap_or(1)
-        };
-        match &agg.kind {
-            ArrayAggKind::Positional(items, others) => {
-                let mut vals = Vec::with_capacity(items.len());
-                for i in items {
-                    vals.push(self.eval(i)?);
-                }
-                let (lo, hi) = match &fixed {
-                    Some(b) => b[0],
-                    None => {
-                        let lo = index_first();
-                        (lo, lo + vals.len() as i64 - 1)
-                    }
-                };
-                if hi - lo + 1 > MAX_ELEMENTS {
-                    return Err(self.raise(check::STORAGE_ERROR, "aggregate too large", span));
-                }
-                self.reserve(hi - lo + 1, span)?;
-                let n = (hi - lo + 1).max(0) as usize;
-                if vals.len() > n || (vals.len() < n && others.is_none()) {
-                    return Err(self.check_failed("length check failed", span));
-                }
-                if let Some(o) = others
-                    && vals.len() < n
-                {
-                    if self.repeatable(o) {
-                        let v = self.eval(o)?;
-                        vals.resize(n, v);
-                    } else {
-                        while vals.len() < n {
-                            vals.push(self.eval(o)?);
-                        }
-                    }
-                }
-                self.rows_to_array(vals, (lo, hi), fixed, dims, span)
-            }
-            ArrayAggKind::Named(choices, others) => {
-                let mut pairs = Vec::new();
-                for (ranges, v) in choices {
-                    let mut rs = Vec::new();
-                    for (l, h) in ranges {
-                        rs.push((self.eval(l)?.int(), self.eval(h)?.int()));
-                    }
-                    pairs.push((rs, v));
-                }
-                let (lo, hi) = match &fixed {
-                    Some(b) => b[0],
-                    None => {
-                        let lo = pairs
-                            .iter()
-                            .flat_map(|p| p.0.iter().map(|r| r.0))
-                            .min()
-                            .unwrap_or(1);
-                        let hi = pairs
-                            .iter()
-                            .flat_map(|p| p.0.iter().map(|r| r.1))
-                            .max()
-                            .unwrap_or(0);
-                        (lo, hi)
-                    }
-                };
-                if hi - lo + 1 > MAX_ELEMENTS {
-                    return Err(self.raise(check::STORAGE_ERROR, "aggregate too large", span));
-                }
-                self.reserve(hi - lo + 1, span)?;
-                let n = (hi - lo + 1).max(0) as usize;
-                let mut vals: Vec<Option<Value>> = vec![None; n];
-                for (rs, v) in &pairs {
-                    // Once per component (RM 4.3.3(23)), unless that is the
-                    // same as once.
-                    let once = if self.repeatable(v) {
-                        Some(self.eval(v)?)
-                    } else {
-                        None
-                    };
-                    for (l, h) in rs {
-                        for i in *l..=*h {
-                            if i < lo || i > hi {
-                                return Err(self.check_failed("index check failed", span));
-                            }
-                            let val = match &once {
-                                Some(x) => x.clone(),
-                                None => self.eval(v)?,
-                            };
-                            vals[(i - lo) as usize] = Some(val);
-                        }
-                    }
-                }
-                let mut out = Vec::with_capacity(n);
-                // `others` once when that is the same as once per component.
-                let mut other = None;
-                for v in vals {
-                    match v {
-                        Some(v) => out.push(v),
-                        None => match others {
-                            Some(o) => match &other {
-                                Some(x) => out.push(Value::clone(x)),
-                                None => {
-                                    let x = self.eval(o)?;
-                                    if self.repeatable(o) {
-                                        other = Some(x.clone());
-                                    }
-                                    out.push(x);
-                                }
-                            },
-                            None => return Err(self.check_failed("length check failed", span)),
-                        },
-                    }
-                }
-                self.rows_to_array(out, (lo, hi), fixed, dims, span)
-            }
-        }
-    }
-
     /// Whether a value of `t` by default can be computed once and copied
     /// (its components' defaults are [`Self::repeatable`]).
     fn default_repeatable(&self, t: TypeId) -> bool {
         match self.c.types.kind(t) {
             TypeKind::Record(fs) => fs.iter().all(|f| match &f.default {
-                Some(d) => self.repeatable(d),
+                Some(d) => aggregate::repeatable(self.c.types, d),
                 None => self.default_repeatable(f.ty),
             }),
             TypeKind::Array { elem, .. } => self.default_repeatable(*elem),
             _ => true,
         }
-    }
-
-    /// Whether evaluating `e` again gives an equal value and does nothing
-    /// else (no call, no allocator, no check against bounds that are not
-    /// static, which evaluates them): then an `others` that covers many
-    /// components is evaluated once, not once per component (RM 4.3.3(23)
-    /// asks for the latter, which only such effects could tell apart;
-    /// nothing else runs between the components' evaluations). The
-    /// engine's [`vm::effects_unless`] decides, with aggregates and range
-    /// checks judged here.
-    fn repeatable(&self, e: &Ex) -> bool {
-        !vm::effects_unless(e, &|x| match &x.kind {
-            ExKind::ArrayAgg(a) => Some(!self.repeatable_agg(a)),
-            ExKind::RangeCheck(_, t) => {
-                let info = self.c.types.get(*t);
-                (info.static_range.is_none() && info.static_frange.is_none()).then_some(true)
-            }
-            _ => None,
-        })
-    }
-
-    /// [`Self::repeatable`] for an array aggregate: its type's bounds and
-    /// its parts.
-    fn repeatable_agg(&self, a: &ArrayAgg) -> bool {
-        let both = |(l, h): &(Ex, Ex)| self.repeatable(l) && self.repeatable(h);
-        let bounds = match self.c.types.array(a.ty) {
-            Some((_, _, Some(bs))) => bs.iter().all(both),
-            _ => true,
-        };
-        bounds
-            && match &a.kind {
-                ArrayAggKind::Positional(items, others) => {
-                    items.iter().all(|i| self.repeatable(i))
-                        && others.as_deref().is_none_or(|o| self.repeatable(o))
-                }
-                ArrayAggKind::Named(choices, others) => {
-                    choices
-                        .iter()
-                        .all(|(rs, v)| self.repeatable(v) && rs.iter().all(both))
-                        && others.as_deref().is_none_or(|o| self.repeatable(o))
-                }
-            }
     }
 
     /// Builds an array from its first-dimension components (elements, or rows

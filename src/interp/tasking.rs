@@ -259,9 +259,6 @@ pub(crate) struct Sched {
     pub seq: u64,
     /// Task switches so far (for `--trace`).
     pub switches: u64,
-    /// False while the compiled engine evaluates an allocator whose tasks
-    /// it activates itself (and waits for).
-    pub alloc_activates: bool,
     /// The services are a monitor: the time until which the robot is in a
     /// motion another task started.
     pub robot_free_at: f64,
@@ -289,7 +286,6 @@ impl Default for Sched {
             library: Vec::new(),
             seq: 0,
             switches: 0,
-            alloc_activates: true,
             robot_free_at: 0.0,
             floor: 0,
             alloc_master: None,
@@ -605,7 +601,7 @@ impl Run<'_> {
 
     /// Tasks created by an allocator are activated by it.
     pub(crate) fn activate_allocated(&mut self) {
-        if !self.m.sched.active() || !self.m.sched.alloc_activates {
+        if !self.m.sched.active() {
             return;
         }
         let cur = self.m.sched.cur;

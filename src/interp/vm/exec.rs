@@ -1,8 +1,26 @@
 //! The execution loop, and its helpers over frame slots.
 
 use super::*;
+use crate::interp::aggregate::{AggBounds, AggPart};
 
 impl<'a> Run<'a> {
+    /// What a choice of an array aggregate gives, from its slot (emptied).
+    fn agg_part_of(&mut self, p: &PartOp) -> AggPart {
+        match *p {
+            PartOp::One(v) => AggPart::One(self.take_slot(v)),
+            PartOp::Each(v) => AggPart::Each(match self.take_slot(v) {
+                Value::Arr(a) => Rc::try_unwrap(a).map_or_else(|a| a.data.clone(), |a| a.data),
+                _ => Vec::new(),
+            }),
+        }
+    }
+
+    /// The value of a slot, which is left empty.
+    pub(super) fn take_slot(&mut self, v: Var) -> Value {
+        let i = self.sl(v);
+        std::mem::take(&mut self.m.stack[i])
+    }
+
     #[inline(always)]
     pub(super) fn sl(&self, v: Var) -> usize {
         self.m.display[v.level as usize] + v.slot as usize
@@ -524,15 +542,6 @@ impl<'a> Run<'a> {
                     Err(self.raise_stmt(*e, m, *span))
                 }
                 Op::Reraise(span) => Err(self.reraise(*span)),
-                Op::Eval(d, e, temps) => {
-                    let r = self.eval(e).map(|v| self.put_ix(ix!(*d), v));
-                    for t in temps.iter() {
-                        let i = ix!(*t);
-                        self.m.stack[i] = Value::Undef;
-                    }
-                    r
-                }
-                Op::Exec(s) => self.exec(s),
                 Op::Jump(t) => {
                     pc = *t;
                     continue;
@@ -608,20 +617,31 @@ impl<'a> Run<'a> {
                 Op::Poll(span) => self.poll(*span),
                 // A motion service while another task's motion runs waits
                 // for it (the services are a monitor).
-                Op::CallWalker(f, _, _, span)
+                Op::CallNative(n)
                     if self.m.sched.active()
-                        && self.is_service(*f)
-                        && self.m.clock.now() < self.robot_free_at(*f) =>
+                        && self.is_service(n.f)
+                        && self.m.clock.now() < self.robot_free_at(n.f) =>
                 {
-                    let until = self.robot_free_at(*f);
-                    self.m.sched.block(tasking::Wait::Delay(until), true, *span);
+                    let until = self.robot_free_at(n.f);
+                    self.m
+                        .sched
+                        .block(tasking::Wait::Delay(until), true, n.span);
                     Ok(())
                 }
-                Op::CallWalker(f, args, d, span) => {
+                Op::CallNative(n) => {
                     self.rerun();
-                    self.call(*f, args, *span).map(|v| {
-                        if let Some(d) = d {
-                            self.put_ix(ix!(*d), v.unwrap_or_default());
+                    let mut vals: Vec<Value> = n
+                        .ops
+                        .iter()
+                        .map(|v| self.m.stack[self.sl(*v)].clone())
+                        .collect();
+                    self.call_native(n.f, &mut vals, n.span).map(|v| {
+                        for &(i, slot) in n.outs.iter() {
+                            let x = std::mem::take(&mut vals[i as usize]);
+                            self.put(slot, x);
+                        }
+                        if let Some(d) = n.dst {
+                            self.put(d, v.unwrap_or_default());
                         }
                     })
                 }
@@ -813,12 +833,97 @@ impl<'a> Run<'a> {
                     Ok(None) => Ok(()),
                     Err(e) => Err(e),
                 },
-                Op::AllocTask(d, e) => {
-                    self.m.sched.alloc_activates = false;
-                    let r = self.eval(e);
-                    self.m.sched.alloc_activates = true;
-                    r.map(|v| self.put_ix(ix!(*d), v))
+                Op::AllocTask(d, access, t, span) | Op::AllocDefault(d, access, t, span) => self
+                    .allocated_default(*access, *t, *span)
+                    .and_then(|v| self.allocate(v, *span))
+                    .map(|v| self.put_ix(ix!(*d), v)),
+                Op::Alloc(d, x, span) => {
+                    let v = self.take_slot(*x);
+                    self.allocate(v, *span).map(|v| self.put_ix(ix!(*d), v))
                 }
+                Op::AggBounds(a) => {
+                    let ranges: Option<Vec<(i64, i64)>> = a.ranges.as_ref().map(|rs| {
+                        rs.iter()
+                            .map(|[l, h]| (self.int_ix(ix!(*l)), self.int_ix(ix!(*h))))
+                            .collect()
+                    });
+                    self.agg_bounds(
+                        a.ty,
+                        a.items as usize,
+                        ranges.as_deref(),
+                        a.has_others,
+                        a.span,
+                    )
+                    .map(|b| {
+                        let [lo, hi, n] = a.out;
+                        self.put_ix(ix!(lo), Value::Int(b.lo));
+                        self.put_ix(ix!(hi), Value::Int(b.hi));
+                        self.put_ix(ix!(n), Value::Int(b.others));
+                    })
+                }
+                Op::ArrayAgg(a) => {
+                    let [lo, hi, n] = a.bounds;
+                    let b = AggBounds {
+                        lo: self.int_ix(ix!(lo)),
+                        hi: self.int_ix(ix!(hi)),
+                        others: self.int_ix(ix!(n)),
+                    };
+                    let others = a.others.as_ref().map(|p| self.agg_part_of(p));
+                    let r = match &a.choices {
+                        None => {
+                            let items = a.items.iter().map(|v| self.take_slot(*v)).collect();
+                            self.positional_agg(a.ty, &b, items, others, a.span)
+                        }
+                        Some(cs) => {
+                            let choices = cs
+                                .iter()
+                                .map(|(rs, p)| {
+                                    let rs = rs
+                                        .iter()
+                                        .map(|[l, h]| (self.int_ix(ix!(*l)), self.int_ix(ix!(*h))))
+                                        .collect();
+                                    (rs, self.agg_part_of(p))
+                                })
+                                .collect();
+                            self.named_agg(a.ty, &b, choices, others, a.span)
+                        }
+                    };
+                    r.map(|v| self.put_ix(ix!(a.dst), v))
+                }
+                Op::Record(r) => {
+                    let fields = r.fields.iter().map(|v| self.take_slot(*v)).collect();
+                    self.record_agg(r.ty, fields, r.span)
+                        .map(|v| self.put_ix(ix!(r.dst), v))
+                }
+                Op::ListNew(d) => {
+                    let empty = Value::Arr(Rc::new(Array {
+                        bounds: vec![(1, 0)],
+                        data: Vec::new(),
+                    }));
+                    self.put_ix(ix!(*d), empty);
+                    Ok(())
+                }
+                Op::ListPush(l, x) => {
+                    let v = self.take_slot(*x);
+                    let li = ix!(*l);
+                    if let Value::Arr(a) = &mut self.m.stack[li] {
+                        Rc::make_mut(a).data.push(v);
+                    }
+                    Ok(())
+                }
+                Op::Discriminant(d, i, span) => self
+                    .discriminant(*i, *span)
+                    .map(|v| self.put_ix(ix!(*d), v)),
+                Op::PushDiscrs(vs) => {
+                    let d = vs.iter().map(|v| self.m.stack[ix!(*v)].clone()).collect();
+                    self.m.discrs.push(d);
+                    Ok(())
+                }
+                Op::PopDiscrs => {
+                    self.m.discrs.pop();
+                    Ok(())
+                }
+                Op::ProgramError(msg, span) => Err(self.raise(check::PROGRAM_ERROR, *msg, *span)),
                 Op::NoteMaster(v) => {
                     let code = self.master_code();
                     self.put_ix(ix!(*v), Value::Int(code));
@@ -921,15 +1026,30 @@ impl<'a> Run<'a> {
                                 } = self.next_thread(cache, level0)?;
                                 break;
                             };
-                            let (args, dst) = call_site(frame.code, frame.pc);
+                            let (back, dst) = call_site(frame.code, frame.pc);
                             // Copy-out values live in the frame.
                             let mut outs = Vec::new();
-                            for (i, a) in args.iter().enumerate() {
-                                if a.mode != Mode::In {
-                                    outs.push((
-                                        a,
-                                        std::mem::take(&mut self.m.stack[frame.base + i]),
-                                    ));
+                            let mut slots = Vec::new();
+                            match back {
+                                CopyBack::Args(args) => {
+                                    for (i, a) in args.iter().enumerate() {
+                                        if a.mode != Mode::In {
+                                            outs.push((
+                                                a,
+                                                std::mem::take(&mut self.m.stack[frame.base + i]),
+                                            ));
+                                        }
+                                    }
+                                }
+                                CopyBack::Slots(to) => {
+                                    for &(i, v) in to {
+                                        slots.push((
+                                            v,
+                                            std::mem::take(
+                                                &mut self.m.stack[frame.base + i as usize],
+                                            ),
+                                        ));
+                                    }
                                 }
                             }
                             let f = cur.func.expect("a called frame");
@@ -945,6 +1065,9 @@ impl<'a> Run<'a> {
                                     sub.span,
                                 ))
                             } else {
+                                for (slot, v) in slots {
+                                    self.put(slot, v);
+                                }
                                 (|| {
                                     for (a, v) in outs {
                                         if let Some(t) = a.back_check {

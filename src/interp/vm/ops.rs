@@ -75,14 +75,6 @@ pub(super) enum Op {
     Raise(ExcId, Option<Var>, Span),
     /// `raise;` in a handler (`Run::reraise`).
     Reraise(Span),
-    /// The walker evaluates an expression into a slot. The expression may
-    /// be a copy whose operands were computed here first (replaced by the
-    /// temporaries holding them, listed last, which are emptied once it is
-    /// evaluated: a chain `F (X) & "a" & ...` would keep every intermediate
-    /// string alive until the frame ends).
-    Eval(Var, Box<Ex>, Box<[Var]>),
-    /// The walker executes a statement.
-    Exec(Box<Stmt>),
     Jump(u32),
     JumpIfNot(Var, u32),
     /// `JumpIfNot` of a `CmpK`, in one instruction (`if N < 2 then`).
@@ -98,15 +90,17 @@ pub(super) enum Op {
     /// Next step: counter, low, high, reverse, the body's start.
     ForNext(Var, Var, Var, bool, u32, Span),
     Poll(Span),
-    /// A call of a subprogram with a body: whether it is a function, its
-    /// arguments when one is not `in` (for the copy-back; None: all `in`,
-    /// or none), their operands followed by the slot for a function's
-    /// result. The arguments are boxed twice, a thin pointer: it keeps `Op`
-    /// at 48 bytes.
-    Call(bool, FuncId, Option<Box<Box<[Arg]>>>, Box<[Var]>, Span),
-    /// A call the walker makes (natives, services, a subprogram without
-    /// body), its `in` arguments with calls in them computed here first.
-    CallWalker(FuncId, Box<[Arg]>, Option<Var>, Span),
+    /// A call of a subprogram with a body: whether it is a function, where
+    /// its `out` and `in out` values go when it returns (the argument's
+    /// position, the caller's slot: the instructions after the call check
+    /// and store them into the actuals; None: all `in`, or none), its
+    /// operands followed by the slot for a function's result. The list is
+    /// boxed twice, a thin pointer: it keeps `Op` at 48 bytes.
+    Call(bool, FuncId, Option<Box<OutSlots>>, Box<[Var]>, Span),
+    /// A call of a native subprogram or a robot service, or of one without
+    /// a body (Program_Error), its arguments in slots: as `Call`, the
+    /// `out` values go to slots that the instructions after it store.
+    CallNative(Box<NativeOp>),
     /// A call whose one argument, `in`, is `x op k` for integers: the
     /// operation goes straight into the callee's frame (`F (N - 1)`).
     /// Then a function's result slot (`NO_VAR`: a procedure), the call's
@@ -179,9 +173,43 @@ pub(super) enum Op {
     /// before it, see `call_site`).
     RequeueArgs(Box<[Arg]>, Span),
     Abort(Box<[Var]>),
-    /// An allocator of a task: the task is activated by the next
-    /// instruction (`Activate`), not left to the walker.
-    AllocTask(Var, Box<Ex>),
+    /// `dst := new T` of an access type (the first type) to tasks or to
+    /// a type with tasks (the second): the tasks are activated by the next
+    /// instruction (`Activate`).
+    AllocTask(Var, TypeId, TypeId, Span),
+    /// `dst := new T` of a type without tasks (`Run::allocated_default`).
+    AllocDefault(Var, TypeId, TypeId, Span),
+    /// `dst := new T'(src)` (`Run::allocate`).
+    Alloc(Var, Var, Span),
+    /// The bounds of an array aggregate and how many components its
+    /// `others` covers, into three slots (`Run::agg_bounds`).
+    AggBounds(Box<AggBoundsOp>),
+    /// An array aggregate's value from its parts (`Run::positional_agg`,
+    /// `Run::named_agg`).
+    ArrayAgg(Box<ArrayAggOp>),
+    /// A record aggregate's value from its components in slots, the
+    /// discriminants first (`Run::record_agg`).
+    Record(Box<RecordOp>),
+    /// `dst :=` an empty list, which `ListPush` grows: the values of an
+    /// aggregate's choice evaluated once per component.
+    ListNew(Var),
+    /// Appends the value of the second slot (a temporary, taken) to the
+    /// list in the first.
+    ListPush(Var, Var),
+    /// `dst :=` the discriminant `i` of the record whose components are
+    /// being made (`Run::discriminant`).
+    Discriminant(Var, u32, Span),
+    /// The discriminants of a record aggregate being built, in slots, are
+    /// put in reach of the next instruction, which reads a subtype that
+    /// depends on them; `PopDiscrs` after it takes them away (neither
+    /// that instruction nor these can block, so no task runs between).
+    PushDiscrs(Box<[Var]>),
+    PopDiscrs,
+    /// Program_Error, with its message: an expression the checker found
+    /// erroneous, or code that cannot run here (a long body's part
+    /// compiled once already, a `requeue` or `exit` whose statement is not
+    /// in this code).
+    ProgramError(&'static str, Span),
     /// An access type to tasks is declared: note its master.
     NoteMaster(Var),
 }
@@ -281,6 +309,73 @@ pub(super) struct ConcatOp {
     pub(super) elems: (bool, bool),
     pub(super) takes: (bool, bool),
     pub(super) ty: TypeId,
+    pub(super) span: Span,
+}
+
+/// Where a call's `out` values go: (argument position, caller's slot).
+pub(super) type OutSlots = Box<[(u32, Var)]>;
+
+/// A named array aggregate's choices: the slots of their ranges' bounds
+/// and what each gives.
+pub(super) type Choices = Box<[(Box<[[Var; 2]]>, PartOp)]>;
+
+/// `Op::CallNative`: the subprogram, its arguments' slots, where its
+/// `out` values go (argument position, slot), the result slot, the call's
+/// place.
+#[derive(Debug)]
+pub(super) struct NativeOp {
+    pub(super) f: FuncId,
+    pub(super) ops: Box<[Var]>,
+    pub(super) outs: OutSlots,
+    pub(super) dst: Option<Var>,
+    pub(super) span: Span,
+}
+
+/// `Op::AggBounds`: the slots for the first dimension's bounds and the
+/// number of components `others` covers, the aggregate's type, how many
+/// positional components it has, the slots of its named choices' ranges
+/// (None: it is positional), and whether it has `others`.
+#[derive(Debug)]
+pub(super) struct AggBoundsOp {
+    pub(super) out: [Var; 3],
+    pub(super) ty: TypeId,
+    pub(super) items: u32,
+    pub(super) ranges: Option<Box<[[Var; 2]]>>,
+    pub(super) has_others: bool,
+    pub(super) span: Span,
+}
+
+/// The slot holding what a choice of an array aggregate gives: one value
+/// (copied into each component) or a list of one per component
+/// (`Op::ListNew`).
+#[derive(Clone, Copy, Debug)]
+pub(super) enum PartOp {
+    One(Var),
+    Each(Var),
+}
+
+/// `Op::ArrayAgg`: the result slot, the aggregate's type, the slots
+/// `Op::AggBounds` filled, the positional components' slots or the named
+/// choices (their ranges' slots and parts), and `others`. Every slot is a
+/// temporary, emptied as it is read.
+#[derive(Debug)]
+pub(super) struct ArrayAggOp {
+    pub(super) dst: Var,
+    pub(super) ty: TypeId,
+    pub(super) bounds: [Var; 3],
+    pub(super) items: Box<[Var]>,
+    pub(super) choices: Option<Choices>,
+    pub(super) others: Option<PartOp>,
+    pub(super) span: Span,
+}
+
+/// `Op::Record`: the result slot, the record's type, its components'
+/// slots (temporaries, emptied as they are read).
+#[derive(Debug)]
+pub(super) struct RecordOp {
+    pub(super) dst: Var,
+    pub(super) ty: TypeId,
+    pub(super) fields: Box<[Var]>,
     pub(super) span: Span,
 }
 
@@ -457,12 +552,10 @@ pub(super) fn relocate(op: &mut Op, by: u32) {
         | Op::Raise(..)
         | Op::Store(..)
         | Op::Reraise(..)
-        | Op::Eval(..)
-        | Op::Exec(..)
         | Op::Poll(..)
         | Op::Call(..)
         | Op::CallK { .. }
-        | Op::CallWalker(..)
+        | Op::CallNative(..)
         | Op::Return(..)
         | Op::ReturnIntBin(..)
         | Op::FallOff
@@ -483,6 +576,17 @@ pub(super) fn relocate(op: &mut Op, by: u32) {
         | Op::RequeueArgs(..)
         | Op::Abort(..)
         | Op::AllocTask(..)
+        | Op::AllocDefault(..)
+        | Op::Alloc(..)
+        | Op::AggBounds(..)
+        | Op::ArrayAgg(..)
+        | Op::Record(..)
+        | Op::ListNew(..)
+        | Op::ListPush(..)
+        | Op::Discriminant(..)
+        | Op::PushDiscrs(..)
+        | Op::PopDiscrs
+        | Op::ProgramError(..)
         | Op::NoteMaster(..) => {}
     }
 }

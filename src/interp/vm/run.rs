@@ -82,7 +82,16 @@ impl<'a> Run<'a> {
                 all_in: true,
                 scalar: false,
                 level: sub.level,
-                ops: vec![Op::CallWalker(f, Box::new([]), None, sub.span), Op::FallOff],
+                ops: vec![
+                    Op::CallNative(Box::new(NativeOp {
+                        f,
+                        ops: Box::new([]),
+                        outs: Box::new([]),
+                        dst: None,
+                        span: sub.span,
+                    })),
+                    Op::FallOff,
+                ],
                 temps: 0,
                 frame: own,
                 regions: Vec::new(),

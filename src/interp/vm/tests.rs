@@ -79,10 +79,10 @@ mod fused_tests {
 
 #[cfg(test)]
 mod compiled_tests {
-    use super::super::{Compiler, Op};
+    use super::super::Compiler;
 
-    /// Whether the body of `name` in `src` compiles to instructions only,
-    /// none handed to the walker.
+    /// The instructions of the body of `name` in `src` that carry a
+    /// checked tree (an expression or statement inside the instruction).
     fn walker_ops(src: &str, name: &str) -> Vec<String> {
         let checked = crate::check::checked_for_tests(src);
         let prog = checked.program();
@@ -91,16 +91,64 @@ mod compiled_tests {
             .iter()
             .find(|f| f.name.eq_ignore_ascii_case(name))
             .expect("the function");
-        let walker_calls = |_| false;
+        // `Get_Line` is called as the engine calls natives.
+        let natives = |g: crate::check::ir::FuncId| prog.funcs[g as usize].name == "Get_Line";
         let own = f.nslots.max(f.params.len() as u32);
-        let mut c = Compiler::new(f.level, own, &walker_calls, prog.types);
+        let mut c = Compiler::new(f.level, own, &natives, prog.types);
         c.body(f.body.as_deref().expect("its body"));
         c.finish(None, true, false)
             .ops
             .iter()
-            .filter(|op| matches!(op, Op::Eval(..) | Op::Exec(..)))
             .map(|op| format!("{op:?}"))
+            .filter(|op| op.contains("Ex {") || op.contains("Stmt {"))
             .collect()
+    }
+
+    /// Aggregates (positional, named, `others`, ranges whose value has a
+    /// call, two-dimensional, records with discriminants and a
+    /// discriminant-dependent string) and allocators (with an initial
+    /// value, of a record, of tasks inside an aggregate) have instructions
+    /// of their own.
+    #[test]
+    fn aggregates_and_allocators_are_compiled() {
+        let src = "procedure P is\n\
+            type Vec is array (Positive range <>) of Integer;\n\
+            type Grid is array (1 .. 2, 1 .. 3) of Integer;\n\
+            type Tag (Len : Natural := 4) is record\n\
+               Name : String (1 .. Len);\n\
+               Id : Integer := 0;\n\
+            end record;\n\
+            type Tag_Ref is access Tag;\n\
+            type Int_Ref is access Integer;\n\
+            task type Axis;\n\
+            type Axis_Ref is access Axis;\n\
+            type Pair is array (1 .. 2) of Axis_Ref;\n\
+            task body Axis is begin null; end Axis;\n\
+            Count : Integer := 0;\n\
+            function Next return Integer is begin Count := Count + 1; return Count; end Next;\n\
+            function F (N : Integer) return Integer is\n\
+               A : Vec (1 .. 5) := (1, 2, others => N);\n\
+               B : Vec (1 .. 6) := (1 .. 2 => Next, 4 => N, others => Next);\n\
+               G : Grid := ((1, 2, 3), (others => N));\n\
+               T : Tag := (Len => 3, Name => \"abc\", Id => N);\n\
+               R : Tag_Ref := new Tag'(T);\n\
+               I : Int_Ref := new Integer'(N + 1);\n\
+               S : Pair := (new Axis, new Axis);\n\
+            begin\n\
+               return A (3) + B (6) + G (2, 1) + R.Id + I.all;\n\
+            end F;\n\
+            begin\n   null;\nend P;\n";
+        let left = walker_ops(src, "F");
+        assert!(left.is_empty(), "{left:#?}");
+        // The test sees a tree inside an instruction by its printed form.
+        let checked = crate::check::checked_for_tests(src);
+        let e = checked.program().funcs.iter().find_map(|f| {
+            match &f.body.as_deref()?.stmts.first()?.kind {
+                crate::check::ir::StmtKind::Init(_, e) => Some(format!("{e:?}")),
+                _ => None,
+            }
+        });
+        assert!(e.is_some_and(|e| e.contains("Ex {")));
     }
 
     /// `abs`, real negation, rounding to an integer, `.all`, Boolean array
@@ -128,6 +176,39 @@ mod compiled_tests {
                return K + T (1);\n\
             exception\n\
                when Jam => raise;\n\
+            end F;\n\
+            begin\n   null;\nend P;\n";
+        let left = walker_ops(src, "F");
+        assert!(left.is_empty(), "{left:#?}");
+    }
+
+    /// The `out` and `in out` values of a call (of a subprogram with a
+    /// body, a function, a native) are stored into their actuals by
+    /// instructions: a variable, a component, an element, a slice, through
+    /// an access value.
+    #[test]
+    fn out_parameters_and_natives_are_compiled() {
+        let src = "procedure P is\n\
+            procedure Get_Line (S : out String; Last : out Natural) is\n\
+            begin Last := 0; end Get_Line;\n\
+            type Arr is array (1 .. 4) of Integer;\n\
+            type Rec is record S : String (1 .. 4); N : Integer; A : Arr; end record;\n\
+            type Ref is access Rec;\n\
+            procedure Bump (X : in out Integer) is begin X := X + 1; end Bump;\n\
+            procedure Fill (S : out String) is begin for I in S'Range loop S (I) := 'x'; end loop; end Fill;\n\
+            function Take (X : in out Integer) return Integer is begin X := 0; return 1; end Take;\n\
+            procedure F (R : in out Rec; Q : Ref) is\n\
+               Line : String (1 .. 10);\n\
+               Last : Natural;\n\
+               K : Integer := 3;\n\
+            begin\n\
+               Bump (R.N);\n\
+               Bump (R.A (K));\n\
+               Fill (R.S (2 .. 3));\n\
+               Bump (Q.N);\n\
+               K := Take (K) + Take (R.A (1));\n\
+               Get_Line (Line, Last);\n\
+               Fill (Line (1 .. Last));\n\
             end F;\n\
             begin\n   null;\nend P;\n";
         let left = walker_ops(src, "F");

@@ -12,38 +12,16 @@ impl<'r> Compiler<'r> {
     ) {
         let all: &[Arg] = args.unwrap_or_default();
         if (self.walker_calls)(f) {
-            // The walker copies `out` values back into their targets.
-            if all.iter().any(|a| a.mode != Mode::In) {
-                self.scalar = false;
-            }
-            // `in` arguments with calls in them are computed here, so that
-            // those calls run compiled.
-            if all.iter().any(|a| effects(&a.value))
-                && all.iter().all(|a| a.mode == Mode::In || !effects(&a.value))
-            {
-                let owned: Vec<Arg> = all
-                    .iter()
-                    .map(|a| {
-                        if a.mode != Mode::In {
-                            return a.clone();
-                        }
-                        let t = self.temp();
-                        self.expr_into(&a.value, t);
-                        Arg {
-                            mode: a.mode,
-                            value: Ex {
-                                kind: ExKind::Var(t),
-                                ty: a.value.ty,
-                                span: a.value.span,
-                            },
-                            back_check: a.back_check,
-                        }
-                    })
-                    .collect();
-                self.ops.push(Op::CallWalker(f, owned.into(), dst, span));
-            } else {
-                self.ops.push(Op::CallWalker(f, all.into(), dst, span));
-            }
+            let ops = self.arg_operands(all);
+            let outs = self.out_slots(all);
+            self.ops.push(Op::CallNative(Box::new(NativeOp {
+                f,
+                ops: ops.into(),
+                outs: outs.clone().into(),
+                dst,
+                span,
+            })));
+            self.copy_back(all, &outs);
             return;
         }
         if let [a] = all
@@ -67,6 +45,18 @@ impl<'r> Compiler<'r> {
             });
             return;
         }
+        let mut ops = self.arg_operands(all);
+        ops.extend(dst);
+        let outs = self.out_slots(all);
+        let back = (!outs.is_empty()).then(|| Box::new(Box::from(&outs[..])));
+        self.ops
+            .push(Op::Call(dst.is_some(), f, back, ops.into(), span));
+        self.copy_back(all, &outs);
+    }
+
+    /// The operands of a call's arguments, each read before the next is
+    /// evaluated (copied to a temporary when a later one may change it).
+    fn arg_operands(&mut self, all: &[Arg]) -> Vec<Var> {
         let mut ops = Vec::with_capacity(all.len() + 1);
         for (k, a) in all.iter().enumerate() {
             let later = all[k + 1..].iter().any(|b| effects(&b.value));
@@ -79,13 +69,30 @@ impl<'r> Compiler<'r> {
             }
             ops.push(v);
         }
-        ops.extend(dst);
-        // The copy-back needs the arguments (see `call_site`).
-        let args = all
-            .iter()
-            .any(|a| a.mode != Mode::In)
-            .then(|| Box::new(Box::from(all)));
-        self.ops
-            .push(Op::Call(dst.is_some(), f, args, ops.into(), span));
+        ops
+    }
+
+    /// A slot for each `out` and `in out` argument's value after the call.
+    fn out_slots(&mut self, all: &[Arg]) -> Vec<(u32, Var)> {
+        let mut outs = Vec::new();
+        for (k, a) in all.iter().enumerate() {
+            if a.mode != Mode::In {
+                self.holds(a.value.ty);
+                outs.push((k as u32, self.temp()));
+            }
+        }
+        outs
+    }
+
+    /// After a call: each `out` value, checked against the actual's
+    /// subtype, is assigned to the actual, in order.
+    fn copy_back(&mut self, all: &[Arg], outs: &[(u32, Var)]) {
+        for &(k, v) in outs {
+            let a = &all[k as usize];
+            if let Some(t) = a.back_check {
+                self.ops.push(Op::RangeCheck(v, t, a.value.span));
+            }
+            self.assign_from(&a.value, v);
+        }
     }
 }

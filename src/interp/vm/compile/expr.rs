@@ -153,13 +153,12 @@ impl<'r> Compiler<'r> {
             }
             ExKind::RangeCheck(a, t) => {
                 let x = self.expr(a);
-                self.ops.push(Op::RangeCheck(x, *t, span));
+                self.with_discrs(Op::RangeCheck(x, *t, span));
                 self.ops.push(Op::Move(dst, x));
             }
-            ExKind::Index(p, idx) if matches!(p.kind, ExKind::Var(_)) && idx.len() <= 4 => {
-                let ExKind::Var(arr) = p.kind else {
-                    unreachable!()
-                };
+            ExKind::Index(p, idx) => {
+                // The array is read before the indices, as the walker does.
+                let arr = self.operand_before(p, idx.iter());
                 let mut ix = Vec::with_capacity(idx.len());
                 for (k, x) in idx.iter().enumerate() {
                     let later_effects = idx[k + 1..].iter().any(effects);
@@ -209,15 +208,16 @@ impl<'r> Compiler<'r> {
                 }
                 self.ops.push(Op::Move(dst, t));
             }
-            // A task made by an allocator is activated by it, which waits
-            // for the activation (Tasking_Error when it fails, and the
-            // target keeps its value).
-            ExKind::Alloc(None, _) if self.has_task(e.ty) => {
-                let t = self.temp();
-                self.ops.push(Op::AllocTask(t, Box::new(e.clone())));
-                self.ops.push(Op::Activate(span));
-                self.ops.push(Op::Move(dst, t));
-            }
+            ExKind::Alloc(init, t) => self.allocator(e, init.as_deref(), *t, dst),
+            ExKind::ArrayAgg(agg) => self.array_agg(agg, dst, span),
+            ExKind::RecordAgg(fields) => self.record_agg(fields, e.ty, dst, span),
+            ExKind::Discriminant(i) => match self.discrs.last() {
+                Some(d) => self.ops.push(Op::Move(dst, d[*i as usize])),
+                None => self.ops.push(Op::Discriminant(dst, *i, span)),
+            },
+            ExKind::Error => self
+                .ops
+                .push(Op::ProgramError("erroneous expression", span)),
             ExKind::Case(c) => {
                 let (subj, arms, others) = &**c;
                 let t = self.temp();
@@ -252,7 +252,7 @@ impl<'r> Compiler<'r> {
             ExKind::Attr(AttrOp::Pos | AttrOp::Val, args) if args.len() == 1 => {
                 self.expr_into(&args[0], dst)
             }
-            ExKind::Attr(op, args) if args.len() <= 2 => {
+            ExKind::Attr(op, args) => {
                 // Each argument before the next is evaluated (a later one
                 // with effects must not change an earlier one).
                 let mut vars = Vec::with_capacity(args.len());
@@ -273,9 +273,20 @@ impl<'r> Compiler<'r> {
                     span,
                 })));
             }
-            _ if let Some((op, a)) = UnOp::of(e) => {
+            ExKind::FloatNeg(_)
+            | ExKind::IntAbs(_)
+            | ExKind::FloatAbs(_)
+            | ExKind::FloatToInt(_)
+            | ExKind::Deref(_)
+            | ExKind::ArrNot(_)
+            | ExKind::ArrayConvert(..) => {
+                let (op, a) = UnOp::of(e).expect("a unary operation");
                 let x = self.expr(a);
-                self.ops.push(Op::Un(op, dst, x, span));
+                if matches!(op, UnOp::ArrayConvert(_)) {
+                    self.with_discrs(Op::Un(op, dst, x, span));
+                } else {
+                    self.ops.push(Op::Un(op, dst, x, span));
+                }
             }
             ExKind::ArrLogic(op, a, b) => {
                 let x = self.left(a, b);
@@ -284,7 +295,7 @@ impl<'r> Compiler<'r> {
             }
             ExKind::TypeFirst(t) => self.ops.push(Op::TypeBound(dst, *t, false)),
             ExKind::TypeLast(t) => self.ops.push(Op::TypeBound(dst, *t, true)),
-            ExKind::Default(t) if !self.has_task(*t) => self.ops.push(Op::Default(dst, *t, span)),
+            ExKind::Default(t) => self.with_discrs(Op::Default(dst, *t, span)),
             ExKind::Register(a) => self.ops.push(Op::Register(dst, *a, e.ty, span)),
             ExKind::InRanges(s, ranges, neg) => {
                 // The value, then each range as `X >= Lo and then X <= Hi`
@@ -316,80 +327,6 @@ impl<'r> Compiler<'r> {
                     self.ops.push(Op::Move(dst, t));
                 }
             }
-            _ => {
-                let (copy, temps) = self
-                    .strict_copy(e)
-                    .unwrap_or_else(|| (e.clone(), Vec::new()));
-                self.ops.push(Op::Eval(dst, Box::new(copy), temps.into()));
-            }
         }
-    }
-
-    /// For a node that evaluates each of its operands once, in order, and
-    /// has a call among them: the operands computed here (so that the calls
-    /// run compiled), and a copy of the node that reads them from their
-    /// temporaries, for the walker. None: the walker takes the node whole.
-    pub(in crate::interp::vm) fn strict_copy(&mut self, e: &Ex) -> Option<(Ex, Vec<Var>)> {
-        let kids: Vec<&Ex> = match &e.kind {
-            ExKind::Attr(_, args) => args.iter().collect(),
-            ExKind::Concat(a, b, ..) | ExKind::ArrLogic(_, a, b) => vec![a, b],
-            ExKind::ArrNot(a) => vec![a],
-            ExKind::FloatNeg(a)
-            | ExKind::IntAbs(a)
-            | ExKind::FloatAbs(a)
-            | ExKind::FloatToInt(a)
-            | ExKind::Deref(a)
-            | ExKind::ArrayConvert(a, _) => vec![a],
-            ExKind::Slice(p, lh) => vec![p, &lh[0], &lh[1]],
-            ExKind::Index(p, idx) => std::iter::once(&**p).chain(idx.iter()).collect(),
-            _ => return None,
-        };
-        if !kids.iter().any(|k| effects(k)) {
-            return None;
-        }
-        let mut temps = Vec::with_capacity(kids.len());
-        let vars: Vec<Ex> = kids
-            .iter()
-            .map(|k| {
-                let t = self.temp();
-                self.expr_into(k, t);
-                temps.push(t);
-                Ex {
-                    kind: ExKind::Var(t),
-                    ty: k.ty,
-                    span: k.span,
-                }
-            })
-            .collect();
-        let mut v = vars.into_iter();
-        let mut next = || Box::new(v.next().expect("an operand"));
-        let kind = match &e.kind {
-            ExKind::Attr(op, args) => {
-                ExKind::Attr(*op, Box::new(args.iter().map(|_| *next()).collect()))
-            }
-            ExKind::Concat(_, _, x, y) => ExKind::Concat(next(), next(), *x, *y),
-            ExKind::ArrLogic(op, ..) => ExKind::ArrLogic(*op, next(), next()),
-            ExKind::ArrNot(_) => ExKind::ArrNot(next()),
-            ExKind::FloatNeg(_) => ExKind::FloatNeg(next()),
-            ExKind::IntAbs(_) => ExKind::IntAbs(next()),
-            ExKind::FloatAbs(_) => ExKind::FloatAbs(next()),
-            ExKind::FloatToInt(_) => ExKind::FloatToInt(next()),
-            ExKind::Deref(_) => ExKind::Deref(next()),
-            ExKind::ArrayConvert(_, t) => ExKind::ArrayConvert(next(), *t),
-            ExKind::Slice(..) => ExKind::Slice(next(), Box::new([*next(), *next()])),
-            ExKind::Index(_, idx) => {
-                let p = next();
-                ExKind::Index(p, Box::new(idx.iter().map(|_| *next()).collect()))
-            }
-            _ => unreachable!("only the kinds above are copied"),
-        };
-        Some((
-            Ex {
-                kind,
-                ty: e.ty,
-                span: e.span,
-            },
-            temps,
-        ))
     }
 }

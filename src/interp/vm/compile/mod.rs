@@ -3,6 +3,7 @@
 
 use super::*;
 
+mod agg;
 mod calls;
 mod expr;
 mod rendezvous;
@@ -41,6 +42,9 @@ pub(in crate::interp::vm) struct Compiler<'r> {
     /// Every value this code puts in its frame is a scalar (`Undef`, `Int`,
     /// `Real`) so far: freeing the frame drops nothing (see `Code::scalar`).
     pub(in crate::interp::vm) scalar: bool,
+    /// The slots of the discriminants of the record aggregates being
+    /// compiled, innermost last: their components read them.
+    pub(in crate::interp::vm) discrs: Vec<Box<[Var]>>,
 }
 
 /// True when evaluating `e` may run a call or other code with effects
@@ -104,6 +108,7 @@ impl<'r> Compiler<'r> {
             walker_calls,
             types,
             scalar: true,
+            discrs: Vec::new(),
         }
     }
 
@@ -238,9 +243,7 @@ impl<'r> Compiler<'r> {
             && self.scalar
             && self.ops.iter().all(|op| match op {
                 Op::Dispatch(catches, _) => catches.iter().all(|c| c.occurrence.is_none()),
-                Op::Eval(..)
-                | Op::Store(..)
-                | Op::Exec(..)
+                Op::Store(..)
                 | Op::Delay(..)
                 | Op::Activate(..)
                 | Op::MasterEnter
@@ -261,6 +264,17 @@ impl<'r> Compiler<'r> {
                 | Op::RequeueArgs(..)
                 | Op::Abort(..)
                 | Op::AllocTask(..)
+                | Op::AllocDefault(..)
+                | Op::Alloc(..)
+                | Op::AggBounds(..)
+                | Op::ArrayAgg(..)
+                | Op::Record(..)
+                | Op::ListNew(..)
+                | Op::ListPush(..)
+                | Op::Discriminant(..)
+                | Op::PushDiscrs(..)
+                | Op::PopDiscrs
+                | Op::ProgramError(..)
                 | Op::NoteMaster(..) => false,
                 Op::Int(..)
                 | Op::Real(..)
@@ -310,7 +324,7 @@ impl<'r> Compiler<'r> {
                 | Op::Poll(..)
                 | Op::Call(..)
                 | Op::CallK { .. }
-                | Op::CallWalker(..)
+                | Op::CallNative(..)
                 | Op::Return(..)
                 | Op::ReturnIntBin(..)
                 | Op::FallOff

@@ -96,10 +96,10 @@ impl<'r> Compiler<'r> {
         match &r.accept {
             Some(_) => {
                 let Some(&(_, depth, masters)) = self.accepts.last() else {
-                    self.ops.push(Op::Exec(Box::new(Stmt {
-                        kind: StmtKind::Null,
+                    self.ops.push(Op::ProgramError(
+                        "a requeue outside the accept statement it ends",
                         span,
-                    })));
+                    ));
                     return;
                 };
                 if depth < self.hdepth {

@@ -104,7 +104,10 @@ impl<'r> Compiler<'r> {
             }
             StmtKind::Exit(id, cond) => {
                 let Some(k) = self.loops.iter().rposition(|l| l.id == *id) else {
-                    self.ops.push(Op::Exec(Box::new(s.clone())));
+                    self.ops.push(Op::ProgramError(
+                        "an exit outside the loop it leaves",
+                        s.span,
+                    ));
                     return;
                 };
                 let skip = cond.as_ref().map(|c| self.jump_unless(c));
@@ -189,7 +192,10 @@ impl<'r> Compiler<'r> {
                 match p.take::<Part>() {
                     Some(part) => self.splice(part),
                     // Compiled once already: the walker raises.
-                    None => self.ops.push(Op::Exec(Box::new(s.clone()))),
+                    None => self.ops.push(Op::ProgramError(
+                        "this part of a long body was compiled for one run of the compiled engine",
+                        s.span,
+                    )),
                 }
             }
             StmtKind::Abort(ts) => {
@@ -230,6 +236,15 @@ impl<'r> Compiler<'r> {
             self.patch(j, end);
         }
         self.ops[at] = Op::Case(x, table.into(), other, span);
+    }
+
+    /// `t := src`, `src` a temporary: a scalar or record variable is moved
+    /// into, any other target stored (see [`Self::store`]).
+    pub(in crate::interp::vm) fn assign_from(&mut self, t: &Ex, src: Var) {
+        match t.kind {
+            ExKind::Var(v) if !self.is_array(t.ty) => self.ops.push(Op::Move(v, src)),
+            _ => self.store(t, src),
+        }
     }
 
     /// `t := src` for a target with a path (components, elements,
