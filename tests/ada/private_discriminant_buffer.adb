@@ -72,6 +72,7 @@ procedure Private_Discriminant_Buffer is
 
    type Short_Logs is array (1 .. 2) of Short_Buffer;
    type Buffer_Ref is access Sample_Buffer;
+   type Tool_Trace is new Sample_Buffer;
 
    Shoulder : Sample_Buffer (4);
    Elbow    : Sample_Buffer := Make (6);
@@ -79,6 +80,7 @@ procedure Private_Discriminant_Buffer is
    Log      : Axis_Log := (Axis => 5, Trace => Make (3));
    Logs     : Short_Logs;
    Spare    : Buffer_Ref := new Sample_Buffer (5);
+   Tool     : Tool_Trace (Size => 7);
 
    procedure Report (Name : String; B : Sample_Buffer) is
    begin
@@ -139,4 +141,6 @@ begin
    end;
    Spare := new Sample_Buffer'(Make (1));
    Report ("spare", Spare.all);
+   Put_Line ("tool trace size" & Positive'Image (Tool.Size)
+             & ", constrained " & Boolean'Image (Tool'Constrained));
 end Private_Discriminant_Buffer;

@@ -98,6 +98,7 @@ procedure Private_Unknown_Discriminants is
       function Width (T : Tool) return Positive;
       procedure Widen (S : in out Socket);
       function Size (S : Socket) return Positive;
+      function Checked_Size (S : in out Socket) return Positive is (Size (S));
    private
       type Tool (Width : Positive := 20) is record
          Uses : Natural := 0;
@@ -186,4 +187,6 @@ begin
    Tools.Widen (Plug);
    Tools.Widen (Plug);
    Put_Line ("plug size" & Positive'Image (Tools.Size (Plug)));
+   Tools.Widen (Plug);
+   Put_Line ("plug size" & Positive'Image (Tools.Checked_Size (Plug)));
 end Private_Unknown_Discriminants;

@@ -484,6 +484,15 @@ impl Checker {
     pub(super) fn derived_from_private(&mut self, parent: TypeId, t: TypeId) {
         if self.tables.types.is_hidden(parent) {
             self.tables.types.hidden.insert(t, ());
+            // Its discriminants are the parent's (RM 3.4(11)), partial and
+            // full.
+            let pb = self.tables.types.base(parent);
+            if let Some(ds) = self.tables.types.partial_discrs.get(&pb).cloned() {
+                self.tables.types.partial_discrs.insert(t, ds);
+            }
+            if let Some(ds) = self.tables.types.conc_discrs.get(&pb).cloned() {
+                self.tables.types.conc_discrs.insert(t, ds);
+            }
             if let Some(v) = self.tables.types.private_view(parent) {
                 self.tables.packages[v.package as usize]
                     .private_types

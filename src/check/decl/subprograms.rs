@@ -260,7 +260,10 @@ impl Checker {
             }
         }
         // The hidden flags of `out` and `in out` formals of a mutable
-        // record type: the slots after the parameters.
+        // record type: the slots after the parameters. A body checked
+        // before its flags were decided (an expression function of a
+        // visible part) has none.
+        self.pending_flags.retain(|&g| g != f);
         let mut flagged = Vec::new();
         if self.flagged_funcs.contains(&f) {
             for j in self.flagged_formals(f) {
