@@ -110,11 +110,18 @@ pub fn lex(src: &str, file: FileId) -> (Vec<Spanned>, Vec<Diagnostic>) {
             let text = &src[s..e];
             let tok = match r {
                 Ok(Raw::Word) => {
-                    let lower = text.to_ascii_lowercase();
-                    if text.ends_with('_') || text.contains("__") {
+                    if text.ends_with('_') || text.as_bytes().windows(2).any(|w| w == b"__") {
                         diags.push(D::misplaced_underscore_in_name(sp, text));
                     }
-                    match Kw::from_lower(&lower) {
+                    // A keyword has at most 12 letters: a word is put in
+                    // lower case on the stack, not in a new string.
+                    let mut buf = [0u8; 12];
+                    let lower = buf.get_mut(..text.len()).and_then(|b| {
+                        b.copy_from_slice(text.as_bytes());
+                        b.make_ascii_lowercase();
+                        std::str::from_utf8(b).ok()
+                    });
+                    match lower.and_then(Kw::from_lower) {
                         Some(k) => Token::Kw(k),
                         None => Token::Ident(super::ast::intern(text)),
                     }
@@ -434,6 +441,25 @@ mod tests {
             toks("1.0E-3 16#F.8#"),
             vec![Token::Real(1.0e-3), Token::Real(15.5)]
         );
+    }
+
+    #[test]
+    fn keywords_in_any_case_and_longer_words_as_names() {
+        // The longest keyword (12 letters) in any case; a 13-letter word and
+        // a non-ASCII one are names, spelled as written.
+        assert_eq!(
+            toks("SYNCHRONIZED Synchronized synchronized End_Effectors Öffnung_Ende BEGIN"),
+            vec![
+                Token::Kw(Kw::Synchronized),
+                Token::Kw(Kw::Synchronized),
+                Token::Kw(Kw::Synchronized),
+                Token::Ident("End_Effectors".into()),
+                Token::Ident("Öffnung_Ende".into()),
+                Token::Kw(Kw::Begin),
+            ]
+        );
+        let (_, diags) = lex("Grip__Force Axis_ Gripper", 0);
+        assert_eq!(diags.len(), 2, "{diags:?}");
     }
 
     #[test]
