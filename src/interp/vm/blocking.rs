@@ -252,11 +252,11 @@ impl<'a> Run<'a> {
         }
     }
 
-    /// After an entry call: the copy-out; false when it timed out (or was
-    /// not taken); the call's `Requeued` is next when it was requeued.
+    /// After an entry call: None when it is complete (the instructions
+    /// at the end of the call copy the `out` values out), else where to go:
+    /// the timed call's other way, or its `Requeued` when it was requeued.
     pub(super) fn entry_done(&mut self, d: &DoneOp) -> R<Option<u32>> {
         if !self.m.sched.active() {
-            self.copy_out(&d.args, &d.ops)?;
             return Ok(None);
         }
         let me = self.m.sched.cur;
@@ -267,10 +267,7 @@ impl<'a> Run<'a> {
                 self.m.sched.threads[me].outcome = tasking::Outcome::Requeued;
                 Ok(Some(d.requeued))
             }
-            tasking::Outcome::Done | tasking::Outcome::Pending => {
-                self.copy_out(&d.args, &d.ops)?;
-                Ok(None)
-            }
+            tasking::Outcome::Done | tasking::Outcome::Pending => Ok(None),
         }
     }
 
@@ -282,21 +279,6 @@ impl<'a> Run<'a> {
             o.message = format!("{} {}", self.m.location(span), o.message);
         }
         Flow::Raise(o)
-    }
-
-    /// An entry call's `out` values from its operands to its actuals.
-    fn copy_out(&mut self, args: &[Arg], ops: &[Var]) -> R<()> {
-        for (a, v) in args.iter().zip(ops.iter()) {
-            if a.mode != Mode::In {
-                let i = self.sl(*v);
-                let x = std::mem::take(&mut self.m.stack[i]);
-                if let Some(t) = a.back_check {
-                    self.range_check(&x, t, a.value.span)?;
-                }
-                self.assign(&a.value, x)?;
-            }
-        }
-        Ok(())
     }
 
     /// Whether the barrier of queue `q` of a protected object of type `k`
@@ -614,14 +596,12 @@ impl<'a> Run<'a> {
             }
             tasking::Outcome::Done => {
                 self.m.sched.threads[me].requeue = None;
-                self.copy_out(&r.args, &r.ops)?;
                 return Ok(RequeueStep::Jump(r.end));
             }
             tasking::Outcome::Requeued | tasking::Outcome::Pending => {}
         }
         let Some(rq) = self.m.sched.threads[me].requeue.clone() else {
             // The requeued call's body has returned: the call is complete.
-            self.copy_out(&r.args, &r.ops)?;
             return Ok(RequeueStep::Jump(r.end));
         };
         let deadline = if rq.abort {

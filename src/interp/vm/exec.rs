@@ -1028,30 +1028,15 @@ impl<'a> Run<'a> {
                             };
                             let (back, dst) = call_site(frame.code, frame.pc);
                             // Copy-out values live in the frame.
-                            let mut outs = Vec::new();
-                            let mut slots = Vec::new();
-                            match back {
-                                CopyBack::Args(args) => {
-                                    for (i, a) in args.iter().enumerate() {
-                                        if a.mode != Mode::In {
-                                            outs.push((
-                                                a,
-                                                std::mem::take(&mut self.m.stack[frame.base + i]),
-                                            ));
-                                        }
-                                    }
-                                }
-                                CopyBack::Slots(to) => {
-                                    for &(i, v) in to {
-                                        slots.push((
-                                            v,
-                                            std::mem::take(
-                                                &mut self.m.stack[frame.base + i as usize],
-                                            ),
-                                        ));
-                                    }
-                                }
-                            }
+                            let slots: Vec<(Var, Value)> = back
+                                .iter()
+                                .map(|&(i, v)| {
+                                    (
+                                        v,
+                                        std::mem::take(&mut self.m.stack[frame.base + i as usize]),
+                                    )
+                                })
+                                .collect();
                             let f = cur.func.expect("a called frame");
                             self.pop_frame(&frame, cur, current_base);
                             cur = frame.code;
@@ -1068,18 +1053,10 @@ impl<'a> Run<'a> {
                                 for (slot, v) in slots {
                                     self.put(slot, v);
                                 }
-                                (|| {
-                                    for (a, v) in outs {
-                                        if let Some(t) = a.back_check {
-                                            self.range_check(&v, t, a.value.span)?;
-                                        }
-                                        self.assign(&a.value, v)?;
-                                    }
-                                    if let Some(d) = dst {
-                                        self.put(d, value.unwrap_or_default());
-                                    }
-                                    Ok(())
-                                })()
+                                if let Some(d) = dst {
+                                    self.put(d, value.unwrap_or_default());
+                                }
+                                Ok(())
                             };
                             match r {
                                 Ok(()) => break,

@@ -284,27 +284,18 @@ pub(super) fn call_span(code: &Code, pc: u32) -> Span {
     }
 }
 
-/// Where the `out` values of a call go when it returns.
-pub(super) enum CopyBack<'c> {
-    /// Into the caller's slots (argument position, slot), which the
-    /// instructions after the call store into the actuals.
-    Slots(&'c [(u32, Var)]),
-    /// Straight into the actuals (a protected entry body's).
-    Args(&'c [Arg]),
-}
-
 /// Where the `out` values and the result of the call instruction before
 /// `pc` (a frame's resume point) go.
 #[inline(always)]
-pub(super) fn call_site(code: &Code, pc: u32) -> (CopyBack<'_>, Option<Var>) {
+pub(super) fn call_site(code: &Code, pc: u32) -> (&[(u32, Var)], Option<Var>) {
     match code.ops.get(pc as usize - 1) {
-        Some(Op::CallK { dst, .. }) => (CopyBack::Slots(&[]), Some(*dst).filter(|d| *d != NO_VAR)),
+        Some(Op::CallK { dst, .. }) => (&[], Some(*dst).filter(|d| *d != NO_VAR)),
         Some(Op::Call(func, _, outs, ops, _)) => {
             let dst = if *func { ops.last().copied() } else { None };
-            (CopyBack::Slots(outs.as_deref().map_or(&[], |a| a)), dst)
+            (outs.as_deref().map_or(&[], |a| a), dst)
         }
-        Some(Op::ProtEntry(e)) => (CopyBack::Args(&e.back), None),
-        Some(Op::RequeueArgs(back, _)) => (CopyBack::Args(back), None),
-        _ => (CopyBack::Slots(&[]), None),
+        Some(Op::ProtEntry(e)) => (&e.back, None),
+        Some(Op::RequeueArgs(back, _)) => (back, None),
+        _ => (&[], None),
     }
 }

@@ -171,7 +171,7 @@ pub(super) enum Op {
     /// Never executed: the copy-back of the entry body that the
     /// `Requeued` after it calls (a frame's resume point reads the call
     /// before it, see `call_site`).
-    RequeueArgs(Box<[Arg]>, Span),
+    RequeueArgs(OutSlots, Span),
     Abort(Box<[Var]>),
     /// `dst := new T` of an access type (the first type) to tasks or to
     /// a type with tasks (the second): the tasks are activated by the next
@@ -227,7 +227,7 @@ pub(super) struct EntryOp {
     pub(super) ops: Box<[Var]>,
     /// A protected entry body's copy-back: its `out` values into the
     /// operands.
-    pub(super) back: Box<[Arg]>,
+    pub(super) back: OutSlots,
     pub(super) timed: Option<(Var, bool)>,
     pub(super) conditional: bool,
     pub(super) other: u32,
@@ -251,8 +251,6 @@ pub(super) struct AcceptOp {
 /// its `out` values into them too).
 #[derive(Debug)]
 pub(super) struct DoneOp {
-    pub(super) args: Box<[Arg]>,
-    pub(super) ops: Box<[Var]>,
     pub(super) other: Option<u32>,
     pub(super) requeued: u32,
     pub(super) span: Span,
@@ -286,7 +284,6 @@ pub(super) struct RequeueOp {
 /// parameters and one for an entry without (their `RequeueArgs` differ).
 #[derive(Debug)]
 pub(super) struct RequeuedOp {
-    pub(super) args: Box<[Arg]>,
     pub(super) ops: Box<[Var]>,
     pub(super) params: bool,
     pub(super) obj: Var,

@@ -183,7 +183,7 @@ mod compiled_tests {
     }
 
     /// The `out` and `in out` values of a call (of a subprogram with a
-    /// body, a function, a native) are stored into their actuals by
+    /// body, a function, a native, a task's entry) are stored into their actuals by
     /// instructions: a variable, a component, an element, a slice, through
     /// an access value.
     #[test]
@@ -197,6 +197,10 @@ mod compiled_tests {
             procedure Bump (X : in out Integer) is begin X := X + 1; end Bump;\n\
             procedure Fill (S : out String) is begin for I in S'Range loop S (I) := 'x'; end loop; end Fill;\n\
             function Take (X : in out Integer) return Integer is begin X := 0; return 1; end Take;\n\
+            task Server is entry Get (X : out Integer; S : in out String); end Server;\n\
+            task body Server is begin\n\
+               accept Get (X : out Integer; S : in out String) do X := 1; S (S'First) := 'y'; end Get;\n\
+            end Server;\n\
             procedure F (R : in out Rec; Q : Ref) is\n\
                Line : String (1 .. 10);\n\
                Last : Natural;\n\
@@ -208,6 +212,7 @@ mod compiled_tests {
                Bump (Q.N);\n\
                K := Take (K) + Take (R.A (1));\n\
                Get_Line (Line, Last);\n\
+               Server.Get (R.A (2), R.S (1 .. 2));\n\
                Fill (Line (1 .. Last));\n\
             end F;\n\
             begin\n   null;\nend P;\n";

@@ -86,7 +86,7 @@ impl<'r> Compiler<'r> {
 
     /// After a call: each `out` value, checked against the actual's
     /// subtype, is assigned to the actual, in order.
-    fn copy_back(&mut self, all: &[Arg], outs: &[(u32, Var)]) {
+    pub(in crate::interp::vm) fn copy_back(&mut self, all: &[Arg], outs: &[(u32, Var)]) {
         for &(k, v) in outs {
             let a = &all[k as usize];
             if let Some(t) = a.back_check {

@@ -183,7 +183,7 @@ impl<'r> Compiler<'r> {
             (CallTarget::Prot { .. }, Some(_)) => Some(ops[n]),
             (_, None) => None,
         };
-        let back = self.back_args(&ec.args[..n], &ops[..n]);
+        let back = out_slots(&ec.args[..n], &ops[..n]);
         match &ec.target {
             CallTarget::Task { .. } => {
                 self.ops.push(Op::EntryCall(Box::new(EntryOp {
@@ -240,15 +240,12 @@ impl<'r> Compiler<'r> {
         // Then the copy-out (or the timed call's other way, or the
         // requeued call), and the requeued call made again: twice, for an
         // entry with the parameters and one without (see `RequeuedOp`).
-        let args: Box<[Arg]> = ec.args[..n].into();
         let pops: Box<[Var]> = ops[..n].into();
         if is_timed && matches!(ec.target, CallTarget::Task { .. }) {
             others.push(self.ops.len());
         }
         let done = self.ops.len();
         self.ops.push(Op::EntryDone(Box::new(DoneOp {
-            args: args.clone(),
-            ops: pops.clone(),
             other: None,
             requeued: 0,
             span,
@@ -259,7 +256,7 @@ impl<'r> Compiler<'r> {
         let mut twins = Vec::new();
         for params in [true, false] {
             let back = if params {
-                self.back_args(&args, &pops)
+                out_slots(&ec.args[..n], &pops)
             } else {
                 Box::new([])
             };
@@ -269,7 +266,6 @@ impl<'r> Compiler<'r> {
                 others.push(self.ops.len());
             }
             self.ops.push(Op::Requeued(Box::new(RequeuedOp {
-                args: args.clone(),
                 ops: pops.clone(),
                 params,
                 obj,
@@ -282,6 +278,9 @@ impl<'r> Compiler<'r> {
         }
         let end = self.here();
         self.patch(skip, end);
+        // The call is complete here: its `out` values go to the actuals.
+        let outs = out_slots(&ec.args[..n], &pops);
+        self.copy_back(&ec.args[..n], &outs);
         if let Op::EntryDone(d) = &mut self.ops[done] {
             d.requeued = twins[0] as u32;
         }
@@ -292,23 +291,6 @@ impl<'r> Compiler<'r> {
             }
         }
         others
-    }
-
-    /// The copy-back of an entry body into the call's operands: each
-    /// parameter's mode, its operand as the target.
-    fn back_args(&self, args: &[Arg], ops: &[Var]) -> Box<[Arg]> {
-        args.iter()
-            .zip(ops)
-            .map(|(a, v)| Arg {
-                mode: a.mode,
-                value: Ex {
-                    kind: ExKind::Var(*v),
-                    ty: a.value.ty,
-                    span: a.value.span,
-                },
-                back_check: None,
-            })
-            .collect()
     }
 
     pub(in crate::interp::vm) fn set_other(&mut self, at: usize, target: u32) {
@@ -385,4 +367,15 @@ impl<'r> Compiler<'r> {
             span,
         }));
     }
+}
+
+/// Where an entry body's `out` values go: the call's own operands (the
+/// instructions after the call copy them to the actuals).
+fn out_slots(args: &[Arg], ops: &[Var]) -> OutSlots {
+    args.iter()
+        .zip(ops)
+        .enumerate()
+        .filter(|(_, (a, _))| a.mode != Mode::In)
+        .map(|(k, (_, v))| (k as u32, *v))
+        .collect()
 }
