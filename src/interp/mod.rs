@@ -978,6 +978,15 @@ impl Run<'_> {
         {
             self.poll(span)?;
         }
+        // As deep as the walker's calls may go (a native called at the
+        // limit raises as it does there).
+        if self.m.depth >= MAX_DEPTH {
+            return Err(self.raise(
+                check::STORAGE_ERROR,
+                "stack overflow (recursion too deep)",
+                span,
+            ));
+        }
         match self.m.natives.get(f as usize).copied().flatten() {
             Some(binding) => self.call_binding(binding, vals, span),
             None => Err(self.raise(
