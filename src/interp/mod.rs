@@ -970,23 +970,7 @@ impl Run<'_> {
         vals: &mut [Value],
         span: Span,
     ) -> R<Option<Value>> {
-        if self
-            .m
-            .interrupted
-            .as_ref()
-            .is_some_and(|f| f.load(std::sync::atomic::Ordering::Relaxed))
-        {
-            self.poll(span)?;
-        }
-        // As deep as the walker's calls may go (a native called at the
-        // limit raises as it does there).
-        if self.m.depth >= MAX_DEPTH {
-            return Err(self.raise(
-                check::STORAGE_ERROR,
-                "stack overflow (recursion too deep)",
-                span,
-            ));
-        }
+        self.call_guard(span)?;
         match self.m.natives.get(f as usize).copied().flatten() {
             Some(binding) => self.call_binding(binding, vals, span),
             None => Err(self.raise(
@@ -997,22 +981,15 @@ impl Run<'_> {
         }
     }
 
-    /// Calls a subprogram with copy-in/copy-out parameters.
-    pub fn call(&mut self, f: FuncId, args: &[Arg], span: Span) -> R<Option<Value>> {
-        let mut vals = Vec::with_capacity(args.len());
-        for a in args {
-            vals.push(self.eval(&a.value)?);
-        }
-        // Ctrl-C, also in a recursion that polls no loop.
-        if self
-            .m
-            .interrupted
-            .as_ref()
-            .is_some_and(|f| f.load(std::sync::atomic::Ordering::Relaxed))
+    /// Before every call, in both engines: Ctrl-C (also in a recursion
+    /// that polls no loop), and the depth limit (Storage_Error).
+    #[inline(always)]
+    pub(crate) fn call_guard(&mut self, span: Span) -> R<()> {
+        if let Some(flag) = &self.m.interrupted
+            && flag.load(std::sync::atomic::Ordering::Relaxed)
         {
             self.poll(span)?;
         }
-        let sub = &self.c.funcs[f as usize];
         if self.m.depth >= MAX_DEPTH {
             return Err(self.raise(
                 check::STORAGE_ERROR,
@@ -1020,6 +997,17 @@ impl Run<'_> {
                 span,
             ));
         }
+        Ok(())
+    }
+
+    /// Calls a subprogram with copy-in/copy-out parameters.
+    pub fn call(&mut self, f: FuncId, args: &[Arg], span: Span) -> R<Option<Value>> {
+        let mut vals = Vec::with_capacity(args.len());
+        for a in args {
+            vals.push(self.eval(&a.value)?);
+        }
+        self.call_guard(span)?;
+        let sub = &self.c.funcs[f as usize];
         let result = if let Some(binding) = self.m.natives.get(f as usize).copied().flatten() {
             self.call_binding(binding, &mut vals, span)?
         } else {

@@ -122,19 +122,7 @@ impl<'a> Run<'a> {
         (lvl, fp): (u16, usize),
         span: Span,
     ) -> R<Entered<'c>> {
-        // Ctrl-C, also in a recursion that polls no loop.
-        if let Some(flag) = &self.m.interrupted
-            && flag.load(std::sync::atomic::Ordering::Relaxed)
-        {
-            self.poll(span)?;
-        }
-        if self.m.depth >= MAX_DEPTH {
-            return Err(self.raise(
-                check::STORAGE_ERROR,
-                "stack overflow (recursion too deep)",
-                span,
-            ));
-        }
+        self.call_guard(span)?;
         let code = self.code_of(cache, f);
         let level = code.level as usize;
         let base = self.m.stack.len();
