@@ -263,8 +263,8 @@ pub fn get_line(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let room = arr.data.len();
     let chars: Vec<char> = l.chars().collect();
     let n = chars.len().min(room);
-    for (slot, c) in arr.data.iter_mut().zip(&chars[..n]) {
-        *slot = Value::Int(*c as i64);
+    for (k, c) in chars[..n].iter().enumerate() {
+        arr.data.set(k, Value::Int(*c as i64));
     }
     if chars.len() >= room {
         r.m.line_rest = Some(chars[n..].iter().collect());

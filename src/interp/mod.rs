@@ -9,6 +9,7 @@
 mod aggregate;
 pub mod builtins;
 pub mod diagnostics;
+pub mod elems;
 pub mod memory;
 mod stack;
 pub mod tasking;
@@ -575,7 +576,12 @@ fn deep_copy(
     match v {
         Value::Arr(a) => Value::Arr(Rc::new(Array {
             bounds: a.bounds.clone(),
-            data: a.data.iter().map(|x| deep_copy(x, seen, todo)).collect(),
+            data: match &a.data {
+                value::Elems::Vals(v) => {
+                    value::Elems::Vals(v.iter().map(|x| deep_copy(x, seen, todo)).collect())
+                }
+                bytes => bytes.clone(),
+            },
         })),
         Value::Rec(r) => Value::Rec(Rc::new(
             r.iter().map(|x| deep_copy(x, seen, todo)).collect(),
@@ -1086,9 +1092,12 @@ impl Run<'_> {
                 };
                 let a = Rc::make_mut(a);
                 return match a.offset(&ix[..idx.len()]) {
-                    Some(o) => match keep_bounds(&a.data[o], val) {
+                    Some(o) => match match a.data.val(o) {
+                        Some(old) => keep_bounds(old, val),
+                        None => Ok(val),
+                    } {
                         Ok(val) => {
-                            a.data[o] = val;
+                            a.data.set(o, val);
                             Ok(())
                         }
                         Err(what) => Err(self.check_failed(what, target.span)),
@@ -1215,7 +1224,7 @@ impl Run<'_> {
                 let (slot, ix) = self.fast_index(p, idx)?;
                 match &self.m.stack[slot] {
                     Value::Arr(a) => match a.offset(&ix[..idx.len()]) {
-                        Some(o) => Ok(a.data[o].real()),
+                        Some(o) => Ok(a.data.real(o)),
                         None => Err(self.check_failed("index check failed", e.span)),
                     },
                     _ => Err(self.check_failed("access check failed", e.span)),
@@ -1242,7 +1251,7 @@ impl Run<'_> {
                 let (slot, ix) = self.fast_index(p, idx)?;
                 match &self.m.stack[slot] {
                     Value::Arr(a) => match a.offset(&ix[..idx.len()]) {
-                        Some(o) => a.data[o].clone(),
+                        Some(o) => a.data.get(o),
                         None => return Err(self.check_failed("index check failed", e.span)),
                     },
                     _ => return Err(self.check_failed("access check failed", e.span)),
@@ -1259,7 +1268,7 @@ impl Run<'_> {
                     ix[k] = self.eval(x)?.int();
                 }
                 match a.offset(&ix[..n]) {
-                    Some(o) => a.data[o].clone(),
+                    Some(o) => a.data.get(o),
                     None => return Err(self.check_failed("index check failed", e.span)),
                 }
             }
@@ -1578,12 +1587,12 @@ impl Run<'_> {
     }
 
     /// Bounds of a constrained array subtype.
-    fn array_bounds(&mut self, t: TypeId) -> R<Option<Vec<(i64, i64)>>> {
+    fn array_bounds(&mut self, t: TypeId) -> R<Option<value::Bounds>> {
         let types = self.c.types;
         let Some((_, _, Some(bs))) = types.array(t) else {
             return Ok(None);
         };
-        let mut out = Vec::with_capacity(bs.len());
+        let mut out = value::Bounds::with_capacity(bs.len());
         for (l, h) in bs {
             out.push((self.eval(l)?.int(), self.eval(h)?.int()));
         }
@@ -1804,10 +1813,10 @@ impl Run<'_> {
                     for _ in 0..n {
                         v.push(self.default_value(elem, span)?);
                     }
-                    v
+                    value::Elems::from_vals(v)
                 } else {
                     let d = self.default_value(elem, span)?;
-                    vec![d; n as usize]
+                    value::Elems::repeat(d, n as usize)
                 };
                 Value::Arr(Rc::new(Array { bounds, data }))
             }
@@ -1843,37 +1852,45 @@ impl Run<'_> {
             (Value::Arr(a), false) => a.data.len() as i64,
             _ => 1,
         };
-        self.reserve(len(&x, xe) + len(&y, ye), span)?;
-        let (mut data, lo) = match (&x, xe) {
-            (v, true) => (vec![v.clone()], first_of_index()),
+        let n = len(&x, xe) + len(&y, ye);
+        self.reserve(n, span)?;
+        let (mut data, lo) = match (x, xe) {
+            (v, true) => (value::Elems::from_vals(vec![v]), first_of_index()),
             (Value::Arr(a), false) => {
                 if a.data.is_empty() {
                     // An empty left operand: the result is the right operand.
                     return Ok(match (y, ye) {
-                        (v, true) => Value::Arr(Rc::new(Array {
-                            bounds: vec![(first_of_index(), first_of_index())],
-                            data: vec![v],
-                        })),
+                        (v, true) => {
+                            let one = value::Elems::from_vals(vec![v]);
+                            Value::Arr(Rc::new(Array::vector(first_of_index(), one)))
+                        }
                         (v, false) => v,
                     });
                 }
-                (a.data.clone(), a.bounds[0].0)
+                let lo = a.bounds[0].0;
+                // The left operand's components, moved when no one else
+                // holds them, with room for the right one's.
+                let mut data = match Rc::try_unwrap(a) {
+                    Ok(a) => a.data,
+                    Err(a) => a.data.clone(),
+                };
+                if let value::Elems::Bytes(b) = &mut data {
+                    b.reserve((n as usize).saturating_sub(b.len()));
+                }
+                (data, lo)
             }
-            _ => (vec![], 1),
+            _ => (value::Elems::default(), 1),
         };
         match (y, ye) {
             (v, true) => data.push(v),
-            (Value::Arr(b), false) => data.extend(b.data.iter().cloned()),
+            (Value::Arr(b), false) => data.extend_from(&b.data),
             _ => {}
         }
         let hi = lo + data.len() as i64 - 1;
         if hi > i32::MAX as i64 {
             return Err(self.check_failed("range check failed", span));
         }
-        Ok(Value::Arr(Rc::new(Array {
-            bounds: vec![(lo, hi)],
-            data,
-        })))
+        Ok(Value::Arr(Rc::new(Array::vector(lo, data))))
     }
 
     /// Whether a value of `t` by default can be computed once and copied
@@ -1895,7 +1912,7 @@ impl Run<'_> {
         &mut self,
         vals: Vec<Value>,
         first: (i64, i64),
-        fixed: Option<Vec<(i64, i64)>>,
+        fixed: Option<value::Bounds>,
         dims: usize,
         span: Span,
     ) -> R<Value> {
@@ -1903,22 +1920,22 @@ impl Run<'_> {
             || matches!(vals.first(), Some(Value::Arr(_))) && dims > 1;
         if !multi {
             return Ok(Value::Arr(Rc::new(Array {
-                bounds: vec![first],
-                data: vals,
+                bounds: smallvec::smallvec![first],
+                data: value::Elems::from_vals(vals),
             })));
         }
-        let mut bounds = vec![first];
+        let mut bounds: value::Bounds = smallvec::smallvec![first];
         // Every row as long as the first (checked below).
         let row_len = match vals.first() {
             Some(Value::Arr(r)) => r.data.len(),
             _ => 0,
         };
-        let mut data = Vec::with_capacity(
+        let mut data = value::Elems::Bytes(Vec::with_capacity(
             vals.len()
                 .saturating_mul(row_len)
                 .min(MAX_ELEMENTS as usize),
-        );
-        let mut inner: Option<Vec<(i64, i64)>> = None;
+        ));
+        let mut inner: Option<value::Bounds> = None;
         for v in vals {
             let Value::Arr(row) = v else {
                 return Err(self.check_failed("length check failed", span));
@@ -1934,10 +1951,10 @@ impl Run<'_> {
                     }
                 }
             }
-            data.extend(row.data.iter().cloned());
+            data.extend_from(&row.data);
         }
         let inner = match fixed {
-            Some(f) => f[1..].to_vec(),
+            Some(f) => f[1..].iter().copied().collect(),
             None => inner.unwrap_or_default(),
         };
         bounds.extend(inner);
@@ -1988,7 +2005,7 @@ impl Run<'_> {
         }
         Ok(bool_array(
             x,
-            x.data.iter().zip(&y.data).map(|(p, q)| {
+            x.data.iter().zip(y.data.iter()).map(|(p, q)| {
                 let (p, q) = (p.int() != 0, q.int() != 0);
                 match op {
                     LogicOp::Or | LogicOp::OrElse => p || q,
@@ -2039,8 +2056,8 @@ impl Run<'_> {
         };
         if l > h {
             return Ok(Value::Arr(Rc::new(Array {
-                bounds: vec![(l, h)],
-                data: vec![],
+                bounds: smallvec::smallvec![(l, h)],
+                data: value::Elems::with_capacity_like(&a.data, 0),
             })));
         }
         let (lo, hi) = a.bounds[0];
@@ -2048,11 +2065,8 @@ impl Run<'_> {
             return Err(self.check_failed("range check failed", span));
         }
         self.reserve(h - l + 1, span)?;
-        let data = a.data[(l - lo) as usize..=(h - lo) as usize].to_vec();
-        Ok(Value::Arr(Rc::new(Array {
-            bounds: vec![(l, h)],
-            data,
-        })))
+        let data = a.data.slice((l - lo) as usize..(h - lo + 1) as usize);
+        Ok(Value::Arr(Rc::new(Array::vector(l, data))))
     }
 
     fn attr(&mut self, op: AttrOp, args: &[Ex], e: &Ex) -> R<Value> {
@@ -2095,9 +2109,9 @@ impl Run<'_> {
                     _ => Value::Int(a.len(d)),
                 }
             }
-            AttrOp::ImageInt => Value::str(&value::image_int(a0.int())),
-            AttrOp::ImageFloat(d) => Value::str(&value::image_float_digits(a0.real(), d as u32)),
-            AttrOp::ImageDuration => Value::str(&value::image_duration(a0.real())),
+            AttrOp::ImageInt => Value::string(value::image_int(a0.int())),
+            AttrOp::ImageFloat(d) => Value::string(value::image_float_digits(a0.real(), d as u32)),
+            AttrOp::ImageDuration => Value::string(value::image_duration(a0.real())),
             AttrOp::ImageChar => {
                 let c = char::from_u32(a0.int() as u32).unwrap_or('?');
                 Value::str(&crate::check::types::char_image(c))
@@ -2217,7 +2231,16 @@ fn write_path(
             let Some(o) = a.offset(ix) else {
                 return Err(("index check failed", *sp));
             };
-            write_path(&mut a.data[o], rest, val, at)
+            if rest.is_empty()
+                && a.data
+                    .val(o)
+                    .is_none_or(|old| !matches!(old, Value::Arr(_)))
+            {
+                // A component that is no array: no bounds to keep.
+                a.data.set(o, val);
+                return Ok(());
+            }
+            write_path(a.data.get_mut(o), rest, val, at)
         }
         Step::Field(i) => {
             let Value::Rec(r) = root else {
@@ -2276,9 +2299,7 @@ fn write_path(
             if *l < lo || *h > hi {
                 return Err(("range check failed", *sp));
             }
-            for (k, v) in src.data.iter().enumerate() {
-                a.data[(*l - lo) as usize + k] = v.clone();
-            }
+            a.data.copy_from((*l - lo) as usize, &src.data);
             Ok(())
         }
     }
@@ -2319,7 +2340,7 @@ impl UnOp {
 fn bool_array(like: &value::Array, bits: impl Iterator<Item = bool>) -> Value {
     Value::Arr(Rc::new(value::Array {
         bounds: like.bounds.clone(),
-        data: bits.map(|b| Value::Int(b as i64)).collect(),
+        data: value::Elems::Bytes(bits.map(u8::from).collect()),
     }))
 }
 

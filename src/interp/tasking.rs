@@ -1025,10 +1025,7 @@ impl Run<'_> {
                 let data = (lo..=hi)
                     .map(|i| Value::Int(((v >> ((i - lo) & 15)) & 1) as i64))
                     .collect();
-                Value::Arr(Rc::new(Array {
-                    bounds: vec![(lo, hi)],
-                    data,
-                }))
+                Value::Arr(Rc::new(Array::vector(lo, data)))
             }
             None => {
                 // The register's 16 bits read as a value of the object's

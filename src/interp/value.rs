@@ -121,9 +121,14 @@ impl Drop for Obj {
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct Array {
-    pub bounds: Vec<(i64, i64)>,
-    pub data: Vec<Value>,
+    pub bounds: Bounds,
+    pub data: Elems,
 }
+
+/// An array's bounds, one pair per dimension (one dimension held inline).
+pub type Bounds = smallvec::SmallVec<[(i64, i64); 1]>;
+
+pub use super::elems::Elems;
 
 impl Array {
     pub fn len(&self, dim: usize) -> i64 {
@@ -155,20 +160,34 @@ impl Array {
         Some(off as usize)
     }
     pub fn string(s: &str) -> Array {
-        let data: Vec<Value> = s.chars().map(|c| Value::Int(c as i64)).collect();
+        let data: Elems = if s.is_ascii() {
+            Elems::Bytes(s.as_bytes().to_vec())
+        } else {
+            s.chars().map(|c| Value::Int(c as i64)).collect()
+        };
         Array {
-            bounds: vec![(1, data.len() as i64)],
+            bounds: smallvec::smallvec![(1, data.len() as i64)],
+            data,
+        }
+    }
+    /// A one-dimensional array of these components, from `first` on.
+    pub fn vector(first: i64, data: Elems) -> Array {
+        Array {
+            bounds: smallvec::smallvec![(first, first + data.len() as i64 - 1)],
             data,
         }
     }
     pub fn to_string_lossy(&self) -> String {
-        self.data
-            .iter()
-            .map(|v| match v {
-                Value::Int(c) => char::from_u32(*c as u32).unwrap_or('?'),
-                _ => '?',
-            })
-            .collect()
+        match &self.data {
+            Elems::Bytes(b) => b.iter().map(|&c| c as char).collect(),
+            Elems::Vals(v) => v
+                .iter()
+                .map(|v| match v {
+                    Value::Int(c) => char::from_u32(*c as u32).unwrap_or('?'),
+                    _ => '?',
+                })
+                .collect(),
+        }
     }
 }
 
@@ -199,6 +218,13 @@ impl Value {
     pub fn str(s: &str) -> Value {
         Value::Arr(Rc::new(Array::string(s)))
     }
+    /// A `String` value of this text, its bytes taken over when it is ASCII.
+    pub fn string(s: String) -> Value {
+        if !s.is_ascii() {
+            return Value::str(&s);
+        }
+        Value::Arr(Rc::new(Array::vector(1, Elems::Bytes(s.into_bytes()))))
+    }
     pub fn int(&self) -> i64 {
         match self {
             Value::Int(i) => *i,
@@ -226,8 +252,11 @@ impl Value {
             (Value::Int(a), Value::Int(b)) => a.cmp(b),
             (Value::Real(a), Value::Real(b)) => a.partial_cmp(b).unwrap_or(Ordering::Equal),
             (Value::Arr(a), Value::Arr(b)) => {
-                for (x, y) in a.data.iter().zip(&b.data) {
-                    let c = x.compare(y);
+                if let (Some(x), Some(y)) = (a.data.bytes(), b.data.bytes()) {
+                    return x.cmp(y);
+                }
+                for (x, y) in a.data.iter().zip(b.data.iter()) {
+                    let c = x.compare(&y);
                     if c != Ordering::Equal {
                         return c;
                     }

@@ -853,8 +853,8 @@ impl Repl {
                 }
                 if a.bounds.len() == 2 {
                     let cols = a.len(1) as usize;
-                    let rows: Vec<String> = a
-                        .data
+                    let all: Vec<Value> = a.data.iter().collect();
+                    let rows: Vec<String> = all
                         .chunks(cols.max(1))
                         .map(|row| {
                             row.iter()
@@ -868,7 +868,7 @@ impl Repl {
                 let items: Vec<String> = a
                     .data
                     .iter()
-                    .map(|x| self.show_in(x, *elem, accesses))
+                    .map(|x| self.show_in(&x, *elem, accesses))
                     .collect();
                 format!("({})", items.join(", "))
             }

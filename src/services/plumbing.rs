@@ -108,7 +108,7 @@ pub fn frame_value(p: &Pose) -> Value {
         .flat_map(|row| row.iter().map(|x| Value::Real(*x)))
         .collect();
     Value::Arr(Rc::new(Array {
-        bounds: vec![(1, 3), (1, 4)],
+        bounds: smallvec::smallvec![(1, 3), (1, 4)],
         data,
     }))
 }
@@ -124,10 +124,10 @@ pub fn frame_rows(v: &Value) -> [[f64; 4]; 3] {
 }
 
 pub(super) fn axes_value(j: &Joints) -> Value {
-    Value::Arr(Rc::new(Array {
-        bounds: vec![(1, 5)],
-        data: j.iter().map(|x| Value::Real(*x)).collect(),
-    }))
+    Value::Arr(Rc::new(Array::vector(
+        1,
+        j.iter().map(|x| Value::Real(*x)).collect(),
+    )))
 }
 
 pub(super) fn axes_of(v: &Value) -> Joints {

@@ -9,7 +9,9 @@ impl<'a> Run<'a> {
         match *p {
             PartOp::One(v) => AggPart::One(self.take_slot(v)),
             PartOp::Each(v) => AggPart::Each(match self.take_slot(v) {
-                Value::Arr(a) => Rc::try_unwrap(a).map_or_else(|a| a.data.clone(), |a| a.data),
+                Value::Arr(a) => Rc::try_unwrap(a)
+                    .map_or_else(|a| a.data.clone(), |a| a.data)
+                    .into_vals(),
                 _ => Vec::new(),
             }),
         }
@@ -192,9 +194,12 @@ impl<'a> Run<'a> {
                 // the native stack costs a drop call and a store stall.
                 let got = match &self.m.stack[ix!(*$arr)] {
                     Value::Arr(a) => match a.offset(&$idx[..$n]) {
-                        Some(o) => match &a.data[o] {
-                            Value::Real(x) => Ok(Err(*x)),
-                            v => Ok(Ok(v.clone())),
+                        Some(o) => match &a.data {
+                            value::Elems::Bytes(b) => Ok(Ok(Value::Int(b[o] as i64))),
+                            value::Elems::Vals(vs) => match &vs[o] {
+                                Value::Real(x) => Ok(Err(*x)),
+                                v => Ok(Ok(v.clone())),
+                            },
                         },
                         None => Err("index check failed"),
                     },
@@ -228,10 +233,13 @@ impl<'a> Run<'a> {
                         let a = Rc::make_mut(a);
                         match a.offset(&$idx[..$n]) {
                             Some(o) => {
-                                match (val, &mut a.data[o]) {
-                                    (Err(x), Value::Real(y)) => *y = x,
-                                    (Err(x), s) => value::overwrite(s, Value::Real(x)),
-                                    (Ok(v), s) => set(s, v),
+                                match (val, &mut a.data) {
+                                    (Ok(v), value::Elems::Bytes(_)) => a.data.set(o, v),
+                                    (Err(x), d) => match d.get_mut(o) {
+                                        Value::Real(y) => *y = x,
+                                        s => value::overwrite(s, Value::Real(x)),
+                                    },
+                                    (Ok(v), d) => set(d.get_mut(o), v),
                                 }
                                 Ok(())
                             }
@@ -896,10 +904,8 @@ impl<'a> Run<'a> {
                         .map(|v| self.put_ix(ix!(r.dst), v))
                 }
                 Op::ListNew(d) => {
-                    let empty = Value::Arr(Rc::new(Array {
-                        bounds: vec![(1, 0)],
-                        data: Vec::new(),
-                    }));
+                    let empty =
+                        Value::Arr(Rc::new(Array::vector(1, value::Elems::Vals(Vec::new()))));
                     self.put_ix(ix!(*d), empty);
                     Ok(())
                 }
