@@ -14,13 +14,18 @@ use super::value::Value;
 pub enum Elems {
     /// General values.
     Vals(Vec<Value>),
-    /// Discrete values in `0 ..= 255`, one byte each.
-    Bytes(Vec<u8>),
+    /// Discrete values in `0 ..= 255`, one byte each (up to 16 held in
+    /// the array value itself).
+    Bytes(ByteVec),
 }
+
+/// The bytes of a byte array: a short one (a tag, a label, a number's
+/// image) needs no allocation of its own.
+pub type ByteVec = smallvec::SmallVec<[u8; 16]>;
 
 impl Default for Elems {
     fn default() -> Self {
-        Elems::Bytes(Vec::new())
+        Elems::Bytes(ByteVec::new())
     }
 }
 
@@ -46,7 +51,7 @@ impl Elems {
     /// `n` copies of `v`.
     pub fn repeat(v: Value, n: usize) -> Elems {
         match byte(&v) {
-            Some(b) => Elems::Bytes(vec![b; n]),
+            Some(b) => Elems::Bytes(smallvec::smallvec![b; n]),
             None => Elems::Vals(vec![v; n]),
         }
     }
@@ -54,7 +59,7 @@ impl Elems {
     /// An empty list with room for `n` components like `like`.
     pub fn with_capacity_like(like: &Elems, n: usize) -> Elems {
         match like {
-            Elems::Bytes(_) => Elems::Bytes(Vec::with_capacity(n)),
+            Elems::Bytes(_) => Elems::Bytes(ByteVec::with_capacity(n)),
             Elems::Vals(_) => Elems::Vals(Vec::with_capacity(n)),
         }
     }
@@ -173,7 +178,7 @@ impl Elems {
     pub fn slice(&self, range: std::ops::Range<usize>) -> Elems {
         match self {
             Elems::Vals(v) => Elems::Vals(v[range].to_vec()),
-            Elems::Bytes(b) => Elems::Bytes(b[range].to_vec()),
+            Elems::Bytes(b) => Elems::Bytes(ByteVec::from_slice(&b[range])),
         }
     }
 
@@ -236,6 +241,17 @@ impl FromIterator<Value> for Elems {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A string of up to 16 characters is one allocation: the array value
+    /// (bounds and bytes inline) behind its `Rc`.
+    #[test]
+    fn a_short_string_is_held_inline() {
+        assert!(std::mem::size_of::<Elems>() <= 32);
+        assert!(std::mem::size_of::<super::super::value::Array>() <= 56);
+        let s = super::super::value::Array::string("P 123: 45");
+        assert!(matches!(&s.data, Elems::Bytes(b) if !b.spilled()));
+        assert!(!s.bounds.spilled());
+    }
 
     #[test]
     fn bytes_stay_bytes_until_a_value_is_not_one() {

@@ -1930,7 +1930,7 @@ impl Run<'_> {
             Some(Value::Arr(r)) => r.data.len(),
             _ => 0,
         };
-        let mut data = value::Elems::Bytes(Vec::with_capacity(
+        let mut data = value::Elems::Bytes(value::ByteVec::with_capacity(
             vals.len()
                 .saturating_mul(row_len)
                 .min(MAX_ELEMENTS as usize),
@@ -2109,7 +2109,10 @@ impl Run<'_> {
                     _ => Value::Int(a.len(d)),
                 }
             }
-            AttrOp::ImageInt => Value::string(value::image_int(a0.int())),
+            AttrOp::ImageInt => Value::Arr(Rc::new(Array::vector(
+                1,
+                value::Elems::Bytes(value::image_int_bytes(a0.int())),
+            ))),
             AttrOp::ImageFloat(d) => Value::string(value::image_float_digits(a0.real(), d as u32)),
             AttrOp::ImageDuration => Value::string(value::image_duration(a0.real())),
             AttrOp::ImageChar => {

@@ -128,7 +128,7 @@ pub struct Array {
 /// An array's bounds, one pair per dimension (one dimension held inline).
 pub type Bounds = smallvec::SmallVec<[(i64, i64); 1]>;
 
-pub use super::elems::Elems;
+pub use super::elems::{ByteVec, Elems};
 
 impl Array {
     pub fn len(&self, dim: usize) -> i64 {
@@ -161,7 +161,7 @@ impl Array {
     }
     pub fn string(s: &str) -> Array {
         let data: Elems = if s.is_ascii() {
-            Elems::Bytes(s.as_bytes().to_vec())
+            Elems::Bytes(ByteVec::from_slice(s.as_bytes()))
         } else {
             s.chars().map(|c| Value::Int(c as i64)).collect()
         };
@@ -223,7 +223,10 @@ impl Value {
         if !s.is_ascii() {
             return Value::str(&s);
         }
-        Value::Arr(Rc::new(Array::vector(1, Elems::Bytes(s.into_bytes()))))
+        Value::Arr(Rc::new(Array::vector(
+            1,
+            Elems::Bytes(ByteVec::from_vec(s.into_bytes())),
+        )))
     }
     pub fn int(&self) -> i64 {
         match self {
@@ -300,11 +303,26 @@ pub enum Ending {
 
 /// `Integer'Image`: a leading blank for non-negative values.
 pub fn image_int(v: i64) -> String {
-    if v < 0 {
-        v.to_string()
-    } else {
-        format!(" {v}")
+    image_int_bytes(v).into_iter().map(char::from).collect()
+}
+
+/// `Integer'Image (v)` as bytes: a sign or a space, then the digits.
+pub fn image_int_bytes(v: i64) -> ByteVec {
+    let mut digits = [0u8; 20];
+    let mut n = v.unsigned_abs();
+    let mut i = digits.len();
+    loop {
+        i -= 1;
+        digits[i] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
     }
+    let mut out = ByteVec::new();
+    out.push(if v < 0 { b'-' } else { b' ' });
+    out.extend_from_slice(&digits[i..]);
+    out
 }
 
 /// Decimal digits of |x| rounded half away from zero at `frac` digits after
@@ -571,6 +589,21 @@ pub fn duration_div(x: f64, y: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `Integer'Image` (written without `format!`).
+    #[test]
+    fn integer_image_is_gnats() {
+        for (v, s) in [
+            (0, " 0"),
+            (7, " 7"),
+            (-7, "-7"),
+            (1_000_000, " 1000000"),
+            (i64::MIN, "-9223372036854775808"),
+            (i64::MAX, " 9223372036854775807"),
+        ] {
+            assert_eq!(image_int(v), s);
+        }
+    }
 
     /// Duration values are whole nanoseconds: differences of canonical
     /// values compare as GNAT's counts do, and a moment between two
