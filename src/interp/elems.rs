@@ -115,6 +115,7 @@ impl Elems {
     }
 
     /// The general values, a byte array turned into them first.
+    #[inline]
     pub fn vals_mut(&mut self) -> &mut Vec<Value> {
         if let Elems::Bytes(b) = self {
             *self = Elems::Vals(b.iter().map(|&x| Value::Int(x as i64)).collect());
@@ -156,20 +157,26 @@ impl Elems {
     }
 
     /// Appends `other`'s components.
+    /// An empty list takes `other`'s form, keeping its own capacity.
     pub fn extend_from(&mut self, other: &Elems) {
-        if self.is_empty() {
-            *self = other.clone();
-            return;
-        }
         match (&mut *self, other) {
             (Elems::Bytes(a), Elems::Bytes(b)) => a.extend_from_slice(b),
             (Elems::Vals(a), Elems::Vals(b)) => a.extend(b.iter().cloned()),
+            (Elems::Vals(a), Elems::Bytes(b)) if a.is_empty() => {
+                let mut n = ByteVec::with_capacity(a.capacity().max(b.len()));
+                n.extend_from_slice(b);
+                *self = Elems::Bytes(n);
+            }
             (Elems::Vals(a), Elems::Bytes(b)) => a.extend(b.iter().map(|&x| Value::Int(x as i64))),
+            (Elems::Bytes(a), Elems::Vals(b)) if a.is_empty() => {
+                let mut n = Vec::with_capacity(a.capacity().max(b.len()));
+                n.extend(b.iter().cloned());
+                *self = Elems::Vals(n);
+            }
             (Elems::Bytes(_), Elems::Vals(b)) => {
-                if b.is_empty() {
-                    return;
+                if !b.is_empty() {
+                    self.vals_mut().extend(b.iter().cloned());
                 }
-                self.vals_mut().extend(b.iter().cloned());
             }
         }
     }

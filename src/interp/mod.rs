@@ -1930,11 +1930,15 @@ impl Run<'_> {
             Some(Value::Arr(r)) => r.data.len(),
             _ => 0,
         };
-        let mut data = value::Elems::Bytes(value::ByteVec::with_capacity(
-            vals.len()
-                .saturating_mul(row_len)
-                .min(MAX_ELEMENTS as usize),
-        ));
+        let mut data = match vals.first() {
+            Some(Value::Arr(r)) => value::Elems::with_capacity_like(
+                &r.data,
+                vals.len()
+                    .saturating_mul(row_len)
+                    .min(MAX_ELEMENTS as usize),
+            ),
+            _ => value::Elems::default(),
+        };
         let mut inner: Option<value::Bounds> = None;
         for v in vals {
             let Value::Arr(row) = v else {

@@ -234,12 +234,15 @@ impl<'a> Run<'a> {
                         match a.offset(&$idx[..$n]) {
                             Some(o) => {
                                 match (val, &mut a.data) {
-                                    (Ok(v), value::Elems::Bytes(_)) => a.data.set(o, v),
-                                    (Err(x), d) => match d.get_mut(o) {
+                                    (Err(x), value::Elems::Vals(vs)) => match &mut vs[o] {
                                         Value::Real(y) => *y = x,
                                         s => value::overwrite(s, Value::Real(x)),
                                     },
-                                    (Ok(v), d) => set(d.get_mut(o), v),
+                                    (Ok(v), value::Elems::Vals(vs)) => set(&mut vs[o], v),
+                                    // A byte array: a real is no byte (the
+                                    // array turns into general values).
+                                    (Err(x), d) => d.set(o, Value::Real(x)),
+                                    (Ok(v), d) => d.set(o, v),
                                 }
                                 Ok(())
                             }
