@@ -1,11 +1,14 @@
 //! The components of an array value, stored compactly.
 //!
-//! An array whose components are all discrete values in `0 ..= 255` (a
-//! `String`'s characters, Booleans, small enumerations) keeps them as bytes,
-//! one byte each; any other array keeps general [`Value`]s. Which form an
-//! array has is a matter of storage only: every reader sees `Value::Int`s
-//! either way, and storing a component that is not a byte turns a byte
-//! array into general values first (once, for that array value).
+//! An array keeps its components in the narrowest form that holds them
+//! all: bytes when every one is a discrete value in `0 ..= 255` (a
+//! `String`'s characters, Booleans, small enumerations), integers when
+//! every one is a discrete value, reals when every one is a real, and
+//! general [`Value`]s otherwise (composites, access values, a mix). Which
+//! form an array has is a matter of storage only: every reader sees the
+//! same values either way, and storing a component the form cannot hold
+//! widens that array value first (once): bytes to integers, anything else
+//! to general values.
 
 use super::value::Value;
 
@@ -17,6 +20,10 @@ pub enum Elems {
     /// Discrete values in `0 ..= 255`, one byte each (up to 16 held in
     /// the array value itself).
     Bytes(ByteVec),
+    /// Discrete values.
+    Ints(Vec<i64>),
+    /// Reals (`Float`, `Duration`, times).
+    Reals(Vec<f64>),
 }
 
 /// The bytes of a byte array: a short one (a tag, a label, a number's
@@ -39,10 +46,15 @@ fn byte(v: &Value) -> Option<u8> {
 }
 
 impl Elems {
-    /// Components from general values: bytes when every one is a byte.
+    /// Components from general values, in the narrowest form that holds
+    /// them.
     pub fn from_vals(vals: Vec<Value>) -> Elems {
         if vals.iter().all(|v| byte(v).is_some()) {
             Elems::Bytes(vals.iter().map(|v| v.int() as u8).collect())
+        } else if vals.iter().all(|v| matches!(v, Value::Int(_))) {
+            Elems::Ints(vals.iter().map(Value::int).collect())
+        } else if vals.iter().all(|v| matches!(v, Value::Real(_))) {
+            Elems::Reals(vals.iter().map(Value::real).collect())
         } else {
             Elems::Vals(vals)
         }
@@ -50,16 +62,22 @@ impl Elems {
 
     /// `n` copies of `v`.
     pub fn repeat(v: Value, n: usize) -> Elems {
-        match byte(&v) {
-            Some(b) => Elems::Bytes(smallvec::smallvec![b; n]),
-            None => Elems::Vals(vec![v; n]),
+        match v {
+            Value::Int(i) => match u8::try_from(i) {
+                Ok(b) => Elems::Bytes(smallvec::smallvec![b; n]),
+                Err(_) => Elems::Ints(vec![i; n]),
+            },
+            Value::Real(x) => Elems::Reals(vec![x; n]),
+            v => Elems::Vals(vec![v; n]),
         }
     }
 
-    /// An empty list with room for `n` components like `like`.
+    /// An empty list with room for `n` components, in `like`'s form.
     pub fn with_capacity_like(like: &Elems, n: usize) -> Elems {
         match like {
             Elems::Bytes(_) => Elems::Bytes(ByteVec::with_capacity(n)),
+            Elems::Ints(_) => Elems::Ints(Vec::with_capacity(n)),
+            Elems::Reals(_) => Elems::Reals(Vec::with_capacity(n)),
             Elems::Vals(_) => Elems::Vals(Vec::with_capacity(n)),
         }
     }
@@ -69,6 +87,8 @@ impl Elems {
         match self {
             Elems::Vals(v) => v.len(),
             Elems::Bytes(b) => b.len(),
+            Elems::Ints(v) => v.len(),
+            Elems::Reals(v) => v.len(),
         }
     }
 
@@ -77,12 +97,23 @@ impl Elems {
         self.len() == 0
     }
 
+    fn capacity(&self) -> usize {
+        match self {
+            Elems::Vals(v) => v.capacity(),
+            Elems::Bytes(b) => b.capacity(),
+            Elems::Ints(v) => v.capacity(),
+            Elems::Reals(v) => v.capacity(),
+        }
+    }
+
     /// Component `i` (which must exist).
     #[inline(always)]
     pub fn get(&self, i: usize) -> Value {
         match self {
             Elems::Vals(v) => v[i].clone(),
             Elems::Bytes(b) => Value::Int(b[i] as i64),
+            Elems::Ints(v) => Value::Int(v[i]),
+            Elems::Reals(v) => Value::Real(v[i]),
         }
     }
 
@@ -92,6 +123,8 @@ impl Elems {
         match self {
             Elems::Vals(v) => v[i].int(),
             Elems::Bytes(b) => b[i] as i64,
+            Elems::Ints(v) => v[i],
+            Elems::Reals(v) => v[i] as i64,
         }
     }
 
@@ -101,6 +134,8 @@ impl Elems {
         match self {
             Elems::Vals(v) => v[i].real(),
             Elems::Bytes(b) => b[i] as f64,
+            Elems::Ints(v) => v[i] as f64,
+            Elems::Reals(v) => v[i],
         }
     }
 
@@ -110,72 +145,107 @@ impl Elems {
     pub fn val(&self, i: usize) -> Option<&Value> {
         match self {
             Elems::Vals(v) => Some(&v[i]),
-            Elems::Bytes(_) => None,
+            _ => None,
         }
     }
 
-    /// The general values, a byte array turned into them first.
+    /// The general values, a compact array turned into them first.
     #[inline]
     pub fn vals_mut(&mut self) -> &mut Vec<Value> {
-        if let Elems::Bytes(b) = self {
-            *self = Elems::Vals(b.iter().map(|&x| Value::Int(x as i64)).collect());
+        if !matches!(self, Elems::Vals(_)) {
+            let vals = std::mem::take(self).into_vals();
+            *self = Elems::Vals(vals);
         }
         match self {
             Elems::Vals(v) => v,
-            Elems::Bytes(_) => unreachable!("turned into values above"),
+            _ => unreachable!("turned into values above"),
         }
     }
 
-    /// Component `i` to change in place (a byte array becomes general
-    /// values: for a composite component's parts, which bytes never have).
+    /// Component `i` to change in place (a compact array becomes general
+    /// values: for a composite component's parts, which compact arrays
+    /// never have).
     #[inline]
     pub fn get_mut(&mut self, i: usize) -> &mut Value {
         &mut self.vals_mut()[i]
     }
 
+    /// Makes the form hold `v` (widening it if it cannot).
+    #[cold]
+    fn widen_for(&mut self, v: &Value) {
+        match (&*self, v) {
+            (Elems::Bytes(b), Value::Int(_)) => {
+                *self = Elems::Ints(b.iter().map(|&x| x as i64).collect());
+            }
+            _ => {
+                self.vals_mut();
+            }
+        }
+    }
+
     /// Sets component `i` (which must exist).
     #[inline(always)]
     pub fn set(&mut self, i: usize, v: Value) {
-        match self {
-            Elems::Vals(vs) => super::value::overwrite(&mut vs[i], v),
-            Elems::Bytes(b) => match byte(&v) {
-                Some(x) => b[i] = x,
-                None => self.vals_mut()[i] = v,
-            },
+        match (&mut *self, v) {
+            (Elems::Vals(vs), v) => super::value::overwrite(&mut vs[i], v),
+            (Elems::Bytes(b), Value::Int(x)) if (0..=255).contains(&x) => b[i] = x as u8,
+            (Elems::Ints(vs), Value::Int(x)) => vs[i] = x,
+            (Elems::Reals(vs), Value::Real(x)) => vs[i] = x,
+            (e, v) => {
+                e.widen_for(&v);
+                e.set(i, v);
+            }
         }
     }
 
     /// Appends a component.
     pub fn push(&mut self, v: Value) {
-        match self {
-            Elems::Vals(vs) => vs.push(v),
-            Elems::Bytes(b) => match byte(&v) {
-                Some(x) => b.push(x),
-                None => self.vals_mut().push(v),
-            },
+        match (&mut *self, v) {
+            (Elems::Vals(vs), v) => vs.push(v),
+            (Elems::Bytes(b), Value::Int(x)) if (0..=255).contains(&x) => b.push(x as u8),
+            (Elems::Ints(vs), Value::Int(x)) => vs.push(x),
+            (Elems::Reals(vs), Value::Real(x)) => vs.push(x),
+            (e, v) if e.is_empty() => {
+                // An empty list takes the form of its first component.
+                let n = e.capacity();
+                let mut one = Elems::repeat(v, 1);
+                one.reserve(n);
+                *e = one;
+            }
+            (e, v) => {
+                e.widen_for(&v);
+                e.push(v);
+            }
         }
     }
 
-    /// Appends `other`'s components.
-    /// An empty list takes `other`'s form, keeping its own capacity.
+    /// Room for `n` more components.
+    pub fn reserve(&mut self, n: usize) {
+        match self {
+            Elems::Vals(v) => v.reserve(n),
+            Elems::Bytes(b) => b.reserve(n),
+            Elems::Ints(v) => v.reserve(n),
+            Elems::Reals(v) => v.reserve(n),
+        }
+    }
+
+    /// Appends `other`'s components. An empty list takes `other`'s form,
+    /// keeping its own capacity.
     pub fn extend_from(&mut self, other: &Elems) {
         match (&mut *self, other) {
             (Elems::Bytes(a), Elems::Bytes(b)) => a.extend_from_slice(b),
+            (Elems::Ints(a), Elems::Ints(b)) => a.extend_from_slice(b),
+            (Elems::Reals(a), Elems::Reals(b)) => a.extend_from_slice(b),
             (Elems::Vals(a), Elems::Vals(b)) => a.extend(b.iter().cloned()),
-            (Elems::Vals(a), Elems::Bytes(b)) if a.is_empty() => {
-                let mut n = ByteVec::with_capacity(a.capacity().max(b.len()));
-                n.extend_from_slice(b);
-                *self = Elems::Bytes(n);
+            (_, b) if b.is_empty() => {}
+            (a, b) if a.is_empty() => {
+                let mut n = Elems::with_capacity_like(b, a.capacity().max(b.len()));
+                n.extend_from(b);
+                *a = n;
             }
-            (Elems::Vals(a), Elems::Bytes(b)) => a.extend(b.iter().map(|&x| Value::Int(x as i64))),
-            (Elems::Bytes(a), Elems::Vals(b)) if a.is_empty() => {
-                let mut n = Vec::with_capacity(a.capacity().max(b.len()));
-                n.extend(b.iter().cloned());
-                *self = Elems::Vals(n);
-            }
-            (Elems::Bytes(_), Elems::Vals(b)) => {
-                if !b.is_empty() {
-                    self.vals_mut().extend(b.iter().cloned());
+            _ => {
+                for v in other.iter() {
+                    self.push(v);
                 }
             }
         }
@@ -186,6 +256,8 @@ impl Elems {
         match self {
             Elems::Vals(v) => Elems::Vals(v[range].to_vec()),
             Elems::Bytes(b) => Elems::Bytes(ByteVec::from_slice(&b[range])),
+            Elems::Ints(v) => Elems::Ints(v[range].to_vec()),
+            Elems::Reals(v) => Elems::Reals(v[range].to_vec()),
         }
     }
 
@@ -193,15 +265,12 @@ impl Elems {
     pub fn copy_from(&mut self, at: usize, src: &Elems) {
         match (&mut *self, src) {
             (Elems::Bytes(a), Elems::Bytes(b)) => a[at..at + b.len()].copy_from_slice(b),
+            (Elems::Ints(a), Elems::Ints(b)) => a[at..at + b.len()].copy_from_slice(b),
+            (Elems::Reals(a), Elems::Reals(b)) => a[at..at + b.len()].copy_from_slice(b),
             (Elems::Vals(a), Elems::Vals(b)) => a[at..at + b.len()].clone_from_slice(b),
-            (Elems::Vals(a), Elems::Bytes(b)) => {
-                for (k, &x) in b.iter().enumerate() {
-                    a[at + k] = Value::Int(x as i64);
-                }
-            }
-            (Elems::Bytes(_), Elems::Vals(b)) => {
-                for (k, v) in b.iter().enumerate() {
-                    self.set(at + k, v.clone());
+            _ => {
+                for (k, v) in src.iter().enumerate() {
+                    self.set(at + k, v);
                 }
             }
         }
@@ -217,6 +286,8 @@ impl Elems {
         match self {
             Elems::Vals(v) => v,
             Elems::Bytes(b) => b.into_iter().map(|x| Value::Int(x as i64)).collect(),
+            Elems::Ints(v) => v.into_iter().map(Value::Int).collect(),
+            Elems::Reals(v) => v.into_iter().map(Value::Real).collect(),
         }
     }
 
@@ -224,7 +295,7 @@ impl Elems {
     pub fn bytes(&self) -> Option<&[u8]> {
         match self {
             Elems::Bytes(b) => Some(b),
-            Elems::Vals(_) => None,
+            _ => None,
         }
     }
 }
@@ -233,6 +304,8 @@ impl PartialEq for Elems {
     fn eq(&self, other: &Elems) -> bool {
         match (self, other) {
             (Elems::Bytes(a), Elems::Bytes(b)) => a == b,
+            (Elems::Ints(a), Elems::Ints(b)) => a == b,
+            (Elems::Reals(a), Elems::Reals(b)) => a == b,
             (Elems::Vals(a), Elems::Vals(b)) => a == b,
             _ => self.len() == other.len() && self.iter().zip(other.iter()).all(|(x, y)| x == y),
         }
@@ -249,6 +322,15 @@ impl FromIterator<Value> for Elems {
 mod tests {
     use super::*;
 
+    fn form(e: &Elems) -> &'static str {
+        match e {
+            Elems::Vals(_) => "vals",
+            Elems::Bytes(_) => "bytes",
+            Elems::Ints(_) => "ints",
+            Elems::Reals(_) => "reals",
+        }
+    }
+
     /// A string of up to 16 characters is one allocation: the array value
     /// (bounds and bytes inline) behind its `Rc`.
     #[test]
@@ -261,34 +343,58 @@ mod tests {
     }
 
     #[test]
-    fn bytes_stay_bytes_until_a_value_is_not_one() {
+    fn each_form_widens_only_when_a_value_does_not_fit() {
         let mut e = Elems::from_vals(vec![Value::Int(65), Value::Int(66)]);
-        assert!(e.bytes().is_some());
+        assert_eq!(form(&e), "bytes");
         e.set(0, Value::Int(255));
         assert_eq!(e.bytes(), Some(&[255u8, 66][..]));
         e.set(1, Value::Int(256));
-        assert!(e.bytes().is_none());
-        assert_eq!(e.int(0), 255);
-        assert_eq!(e.int(1), 256);
-        let mut n = Elems::from_vals(vec![Value::Int(-1)]);
-        assert!(n.bytes().is_none());
-        n.push(Value::Int(3));
-        assert_eq!(n.len(), 2);
+        assert_eq!(form(&e), "ints");
+        assert_eq!((e.int(0), e.int(1)), (255, 256));
+        e.set(0, Value::Int(-3));
+        assert_eq!(form(&e), "ints");
+        e.push(Value::Real(0.5));
+        assert_eq!(form(&e), "vals");
+        assert_eq!(e.len(), 3);
+        assert!(matches!(e.get(2), Value::Real(x) if x == 0.5));
+
+        let mut r = Elems::repeat(Value::Real(0.0), 3);
+        assert_eq!(form(&r), "reals");
+        r.set(1, Value::Real(2.5));
+        assert_eq!(r.real(1), 2.5);
+        r.set(2, Value::Int(1));
+        assert_eq!(form(&r), "vals");
+        assert!(matches!(r.get(1), Value::Real(x) if x == 2.5));
+        assert!(matches!(r.get(2), Value::Int(1)));
+
+        let n = Elems::from_vals(vec![Value::Int(-1)]);
+        assert_eq!(form(&n), "ints");
+        assert_eq!(form(&Elems::from_vals(vec![Value::Undef])), "vals");
     }
 
     #[test]
-    fn both_forms_compare_and_join_alike() {
+    fn all_forms_compare_and_join_alike() {
         let b = Elems::from_vals(vec![Value::Int(1), Value::Int(2)]);
         let v = Elems::Vals(vec![Value::Int(1), Value::Int(2)]);
+        let i = Elems::Ints(vec![1, 2]);
         assert_eq!(b, v);
+        assert_eq!(i, b);
         assert_ne!(b, Elems::Vals(vec![Value::Int(1), Value::Real(2.0)]));
         let mut j = b.clone();
-        j.extend_from(&Elems::Vals(vec![Value::Real(0.5)]));
+        j.extend_from(&Elems::Reals(vec![0.5]));
         assert_eq!(j.len(), 3);
         assert!(matches!(j.get(2), Value::Real(x) if x == 0.5));
+        let mut k = Elems::default();
+        k.extend_from(&Elems::Reals(vec![0.5, 1.5]));
+        assert_eq!(form(&k), "reals");
         let mut c = Elems::repeat(Value::Int(0), 4);
         c.copy_from(1, &v);
         assert_eq!(c.bytes(), Some(&[0u8, 1, 2, 0][..]));
-        assert_eq!(c.slice(1..3), v);
+        c.copy_from(2, &Elems::Ints(vec![1000]));
+        assert_eq!(c.int(2), 1000);
+        assert_eq!(c.slice(0..2), Elems::Ints(vec![0, 1]));
+        let mut p = Elems::default();
+        p.push(Value::Real(1.0));
+        assert_eq!(form(&p), "reals");
     }
 }

@@ -1874,9 +1874,7 @@ impl Run<'_> {
                     Ok(a) => a.data,
                     Err(a) => a.data.clone(),
                 };
-                if let value::Elems::Bytes(b) = &mut data {
-                    b.reserve((n as usize).saturating_sub(b.len()));
-                }
+                data.reserve((n as usize).saturating_sub(data.len()));
                 (data, lo)
             }
             _ => (value::Elems::default(), 1),

@@ -180,10 +180,10 @@ impl Array {
     pub fn to_string_lossy(&self) -> String {
         match &self.data {
             Elems::Bytes(b) => b.iter().map(|&c| c as char).collect(),
-            Elems::Vals(v) => v
+            other => other
                 .iter()
                 .map(|v| match v {
-                    Value::Int(c) => char::from_u32(*c as u32).unwrap_or('?'),
+                    Value::Int(c) => char::from_u32(c as u32).unwrap_or('?'),
                     _ => '?',
                 })
                 .collect(),

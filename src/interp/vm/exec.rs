@@ -195,7 +195,9 @@ impl<'a> Run<'a> {
                 let got = match &self.m.stack[ix!(*$arr)] {
                     Value::Arr(a) => match a.offset(&$idx[..$n]) {
                         Some(o) => match &a.data {
+                            value::Elems::Reals(r) => Ok(Err(r[o])),
                             value::Elems::Bytes(b) => Ok(Ok(Value::Int(b[o] as i64))),
+                            value::Elems::Ints(v) => Ok(Ok(Value::Int(v[o]))),
                             value::Elems::Vals(vs) => match &vs[o] {
                                 Value::Real(x) => Ok(Err(*x)),
                                 v => Ok(Ok(v.clone())),
@@ -234,13 +236,14 @@ impl<'a> Run<'a> {
                         match a.offset(&$idx[..$n]) {
                             Some(o) => {
                                 match (val, &mut a.data) {
+                                    (Err(x), value::Elems::Reals(r)) => r[o] = x,
                                     (Err(x), value::Elems::Vals(vs)) => match &mut vs[o] {
                                         Value::Real(y) => *y = x,
                                         s => value::overwrite(s, Value::Real(x)),
                                     },
                                     (Ok(v), value::Elems::Vals(vs)) => set(&mut vs[o], v),
-                                    // A byte array: a real is no byte (the
-                                    // array turns into general values).
+                                    // A compact array of another form: it
+                                    // widens if it must.
                                     (Err(x), d) => d.set(o, Value::Real(x)),
                                     (Ok(v), d) => d.set(o, v),
                                 }
