@@ -484,6 +484,22 @@ impl<'a> Run<'a> {
                     self.put_ix(ix!(*d), v.clone());
                     continue;
                 }
+                Op::Cached(c) => {
+                    if let Some(v) = c.value.get() {
+                        self.put_ix(ix!(c.dst), v.clone());
+                        pc = c.end;
+                    }
+                    continue;
+                }
+                Op::CacheFill(at, d) => {
+                    if let Some(Op::Cached(c)) = cur.ops.get(*at as usize) {
+                        let v = self.m.stack[ix!(*d)].clone();
+                        // Set once: a second fill (none can happen) keeps
+                        // the first value.
+                        let _ = c.value.set(v);
+                    }
+                    continue;
+                }
                 Op::Concat(c) => {
                     let (xi, yi) = (ix!(c.x), ix!(c.y));
                     let x = if c.takes.0 {

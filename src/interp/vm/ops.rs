@@ -52,6 +52,13 @@ pub(super) enum Op {
     /// is compiled (a copy of it is one reference count: an assignment
     /// into it copies it first).
     Str(Var, Value),
+    /// The value of a static aggregate (literal components, static
+    /// bounds): once it is made, `dst := value` and a jump to `end`, past
+    /// the instructions that make it; the first time, on to them.
+    Cached(Box<CachedOp>),
+    /// The end of a static aggregate's instructions: its value (in the
+    /// slot) is kept by the `Cached` at this index.
+    CacheFill(u32, Var),
     /// `dst := x & y` (each an array or an element).
     Concat(Box<ConcatOp>),
     /// `dst := base (low .. high)`, and where its check fails.
@@ -462,6 +469,16 @@ pub(super) struct SelectOp {
     pub(super) span: Span,
 }
 
+/// A static aggregate's value, made the first time its code runs (see
+/// [`Op::Cached`]). Each run compiles its code afresh, so the value lives
+/// as long as the run.
+#[derive(Debug)]
+pub(super) struct CachedOp {
+    pub(super) value: std::cell::OnceCell<Value>,
+    pub(super) dst: Var,
+    pub(super) end: u32,
+}
+
 /// Moves `op`'s jump targets `by` instructions on (a compiled part
 /// spliced into its body's code).
 pub(super) fn relocate(op: &mut Op, by: u32) {
@@ -500,6 +517,8 @@ pub(super) fn relocate(op: &mut Op, by: u32) {
             r.twin += by;
         }
         Op::EntryCall(e) | Op::ProtEntry(e) => e.other += by,
+        Op::Cached(c) => c.end += by,
+        Op::CacheFill(at, _) => *at += by,
         Op::Select(sel) => {
             for a in sel.alts.iter_mut() {
                 a.target += by;

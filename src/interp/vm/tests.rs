@@ -42,6 +42,45 @@ mod fused_tests {
             .collect()
     }
 
+    /// An aggregate of literals with static bounds is made once per run
+    /// (`Cached`); one whose component subtype depends on a parameter, or
+    /// with a component that is not a literal, is made each time.
+    #[test]
+    fn static_aggregates_are_made_once() {
+        let src = "procedure P is\n\
+               type Mat is array (1 .. 2, 1 .. 3) of Float;\n\
+               function F return Mat is\n\
+                  M : Mat := (others => (others => 0.5));\n\
+               begin\n   return M;\nend F;\n\
+               procedure G (N : Integer) is\n\
+                  subtype Small is Integer range 1 .. N;\n\
+                  type Smalls is array (1 .. 3) of Small;\n\
+                  S : Smalls := (5, 5, 5);\n\
+               begin\n   null;\nend G;\n\
+               procedure H (N : Integer) is\n\
+                  type Row is array (1 .. 3) of Integer;\n\
+                  R : Row := (1, N, 3);\n\
+               begin\n   null;\nend H;\n\
+               procedure K is\n\
+                  type Row is array (1 .. 3) of Integer;\n\
+                  subtype Digit is Integer range 0 .. 9;\n\
+                  type Digit_Row is array (1 .. 3) of Digit;\n\
+                  R : Row := (1, 2, 3);\n\
+                  D : Digit_Row := (others => 7);\n\
+               begin\n   null;\nend K;\n\
+            begin\n   null;\nend P;\n";
+        let cached = |name| {
+            ops_of(src, name)
+                .iter()
+                .filter(|o| o.starts_with("Cached"))
+                .count()
+        };
+        assert_eq!(cached("F"), 1, "{:?}", ops_of(src, "F"));
+        assert_eq!(cached("G"), 0, "{:?}", ops_of(src, "G"));
+        assert_eq!(cached("H"), 0, "{:?}", ops_of(src, "H"));
+        assert_eq!(cached("K"), 2, "{:?}", ops_of(src, "K"));
+    }
+
     /// `F (N - 1)` and `return X + Y` are one instruction each; an
     /// argument of a constrained subtype (a range check) or a literal
     /// argument is not fused.

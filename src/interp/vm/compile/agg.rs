@@ -3,6 +3,7 @@
 //! functions the walker calls too (`interp/aggregate.rs`).
 
 use super::*;
+use crate::check::types::Types;
 use crate::interp::aggregate::repeatable;
 
 impl<'r> Compiler<'r> {
@@ -178,4 +179,46 @@ impl<'r> Compiler<'r> {
             None => self.ops.push(op),
         }
     }
+}
+
+/// Whether an array aggregate's value is the same each time it is
+/// evaluated, with no effect and no check whose outcome can change: its
+/// subtype is static ([`static_subtype`]) and each component, choice and
+/// `others` is a literal or such an aggregate. The compiled engine makes
+/// such a value once per run (`Op::Cached`).
+pub(in crate::interp::vm) fn static_agg(types: &Types, e: &Ex) -> bool {
+    let lit = |x: &Ex| matches!(x.kind, ExKind::Int(_));
+    match &e.kind {
+        ExKind::Int(_) | ExKind::Real(_) | ExKind::Str(_) => true,
+        ExKind::ArrayAgg(agg) => {
+            static_subtype(types, agg.ty)
+                && match &agg.kind {
+                    ArrayAggKind::Positional(items, others) => {
+                        items.iter().all(|i| static_agg(types, i))
+                            && others.as_deref().is_none_or(|o| static_agg(types, o))
+                    }
+                    ArrayAggKind::Named(choices, others) => {
+                        choices.iter().all(|(rs, v)| {
+                            rs.iter().all(|(l, h)| lit(l) && lit(h)) && static_agg(types, v)
+                        }) && others.as_deref().is_none_or(|o| static_agg(types, o))
+                    }
+                }
+        }
+        _ => false,
+    }
+}
+
+/// Whether a subtype's constraints are the same in every run of the code
+/// that names it: an array subtype with literal bounds of such components,
+/// or a scalar subtype without a range or with a static one (a subtype
+/// declared in a subprogram can depend on its parameters).
+fn static_subtype(types: &Types, t: TypeId) -> bool {
+    if let Some((_, elem, bounds)) = types.array(t) {
+        let lit = |x: &Ex| matches!(x.kind, ExKind::Int(_));
+        return bounds.is_some_and(|bs| bs.iter().all(|(l, h)| lit(l) && lit(h)))
+            && static_subtype(types, elem);
+    }
+    let info = types.get(t);
+    types.is_scalar(t)
+        && (info.range.is_none() || info.static_range.is_some() || info.static_frange.is_some())
 }

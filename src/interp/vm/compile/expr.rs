@@ -209,6 +209,23 @@ impl<'r> Compiler<'r> {
                 self.ops.push(Op::Move(dst, t));
             }
             ExKind::Alloc(init, t) => self.allocator(e, init.as_deref(), *t, dst),
+            ExKind::ArrayAgg(agg) if !self.caching && super::agg::static_agg(self.types, e) => {
+                // Made once per run, then one reference count per use.
+                let at = self.ops.len();
+                self.ops.push(Op::Cached(Box::new(CachedOp {
+                    value: std::cell::OnceCell::new(),
+                    dst,
+                    end: 0,
+                })));
+                self.caching = true;
+                self.array_agg(agg, dst, span);
+                self.caching = false;
+                self.ops.push(Op::CacheFill(at as u32, dst));
+                let end = self.here();
+                if let Op::Cached(c) = &mut self.ops[at] {
+                    c.end = end;
+                }
+            }
             ExKind::ArrayAgg(agg) => self.array_agg(agg, dst, span),
             ExKind::RecordAgg(fields) => self.record_agg(fields, e.ty, dst, span),
             ExKind::Discriminant(i) => match self.discrs.last() {

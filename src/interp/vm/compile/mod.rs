@@ -45,6 +45,9 @@ pub(in crate::interp::vm) struct Compiler<'r> {
     /// The slots of the discriminants of the record aggregates being
     /// compiled, innermost last: their components read them.
     pub(in crate::interp::vm) discrs: Vec<Box<[Var]>>,
+    /// A static aggregate's instructions are being compiled: the
+    /// aggregates inside it are made with it, not cached again.
+    pub(in crate::interp::vm) caching: bool,
 }
 
 /// True when evaluating `e` may run a call or other code with effects
@@ -109,6 +112,7 @@ impl<'r> Compiler<'r> {
             types,
             scalar: true,
             discrs: Vec::new(),
+            caching: false,
         }
     }
 
@@ -275,6 +279,8 @@ impl<'r> Compiler<'r> {
                 | Op::PushDiscrs(..)
                 | Op::PopDiscrs
                 | Op::ProgramError(..)
+                | Op::Cached(..)
+                | Op::CacheFill(..)
                 | Op::NoteMaster(..) => false,
                 Op::Int(..)
                 | Op::Real(..)
