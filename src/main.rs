@@ -2,7 +2,6 @@
 #![allow(clippy::print_stdout, clippy::print_stderr)]
 
 use adair::session::Session;
-use clap::Parser as _;
 use cli::{Cli, Command, TEST_GLOBALS, TestGlobals};
 use std::io::IsTerminal;
 use std::io::Write as _;
@@ -122,7 +121,7 @@ pub(crate) fn read(path: &PathBuf) -> Result<std::rc::Rc<str>, ExitCode> {
 
 fn main() -> ExitCode {
     let args = adair::view::live::bare_view_flag(std::env::args_os().collect());
-    let cli = match Cli::try_parse_from(cli::with_shorthand(args)) {
+    let cli = match Cli::parse_args(cli::with_shorthand(args)) {
         Ok(c) => c,
         Err(e) => {
             if !e.use_stderr() {
@@ -152,10 +151,11 @@ fn main() -> ExitCode {
         }
     };
     adair::interp::memory::set_limit(
-        cli.max_memory
+        cli.globals
+            .max_memory
             .unwrap_or_else(adair::interp::memory::default_limit),
     );
-    let devices = match &cli.devices {
+    let devices = match &cli.globals.devices {
         None => None,
         Some(p) => match adair::devices::Devices::load(p) {
             Ok(d) => Some(d),
@@ -165,7 +165,7 @@ fn main() -> ExitCode {
             }
         },
     };
-    let color = color(&cli.color);
+    let color = color(&cli.globals.color);
     let _ = TEST_GLOBALS.set(TestGlobals::of(&cli));
     // Deep recursion in user programs needs a big stack for the tree walker.
     let child = std::thread::Builder::new()
@@ -434,6 +434,49 @@ mod tests {
             e.contains(&missing.display().to_string()) && e.contains("--port"),
             "{e}"
         );
+    }
+
+    /// `adair run`'s quick parser reads what the whole grammar reads, and
+    /// leaves to it what it cannot read (errors, `--help`, other commands).
+    #[test]
+    fn the_run_parser_agrees_with_the_whole_grammar() {
+        use super::cli::{Cli, with_shorthand};
+        use clap::Parser as _;
+        let args = |line: &str| -> Vec<std::ffi::OsString> {
+            with_shorthand(line.split_whitespace().map(Into::into).collect())
+        };
+        for line in [
+            "adair run p.adb",
+            "adair p.air",
+            "adair --color never run p.adb --strict",
+            "adair run p.adb --max-memory 512M --devices d.toml --color=always",
+            "adair --max-memory 1G p.adb --robot rm-501 --trace --realtime",
+            "adair run p.adb --port /dev/ttyUSB0 --baud 4800 --serial-timeout 3 --rehearse",
+            "adair run p.adb --record r.txt --plot p.svg --view v.html --view-port 8080 --no-open",
+            "adair run p.adb --view --robot-file r.toml",
+            "adair run -- -p.adb",
+        ] {
+            let quick = Cli::parse_run(&args(line)).unwrap_or_else(|| panic!("{line}"));
+            let whole = Cli::try_parse_from(args(line)).unwrap_or_else(|e| panic!("{line}: {e}"));
+            assert_eq!(
+                format!("{:?} {:?}", quick.globals, quick.command),
+                format!("{:?} {:?}", whole.globals, whole.command),
+                "{line}"
+            );
+        }
+        for line in [
+            "adair run",
+            "adair run --help",
+            "adair run p.adb --bogus",
+            "adair run p.adb --rehearse",
+            "adair --version run p.adb",
+            "adair check p.adb",
+            "adair p.txt",
+            "adair",
+            "adair --color never",
+        ] {
+            assert!(Cli::parse_run(&args(line)).is_none(), "{line}");
+        }
     }
 
     #[test]

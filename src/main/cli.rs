@@ -13,6 +13,15 @@ use std::path::PathBuf;
     after_help = "`adair FILE.air [OPTIONS]` is short for `adair run FILE.air [OPTIONS]`."
 )]
 pub struct Cli {
+    #[command(flatten)]
+    pub globals: Globals,
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// The options every command takes (`global`).
+#[derive(Args, Debug)]
+pub struct Globals {
     /// Colours in diagnostics: auto (only on a terminal, and not with NO_COLOR), always, never.
     #[arg(long, global = true, default_value = "auto", value_parser = ["auto", "always", "never"])]
     pub color: String,
@@ -27,11 +36,59 @@ pub struct Cli {
     /// appendix C parallel port at 8#340#.
     #[arg(long, global = true, value_name = "FILE.toml")]
     pub devices: Option<PathBuf>,
-    #[command(subcommand)]
-    pub command: Option<Command>,
 }
 
-#[derive(Args)]
+impl Cli {
+    /// The command line `args` (shorthand applied), read by clap.
+    /// `adair run ...` is read first by a parser of the global options and
+    /// `run`'s alone: building the whole grammar (every command's options)
+    /// cost more than checking a short program (issue 32 item 4,
+    /// start-up). Whatever that parser refuses (an error, `--help`) is read
+    /// again by the whole grammar, whose messages are the ones shown.
+    pub fn parse_args(args: Vec<std::ffi::OsString>) -> Result<Cli, clap::Error> {
+        if let Some(cli) = Cli::parse_run(&args) {
+            return Ok(cli);
+        }
+        Cli::try_parse_from(args)
+    }
+
+    /// [`Cli::parse_args`]'s quick reading of `adair run ...` (`None`: not
+    /// `run`, or not read).
+    pub fn parse_run(args: &[std::ffi::OsString]) -> Option<Cli> {
+        use clap::FromArgMatches;
+        if args[command_at(args)?] != "run" {
+            return None;
+        }
+        let grammar = Globals::augment_args(clap::Command::new("adair"))
+            .subcommand(RunArgs::augment_args(clap::Command::new("run")));
+        let m = grammar.try_get_matches_from(args).ok()?;
+        let globals = Globals::from_arg_matches(&m).ok()?;
+        let run = RunArgs::from_arg_matches(m.subcommand_matches("run")?).ok()?;
+        Some(Cli {
+            globals,
+            command: Some(Command::Run(run)),
+        })
+    }
+}
+
+/// Where the first argument after the global options is (the command's
+/// name, or a program file for the shorthand).
+fn command_at(args: &[std::ffi::OsString]) -> Option<usize> {
+    let mut i = 1;
+    while i < args.len() {
+        let a = args[i].to_string_lossy();
+        if VALUED.contains(&a.as_ref()) {
+            i += 2;
+        } else if a.starts_with('-') {
+            i += 1;
+        } else {
+            return Some(i);
+        }
+    }
+    None
+}
+
+#[derive(Args, Debug)]
 pub struct RobotOpts {
     /// The simulated robot: rv-m1 (default) or rm-501.
     #[arg(long, default_value = "rv-m1")]
@@ -54,7 +111,7 @@ pub struct RobotOpts {
 }
 
 /// The serial port options of `run` and `repl`.
-#[derive(Args)]
+#[derive(Args, Debug)]
 pub struct SerialOpts {
     /// Drive a real arm on this serial port instead of the simulator.
     #[arg(long, value_name = "PATH")]
@@ -98,7 +155,7 @@ impl RobotOpts {
 }
 
 /// The 3D view's options (docs/view.md).
-#[derive(Args)]
+#[derive(Args, Debug)]
 pub struct ViewOpts {
     /// The run in 3D in a browser: `--view FILE.html` writes a replay page
     /// (also after an exception); `--view` alone serves the page live on
@@ -145,7 +202,7 @@ impl ViewOpts {
     }
 }
 
-#[derive(Subcommand)]
+#[derive(Subcommand, Debug)]
 pub enum Command {
     /// Check the whole program, then run it. Exit 0; 1 on an unhandled exception; 2 on a check error.
     Run(RunArgs),
@@ -240,16 +297,16 @@ pub static TEST_GLOBALS: std::sync::OnceLock<TestGlobals> = std::sync::OnceLock:
 impl TestGlobals {
     pub fn of(cli: &Cli) -> TestGlobals {
         let mut forward = Vec::new();
-        if let Some(p) = &cli.devices {
+        if let Some(p) = &cli.globals.devices {
             // The child runs in the script's folder.
             let abs = std::env::current_dir().map_or(p.clone(), |d| d.join(p));
             forward.extend(["--devices".into(), abs.into_os_string()]);
         }
-        if let Some(m) = cli.max_memory {
+        if let Some(m) = cli.globals.max_memory {
             forward.extend(["--max-memory".into(), m.to_string().into()]);
         }
         // The report goes to standard output: colour when that is a terminal.
-        let paint = match cli.color.as_str() {
+        let paint = match cli.globals.color.as_str() {
             "always" => true,
             "never" => false,
             _ => std::env::var_os("NO_COLOR").is_none() && std::io::stdout().is_terminal(),
@@ -265,18 +322,10 @@ pub const VALUED: [&str; 3] = ["--color", "--max-memory", "--devices"];
 /// The arguments with `adair FILE.air ...` read as `adair run FILE.air ...`:
 /// a first argument (after the global options) naming a program file.
 pub fn with_shorthand(mut args: Vec<std::ffi::OsString>) -> Vec<std::ffi::OsString> {
-    let mut i = 1;
-    while i < args.len() {
+    if let Some(i) = command_at(&args) {
         let a = args[i].to_string_lossy();
-        if VALUED.contains(&a.as_ref()) {
-            i += 2;
-        } else if a.starts_with('-') {
-            i += 1;
-        } else {
-            if a.ends_with(".air") || a.ends_with(".adb") {
-                args.insert(i, "run".into());
-            }
-            break;
+        if a.ends_with(".air") || a.ends_with(".adb") {
+            args.insert(i, "run".into());
         }
     }
     args
@@ -310,7 +359,7 @@ pub fn parse_refuse(s: &str) -> Result<(u64, u8), String> {
 }
 
 // The options of `adair run` (its help text is the variant's).
-#[derive(Args)]
+#[derive(Args, Debug)]
 pub struct RunArgs {
     /// The program (.air or .adb).
     pub file: PathBuf,
@@ -332,7 +381,7 @@ pub struct RunArgs {
 }
 
 // The options of `adair test` (its help text is the variant's).
-#[derive(Args)]
+#[derive(Args, Debug)]
 pub struct TestArgs {
     /// Scripts or directories (default: the current directory); each
     /// script runs once, and no folder is walked twice (a link back to
