@@ -14,7 +14,7 @@ pub enum TypeKind {
     /// Floating point types (Float, `digits` types) and Duration.
     Float,
     /// Enumerations, including Boolean and Character (positions 0..n).
-    Enum(Vec<String>),
+    Enum(Vec<Image>),
     Array {
         index: Vec<TypeId>,
         elem: TypeId,
@@ -404,7 +404,7 @@ impl Types {
     pub fn discriminant_constraint(&self, t: TypeId) -> Option<&[Ex]> {
         self.list[t as usize].discr.as_deref()
     }
-    pub fn enum_lits(&self, t: TypeId) -> Option<&[String]> {
+    pub fn enum_lits(&self, t: TypeId) -> Option<&[Image]> {
         match self.kind(t) {
             TypeKind::Enum(l) => Some(l),
             _ => None,
@@ -491,11 +491,9 @@ impl Types {
         t.add("aggregate", TypeKind::AnyComposite);
         t.add(
             "Boolean",
-            TypeKind::Enum(vec!["FALSE".into(), "TRUE".into()]),
+            TypeKind::Enum(vec![Image::Borrowed("FALSE"), Image::Borrowed("TRUE")]),
         );
-        let chars = (0u32..256)
-            .map(|c| char::from_u32(c).map(char_image).unwrap_or_default())
-            .collect();
+        let chars = CHAR_IMAGES.iter().map(|&i| Image::Borrowed(i)).collect();
         t.add("Character", TypeKind::Enum(chars));
         let int = t.add("Integer", TypeKind::Integer);
         t.list[int as usize].range = Some((Ex::int(INT_FIRST as i64), Ex::int(INT_LAST as i64)));
@@ -531,6 +529,47 @@ impl Types {
     }
 }
 
+/// An enumeration literal's image: the predefined ones are static text.
+pub type Image = std::borrow::Cow<'static, str>;
+
+/// `Character`'s literals (as [`char_image`] shows them), static: they
+/// were 256 strings made at every start (issue 32 item 4, start-up).
+#[rustfmt::skip]
+pub static CHAR_IMAGES: [&str; 256] = [
+    "NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS", "HT", "LF", "VT", "FF", "CR",
+    "SO", "SI", "DLE", "DC1", "DC2", "DC3", "DC4", "NAK", "SYN", "ETB", "CAN", "EM", "SUB", "ESC",
+    "FS", "GS", "RS", "US", "' '", "'!'", "'\"'", "'#'", "'$'", "'%'", "'&'", "'''", "'('", "')'",
+    "'*'", "'+'", "','", "'-'", "'.'", "'/'", "'0'", "'1'", "'2'", "'3'", "'4'", "'5'", "'6'",
+    "'7'", "'8'", "'9'", "':'", "';'", "'<'", "'='", "'>'", "'?'", "'@'", "'A'", "'B'", "'C'",
+    "'D'", "'E'", "'F'", "'G'", "'H'", "'I'", "'J'", "'K'", "'L'", "'M'", "'N'", "'O'", "'P'",
+    "'Q'", "'R'", "'S'", "'T'", "'U'", "'V'", "'W'", "'X'", "'Y'", "'Z'", "'['", "'\\'", "']'",
+    "'^'", "'_'", "'`'", "'a'", "'b'", "'c'", "'d'", "'e'", "'f'", "'g'", "'h'", "'i'", "'j'",
+    "'k'", "'l'", "'m'", "'n'", "'o'", "'p'", "'q'", "'r'", "'s'", "'t'", "'u'", "'v'", "'w'",
+    "'x'", "'y'", "'z'", "'{'", "'|'", "'}'", "'~'", "DEL", "Character'Val(128)",
+    "Character'Val(129)", "Character'Val(130)", "Character'Val(131)", "Character'Val(132)",
+    "Character'Val(133)", "Character'Val(134)", "Character'Val(135)", "Character'Val(136)",
+    "Character'Val(137)", "Character'Val(138)", "Character'Val(139)", "Character'Val(140)",
+    "Character'Val(141)", "Character'Val(142)", "Character'Val(143)", "Character'Val(144)",
+    "Character'Val(145)", "Character'Val(146)", "Character'Val(147)", "Character'Val(148)",
+    "Character'Val(149)", "Character'Val(150)", "Character'Val(151)", "Character'Val(152)",
+    "Character'Val(153)", "Character'Val(154)", "Character'Val(155)", "Character'Val(156)",
+    "Character'Val(157)", "Character'Val(158)", "Character'Val(159)", "'\u{a0}'", "'\u{a1}'",
+    "'\u{a2}'", "'\u{a3}'", "'\u{a4}'", "'\u{a5}'", "'\u{a6}'", "'\u{a7}'", "'\u{a8}'",
+    "'\u{a9}'", "'\u{aa}'", "'\u{ab}'", "'\u{ac}'", "'\u{ad}'", "'\u{ae}'", "'\u{af}'",
+    "'\u{b0}'", "'\u{b1}'", "'\u{b2}'", "'\u{b3}'", "'\u{b4}'", "'\u{b5}'", "'\u{b6}'",
+    "'\u{b7}'", "'\u{b8}'", "'\u{b9}'", "'\u{ba}'", "'\u{bb}'", "'\u{bc}'", "'\u{bd}'",
+    "'\u{be}'", "'\u{bf}'", "'\u{c0}'", "'\u{c1}'", "'\u{c2}'", "'\u{c3}'", "'\u{c4}'",
+    "'\u{c5}'", "'\u{c6}'", "'\u{c7}'", "'\u{c8}'", "'\u{c9}'", "'\u{ca}'", "'\u{cb}'",
+    "'\u{cc}'", "'\u{cd}'", "'\u{ce}'", "'\u{cf}'", "'\u{d0}'", "'\u{d1}'", "'\u{d2}'",
+    "'\u{d3}'", "'\u{d4}'", "'\u{d5}'", "'\u{d6}'", "'\u{d7}'", "'\u{d8}'", "'\u{d9}'",
+    "'\u{da}'", "'\u{db}'", "'\u{dc}'", "'\u{dd}'", "'\u{de}'", "'\u{df}'", "'\u{e0}'",
+    "'\u{e1}'", "'\u{e2}'", "'\u{e3}'", "'\u{e4}'", "'\u{e5}'", "'\u{e6}'", "'\u{e7}'",
+    "'\u{e8}'", "'\u{e9}'", "'\u{ea}'", "'\u{eb}'", "'\u{ec}'", "'\u{ed}'", "'\u{ee}'",
+    "'\u{ef}'", "'\u{f0}'", "'\u{f1}'", "'\u{f2}'", "'\u{f3}'", "'\u{f4}'", "'\u{f5}'",
+    "'\u{f6}'", "'\u{f7}'", "'\u{f8}'", "'\u{f9}'", "'\u{fa}'", "'\u{fb}'", "'\u{fc}'",
+    "'\u{fd}'", "'\u{fe}'", "'\u{ff}'",
+];
+
 /// How GNAT's `Character'Image` shows a character: `'A'`, or the name of a
 /// control character (`NUL`, `LF`, ...).
 pub fn char_image(c: char) -> String {
@@ -547,12 +586,22 @@ pub fn char_image(c: char) -> String {
     } else if (128..160).contains(&n) {
         format!("Character'Val({n})")
     } else {
-        // Built by hand, not by `format!`: the 256 literals of Character
-        // are made at every start (issue 11: start-up).
         let mut s = String::with_capacity(2 + c.len_utf8());
         s.push('\'');
         s.push(c);
         s.push('\'');
         s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// The static literals of `Character` are what `char_image` makes.
+    #[test]
+    fn character_literals_are_their_images() {
+        for (n, image) in super::CHAR_IMAGES.iter().enumerate() {
+            let c = char::from_u32(n as u32).expect("a Latin-1 character");
+            assert_eq!(*image, super::char_image(c), "{n}");
+        }
     }
 }

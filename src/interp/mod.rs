@@ -2123,11 +2123,7 @@ impl Run<'_> {
             }
             AttrOp::ImageEnum(t) => {
                 let lits = self.c.types.enum_lits(t).unwrap_or(&[]);
-                Value::str(
-                    lits.get(a0.int() as usize)
-                        .map(String::as_str)
-                        .unwrap_or("?"),
-                )
+                Value::str(lits.get(a0.int() as usize).map(|l| &**l).unwrap_or("?"))
             }
             AttrOp::ValueInt => match (value::value_int(&a0.text()), self.c.types.modulus(ty)) {
                 // A modular type's values are 0 .. modulus - 1.

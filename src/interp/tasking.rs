@@ -1127,7 +1127,7 @@ fn member_name<E>(
     let (n, family) = name(entries.get(i)?);
     Some(match (index, family) {
         (Some(x), Some(f)) => match types.enum_lits(f.ty) {
-            Some(l) => format!("{n} ({})", l.get(x as usize).map_or("?", |s| s.as_str())),
+            Some(l) => format!("{n} ({})", l.get(x as usize).map_or("?", |s| s)),
             None => format!("{n} ({x})"),
         },
         _ => n.clone(),

@@ -341,11 +341,11 @@ impl Checker {
         }
         match def {
             TypeDef::Enum(lits) => {
-                let images: Vec<String> = lits
+                let images: Vec<crate::check::types::Image> = lits
                     .iter()
                     .map(|l| match l {
-                        ast::EnumLit::Ident(i) => i.name.to_uppercase(),
-                        ast::EnumLit::Char(c, _) => format!("'{c}'"),
+                        ast::EnumLit::Ident(i) => i.name.to_uppercase().into(),
+                        ast::EnumLit::Char(c, _) => format!("'{c}'").into(),
                     })
                     .collect();
                 let n = images.len();

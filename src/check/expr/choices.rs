@@ -68,9 +68,10 @@ impl Checker {
                             let name = self.tables.types.name(t);
                             let lits = self.tables.types.enum_lits(t).map(|l| l.to_vec());
                             let show = |v: i128| match &lits {
-                                Some(ls) if self.tables.types.base(t) != CHARACTER => {
-                                    ls.get(v as usize).cloned().unwrap_or_default()
-                                }
+                                Some(ls) if self.tables.types.base(t) != CHARACTER => ls
+                                    .get(v as usize)
+                                    .map(|l| l.to_string())
+                                    .unwrap_or_default(),
                                 _ => v.to_string(),
                             };
                             self.err(diagnostics::case_choice_outside(
@@ -120,7 +121,7 @@ impl Checker {
                         let lits = self.tables.types.enum_lits(t).map(|l| l.to_vec());
                         let show = |v: i128| match &lits {
                             Some(l) if self.tables.types.base(t) != CHARACTER => {
-                                l.get(v as usize).cloned().unwrap_or_default()
+                                l.get(v as usize).map(|l| l.to_string()).unwrap_or_default()
                             }
                             _ => v.to_string(),
                         };

@@ -708,7 +708,9 @@ impl Checker {
     pub(super) fn family_text(&self, f: Family) -> String {
         let name = self.tables.types.name(f.ty);
         let image = |v: i64| match self.tables.types.enum_lits(f.ty) {
-            Some(l) => l.get(v as usize).cloned().unwrap_or_else(|| v.to_string()),
+            Some(l) => l
+                .get(v as usize)
+                .map_or_else(|| v.to_string(), |l| l.to_string()),
             None => v.to_string(),
         };
         let base = self.tables.types.base(f.ty);
