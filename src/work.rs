@@ -10,6 +10,19 @@ use std::cell::Cell;
 
 thread_local! {
     static TICKS: Cell<u64> = const { Cell::new(0) };
+    static TEXTS: Cell<u64> = const { Cell::new(0) };
+}
+
+/// Counts a text lexed and parsed (a file, a stdlib file, a REPL entry; a
+/// long text, whose lazy parse may fall back to a whole one, may count twice).
+pub fn text_parsed() {
+    TEXTS.with(|t| t.set(t.get().wrapping_add(1)));
+}
+
+/// The texts parsed on this thread since it started: the predefined
+/// library's are read in a parsed form, never parsed (`tests/startup.rs`).
+pub fn texts_parsed() -> u64 {
+    TEXTS.with(Cell::get)
 }
 
 /// Counts one step of work.

@@ -144,7 +144,10 @@ impl Frontend {
         let u = &STDLIB[i];
         let outer = std::mem::replace(&mut self.in_stdlib, true);
         let text: Rc<str> = stdlib_text(u.text).into();
-        let checked = self.check(u.name, text, false, Mode::Run, None, host);
+        // Read in its parsed form (see `syntax::compact`), or parsed if
+        // that form does not fit this adair (the test that keeps it fresh
+        // says so).
+        let checked = self.check_parsed(u.name, text, Some(u.parsed), Mode::Run, host);
         self.in_stdlib = outer;
         if !checked.passes(false) {
             // The embedded library is tested: it checks in a fresh session.
@@ -208,6 +211,34 @@ impl Frontend {
         path: Option<&Path>,
         host: &mut dyn Host,
     ) -> Checked {
+        self.check_with(name, text, script, None, mode, path, host)
+    }
+
+    /// [`Frontend::check`] of a stdlib file, whose syntax tree `parsed`
+    /// holds (in `syntax::compact`'s form) unless it is `None` or does not
+    /// read.
+    fn check_parsed(
+        &mut self,
+        name: &str,
+        text: Rc<str>,
+        parsed: Option<&[u8]>,
+        mode: Mode,
+        host: &mut dyn Host,
+    ) -> Checked {
+        self.check_with(name, text, false, parsed, mode, None, host)
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn check_with(
+        &mut self,
+        name: &str,
+        text: Rc<str>,
+        script: bool,
+        parsed: Option<&[u8]>,
+        mode: Mode,
+        path: Option<&Path>,
+        host: &mut dyn Host,
+    ) -> Checked {
         let id = self.sources.add_shared(name, text.clone());
         let text: &str = &text;
         host.source_added(id, name, text);
@@ -215,7 +246,10 @@ impl Frontend {
         let library = self.in_stdlib || self.in_with_file;
         // A long program's bodies are parsed as they are checked (the
         // stdlib's are short; an editor keeps the whole tree).
-        let (unit, mut diags) = if self.in_stdlib || mode == Mode::Editor {
+        let parsed = parsed.and_then(|p| crate::syntax::compact::decode(p, id));
+        let (unit, mut diags) = if let Some(unit) = parsed {
+            (Some(unit), Vec::new())
+        } else if self.in_stdlib || mode == Mode::Editor {
             crate::syntax::parse_source(text, id)
         } else {
             crate::syntax::parse_source_lazy(text, id)

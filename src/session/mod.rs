@@ -14,6 +14,10 @@ use std::io::Write;
 pub struct StdUnit {
     pub name: &'static str,
     pub text: &'static str,
+    /// Its syntax tree, in `syntax::compact`'s form (`stdlib/parsed/`):
+    /// a program pays for checking the library, not for parsing it
+    /// (issue 32 item 4). `tests/startup.rs` keeps it equal to the text's.
+    pub parsed: &'static [u8],
     pub provides: &'static [&'static str],
 }
 
@@ -27,31 +31,37 @@ pub const STDLIB: &[StdUnit] = &[
     StdUnit {
         name: "stdlib/ada.air",
         text: include_str!("../../stdlib/ada.air"),
+        parsed: include_bytes!("../../stdlib/parsed/ada.bin"),
         provides: &["Ada", "Ada.Text_IO"],
     },
     StdUnit {
         name: "stdlib/text_io_numbers.air",
         text: include_str!("../../stdlib/text_io_numbers.air"),
+        parsed: include_bytes!("../../stdlib/parsed/text_io_numbers.bin"),
         provides: &["Ada.Integer_Text_IO", "Ada.Float_Text_IO"],
     },
     StdUnit {
         name: "stdlib/numerics.air",
         text: include_str!("../../stdlib/numerics.air"),
+        parsed: include_bytes!("../../stdlib/parsed/numerics.bin"),
         provides: &["Ada.Numerics", "Ada.Numerics.Elementary_Functions"],
     },
     StdUnit {
         name: "stdlib/exceptions.air",
         text: include_str!("../../stdlib/exceptions.air"),
+        parsed: include_bytes!("../../stdlib/parsed/exceptions.bin"),
         provides: &["Ada.Exceptions"],
     },
     StdUnit {
         name: "stdlib/calendar.air",
         text: include_str!("../../stdlib/calendar.air"),
+        parsed: include_bytes!("../../stdlib/parsed/calendar.bin"),
         provides: &["Ada.Calendar", "Ada.Real_Time"],
     },
     StdUnit {
         name: "stdlib/adair.air",
         text: include_str!("../../stdlib/adair.air"),
+        parsed: include_bytes!("../../stdlib/parsed/adair.bin"),
         provides: &["AdaIR", "SERIAL_IO"],
     },
 ];

@@ -2,6 +2,7 @@
 //! `F (X)` is still ambiguous (call, index, conversion); the checker decides.
 
 use crate::diag::Span;
+use serde::{Deserialize, Serialize};
 use std::rc::Rc;
 
 /// An identifier. Its two strings are shared by every occurrence of the
@@ -53,12 +54,45 @@ impl Ident {
     }
 }
 
-#[derive(Clone, Debug, PartialEq)]
+/// An identifier is kept (`syntax::compact`) as its spelling and its span;
+/// read back, it is interned as the lexer interns it.
+impl Serialize for Ident {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        (&*self.name, self.span).serialize(s)
+    }
+}
+
+impl<'de> Deserialize<'de> for Ident {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let (name, span) = <(&'de str, Span)>::deserialize(d)?;
+        Ok(Ident::new(name, span))
+    }
+}
+
+/// What an unsupported construct is (a text of the parser's). (A name for
+/// the type: serde would take a `&str` field for one borrowed from its input.)
+pub type What = &'static str;
+
+/// A tree with an unsupported construct is not kept in the compact form
+/// (`syntax::compact`).
+mod unsupported {
+    use serde::{Deserializer, Serializer, de, ser};
+
+    pub fn serialize<S: Serializer>(_: &super::What, _: S) -> Result<S::Ok, S::Error> {
+        Err(ser::Error::custom("an unsupported construct"))
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(_: D) -> Result<super::What, D::Error> {
+        Err(de::Error::custom("an unsupported construct"))
+    }
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CompilationUnit {
     pub items: Vec<TopItem>,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum TopItem {
     With(Vec<Name>, Span),
     Use(Vec<Name>, Span),
@@ -66,13 +100,13 @@ pub enum TopItem {
     Stmt(Stmt),
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Decl {
     pub kind: DeclKind,
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum DeclKind {
     Object {
         names: Vec<Ident>,
@@ -114,7 +148,7 @@ pub enum DeclKind {
     PackageBody(Box<PackageBody>),
     Use(Vec<Name>),
     /// A declaration outside the subset; kept for messages.
-    Unsupported(&'static str),
+    Unsupported(#[serde(with = "unsupported")] What),
     /// A renaming declaration (RM 8.5): `X : T renames Y;`,
     /// `E : exception renames F;`, `package P renames Q;`,
     /// `procedure P (...) renames Q;`.
@@ -123,7 +157,7 @@ pub enum DeclKind {
     /// generic unit and its formals, an instance, a separate body): the
     /// checker reports it once, and uses of these names raise no
     /// follow-on "not declared".
-    UnsupportedNamed(&'static str, Vec<Ident>),
+    UnsupportedNamed(#[serde(with = "unsupported")] What, Vec<Ident>),
     TaskSpec(Box<TaskSpec>),
     TaskBody(Box<TaskBody>),
     /// `for E use at Addr;` (an interrupt entry or a device register).
@@ -145,13 +179,13 @@ pub enum DeclKind {
 /// A renaming declaration: what it declares, and the name after `renames`
 /// (an expression, as parsed: the checker says whether it is a name of the
 /// right kind).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Renaming {
     pub what: Renamed,
     pub renamed: Expr,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Renamed {
     /// `X : T renames Y;` (the subtype mark alone).
     Object { name: Ident, ty: Name },
@@ -163,14 +197,14 @@ pub enum Renamed {
     Subprogram(SubprogramSpec),
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SubtypeInd {
     pub mark: Name,
     pub constraint: Option<Constraint>,
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Constraint {
     Range(Box<Expr>, Box<Expr>),
     /// Index constraint: `String (1 .. 10)`, `Matrix (1 .. 3, 1 .. 4)`;
@@ -183,7 +217,7 @@ pub enum Constraint {
     Discriminants(Vec<Arg>),
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum DiscreteRange {
     Range(Expr, Expr),
     /// A subtype name, possibly with a range constraint, or `T'Range`.
@@ -192,7 +226,7 @@ pub enum DiscreteRange {
     Attr(Expr),
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum TypeDef {
     Enum(Vec<EnumLit>),
     IntRange(Expr, Expr),
@@ -217,16 +251,16 @@ pub enum TypeDef {
     Private {
         limited: bool,
     },
-    Unsupported(&'static str),
+    Unsupported(#[serde(with = "unsupported")] What),
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum EnumLit {
     Ident(Ident),
     Char(char, Span),
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum ArrayIndex {
     Unconstrained(Vec<Name>),
     Constrained(Vec<DiscreteRange>),
@@ -234,14 +268,14 @@ pub enum ArrayIndex {
 
 /// The components of a record (or of one variant): the components, then
 /// the variant part if there is one.
-#[derive(Clone, Debug, PartialEq, Default)]
+#[derive(Clone, Debug, PartialEq, Default, Serialize, Deserialize)]
 pub struct ComponentList {
     pub components: Vec<Component>,
     pub variants: Option<Box<VariantPart>>,
 }
 
 /// `case Kind is when Jaws => ...; when others => null; end case;`
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct VariantPart {
     /// The discriminant that chooses the variant.
     pub discriminant: Ident,
@@ -249,7 +283,7 @@ pub struct VariantPart {
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Component {
     pub names: Vec<Ident>,
     pub ty: SubtypeInd,
@@ -257,14 +291,14 @@ pub struct Component {
     pub span: Span,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Mode {
     In,
     Out,
     InOut,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Param {
     pub names: Vec<Ident>,
     pub mode: Mode,
@@ -273,7 +307,7 @@ pub struct Param {
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Designator {
     Ident(Ident),
     /// `"*"` and other operator symbols.
@@ -301,7 +335,7 @@ impl Designator {
     }
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SubprogramSpec {
     pub name: Designator,
     pub params: Vec<Param>,
@@ -310,7 +344,7 @@ pub struct SubprogramSpec {
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SubprogramBody {
     pub spec: SubprogramSpec,
     pub decls: Vec<Decl>,
@@ -318,7 +352,7 @@ pub struct SubprogramBody {
     pub end_name: Option<(String, Span)>,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct PackageSpec {
     pub name: Name,
     pub decls: Vec<Decl>,
@@ -326,7 +360,7 @@ pub struct PackageSpec {
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct PackageBody {
     pub name: Name,
     pub decls: Vec<Decl>,
@@ -334,7 +368,7 @@ pub struct PackageBody {
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct TaskSpec {
     pub name: Ident,
     /// `task type T (Id : Positive) is`: its discriminant part.
@@ -347,7 +381,7 @@ pub struct TaskSpec {
     pub priority: Option<Expr>,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ProtectedSpec {
     pub name: Ident,
     /// `protected type P (Size : Positive) is`: its discriminant part.
@@ -363,20 +397,20 @@ pub struct ProtectedSpec {
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum ProtOp {
     Sub(SubprogramSpec),
     Entry(EntryDecl),
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ProtectedBody {
     pub name: Ident,
     pub decls: Vec<Decl>,
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct EntryBody {
     pub name: Ident,
     /// `(for I in Range)` of an entry family's body: the index's name and
@@ -389,7 +423,7 @@ pub struct EntryBody {
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct EntryDecl {
     pub name: Ident,
     /// `entry E (Range) (...)`: an entry family and its index range.
@@ -398,7 +432,7 @@ pub struct EntryDecl {
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct TaskBody {
     pub name: Ident,
     pub decls: Vec<Decl>,
@@ -406,7 +440,7 @@ pub struct TaskBody {
 }
 
 /// `begin stmts [exception handlers] end`
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Block {
     /// In a cell so that the checker can take the statements it has
     /// lowered and drop them one by one (a long program's AST and its
@@ -421,7 +455,7 @@ pub struct Block {
     pub lazy: Option<Span>,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Handler {
     pub occurrence: Option<Ident>,
     /// Empty choices vector never happens; `others` is `None` in the list.
@@ -430,13 +464,13 @@ pub struct Handler {
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Stmt {
     pub kind: StmtKind,
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum StmtKind {
     Null,
     Assign(Box<Expr>, Box<Expr>),
@@ -492,14 +526,14 @@ pub enum StmtKind {
     Error,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SelectAlt {
     pub guard: Option<Expr>,
     pub kind: SelectKind,
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum SelectKind {
     Accept(Box<Stmt>, Vec<Stmt>),
     /// `delay [until] D; stmts`
@@ -510,21 +544,21 @@ pub enum SelectKind {
     Else(Vec<Stmt>),
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CaseArm<T> {
     pub choices: Vec<Choice>,
     pub body: T,
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Choice {
     Expr(Expr),
     Range(Expr, Expr),
     Others(Span),
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum LoopScheme {
     Plain,
     While(Expr),
@@ -543,13 +577,13 @@ pub enum LoopScheme {
 
 pub type Name = Expr;
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Expr {
     pub kind: ExprKind,
     pub span: Span,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum BinOp {
     And,
     Or,
@@ -598,7 +632,7 @@ impl BinOp {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum UnOp {
     Neg,
     Plus,
@@ -617,7 +651,7 @@ impl UnOp {
     }
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Assoc {
     /// Empty for positional; several for `A | B => X`.
     pub choices: Vec<Choice>,
@@ -626,7 +660,7 @@ pub struct Assoc {
     pub span: Span,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum ExprKind {
     Int(crate::syntax::token::IntLit),
     Real(f64),
@@ -668,7 +702,7 @@ pub enum ExprKind {
     Error,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Arg {
     pub name: Option<Ident>,
     pub value: Expr,

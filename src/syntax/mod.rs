@@ -1,6 +1,7 @@
 //! Syntax: tokens, lexer, AST and parser. Knows nothing of robots or types.
 
 pub mod ast;
+pub mod compact;
 pub mod diagnostics;
 pub mod lexer;
 pub mod parser;
@@ -11,6 +12,7 @@ use crate::diag::{Diagnostic, FileId, Offsets as _, Span};
 /// Lexes and parses one source. Returns the AST (if the parser got through)
 /// and all lexical and syntax diagnostics.
 pub fn parse_source(src: &str, file: FileId) -> (Option<ast::CompilationUnit>, Vec<Diagnostic>) {
+    crate::work::text_parsed();
     let (tokens, mut diags) = lexer::lex(src, file);
     let (unit, mut pd) = parser::parse(&tokens, file, src.len());
     // Name the line and column of the `if`/`case`/`loop` an `end` left open.
@@ -54,6 +56,7 @@ pub fn parse_source_lazy(
     if src.len() < LAZY_FROM {
         return parse_source(src, file);
     }
+    crate::work::text_parsed();
     let unit = skeleton(src, file).and_then(|(tokens, long)| {
         let (unit, diags) = parser::parse_with(&tokens, file, src.len(), true);
         drop(tokens);

@@ -178,7 +178,7 @@ impl Kw {
 /// The value of an integer literal: an `i128` kept in two 8-byte halves,
 /// so that it does not raise the alignment (and size) of every token and
 /// expression to 16 bytes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub struct IntLit([u64; 2]);
 
 impl IntLit {
