@@ -455,6 +455,8 @@ mod tests {
             "adair run p.adb --record r.txt --plot p.svg --view v.html --view-port 8080 --no-open",
             "adair run p.adb --view --robot-file r.toml",
             "adair run -- -p.adb",
+            "adair run robots/p.adb",
+            "adair run -",
         ] {
             let quick = Cli::parse_run(&args(line)).unwrap_or_else(|| panic!("{line}"));
             let whole = Cli::try_parse_from(args(line)).unwrap_or_else(|e| panic!("{line}: {e}"));
@@ -468,6 +470,7 @@ mod tests {
             "adair run",
             "adair run --help",
             "adair run p.adb --bogus",
+            "adair run -p.adb",
             "adair run p.adb --rehearse",
             "adair --version run p.adb",
             "adair check p.adb",

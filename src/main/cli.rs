@@ -59,6 +59,12 @@ impl Cli {
         if args[command_at(args)?] != "run" {
             return None;
         }
+        if let [_, _, file] = args
+            && !file.is_empty()
+            && !file.to_string_lossy().starts_with('-')
+        {
+            return Some(Cli::plain_run(file.into()));
+        }
         let grammar = Globals::augment_args(clap::Command::new("adair"))
             .subcommand(RunArgs::augment_args(clap::Command::new("run")));
         let m = grammar.try_get_matches_from(args).ok()?;
@@ -68,6 +74,45 @@ impl Cli {
             globals,
             command: Some(Command::Run(run)),
         })
+    }
+}
+
+impl Cli {
+    /// `adair run FILE` without options (the usual command), as clap reads
+    /// it: even the small grammar of [`Cli::parse_run`] cost 150k
+    /// instructions to build and run. The defaults are the grammar's
+    /// (`the_run_parser_agrees_with_the_whole_grammar` compares them).
+    fn plain_run(file: PathBuf) -> Cli {
+        Cli {
+            globals: Globals {
+                color: "auto".into(),
+                max_memory: None,
+                devices: None,
+            },
+            command: Some(Command::Run(RunArgs {
+                file,
+                robot: RobotOpts {
+                    robot: "rv-m1".into(),
+                    robot_file: None,
+                    trace: false,
+                    realtime: false,
+                    serial: SerialOpts {
+                        port: None,
+                        baud: 9600,
+                        serial_timeout: 2.0,
+                    },
+                    rehearse: false,
+                },
+                record: None,
+                plot: None,
+                view: ViewOpts {
+                    view: None,
+                    view_port: 0,
+                    no_open: false,
+                },
+                strict: false,
+            })),
+        }
     }
 }
 
