@@ -19,8 +19,10 @@ pub struct Ident {
 
 thread_local! {
     /// Spelling -> (spelling, lower case), shared by the idents of a thread.
+    /// (Sized for a short program's names and the library's: growing from
+    /// empty rehashed it five times at every start.)
     static NAMES: std::cell::RefCell<std::collections::HashMap<Rc<str>, Rc<str>>> =
-        Default::default();
+        std::cell::RefCell::new(std::collections::HashMap::with_capacity(512));
 }
 
 /// The shared spelling and lower-case key of a name.
@@ -30,11 +32,19 @@ fn interned(name: &str) -> (Rc<str>, Rc<str>) {
         None => {
             let n: Rc<str> = name.into();
             // Ada identifiers are case-insensitive in every script.
-            let lower = name.to_lowercase();
-            let k: Rc<str> = match names.get_key_value(lower.as_str()) {
-                Some((k, _)) => k.clone(),
-                None if lower == name => n.clone(),
-                None => lower.into(),
+            let k: Rc<str> = if name
+                .bytes()
+                .all(|b| b.is_ascii() && !b.is_ascii_uppercase())
+            {
+                // Its own key, which is not interned yet (it missed).
+                n.clone()
+            } else {
+                let lower = name.to_lowercase();
+                match names.get_key_value(lower.as_str()) {
+                    Some((k, _)) => k.clone(),
+                    None if lower == name => n.clone(),
+                    None => lower.into(),
+                }
             };
             names.insert(n.clone(), k.clone());
             (n, k)
