@@ -347,14 +347,7 @@ impl<'a> Run<'a> {
                 Op::FloatBin(o, d, a, b) => {
                     let x = self.m.stack[ix!(*a)].real();
                     let yv = &self.m.stack[ix!(*b)];
-                    // The four operations of Float inline, the others
-                    // (Duration's, `**`) through the shared function.
-                    let v = match o {
-                        FloatOp::Add => x + yv.real(),
-                        FloatOp::Sub => x - yv.real(),
-                        FloatOp::Mul => x * yv.real(),
-                        _ => value::float_op(*o, x, yv),
-                    };
+                    let v = value::float_op(*o, x, yv);
                     self.put_real_ix(ix!(*d), v);
                     continue;
                 }

@@ -222,9 +222,7 @@ impl<'r> Compiler<'r> {
                 self.caching = false;
                 self.ops.push(Op::CacheFill(at as u32, dst));
                 let end = self.here();
-                if let Op::Cached(c) = &mut self.ops[at] {
-                    c.end = end;
-                }
+                self.patch(at, end);
             }
             ExKind::ArrayAgg(agg) => self.array_agg(agg, dst, span),
             ExKind::RecordAgg(fields) => self.record_agg(fields, e.ty, dst, span),

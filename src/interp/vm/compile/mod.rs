@@ -170,6 +170,7 @@ impl<'r> Compiler<'r> {
             | Op::ForStart(.., t)
             | Op::CmpKJumpNot(.., t)
             | Op::CmpJumpNot(.., t) => *t = target,
+            Op::Cached(c) => c.end = target,
             _ => unreachable!("only jumps are patched"),
         }
     }
