@@ -85,6 +85,31 @@ impl Stack {
         self.len = n;
     }
 
+    /// Opens a frame of `size` slots on top whose first slot is the
+    /// integer `n` (a call's one argument), slots `1 .. own` `Undef` and
+    /// the others (temporaries) whatever scalar they held: what
+    /// [`Self::push_int`] then [`Self::grow_to_clearing`] make, in one
+    /// pass over the frame.
+    #[inline(always)]
+    pub fn open_frame_int(&mut self, n: i64, own: usize, size: usize) {
+        let base = self.len;
+        let top = base + size.max(1);
+        if top > self.data.len() {
+            self.data.resize(top, Value::Undef);
+        }
+        let frame = &mut self.data[base..top];
+        // Slots at or above the top hold scalars (the invariant): nothing
+        // to drop, so plain stores.
+        std::mem::forget(std::mem::replace(&mut frame[0], Value::Int(n)));
+        if own > 1 {
+            for v in &mut frame[1..own.min(size)] {
+                debug_assert!(scalar(v));
+                std::mem::forget(std::mem::replace(v, Value::Undef));
+            }
+        }
+        self.len = top;
+    }
+
     #[inline]
     pub fn push(&mut self, x: Value) {
         if self.len < self.data.len() {

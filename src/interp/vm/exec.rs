@@ -40,7 +40,10 @@ impl<'a> Run<'a> {
         let (x, y) = (&self.m.stack[a], &self.m.stack[b]);
         match (x, y) {
             (Value::Int(p), Value::Int(q)) => p.cmp(q),
-            _ => x.compare(y),
+            (Value::Real(p), Value::Real(q)) => {
+                p.partial_cmp(q).unwrap_or(std::cmp::Ordering::Equal)
+            }
+            _ => compare_slow(x, y),
         }
     }
 
@@ -49,7 +52,7 @@ impl<'a> Run<'a> {
     pub(super) fn order_k(&self, a: usize, k: i64) -> std::cmp::Ordering {
         match &self.m.stack[a] {
             Value::Int(x) => x.cmp(&k),
-            other => other.compare(&Value::Int(k)),
+            other => compare_slow(other, &Value::Int(k)),
         }
     }
 
@@ -58,7 +61,17 @@ impl<'a> Run<'a> {
     pub(super) fn int_ix(&self, i: usize) -> i64 {
         match &self.m.stack[i] {
             Value::Int(i) => *i,
-            other => other.int(),
+            other => int_slow(other),
+        }
+    }
+
+    /// The real in stack slot `i` (an integer converted, as
+    /// `Value::real`).
+    #[inline(always)]
+    pub(super) fn real_ix(&self, i: usize) -> f64 {
+        match &self.m.stack[i] {
+            Value::Real(x) => *x,
+            other => real_slow(other),
         }
     }
 
@@ -84,9 +97,14 @@ impl<'a> Run<'a> {
         y: i64,
         span: impl FnOnce() -> Span,
     ) -> R<i64> {
+        // (The same values as `int_op`'s; anything else, and every
+        // result outside Integer's range, goes there for its checks.)
         let quick = match o {
-            IntOp::Add => Some(x + y),
-            IntOp::Sub => Some(x - y),
+            IntOp::Add => x.checked_add(y),
+            IntOp::Sub => x.checked_sub(y),
+            IntOp::Mul => x.checked_mul(y),
+            IntOp::Mod if y > 0 => Some(x.rem_euclid(y)),
+            IntOp::Rem if y > 0 => Some(x % y),
             _ => None,
         };
         match quick {
@@ -180,6 +198,18 @@ impl<'a> Run<'a> {
                 continue;
             }};
         }
+        // After a loop's step (a `for` loop's start and step, a jump):
+        // the inner loop runs what it can from `pc` on, often the whole
+        // loop; the instruction it stops at is this loop's (see
+        // `fast.rs`). Only there: for one instruction alone, the call
+        // would cost more than it saves.
+        macro_rules! fast {
+            () => {{
+                let stop = self.m.interrupted.as_deref();
+                let stack = self.m.stack.as_mut_slice();
+                pc = fast::run(&cur.ops, pc as usize, lvl, fp, stack, stop) as u32;
+            }};
+        }
         macro_rules! reload {
             () => {
                 lvl = cur.level;
@@ -192,42 +222,51 @@ impl<'a> Run<'a> {
             ($d:ident, $arr:ident, $idx:ident, $n:expr, $span:ident) => {{
                 // Scalars are copied out as such: a `Value` moved through
                 // the native stack costs a drop call and a store stall.
+                // The compact forms are tested one by one (a `match` on
+                // the form was a jump table: an indirect branch).
                 let got = match &self.m.stack[ix!(*$arr)] {
                     Value::Arr(a) => match a.offset(&$idx[..$n]) {
-                        Some(o) => match &a.data {
-                            value::Elems::Reals(r) => Ok(Err(r[o])),
-                            value::Elems::Bytes(b) => Ok(Ok(Value::Int(b[o] as i64))),
-                            value::Elems::Ints(v) => Ok(Ok(Value::Int(v[o]))),
-                            value::Elems::Vals(vs) => match &vs[o] {
-                                Value::Real(x) => Ok(Err(*x)),
-                                v => Ok(Ok(v.clone())),
-                            },
-                        },
-                        None => Err("index check failed"),
+                        Some(o) => {
+                            if let value::Elems::Reals(r) = &a.data {
+                                Got::Real(r[o])
+                            } else if let value::Elems::Ints(v) = &a.data {
+                                Got::Int(v[o])
+                            } else if let value::Elems::Bytes(b) = &a.data {
+                                Got::Int(b[o] as i64)
+                            } else {
+                                elem_slow(&a.data, o)
+                            }
+                        }
+                        None => Got::Fail("index check failed"),
                     },
-                    _ => Err("access check failed"),
+                    _ => Got::Fail("access check failed"),
                 };
                 match got {
-                    Ok(Err(x)) => {
+                    Got::Real(x) => {
                         self.put_real_ix(ix!(*$d), x);
                         continue;
                     }
-                    Ok(Ok(v)) => {
+                    Got::Int(x) => {
+                        self.put_int_ix(ix!(*$d), x);
+                        continue;
+                    }
+                    Got::Val(v) => {
                         self.put_ix(ix!(*$d), v);
                         continue;
                     }
-                    Err(what) => Err(self.check_failed(what, *$span)),
+                    Got::Fail(what) => Err(self.check_failed(what, *$span)),
                 }
             }};
         }
         macro_rules! store_index {
             ($arr:ident, $idx:ident, $n:expr, $src:ident, $span:ident) => {{
                 let i = ix!(*$src);
-                // A real goes as such (see `Index`), anything else is
+                // A scalar goes as such (see `Index`), anything else is
                 // taken from its temporary.
                 let val = match &mut self.m.stack[i] {
-                    Value::Real(x) => Err(*x),
-                    v => Ok(std::mem::take(v)),
+                    Value::Real(x) => Got::Real(*x),
+                    Value::Int(x) => Got::Int(*x),
+                    v => Got::Val(std::mem::take(v)),
                 };
                 let slot = ix!(*$arr);
                 let r = match &mut self.m.stack[slot] {
@@ -235,17 +274,17 @@ impl<'a> Run<'a> {
                         let a = Rc::make_mut(a);
                         match a.offset(&$idx[..$n]) {
                             Some(o) => {
+                                // The compact forms one by one (see
+                                // `load_index`).
                                 match (val, &mut a.data) {
-                                    (Err(x), value::Elems::Reals(r)) => r[o] = x,
-                                    (Err(x), value::Elems::Vals(vs)) => match &mut vs[o] {
-                                        Value::Real(y) => *y = x,
-                                        s => value::overwrite(s, Value::Real(x)),
-                                    },
-                                    (Ok(v), value::Elems::Vals(vs)) => set(&mut vs[o], v),
-                                    // A compact array of another form: it
-                                    // widens if it must.
-                                    (Err(x), d) => d.set(o, Value::Real(x)),
-                                    (Ok(v), d) => d.set(o, v),
+                                    (Got::Real(x), value::Elems::Reals(r)) => r[o] = x,
+                                    (Got::Int(x), value::Elems::Ints(v)) => v[o] = x,
+                                    (Got::Int(x), value::Elems::Bytes(b))
+                                        if (0..=255).contains(&x) =>
+                                    {
+                                        b[o] = x as u8
+                                    }
+                                    (val, d) => store_slow(d, o, val),
                                 }
                                 Ok(())
                             }
@@ -348,6 +387,28 @@ impl<'a> Run<'a> {
                     let x = self.m.stack[ix!(*a)].real();
                     let yv = &self.m.stack[ix!(*b)];
                     let v = value::float_op(*o, x, yv);
+                    self.put_real_ix(ix!(*d), v);
+                    continue;
+                }
+                // `FloatBin` of the four plain operations, one instruction
+                // each (no second dispatch on the operator).
+                Op::RealAdd(d, a, b) => {
+                    let v = self.real_ix(ix!(*a)) + self.real_ix(ix!(*b));
+                    self.put_real_ix(ix!(*d), v);
+                    continue;
+                }
+                Op::RealSub(d, a, b) => {
+                    let v = self.real_ix(ix!(*a)) - self.real_ix(ix!(*b));
+                    self.put_real_ix(ix!(*d), v);
+                    continue;
+                }
+                Op::RealMul(d, a, b) => {
+                    let v = self.real_ix(ix!(*a)) * self.real_ix(ix!(*b));
+                    self.put_real_ix(ix!(*d), v);
+                    continue;
+                }
+                Op::RealDiv(d, a, b) => {
+                    let v = self.real_ix(ix!(*a)) / self.real_ix(ix!(*b));
                     self.put_real_ix(ix!(*d), v);
                     continue;
                 }
@@ -574,6 +635,7 @@ impl<'a> Run<'a> {
                 Op::Reraise(span) => Err(self.reraise(*span)),
                 Op::Jump(t) => {
                     pc = *t;
+                    fast!();
                     continue;
                 }
                 Op::JumpIfNot(c, t) => {
@@ -625,6 +687,7 @@ impl<'a> Run<'a> {
                     } else {
                         self.put_int_ix(ix!(*v), if *rev { hi } else { lo });
                     }
+                    fast!();
                     continue;
                 }
                 Op::ForNext(v, l, h, rev, body, span) => {
@@ -640,7 +703,10 @@ impl<'a> Run<'a> {
                     self.put_int_ix(ix!(*v), if *rev { i - 1 } else { i + 1 });
                     pc = *body;
                     match self.poll(*span) {
-                        Ok(()) => continue,
+                        Ok(()) => {
+                            fast!();
+                            continue;
+                        }
                         r => r,
                     }
                 }
@@ -697,7 +763,11 @@ impl<'a> Run<'a> {
                 } => {
                     let x = self.int_ix(ix!(*a));
                     // (Before the call: it changes the display.)
-                    let dst = if *d == NO_VAR { NO_DST } else { ix!(*d) };
+                    let dst = if d.level == NO_VAR.level {
+                        NO_DST
+                    } else {
+                        ix!(*d)
+                    };
                     let at = || Span {
                         start: *start,
                         end: *end,
@@ -921,7 +991,17 @@ impl<'a> Run<'a> {
                     r.map(|v| self.put_ix(ix!(a.dst), v))
                 }
                 Op::Record(r) => {
-                    let fields = r.fields.iter().map(|v| self.take_slot(*v)).collect();
+                    let mut fields = value::Fields::with_capacity(r.fields.len());
+                    for v in r.fields.iter() {
+                        let i = ix!(*v);
+                        fields.push(std::mem::take(&mut self.m.stack[i]));
+                    }
+                    if r.plain {
+                        // No discriminants: nothing to check or shape (as
+                        // `record_agg` finds, without the type's lookup).
+                        self.put_ix(ix!(r.dst), Value::Rec(Rc::new(fields)));
+                        continue;
+                    }
                     self.record_agg(r.ty, fields, r.span)
                         .map(|v| self.put_ix(ix!(r.dst), v))
                 }
@@ -1148,15 +1228,88 @@ pub(super) fn set(slot: &mut Value, v: Value) {
     }
 }
 
-/// Whether a comparison holds for operands ordered `ord`.
-pub(super) fn holds(o: CmpOp, ord: std::cmp::Ordering) -> bool {
-    use std::cmp::Ordering::*;
-    match o {
-        CmpOp::Lt => ord == Less,
-        CmpOp::Le => ord != Greater,
-        CmpOp::Gt => ord == Greater,
-        CmpOp::Ge => ord != Less,
-        CmpOp::Eq => ord == Equal,
-        CmpOp::Ne => ord != Equal,
+/// An element read by an indexing instruction.
+enum Got {
+    Real(f64),
+    Int(i64),
+    Val(Value),
+    Fail(&'static str),
+}
+
+/// Element `o` of an array held as general values.
+#[inline(never)]
+fn elem_slow(data: &value::Elems, o: usize) -> Got {
+    match data {
+        value::Elems::Reals(r) => Got::Real(r[o]),
+        value::Elems::Ints(v) => Got::Int(v[o]),
+        value::Elems::Bytes(b) => Got::Int(b[o] as i64),
+        value::Elems::Vals(vs) => match &vs[o] {
+            Value::Real(x) => Got::Real(*x),
+            Value::Int(x) => Got::Int(*x),
+            v => Got::Val(v.clone()),
+        },
     }
+}
+
+/// Element `o` of an array := `val` (a scalar or a value taken from its
+/// temporary), for the forms `store_index` does not write inline: a
+/// compact array of another form widens if it must.
+#[inline(never)]
+fn store_slow(d: &mut value::Elems, o: usize, val: Got) {
+    let v = match val {
+        Got::Real(x) => Value::Real(x),
+        Got::Int(x) => Value::Int(x),
+        Got::Val(v) => v,
+        Got::Fail(_) => return,
+    };
+    match d {
+        value::Elems::Vals(vs) => set(&mut vs[o], v),
+        d => d.set(o, v),
+    }
+}
+
+/// Whether a comparison holds for operands ordered `ord`: a bit of the
+/// comparison's mask (bit 0 Less, 1 Equal, 2 Greater), without the jump
+/// table a `match` on the operator became (an indirect branch per test).
+#[inline(always)]
+pub(super) fn holds(o: CmpOp, ord: std::cmp::Ordering) -> bool {
+    const MASKS: [u8; 6] = [
+        0b010, // Eq
+        0b101, // Ne
+        0b001, // Lt
+        0b011, // Le
+        0b100, // Gt
+        0b110, // Ge
+    ];
+    let i = match o {
+        CmpOp::Eq => 0,
+        CmpOp::Ne => 1,
+        CmpOp::Lt => 2,
+        CmpOp::Le => 3,
+        CmpOp::Gt => 4,
+        CmpOp::Ge => 5,
+    };
+    (MASKS[i] >> (ord as i8 + 1)) & 1 != 0
+}
+
+/// `Value::int` of a slot that holds no `Int` (rare: kept out of line so
+/// that an integer operand is one tag test).
+#[cold]
+#[inline(never)]
+fn int_slow(v: &Value) -> i64 {
+    v.int()
+}
+
+/// `Value::real` of a slot that holds no `Real`.
+#[cold]
+#[inline(never)]
+fn real_slow(v: &Value) -> f64 {
+    v.real()
+}
+
+/// `Value::compare` of operands that are not both integers.
+#[cold]
+#[inline(never)]
+fn compare_slow(x: &Value, y: &Value) -> std::cmp::Ordering {
+    x.compare(y)
 }

@@ -124,7 +124,6 @@ impl<'a> Run<'a> {
     ) -> R<Entered<'c>> {
         self.call_guard(span)?;
         let code = self.code_of(cache, f);
-        let level = code.level as usize;
         let base = self.m.stack.len();
         // The arguments go straight into the new frame; the display is
         // still the caller's while they are read (an operand of the
@@ -132,8 +131,10 @@ impl<'a> Run<'a> {
         let ops = match args {
             Args::Slots(ops) => ops,
             Args::Int(n) => {
-                self.m.stack.push_int(n);
-                &[]
+                // The one argument and the frame in one step.
+                let own = (code.frame - code.temps) as usize;
+                self.m.stack.open_frame_int(n, own, code.frame as usize);
+                return Ok(self.enter_display(code, base));
             }
         };
         for v in ops.iter() {
@@ -158,13 +159,20 @@ impl<'a> Run<'a> {
         let own = (code.frame - code.temps) as usize;
         let top = base + code.frame as usize;
         self.m.stack.grow_to_clearing(base + own, top);
+        Ok(self.enter_display(code, base))
+    }
+
+    /// The display entry of a called frame that begins at `base`, and the
+    /// call's depth: what [`Self::push_call`] does once the frame is there.
+    #[inline(always)]
+    fn enter_display<'c>(&mut self, code: &'c Code, base: usize) -> Entered<'c> {
+        let level = code.level as usize;
         if self.m.display.len() <= level {
             self.m.display.resize(level + 1, 0);
         }
-        let saved = self.m.display[level];
-        self.m.display[level] = base;
+        let saved = std::mem::replace(&mut self.m.display[level], base);
         self.m.depth += 1;
-        Ok((code, base, saved))
+        (code, base, saved)
     }
 
     /// Live registers from saved ones: each frame's code compiled (or

@@ -24,6 +24,8 @@
 //! - `frames.rs`: call frames and the saved registers of a waiting thread;
 //! - `run.rs`: compiling on first call and starting a run;
 //! - `exec.rs`: the execution loop and its slot helpers;
+//! - `fast.rs`: its inner loop, for runs of instructions over the running
+//!   frame's scalars and arrays of scalars;
 //! - `blocking.rs`: the instructions that block or switch threads;
 //! - `tests.rs`: unit tests of the compiler (whole runs are in tests/engine.rs).
 
@@ -34,6 +36,7 @@ mod blocking;
 mod code;
 mod compile;
 mod exec;
+mod fast;
 mod frames;
 mod ops;
 mod run;

@@ -18,6 +18,11 @@ pub(super) enum Op {
     /// (`ir::modular`, which the walker calls too).
     ModBin(ModOp, Var, Var, Var, u32, Span),
     FloatBin(FloatOp, Var, Var, Var),
+    /// `FloatBin` of `+`, `-`, `*`, `/` (IEEE, as `value::float_op`).
+    RealAdd(Var, Var, Var),
+    RealSub(Var, Var, Var),
+    RealMul(Var, Var, Var),
+    RealDiv(Var, Var, Var),
     ToReal(Var, Var),
     Cmp(CmpOp, Var, Var, Var),
     /// `Cmp` of an integer with an integer literal.
@@ -379,6 +384,8 @@ pub(super) struct ArrayAggOp {
 pub(super) struct RecordOp {
     pub(super) dst: Var,
     pub(super) ty: TypeId,
+    /// The type has no discriminants: the components are the record.
+    pub(super) plain: bool,
     pub(super) fields: Box<[Var]>,
     pub(super) span: Span,
 }
@@ -538,6 +545,10 @@ pub(super) fn relocate(op: &mut Op, by: u32) {
         | Op::IntNeg(..)
         | Op::ModBin(..)
         | Op::FloatBin(..)
+        | Op::RealAdd(..)
+        | Op::RealSub(..)
+        | Op::RealMul(..)
+        | Op::RealDiv(..)
         | Op::ToReal(..)
         | Op::Cmp(..)
         | Op::CmpK(..)

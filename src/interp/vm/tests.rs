@@ -259,3 +259,81 @@ mod compiled_tests {
         assert!(left.is_empty(), "{left:#?}");
     }
 }
+
+#[cfg(test)]
+mod fast_tests {
+    use super::super::{Op, fast};
+    use crate::check::ir::{IntOp, Var};
+    use crate::interp::value::{Array, Elems, Value};
+    use std::rc::Rc;
+    use std::sync::atomic::AtomicBool;
+
+    fn v(slot: u32) -> Var {
+        Var { level: 1, slot }
+    }
+
+    /// The inner loop (`fast.rs`) runs what it can finish and stops
+    /// *before* anything else, with nothing of it done: an operation that
+    /// overflows, an operand of another frame, an index out of range, a
+    /// loop's step while the user's stop is set. The big loop then
+    /// executes that instruction (and raises).
+    #[test]
+    fn the_inner_loop_stops_before_what_it_cannot_finish() {
+        let span = crate::diag::span(0, 0, 0);
+        let ops = vec![
+            Op::Int(v(0), 7),
+            Op::IntBinK(IntOp::Add, v(1), v(0), 5, span),
+            Op::IntBinK(IntOp::Mul, v(2), v(1), i32::MAX as i64, span),
+        ];
+        let mut stack = vec![Value::Undef; 4];
+        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, None), 2);
+        assert_eq!(stack[1], Value::Int(12));
+        assert_eq!(stack[2], Value::Undef);
+        // `mod` of a negative divisor is the big loop's.
+        let ops = vec![Op::IntBinK(IntOp::Mod, v(2), v(1), -5, span)];
+        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, None), 0);
+        let ops = vec![Op::IntBinK(IntOp::Mod, v(2), v(0), 5, span)];
+        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, None), 1);
+        assert_eq!(stack[2], Value::Int(2));
+        // An operand of an enclosing frame.
+        let ops = vec![Op::Move(v(3), Var { level: 0, slot: 0 })];
+        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, None), 0);
+        assert_eq!(stack[3], Value::Undef);
+        // A frame that begins further up the stack.
+        let ops = vec![Op::Move(v(1), v(0))];
+        assert_eq!(fast::run(&ops, 0, 1, 2, &mut stack, None), 1);
+        assert_eq!(stack[3], Value::Int(2));
+        // Elements: in range, then out of range (nothing written).
+        let arr = Array::vector(1, Elems::Reals(vec![0.5, 1.5]));
+        stack[3] = Value::Arr(Rc::new(arr));
+        stack[0] = Value::Int(2);
+        let ops = vec![
+            Op::Index1(v(2), v(3), v(0), span),
+            Op::StoreIndex1(v(3), v(1), v(2), span),
+        ];
+        stack[1] = Value::Int(3);
+        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, None), 1);
+        assert_eq!(stack[2], Value::Real(1.5));
+        stack[1] = Value::Int(1);
+        assert_eq!(fast::run(&ops, 1, 1, 0, &mut stack, None), 2);
+        let Value::Arr(a) = &stack[3] else { panic!() };
+        assert_eq!(a.data, Elems::Reals(vec![1.5, 1.5]));
+        // A loop's step while the user's stop is set.
+        let stop = AtomicBool::new(true);
+        let ops = vec![
+            Op::Int(v(0), 1),
+            Op::Int(v(1), 3),
+            Op::ForNext(v(0), v(0), v(1), false, 0, span),
+        ];
+        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, Some(&stop)), 2);
+        assert_eq!(stack[0], Value::Int(1));
+        let go = AtomicBool::new(false);
+        let ops = vec![
+            Op::Int(v(1), 3),
+            Op::ForNext(v(0), v(0), v(1), false, 1, span),
+        ];
+        stack[0] = Value::Int(1);
+        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, Some(&go)), 2);
+        assert_eq!(stack[0], Value::Int(3));
+    }
+}

@@ -133,6 +133,7 @@ impl<'r> Compiler<'r> {
         self.ops.push(Op::Record(Box::new(RecordOp {
             dst,
             ty,
+            plain: nd == 0,
             fields: vars.into(),
             span,
         })));

@@ -84,7 +84,13 @@ impl<'r> Compiler<'r> {
             ExKind::FloatBin(op, a, b) => {
                 let x = self.left(a, b);
                 let y = self.expr(b);
-                self.ops.push(Op::FloatBin(*op, dst, x, y));
+                self.ops.push(match op {
+                    FloatOp::Add => Op::RealAdd(dst, x, y),
+                    FloatOp::Sub => Op::RealSub(dst, x, y),
+                    FloatOp::Mul => Op::RealMul(dst, x, y),
+                    FloatOp::Div => Op::RealDiv(dst, x, y),
+                    _ => Op::FloatBin(*op, dst, x, y),
+                });
             }
             ExKind::IntToFloat(a) => {
                 let x = self.expr(a);
