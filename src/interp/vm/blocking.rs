@@ -273,7 +273,7 @@ impl<'a> Run<'a> {
 
     /// The exception a server or the scheduler gave the caller, placed at
     /// the call when it has no place.
-    fn caller_error(&self, mut o: Box<Occurrence>, span: Span) -> Flow {
+    pub(super) fn caller_error(&self, mut o: Box<Occurrence>, span: Span) -> Flow {
         if o.span.start == 0 && o.span.end == 0 {
             o.span = span;
             o.message = format!("{} {}", self.m.location(span), o.message);
@@ -282,8 +282,15 @@ impl<'a> Run<'a> {
     }
 
     /// Whether the barrier of queue `q` of a protected object of type `k`
-    /// is open; `obj`: the object as an argument.
-    pub(super) fn barrier_open(&mut self, k: u32, q: u32, obj: &Arg, span: Span) -> R<bool> {
+    /// is open; `obj`: the object (its barrier functions' last argument).
+    pub(super) fn barrier_open(
+        &mut self,
+        cache: &mut Codes<'_>,
+        k: u32,
+        q: u32,
+        obj: &Value,
+        span: Span,
+    ) -> R<bool> {
         let def = &self.c.prots[k as usize];
         let Some((e, index)) = def.member(q) else {
             return Ok(false);
@@ -292,34 +299,23 @@ impl<'a> Run<'a> {
         let Some(b) = entry.barrier else {
             return Ok(false);
         };
-        match (index, entry.family) {
-            (Some(i), Some(f)) => {
-                let x = Arg {
-                    mode: Mode::In,
-                    value: Ex {
-                        kind: ExKind::Int(i),
-                        ty: f.ty,
-                        span: obj.value.span,
-                    },
-                    back_check: None,
-                };
-                let args = [x, obj.clone()];
-                Ok(self.call(b, &args, span)?.is_some_and(|v| v.int() != 0))
-            }
-            _ => Ok(self
-                .call(b, std::slice::from_ref(obj), span)?
-                .is_some_and(|v| v.int() != 0)),
-        }
+        let index = match (index, entry.family) {
+            (Some(i), Some(_)) => Some(Value::Int(i)),
+            _ => None,
+        };
+        let args = index.into_iter().chain([obj.clone()]);
+        Ok(self
+            .call_nested(cache, b, args, span)?
+            .is_some_and(|v| v.int() != 0))
     }
 
-    pub(super) fn op_prot_entry(&mut self, ec: &EntryOp) -> R<ProtStep> {
+    pub(super) fn op_prot_entry(&mut self, cache: &mut Codes<'_>, ec: &EntryOp) -> R<ProtStep> {
         if ec.timed.is_some() || ec.conditional {
             // A `requeue ... with abort` of its body keeps its timeout.
             self.tasking_on();
         }
         let active = self.m.sched.active();
         let me = self.m.sched.cur;
-        let obj_arg = ec.barrier_args.last().expect("the object");
         if active {
             self.rerun();
             if std::mem::take(&mut self.m.sched.threads[me].timed_out) {
@@ -328,7 +324,7 @@ impl<'a> Run<'a> {
                 // a barrier that reads the entry's 'Count may open now.
                 let obj = self.m.stack[self.sl(ec.target)].clone();
                 let pid = Self::prot_id(&obj);
-                if let Some(w) = self.first_open_call(pid, obj_arg, ec.span)? {
+                if let Some(w) = self.first_open_call(cache, pid, &obj, ec.span)? {
                     self.m.sched.threads[w].granted = true;
                     self.m.sched.make_ready(w);
                 }
@@ -359,7 +355,7 @@ impl<'a> Run<'a> {
             .prots
             .get(pid)
             .is_some_and(|p| !p.queues[q as usize].is_empty());
-        if !queued && self.barrier_open(ec.kind, q, obj_arg, ec.span)? {
+        if !queued && self.barrier_open(cache, ec.kind, q, &obj, ec.span)? {
             return Ok(ProtStep::Body);
         }
         let deadline = self.deadline(ec.timed);
@@ -374,7 +370,7 @@ impl<'a> Run<'a> {
         // served (RM 9.5.3(7-8)): a barrier that reads an entry's 'Count
         // may have opened now that the queue is longer (the cyclic
         // barrier `when Wait'Count = N or Releasing`).
-        let granted = self.first_open_call(pid, obj_arg, ec.span)?;
+        let granted = self.first_open_call(cache, pid, &obj, ec.span)?;
         if granted == Some(me) {
             return Ok(ProtStep::Body);
         }
@@ -397,11 +393,12 @@ impl<'a> Run<'a> {
     /// Takes the first queued call of protected object `pid` whose
     /// barrier is open (entries in declaration order, a family's members
     /// from its low bound, each queue first in, first out) off its queue;
-    /// `obj`: the object as an argument.
+    /// `obj`: the object.
     pub(super) fn first_open_call(
         &mut self,
+        cache: &mut Codes<'_>,
         pid: usize,
-        obj: &Arg,
+        obj: &Value,
         span: Span,
     ) -> R<Option<usize>> {
         let k = self.m.sched.prots[pid].ptype;
@@ -410,7 +407,7 @@ impl<'a> Run<'a> {
             if self.m.sched.prots[pid].queues[q].is_empty() {
                 continue;
             }
-            if self.barrier_open(k, q as u32, obj, span)? {
+            if self.barrier_open(cache, k, q as u32, obj, span)? {
                 return Ok(self.m.sched.prots[pid].queues[q].pop_front());
             }
         }
@@ -420,19 +417,25 @@ impl<'a> Run<'a> {
     /// The end of a protected action on `obj`: the first queued call whose
     /// barrier is now open runs its body next (before any other task), and
     /// the task that ran an entry body for another gives way.
-    pub(super) fn serve(&mut self, obj: Var, bargs: &[Arg], span: Span) -> R<()> {
+    pub(super) fn serve(&mut self, cache: &mut Codes<'_>, obj: Var, span: Span) -> R<()> {
         if !self.m.sched.active() {
             return Ok(());
         }
         let v = self.m.stack[self.sl(obj)].clone();
         let pid = Self::prot_id(&v);
-        self.serve_object(pid, bargs.last().expect("the object"), span)
+        self.serve_object(cache, pid, &v, span)
     }
 
-    fn serve_object(&mut self, pid: usize, obj: &Arg, span: Span) -> R<()> {
+    fn serve_object(
+        &mut self,
+        cache: &mut Codes<'_>,
+        pid: usize,
+        obj: &Value,
+        span: Span,
+    ) -> R<()> {
         let me = self.m.sched.cur;
         let proxied = std::mem::take(&mut self.m.sched.threads[me].proxied);
-        match self.first_open_call(pid, obj, span)? {
+        match self.first_open_call(cache, pid, obj, span)? {
             Some(w) => {
                 self.m.sched.threads[w].granted = true;
                 if proxied {
@@ -571,12 +574,16 @@ impl<'a> Run<'a> {
     /// the barrier is open, else waits in the queue. When the body returns
     /// here, the object's queues are served; then the call's outcome: done
     /// (copy-out), timed out, an exception, or requeued again.
-    pub(super) fn op_requeued(&mut self, r: &RequeuedOp) -> R<RequeueStep> {
+    pub(super) fn op_requeued(
+        &mut self,
+        cache: &mut Codes<'_>,
+        r: &RequeuedOp,
+    ) -> R<RequeueStep> {
         let me = self.m.sched.cur;
         self.rerun();
         if let Some(pid) = self.m.sched.threads[me].requeue_body.take() {
-            let obj = self.object_arg(r, pid);
-            self.serve_object(pid, &obj, r.span)?;
+            let obj = self.m.stack[self.sl(r.obj)].clone();
+            self.serve_object(cache, pid, &obj, r.span)?;
             if self.m.sched.switch {
                 self.m.sched.threads[me].reexec = true;
                 return Ok(RequeueStep::Wait);
@@ -630,11 +637,11 @@ impl<'a> Run<'a> {
                 if let Some(i) = rq.index {
                     self.put(r.index, Value::Int(i));
                 }
-                let obj_arg = self.object_arg(r, pid);
+                let obj_arg = self.m.stack[self.sl(r.obj)].clone();
                 if rq.queued {
                     if std::mem::take(&mut self.m.sched.threads[me].timed_out) {
                         // Left its queue (RM 9.5.3(20)): a protected action.
-                        if let Some(w) = self.first_open_call(pid, &obj_arg, r.span)? {
+                        if let Some(w) = self.first_open_call(cache, pid, &obj_arg, r.span)? {
                             self.m.sched.threads[w].granted = true;
                             self.m.sched.make_ready(w);
                         }
@@ -648,7 +655,7 @@ impl<'a> Run<'a> {
                     // timeout) requeued with abort is cancelled.
                     if deadline.is_some_and(|d| d <= self.m.clock.now()) {
                         self.m.sched.prots[pid].queues[rq.queue as usize].retain(|c| *c != me);
-                        if let Some(w) = self.first_open_call(pid, &obj_arg, r.span)? {
+                        if let Some(w) = self.first_open_call(cache, pid, &obj_arg, r.span)? {
                             self.m.sched.threads[w].granted = true;
                             self.m.sched.make_ready(w);
                         }
@@ -656,7 +663,7 @@ impl<'a> Run<'a> {
                     }
                 } else {
                     let empty = self.m.sched.prots[pid].queues[rq.queue as usize].is_empty();
-                    if empty && self.barrier_open(k, rq.queue, &obj_arg, r.span)? {
+                    if empty && self.barrier_open(cache, k, rq.queue, &obj_arg, r.span)? {
                         self.m.sched.threads[me].granted = true;
                         return Ok(self.requeued_body(r, &rq, pid, k));
                     }
@@ -667,7 +674,7 @@ impl<'a> Run<'a> {
                     if let Some(x) = self.m.sched.threads[me].requeue.as_mut() {
                         x.queued = true;
                     }
-                    let granted = self.first_open_call(pid, &obj_arg, r.span)?;
+                    let granted = self.first_open_call(cache, pid, &obj_arg, r.span)?;
                     if granted == Some(me) {
                         self.m.sched.threads[me].granted = true;
                         return Ok(self.requeued_body(r, &rq, pid, k));
@@ -688,20 +695,6 @@ impl<'a> Run<'a> {
                 );
                 Ok(RequeueStep::Wait)
             }
-        }
-    }
-
-    /// The object as the argument of a requeued call's barriers.
-    fn object_arg(&self, r: &RequeuedOp, pid: usize) -> Arg {
-        let k = self.m.sched.prots[pid].ptype;
-        Arg {
-            mode: Mode::In,
-            value: Ex {
-                kind: ExKind::Var(r.obj),
-                ty: self.c.prots[k as usize].access,
-                span: r.span,
-            },
-            back_check: None,
         }
     }
 

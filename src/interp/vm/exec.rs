@@ -146,6 +146,60 @@ impl<'a> Run<'a> {
     pub(super) fn exec_code<'c>(&mut self, cache: &mut Codes<'c>, code: &'c Code) -> R<()> {
         let need = self.c.globals as usize + code.temps as usize;
         self.m.stack.grow_to(need);
+        self.exec_loop(cache, code, false)
+    }
+
+    /// Calls `f` with the argument values `args` in a run of the engine
+    /// of its own, nested in the running instruction, and gives its
+    /// result: the scheduler's call of a barrier (a function of the
+    /// protected object, see `barrier_open`). The call cannot block: a
+    /// potentially blocking operation in it is `Program_Error` (RM 9.5.1).
+    pub(super) fn call_nested<'c>(
+        &mut self,
+        cache: &mut Codes<'c>,
+        f: FuncId,
+        args: impl IntoIterator<Item = Value>,
+        span: Span,
+    ) -> R<Option<Value>> {
+        self.call_guard(span)?;
+        let code = self.code_of(cache, f);
+        let level = code.level as usize;
+        let base = self.m.stack.len();
+        for v in args {
+            self.m.stack.push(v);
+        }
+        let own = (code.frame - code.temps) as usize;
+        let top = base + code.frame as usize;
+        self.m.stack.grow_to_clearing(base + own, top);
+        if self.m.display.len() <= level {
+            self.m.display.resize(level + 1, 0);
+        }
+        let saved = self.m.display[level];
+        self.m.display[level] = base;
+        self.m.depth += 1;
+        let r = self.exec_loop(cache, code, true);
+        self.free_frame(base, top);
+        self.m.display[level] = saved;
+        self.m.depth -= 1;
+        match r {
+            Err(Flow::Return(v)) => Ok(v),
+            Err(Flow::Raise(o)) => Err(self.caller_error(o, span)),
+            Err(e) => Err(e),
+            Ok(()) => {
+                let sub = &self.c.funcs[f as usize];
+                Err(self.raise(
+                    check::PROGRAM_ERROR,
+                    format!("{} missing return", self.m.location(sub.span)),
+                    sub.span,
+                ))
+            }
+        }
+    }
+
+    /// The execution loop: runs `code` to its end (`nested`: the code of
+    /// a call of [`Self::call_nested`], whose frame is set up, and whose
+    /// return ends the loop with `Flow::Return`).
+    fn exec_loop<'c>(&mut self, cache: &mut Codes<'c>, code: &'c Code, nested: bool) -> R<()> {
         let mut frames: Vec<Frame<'c>> = Vec::new();
         let level0 = code;
         let mut cur = code;
@@ -882,7 +936,7 @@ impl<'a> Run<'a> {
                     }
                     Err(e) => Err(e),
                 },
-                Op::ProtEntry(ec) => match self.op_prot_entry(ec) {
+                Op::ProtEntry(ec) => match self.op_prot_entry(cache, ec) {
                     Ok(ProtStep::Body) => {
                         let sub = &self.c.prots[ec.kind as usize].entries[ec.entry as usize];
                         let body = sub.body.expect("an entry body");
@@ -903,9 +957,9 @@ impl<'a> Run<'a> {
                     Ok(ProtStep::Wait) => Ok(()),
                     Err(e) => Err(e),
                 },
-                Op::ProtDone(obj, bargs, span) => self.serve(*obj, bargs, *span),
+                Op::ProtDone(obj, span) => self.serve(cache, *obj, *span),
                 Op::Requeue(r) => self.op_requeue(r),
-                Op::Requeued(r) => match self.op_requeued(r) {
+                Op::Requeued(r) => match self.op_requeued(cache, r) {
                     Ok(RequeueStep::Jump(t)) => {
                         pc = t;
                         Ok(())
@@ -1048,6 +1102,18 @@ impl<'a> Run<'a> {
             // The slow way: a thread switch, a frame to enter, a return,
             // an exit or an exception. Then the running code may differ.
             'slow: {
+                if self.m.sched.switch && nested {
+                    // A nested call (a barrier) cannot wait: no thread is
+                    // switched in the middle of the instruction that made it.
+                    self.m.sched.switch = false;
+                    let th = &mut self.m.sched.threads[self.m.sched.cur];
+                    th.reexec = false;
+                    return Err(self.raise(
+                        check::PROGRAM_ERROR,
+                        "potentially blocking operation in a barrier",
+                        crate::diag::span(0, 0, 0),
+                    ));
+                }
                 if self.m.sched.switch {
                     // The running thread blocked (or ended): save it, run the
                     // next ready one.
@@ -1118,8 +1184,12 @@ impl<'a> Run<'a> {
                             };
                             let Some(frame) = frames.pop() else {
                                 self.m.current.truncate(current_base);
+                                if nested && !fell_off {
+                                    return Err(Flow::Return(value));
+                                }
                                 if root.is_none() {
-                                    // The end of the level-0 code.
+                                    // The end of the level-0 code (or a
+                                    // nested call that fell off its end).
                                     return Ok(());
                                 }
                                 // The end of a task body.

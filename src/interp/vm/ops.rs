@@ -173,7 +173,7 @@ pub(super) enum Op {
     /// operands, the `EntryDone` after it copies them out).
     ProtEntry(Box<EntryOp>),
     /// After a protected action: the object's queues are served.
-    ProtDone(Var, Box<[Arg]>, Span),
+    ProtDone(Var, Span),
     Select(Box<SelectOp>),
     /// `requeue`: the call being served goes on to another entry.
     Requeue(Box<RequeueOp>),
@@ -243,8 +243,6 @@ pub(super) struct EntryOp {
     pub(super) timed: Option<(Var, bool)>,
     pub(super) conditional: bool,
     pub(super) other: u32,
-    /// The barrier's argument (the object), for protected entries.
-    pub(super) barrier_args: Box<[Arg]>,
     pub(super) span: Span,
 }
 

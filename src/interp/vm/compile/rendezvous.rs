@@ -125,19 +125,6 @@ impl<'r> Compiler<'r> {
         }
     }
 
-    /// The object as the argument of its barriers.
-    pub(in crate::interp::vm) fn obj_args(&self, obj: Var, like: &Ex) -> Box<[Arg]> {
-        Box::new([Arg {
-            mode: Mode::In,
-            value: Ex {
-                kind: ExKind::Var(obj),
-                ty: like.ty,
-                span: like.span,
-            },
-            back_check: None,
-        }])
-    }
-
     /// An entry call; returns the instructions whose `other` target (timed
     /// and conditional calls) is to be set.
     pub(in crate::interp::vm) fn entry_call(
@@ -196,27 +183,11 @@ impl<'r> Compiler<'r> {
                     timed,
                     conditional,
                     other: 0,
-                    barrier_args: Box::new([]),
                     span,
                 })));
             }
             CallTarget::Prot { .. } => {
                 let obj = *ops.last().expect("the object");
-                let last = &ec.args.last().expect("the object").value;
-                let mut bargs = Vec::new();
-                if let (Some(i), Some(x)) = (index, &ec.index) {
-                    bargs.push(Arg {
-                        mode: Mode::In,
-                        value: Ex {
-                            kind: ExKind::Var(i),
-                            ty: x.ty,
-                            span: x.span,
-                        },
-                        back_check: None,
-                    });
-                }
-                bargs.extend(self.obj_args(obj, last).into_vec());
-                let bargs: Box<[Arg]> = bargs.into();
                 if is_timed {
                     others.push(self.ops.len());
                 }
@@ -230,11 +201,9 @@ impl<'r> Compiler<'r> {
                     timed,
                     conditional,
                     other: 0,
-                    barrier_args: bargs,
                     span,
                 })));
-                let obj_arg = self.obj_args(obj, last);
-                self.ops.push(Op::ProtDone(obj, obj_arg, span));
+                self.ops.push(Op::ProtDone(obj, span));
             }
         }
         // Then the copy-out (or the timed call's other way, or the

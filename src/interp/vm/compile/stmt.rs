@@ -183,8 +183,7 @@ impl<'r> Compiler<'r> {
             StmtKind::ProtCall(f, args) => {
                 self.call(*f, Some(args), None, s.span);
                 let obj = self.expr(&args.last().expect("the object").value);
-                let bargs = self.obj_args(obj, &args.last().expect("the object").value);
-                self.ops.push(Op::ProtDone(obj, bargs, s.span));
+                self.ops.push(Op::ProtDone(obj, s.span));
             }
             StmtKind::Select(sel) => self.select(sel, s.span),
             StmtKind::Requeue(r) => self.requeue(r, s.span),
