@@ -79,7 +79,17 @@ fn adair_output(src: &Path, engine: adair::interp::vm::Engine) -> Recorded {
     let mut s = adair::session::Session::new(Box::new(buf.clone()));
     s.machine.engine = engine;
     let text = std::fs::read_to_string(src).unwrap_or_default();
+    let walked = adair::work::walker_steps();
     let outcome = s.run_source(&src.to_string_lossy(), &text);
+    // One engine (issue 32): a compiled run hands nothing to the tree
+    // walker, neither a statement nor an expression of the type table.
+    let steps = adair::work::walker_steps() - walked;
+    if engine == adair::interp::vm::Engine::Compiled && steps != 0 {
+        return Recorded {
+            stdout: format!("the compiled run made {steps} steps in the tree walker\n"),
+            code: -1,
+        };
+    }
     Recorded {
         stdout: buf.take(),
         code: outcome.exit_code(),

@@ -39,7 +39,7 @@ impl AggPart {
     }
 }
 
-impl Run<'_> {
+impl<'c> Run<'_, 'c> {
     /// The bounds of an array aggregate of type `t` with `items` positional
     /// components (`named`: None) or the named choices' ranges, checked: at
     /// most [`MAX_ELEMENTS`] components (Storage_Error), as many as the

@@ -324,10 +324,12 @@ impl Machine {
             }
             self.reset_main();
         }
+        let arena = typed_arena::Arena::new();
         let mut run = Run {
             m: self,
             c: chk,
             svc,
+            codes: vm::Codes::new(&arena),
         };
         let compiled = run.m.engine == vm::Engine::Compiled;
         let r = (|| -> R<()> {
@@ -489,12 +491,14 @@ impl Machine {
     ) -> Result<Value, Box<Occurrence>> {
         let need = self.prepare(chk);
         let _cap = memory::HardCap::arm();
+        let arena = typed_arena::Arena::new();
         let mut run = Run {
             m: self,
             c: chk,
             svc,
+            codes: vm::Codes::new(&arena),
         };
-        let r = run.eval(e);
+        let r = run.eval_table(e);
         if !(run.m.keep_tasks && run.m.sched.alive()) {
             run.m.stack.truncate(need);
         }
@@ -601,10 +605,13 @@ fn deep_copy(
 
 /// One run: the machine plus the program's tables, and the robot services
 /// the session lent it.
-pub struct Run<'a> {
+pub struct Run<'a, 'c> {
     pub m: &'a mut Machine,
     pub c: ProgramRef<'a>,
     svc: Option<&'a mut dyn Services>,
+    /// The compiled engine's code of this run: each body compiled on its
+    /// first call (and kept for the run), in an arena that outlives it.
+    codes: vm::Codes<'c>,
 }
 
 /// One step of an assignment's path from its root to the part written.
@@ -629,7 +636,7 @@ pub(crate) enum Root {
     NotVariable(Span),
 }
 
-impl Run<'_> {
+impl<'c> Run<'_, 'c> {
     pub fn raise(&self, exc: ExcId, msg: impl Into<String>, span: Span) -> Flow {
         let mut chain: Vec<Span> = self.m.calls.clone();
         chain.reverse();
@@ -697,6 +704,7 @@ impl Run<'_> {
     }
 
     fn exec(&mut self, s: &Stmt) -> R<()> {
+        crate::work::walked();
         match &s.kind {
             StmtKind::Null => Ok(()),
             // Only the compiled engine runs a compiled part, once.
@@ -1240,6 +1248,7 @@ impl Run<'_> {
     }
 
     pub fn eval(&mut self, e: &Ex) -> R<Value> {
+        crate::work::walked();
         Ok(match &e.kind {
             ExKind::Int(v) => Value::Int(*v),
             ExKind::Real(v) => Value::Real(*v),
@@ -1555,8 +1564,7 @@ impl Run<'_> {
             return Ok((Value::Real(l), Value::Real(h)));
         }
         if let Some((l, h)) = &info.range {
-            let (l, h) = (l.clone(), h.clone());
-            return Ok((self.eval(&l)?, self.eval(&h)?));
+            return Ok((self.eval_table(l)?, self.eval_table(h)?));
         }
         Ok(match self.c.types.kind(t) {
             TypeKind::Enum(l) => (Value::Int(0), Value::Int(l.len() as i64 - 1)),
@@ -1594,7 +1602,7 @@ impl Run<'_> {
         };
         let mut out = value::Bounds::with_capacity(bs.len());
         for (l, h) in bs {
-            out.push((self.eval(l)?.int(), self.eval(h)?.int()));
+            out.push((self.eval_table(l)?.int(), self.eval_table(h)?.int()));
         }
         Ok(Some(out))
     }
@@ -1659,7 +1667,7 @@ impl Run<'_> {
             return Ok(());
         };
         for (i, w) in want.iter().enumerate() {
-            let w = self.eval(w)?;
+            let w = self.eval_table(w)?;
             if r.get(i) != Some(&w) {
                 return Err(self.check_failed("discriminant check failed", span));
             }
@@ -1725,13 +1733,13 @@ impl Run<'_> {
         match types.discriminant_constraint(t) {
             Some(cs) => {
                 for c in cs {
-                    v.push(self.eval(c)?);
+                    v.push(self.eval_table(c)?);
                 }
             }
             None => {
                 for f in ds {
                     v.push(match &f.default {
-                        Some(d) => self.eval(d)?,
+                        Some(d) => self.eval_table(d)?,
                         None => self.default_value(f.ty, span)?,
                     });
                 }
@@ -1761,7 +1769,7 @@ impl Run<'_> {
                     continue;
                 }
                 v.push(match &f.default {
-                    Some(d) => self.eval(d)?,
+                    Some(d) => self.eval_table(d)?,
                     None => self.default_value(f.dependent.unwrap_or(f.ty), span)?,
                 });
             }
@@ -1773,25 +1781,26 @@ impl Run<'_> {
     }
 
     pub fn default_value(&mut self, t: TypeId, span: Span) -> R<Value> {
-        Ok(match self.c.types.kind(t).clone() {
+        let types = self.c.types;
+        Ok(match types.kind(t) {
             TypeKind::Float => Value::Real(0.0),
             TypeKind::Record(fields) if fields.first().is_some_and(|f| f.discriminant) => {
                 let nd = fields.iter().take_while(|f| f.discriminant).count();
-                self.default_record(t, &fields, nd, span)?
+                self.default_record(t, fields, nd, span)?
             }
             TypeKind::Record(fields) => {
                 let mut v = value::Fields::with_capacity(fields.len());
-                for f in &fields {
+                for f in fields {
                     v.push(match &f.default {
-                        Some(d) => self.eval(d)?,
+                        Some(d) => self.eval_table(d)?,
                         None => self.default_value(f.ty, span)?,
                     });
                 }
                 Value::Rec(Rc::new(v))
             }
-            TypeKind::Task(k) => self.create_task(k, t, span)?,
-            TypeKind::Protected(k) => self.create_protected(k, t, span)?,
-            TypeKind::Array { elem, .. } => {
+            TypeKind::Task(k) => self.create_task(*k, t, span)?,
+            TypeKind::Protected(k) => self.create_protected(*k, t, span)?,
+            &TypeKind::Array { elem, .. } => {
                 let bounds = self.array_bounds(t)?.unwrap_or_default();
                 let n: i64 = bounds
                     .iter()

@@ -476,7 +476,7 @@ impl Sched {
     }
 }
 
-impl Run<'_> {
+impl<'c> Run<'_, 'c> {
     /// Creates the environment thread (the running program) when the first
     /// task appears.
     pub(crate) fn tasking_on(&mut self) {
@@ -516,7 +516,7 @@ impl Run<'_> {
         let priority = match &def.priority {
             Some(p) => {
                 self.m.discrs.push(discrs.clone());
-                let v = self.eval(p);
+                let v = self.eval_table(p);
                 self.m.discrs.pop();
                 v?.int()
             }

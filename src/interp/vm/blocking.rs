@@ -3,7 +3,7 @@
 
 use super::*;
 
-impl<'a> Run<'a> {
+impl<'a, 'c> Run<'a, 'c> {
     pub(super) fn op_delay(&mut self, x: Var, until: bool, span: Span) -> R<()> {
         let v = self.m.stack[self.sl(x)].real();
         if !v.is_finite() {
@@ -283,14 +283,7 @@ impl<'a> Run<'a> {
 
     /// Whether the barrier of queue `q` of a protected object of type `k`
     /// is open; `obj`: the object (its barrier functions' last argument).
-    pub(super) fn barrier_open(
-        &mut self,
-        cache: &mut Codes<'_>,
-        k: u32,
-        q: u32,
-        obj: &Value,
-        span: Span,
-    ) -> R<bool> {
+    pub(super) fn barrier_open(&mut self, k: u32, q: u32, obj: &Value, span: Span) -> R<bool> {
         let def = &self.c.prots[k as usize];
         let Some((e, index)) = def.member(q) else {
             return Ok(false);
@@ -305,11 +298,11 @@ impl<'a> Run<'a> {
         };
         let args = index.into_iter().chain([obj.clone()]);
         Ok(self
-            .call_nested(cache, b, args, span)?
+            .call_nested(b, args, span)?
             .is_some_and(|v| v.int() != 0))
     }
 
-    pub(super) fn op_prot_entry(&mut self, cache: &mut Codes<'_>, ec: &EntryOp) -> R<ProtStep> {
+    pub(super) fn op_prot_entry(&mut self, ec: &EntryOp) -> R<ProtStep> {
         if ec.timed.is_some() || ec.conditional {
             // A `requeue ... with abort` of its body keeps its timeout.
             self.tasking_on();
@@ -324,7 +317,7 @@ impl<'a> Run<'a> {
                 // a barrier that reads the entry's 'Count may open now.
                 let obj = self.m.stack[self.sl(ec.target)].clone();
                 let pid = Self::prot_id(&obj);
-                if let Some(w) = self.first_open_call(cache, pid, &obj, ec.span)? {
+                if let Some(w) = self.first_open_call(pid, &obj, ec.span)? {
                     self.m.sched.threads[w].granted = true;
                     self.m.sched.make_ready(w);
                 }
@@ -355,7 +348,7 @@ impl<'a> Run<'a> {
             .prots
             .get(pid)
             .is_some_and(|p| !p.queues[q as usize].is_empty());
-        if !queued && self.barrier_open(cache, ec.kind, q, &obj, ec.span)? {
+        if !queued && self.barrier_open(ec.kind, q, &obj, ec.span)? {
             return Ok(ProtStep::Body);
         }
         let deadline = self.deadline(ec.timed);
@@ -370,7 +363,7 @@ impl<'a> Run<'a> {
         // served (RM 9.5.3(7-8)): a barrier that reads an entry's 'Count
         // may have opened now that the queue is longer (the cyclic
         // barrier `when Wait'Count = N or Releasing`).
-        let granted = self.first_open_call(cache, pid, &obj, ec.span)?;
+        let granted = self.first_open_call(pid, &obj, ec.span)?;
         if granted == Some(me) {
             return Ok(ProtStep::Body);
         }
@@ -396,7 +389,6 @@ impl<'a> Run<'a> {
     /// `obj`: the object.
     pub(super) fn first_open_call(
         &mut self,
-        cache: &mut Codes<'_>,
         pid: usize,
         obj: &Value,
         span: Span,
@@ -407,7 +399,7 @@ impl<'a> Run<'a> {
             if self.m.sched.prots[pid].queues[q].is_empty() {
                 continue;
             }
-            if self.barrier_open(cache, k, q as u32, obj, span)? {
+            if self.barrier_open(k, q as u32, obj, span)? {
                 return Ok(self.m.sched.prots[pid].queues[q].pop_front());
             }
         }
@@ -417,25 +409,19 @@ impl<'a> Run<'a> {
     /// The end of a protected action on `obj`: the first queued call whose
     /// barrier is now open runs its body next (before any other task), and
     /// the task that ran an entry body for another gives way.
-    pub(super) fn serve(&mut self, cache: &mut Codes<'_>, obj: Var, span: Span) -> R<()> {
+    pub(super) fn serve(&mut self, obj: Var, span: Span) -> R<()> {
         if !self.m.sched.active() {
             return Ok(());
         }
         let v = self.m.stack[self.sl(obj)].clone();
         let pid = Self::prot_id(&v);
-        self.serve_object(cache, pid, &v, span)
+        self.serve_object(pid, &v, span)
     }
 
-    fn serve_object(
-        &mut self,
-        cache: &mut Codes<'_>,
-        pid: usize,
-        obj: &Value,
-        span: Span,
-    ) -> R<()> {
+    fn serve_object(&mut self, pid: usize, obj: &Value, span: Span) -> R<()> {
         let me = self.m.sched.cur;
         let proxied = std::mem::take(&mut self.m.sched.threads[me].proxied);
-        match self.first_open_call(cache, pid, obj, span)? {
+        match self.first_open_call(pid, obj, span)? {
             Some(w) => {
                 self.m.sched.threads[w].granted = true;
                 if proxied {
@@ -574,16 +560,12 @@ impl<'a> Run<'a> {
     /// the barrier is open, else waits in the queue. When the body returns
     /// here, the object's queues are served; then the call's outcome: done
     /// (copy-out), timed out, an exception, or requeued again.
-    pub(super) fn op_requeued(
-        &mut self,
-        cache: &mut Codes<'_>,
-        r: &RequeuedOp,
-    ) -> R<RequeueStep> {
+    pub(super) fn op_requeued(&mut self, r: &RequeuedOp) -> R<RequeueStep> {
         let me = self.m.sched.cur;
         self.rerun();
         if let Some(pid) = self.m.sched.threads[me].requeue_body.take() {
             let obj = self.m.stack[self.sl(r.obj)].clone();
-            self.serve_object(cache, pid, &obj, r.span)?;
+            self.serve_object(pid, &obj, r.span)?;
             if self.m.sched.switch {
                 self.m.sched.threads[me].reexec = true;
                 return Ok(RequeueStep::Wait);
@@ -641,7 +623,7 @@ impl<'a> Run<'a> {
                 if rq.queued {
                     if std::mem::take(&mut self.m.sched.threads[me].timed_out) {
                         // Left its queue (RM 9.5.3(20)): a protected action.
-                        if let Some(w) = self.first_open_call(cache, pid, &obj_arg, r.span)? {
+                        if let Some(w) = self.first_open_call(pid, &obj_arg, r.span)? {
                             self.m.sched.threads[w].granted = true;
                             self.m.sched.make_ready(w);
                         }
@@ -655,7 +637,7 @@ impl<'a> Run<'a> {
                     // timeout) requeued with abort is cancelled.
                     if deadline.is_some_and(|d| d <= self.m.clock.now()) {
                         self.m.sched.prots[pid].queues[rq.queue as usize].retain(|c| *c != me);
-                        if let Some(w) = self.first_open_call(cache, pid, &obj_arg, r.span)? {
+                        if let Some(w) = self.first_open_call(pid, &obj_arg, r.span)? {
                             self.m.sched.threads[w].granted = true;
                             self.m.sched.make_ready(w);
                         }
@@ -663,7 +645,7 @@ impl<'a> Run<'a> {
                     }
                 } else {
                     let empty = self.m.sched.prots[pid].queues[rq.queue as usize].is_empty();
-                    if empty && self.barrier_open(cache, k, rq.queue, &obj_arg, r.span)? {
+                    if empty && self.barrier_open(k, rq.queue, &obj_arg, r.span)? {
                         self.m.sched.threads[me].granted = true;
                         return Ok(self.requeued_body(r, &rq, pid, k));
                     }
@@ -674,7 +656,7 @@ impl<'a> Run<'a> {
                     if let Some(x) = self.m.sched.threads[me].requeue.as_mut() {
                         x.queued = true;
                     }
-                    let granted = self.first_open_call(cache, pid, &obj_arg, r.span)?;
+                    let granted = self.first_open_call(pid, &obj_arg, r.span)?;
                     if granted == Some(me) {
                         self.m.sched.threads[me].granted = true;
                         return Ok(self.requeued_body(r, &rq, pid, k));
@@ -829,12 +811,7 @@ impl<'a> Run<'a> {
 
     /// Makes `t` the running thread: its saved registers, or its body's
     /// first frame when it starts.
-    pub(super) fn resume<'c>(
-        &mut self,
-        cache: &mut Codes<'c>,
-        level0: &'c Code,
-        t: tasking::Tid,
-    ) -> R<Live<'c>> {
+    pub(super) fn resume(&mut self, level0: &'c Code, t: tasking::Tid) -> R<Live<'c>> {
         if self.m.trace.is_some() && self.m.sched.cur != t {
             let (from, to) = (
                 self.m.sched.threads[self.m.sched.cur].name.clone(),
@@ -848,13 +825,13 @@ impl<'a> Run<'a> {
         self.m.sched.threads[t].wait = tasking::Wait::Running;
         if let Some(r) = self.m.sched.threads[t].regs.take() {
             self.swap_registers(t);
-            return Ok(self.load_regs(cache, level0, r));
+            return Ok(self.load_regs(level0, r));
         }
         let (body, mut display) = self.m.sched.threads[t]
             .start
             .take()
             .expect("a task to start");
-        let code = self.code_of(cache, body);
+        let code = self.code_of(body);
         let sub = &self.c.funcs[body as usize];
         let level = sub.level as usize;
         let own = (sub.nslots as usize).max(sub.params.len());
@@ -900,11 +877,7 @@ impl<'a> Run<'a> {
     }
 
     /// Switches to the next ready thread after the running one ended.
-    pub(super) fn next_thread<'c>(
-        &mut self,
-        cache: &mut Codes<'c>,
-        level0: &'c Code,
-    ) -> R<Live<'c>> {
+    pub(super) fn next_thread(&mut self, level0: &'c Code) -> R<Live<'c>> {
         let next = loop {
             if let Some(n) = self.m.sched.pick() {
                 break n;
@@ -913,7 +886,7 @@ impl<'a> Run<'a> {
                 return Err(self.deadlock());
             }
         };
-        self.resume(cache, level0, next)
+        self.resume(level0, next)
     }
 }
 

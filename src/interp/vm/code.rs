@@ -4,7 +4,7 @@
 use super::*;
 
 /// A part of a long body compiled as it was checked (see
-/// [`compile_part`]): its instructions, handler regions and loop exits,
+/// [`compile_part`]): its instructions and handler regions,
 /// with targets counted from its first instruction.
 #[derive(Default)]
 pub struct Part {
@@ -13,7 +13,6 @@ pub struct Part {
     pub(super) scalar: Option<bool>,
     pub(super) ops: Vec<Op>,
     pub(super) regions: Vec<Region>,
-    pub(super) exits: Vec<(u32, u32, u32)>,
 }
 
 /// Compiles a part of a long subprogram body as soon as the checker has
@@ -31,8 +30,8 @@ pub(crate) fn compile_part(
     stmts: Vec<Stmt>,
     into: &crate::check::ir::Precompiled,
 ) -> u32 {
-    let walker_calls = |f: FuncId| prog.imports.get(f as usize).is_some_and(|n| n.is_some());
-    let mut c = Compiler::new(at.level, at.own, &walker_calls, prog.types);
+    let native_calls = |f: FuncId| prog.imports.get(f as usize).is_some_and(|n| n.is_some());
+    let mut c = Compiler::new(at.level, at.own, &native_calls, prog.types);
     c.masters = u32::from(at.master);
     c.stmts(&stmts);
     drop(stmts);
@@ -46,8 +45,6 @@ pub(crate) fn compile_part(
         }));
         body.regions
             .extend(c.regions.into_iter().map(|r| r.moved(by)));
-        body.exits
-            .extend(c.exits.into_iter().map(|(id, t, d)| (id, t + by, d)));
         body.scalar = Some(body.scalar.unwrap_or(true) && c.scalar);
     });
     c.max_temp
@@ -91,9 +88,6 @@ pub(crate) struct Code {
     pub(super) frame: u32,
     /// Handler regions, innermost first.
     pub(super) regions: Vec<Region>,
-    /// `exit` targets of this code's loops, for an `exit` that a statement
-    /// run by the walker returns: (loop id, target, handler depth).
-    pub(super) exits: Vec<(u32, u32, u32)>,
 }
 
 /// What is compiled: a body, level-0 statements, or the call of the main

@@ -3,7 +3,7 @@
 use super::*;
 use crate::interp::aggregate::{AggBounds, AggPart};
 
-impl<'a> Run<'a> {
+impl<'a, 'c> Run<'a, 'c> {
     /// What a choice of an array aggregate gives, from its slot (emptied).
     fn agg_part_of(&mut self, p: &PartOp) -> AggPart {
         match *p {
@@ -143,63 +143,16 @@ impl<'a> Run<'a> {
     }
 
     /// Runs level-0 code to its end.
-    pub(super) fn exec_code<'c>(&mut self, cache: &mut Codes<'c>, code: &'c Code) -> R<()> {
+    pub(super) fn exec_code(&mut self, code: &'c Code) -> R<()> {
         let need = self.c.globals as usize + code.temps as usize;
         self.m.stack.grow_to(need);
-        self.exec_loop(cache, code, false)
-    }
-
-    /// Calls `f` with the argument values `args` in a run of the engine
-    /// of its own, nested in the running instruction, and gives its
-    /// result: the scheduler's call of a barrier (a function of the
-    /// protected object, see `barrier_open`). The call cannot block: a
-    /// potentially blocking operation in it is `Program_Error` (RM 9.5.1).
-    pub(super) fn call_nested<'c>(
-        &mut self,
-        cache: &mut Codes<'c>,
-        f: FuncId,
-        args: impl IntoIterator<Item = Value>,
-        span: Span,
-    ) -> R<Option<Value>> {
-        self.call_guard(span)?;
-        let code = self.code_of(cache, f);
-        let level = code.level as usize;
-        let base = self.m.stack.len();
-        for v in args {
-            self.m.stack.push(v);
-        }
-        let own = (code.frame - code.temps) as usize;
-        let top = base + code.frame as usize;
-        self.m.stack.grow_to_clearing(base + own, top);
-        if self.m.display.len() <= level {
-            self.m.display.resize(level + 1, 0);
-        }
-        let saved = self.m.display[level];
-        self.m.display[level] = base;
-        self.m.depth += 1;
-        let r = self.exec_loop(cache, code, true);
-        self.free_frame(base, top);
-        self.m.display[level] = saved;
-        self.m.depth -= 1;
-        match r {
-            Err(Flow::Return(v)) => Ok(v),
-            Err(Flow::Raise(o)) => Err(self.caller_error(o, span)),
-            Err(e) => Err(e),
-            Ok(()) => {
-                let sub = &self.c.funcs[f as usize];
-                Err(self.raise(
-                    check::PROGRAM_ERROR,
-                    format!("{} missing return", self.m.location(sub.span)),
-                    sub.span,
-                ))
-            }
-        }
+        self.exec_loop(code, false)
     }
 
     /// The execution loop: runs `code` to its end (`nested`: the code of
-    /// a call of [`Self::call_nested`], whose frame is set up, and whose
-    /// return ends the loop with `Flow::Return`).
-    fn exec_loop<'c>(&mut self, cache: &mut Codes<'c>, code: &'c Code, nested: bool) -> R<()> {
+    /// a nested run (`nested.rs`), whose frame is set up, and whose return
+    /// ends the loop with `Flow::Return`).
+    pub(super) fn exec_loop(&mut self, code: &'c Code, nested: bool) -> R<()> {
         let mut frames: Vec<Frame<'c>> = Vec::new();
         let level0 = code;
         let mut cur = code;
@@ -801,7 +754,7 @@ impl<'a> Run<'a> {
                         (true, Some((d, args))) => (args, ix!(*d)),
                         _ => (&ops[..], NO_DST),
                     };
-                    match self.push_call(cache, *f, Args::Slots(args), (lvl, fp), *span) {
+                    match self.push_call(*f, Args::Slots(args), (lvl, fp), *span) {
                         Ok(entered) => enter!(entered, dst),
                         Err(e) => Err(e),
                     }
@@ -829,7 +782,7 @@ impl<'a> Run<'a> {
                     };
                     let entered = self
                         .int_value_at(*o, x, *k as i64, at)
-                        .and_then(|n| self.push_call(cache, *f, Args::Int(n), (lvl, fp), *span));
+                        .and_then(|n| self.push_call(*f, Args::Int(n), (lvl, fp), *span));
                     match entered {
                         Ok(entered) => enter!(entered, dst),
                         Err(e) => Err(e),
@@ -936,12 +889,11 @@ impl<'a> Run<'a> {
                     }
                     Err(e) => Err(e),
                 },
-                Op::ProtEntry(ec) => match self.op_prot_entry(cache, ec) {
+                Op::ProtEntry(ec) => match self.op_prot_entry(ec) {
                     Ok(ProtStep::Body) => {
                         let sub = &self.c.prots[ec.kind as usize].entries[ec.entry as usize];
                         let body = sub.body.expect("an entry body");
-                        match self.push_call(cache, body, Args::Slots(&ec.ops), (lvl, fp), ec.span)
-                        {
+                        match self.push_call(body, Args::Slots(&ec.ops), (lvl, fp), ec.span) {
                             Ok(e) => {
                                 enter = Some(e);
                                 Ok(())
@@ -957,15 +909,15 @@ impl<'a> Run<'a> {
                     Ok(ProtStep::Wait) => Ok(()),
                     Err(e) => Err(e),
                 },
-                Op::ProtDone(obj, span) => self.serve(cache, *obj, *span),
+                Op::ProtDone(obj, span) => self.serve(*obj, *span),
                 Op::Requeue(r) => self.op_requeue(r),
-                Op::Requeued(r) => match self.op_requeued(cache, r) {
+                Op::Requeued(r) => match self.op_requeued(r) {
                     Ok(RequeueStep::Jump(t)) => {
                         pc = t;
                         Ok(())
                     }
                     Ok(RequeueStep::Body(f, slots)) => {
-                        match self.push_call(cache, f, Args::Slots(&slots), (lvl, fp), r.span) {
+                        match self.push_call(f, Args::Slots(&slots), (lvl, fp), r.span) {
                             Ok(e) => {
                                 // The body returns to this instruction.
                                 pc -= 1;
@@ -1149,7 +1101,7 @@ impl<'a> Run<'a> {
                         current_base,
                         pending,
                         root,
-                    } = self.resume(cache, level0, next)?;
+                    } = self.resume(level0, next)?;
                     break 'slow;
                 }
                 if let Some(entered) = enter.take() {
@@ -1157,18 +1109,13 @@ impl<'a> Run<'a> {
                     break 'slow;
                 }
                 let Err(flow) = r else { break 'slow };
-                // Something other than the next instruction: a return, an exit
-                // a statement run by the walker gave back, or an exception.
+                // Something other than the next instruction: a return, the
+                // user's stop, or an exception.
                 let mut flow = flow;
                 loop {
                     match flow {
                         Flow::Exit(id) if id != FALL_OFF => {
-                            if let Some((_, t, depth)) = cur.exits.iter().find(|(l, ..)| *l == id) {
-                                self.m.current.truncate(current_base + *depth as usize);
-                                pc = *t;
-                                break;
-                            }
-                            // Not a loop of this code (the user's stop): leave
+                            // The user's stop (a service's `STOP_LABEL`): leave
                             // every frame.
                             while let Some(f) = frames.pop() {
                                 self.pop_frame(&f, cur, current_base);
@@ -1201,7 +1148,7 @@ impl<'a> Run<'a> {
                                     current_base,
                                     pending,
                                     root,
-                                } = self.next_thread(cache, level0)?;
+                                } = self.next_thread(level0)?;
                                 break;
                             };
                             let (back, dst) = call_site(frame.code, frame.pc);
@@ -1271,7 +1218,7 @@ impl<'a> Run<'a> {
                                     current_base,
                                     pending,
                                     root,
-                                } = self.next_thread(cache, level0)?;
+                                } = self.next_thread(level0)?;
                                 break;
                             };
                             self.pop_frame(&frame, cur, current_base);

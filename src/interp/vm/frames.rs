@@ -109,21 +109,36 @@ pub(super) type Entered<'c> = (&'c Code, usize, usize);
 pub(crate) struct Codes<'c> {
     pub(super) arena: &'c typed_arena::Arena<Code>,
     pub(super) by_func: Vec<Option<&'c Code>>,
+    /// The code of the type table's expressions (see `eval_table`), by
+    /// where the expression is.
+    pub(super) table: std::collections::HashMap<TableKey, &'c Code>,
 }
 
-impl<'a> Run<'a> {
+/// The key of a type table expression's code (see `Run::eval_table`).
+pub(super) type TableKey = (*const Ex, u32, u32, u32);
+
+impl<'c> Codes<'c> {
+    pub(crate) fn new(arena: &'c typed_arena::Arena<Code>) -> Codes<'c> {
+        Codes {
+            arena,
+            by_func: Vec::new(),
+            table: std::collections::HashMap::new(),
+        }
+    }
+}
+
+impl<'a, 'c> Run<'a, 'c> {
     /// Pushes the frame of a call of `f` whose arguments are in `ops`.
     #[inline(always)]
-    pub(super) fn push_call<'c>(
+    pub(super) fn push_call(
         &mut self,
-        cache: &mut Codes<'c>,
         f: FuncId,
         args: Args<'_>,
         (lvl, fp): (u16, usize),
         span: Span,
     ) -> R<Entered<'c>> {
         self.call_guard(span)?;
-        let code = self.code_of(cache, f);
+        let code = self.code_of(f);
         let base = self.m.stack.len();
         // The arguments go straight into the new frame; the display is
         // still the caller's while they are read (an operand of the
@@ -165,7 +180,7 @@ impl<'a> Run<'a> {
     /// The display entry of a called frame that begins at `base`, and the
     /// call's depth: what [`Self::push_call`] does once the frame is there.
     #[inline(always)]
-    fn enter_display<'c>(&mut self, code: &'c Code, base: usize) -> Entered<'c> {
+    fn enter_display(&mut self, code: &'c Code, base: usize) -> Entered<'c> {
         let level = code.level as usize;
         if self.m.display.len() <= level {
             self.m.display.resize(level + 1, 0);
@@ -177,14 +192,9 @@ impl<'a> Run<'a> {
 
     /// Live registers from saved ones: each frame's code compiled (or
     /// taken from this run's cache) again.
-    pub(super) fn load_regs<'c>(
-        &mut self,
-        cache: &mut Codes<'c>,
-        level0: &'c Code,
-        r: Regs,
-    ) -> Live<'c> {
-        let mut fetch = |this: &mut Self, func: Option<FuncId>| match func {
-            Some(f) => this.code_of(cache, f),
+    pub(super) fn load_regs(&mut self, level0: &'c Code, r: Regs) -> Live<'c> {
+        let fetch = |this: &mut Self, func: Option<FuncId>| match func {
+            Some(f) => this.code_of(f),
             None => level0,
         };
         let mut frames = Vec::with_capacity(r.frames.len());

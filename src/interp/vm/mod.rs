@@ -38,6 +38,7 @@ mod compile;
 mod exec;
 mod fast;
 mod frames;
+mod nested;
 mod ops;
 mod run;
 #[cfg(test)]

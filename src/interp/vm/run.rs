@@ -2,9 +2,9 @@
 
 use super::*;
 
-impl<'a> Run<'a> {
+impl<'a, 'c> Run<'a, 'c> {
     /// Whether the walker makes the calls of `f` (a native or no body).
-    pub(super) fn walker_call(&self, f: FuncId) -> bool {
+    pub(super) fn native_call(&self, f: FuncId) -> bool {
         self.m.natives.get(f as usize).copied().flatten().is_some()
             || self.c.funcs[f as usize].body.is_none()
     }
@@ -16,8 +16,8 @@ impl<'a> Run<'a> {
         what: Compiled<'a>,
         func: Option<FuncId>,
     ) -> Code {
-        let walker_calls = |f: FuncId| self.walker_call(f);
-        let mut c = Compiler::new(level, own, &walker_calls, self.c.types);
+        let native_calls = |f: FuncId| self.native_call(f);
+        let mut c = Compiler::new(level, own, &native_calls, self.c.types);
         match what {
             Compiled::Body(b) => c.body(b),
             Compiled::Stmts(ss) => c.stmts(ss),
@@ -49,35 +49,37 @@ impl<'a> Run<'a> {
 
     /// The compiled body of `f`, compiled on its first call.
     #[inline(always)]
-    pub(super) fn code_of<'c>(&mut self, cache: &mut Codes<'c>, f: FuncId) -> &'c Code {
-        match cache.by_func.get(f as usize) {
+    pub(super) fn code_of(&mut self, f: FuncId) -> &'c Code {
+        match self.codes.by_func.get(f as usize) {
             Some(Some(c)) => c,
-            _ => self.compile_first(cache, f),
+            _ => self.compile_first(f),
         }
     }
 
     /// [`Self::code_of`] the first time.
     #[cold]
     #[inline(never)]
-    pub(super) fn compile_first<'c>(&mut self, cache: &mut Codes<'c>, f: FuncId) -> &'c Code {
+    pub(super) fn compile_first(&mut self, f: FuncId) -> &'c Code {
         let i = f as usize;
-        if cache.by_func.len() <= i {
-            cache.by_func.resize(self.c.funcs.len().max(i + 1), None);
+        if self.codes.by_func.len() <= i {
+            self.codes
+                .by_func
+                .resize(self.c.funcs.len().max(i + 1), None);
         }
-        if let Some(c) = cache.by_func[i] {
+        if let Some(c) = self.codes.by_func[i] {
             return c;
         }
         let sub = &self.c.funcs[i];
         let own = sub.nslots.max(sub.params.len() as u32);
         let code: &'c Code = match sub.body.as_deref() {
             Some(body) => {
-                cache
+                self.codes
                     .arena
                     .alloc(self.compile(sub.level, own, Compiled::Body(body), Some(f)))
             }
             // A call compiled with a long body's part (see `compile_part`)
             // of a subprogram that has no body: the walker raises.
-            None => cache.arena.alloc(Code {
+            None => self.codes.arena.alloc(Code {
                 func: Some(f),
                 all_in: true,
                 scalar: false,
@@ -95,32 +97,32 @@ impl<'a> Run<'a> {
                 temps: 0,
                 frame: own,
                 regions: Vec::new(),
-                exits: Vec::new(),
             }),
         };
-        cache.by_func[i] = Some(code);
+        self.codes.by_func[i] = Some(code);
         code
     }
 
     /// Runs level-0 statements, then the main subprogram, in the compiled
     /// engine.
     pub(crate) fn run_compiled(&mut self, stmts: &'a [Stmt], main: Option<FuncId>) -> R<()> {
-        let arena = typed_arena::Arena::new();
-        let mut cache = Codes {
-            arena: &arena,
-            by_func: Vec::new(),
-        };
         let own = self.c.globals;
         for (a, t) in std::mem::take(&mut self.m.pending_irqs) {
             self.deliver(a, t);
         }
-        let code = arena.alloc(self.compile(0, own, Compiled::Stmts(stmts), None));
-        let mut r = self.exec_code(&mut cache, code);
+        let code = self
+            .codes
+            .arena
+            .alloc(self.compile(0, own, Compiled::Stmts(stmts), None));
+        let mut r = self.exec_code(code);
         if r.is_ok()
             && let Some(f) = main
         {
-            let code = arena.alloc(self.compile(0, own, Compiled::Main(f), None));
-            r = self.exec_code(&mut cache, code);
+            let code = self
+                .codes
+                .arena
+                .alloc(self.compile(0, own, Compiled::Main(f), None));
+            r = self.exec_code(code);
         }
         // The environment waits for the library-level tasks, also after an
         // exception (which then ends the run).
@@ -134,7 +136,7 @@ impl<'a> Run<'a> {
             } else {
                 Op::AwaitAll(self.program_end(stmts, main))
             };
-            let code = arena.alloc(Code {
+            let code = self.codes.arena.alloc(Code {
                 func: None,
                 all_in: true,
                 scalar: false,
@@ -143,11 +145,10 @@ impl<'a> Run<'a> {
                 temps: 0,
                 frame: 0,
                 regions: Vec::new(),
-                exits: Vec::new(),
             });
             let sched_cur = self.m.sched.cur;
             debug_assert_eq!(sched_cur, 0);
-            self.exec_code(&mut cache, code)?;
+            self.exec_code(code)?;
         }
         r
     }

@@ -26,9 +26,9 @@ mod fused_tests {
             .find(|f| f.name.eq_ignore_ascii_case(name))
             .expect("the function");
         let body = f.body.as_deref().expect("its body");
-        let walker_calls = |_| false;
+        let native_calls = |_| false;
         let own = f.nslots.max(f.params.len() as u32);
-        let mut c = Compiler::new(f.level, own, &walker_calls, prog.types);
+        let mut c = Compiler::new(f.level, own, &native_calls, prog.types);
         c.body(body);
         let code = c.finish(None, true, true);
         code.ops

@@ -11,7 +11,7 @@ impl<'r> Compiler<'r> {
         span: Span,
     ) {
         let all: &[Arg] = args.unwrap_or_default();
-        if (self.walker_calls)(f) {
+        if (self.native_calls)(f) {
             let ops = self.arg_operands(all);
             let outs = self.out_slots(all);
             self.ops.push(Op::CallNative(Box::new(NativeOp {

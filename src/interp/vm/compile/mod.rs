@@ -26,7 +26,6 @@ pub(in crate::interp::vm) struct Compiler<'r> {
     pub(in crate::interp::vm) max_temp: u32,
     pub(in crate::interp::vm) ops: Vec<Op>,
     pub(in crate::interp::vm) regions: Vec<Region>,
-    pub(in crate::interp::vm) exits: Vec<(u32, u32, u32)>,
     /// The loops being compiled, innermost last.
     pub(in crate::interp::vm) loops: Vec<OpenLoop>,
     pub(in crate::interp::vm) hdepth: u32,
@@ -37,7 +36,7 @@ pub(in crate::interp::vm) struct Compiler<'r> {
     /// regions open at the accept.
     pub(in crate::interp::vm) accepts: Vec<(Vec<usize>, u32, u32)>,
     /// Which subprograms the walker calls (bound to natives or without body).
-    pub(in crate::interp::vm) walker_calls: &'r dyn Fn(FuncId) -> bool,
+    pub(in crate::interp::vm) native_calls: &'r dyn Fn(FuncId) -> bool,
     pub(in crate::interp::vm) types: &'r crate::check::types::Types,
     /// Every value this code puts in its frame is a scalar (`Undef`, `Int`,
     /// `Real`) so far: freeing the frame drops nothing (see `Code::scalar`).
@@ -93,7 +92,7 @@ impl<'r> Compiler<'r> {
     pub(in crate::interp::vm) fn new(
         level: u16,
         own: u32,
-        walker_calls: &'r dyn Fn(FuncId) -> bool,
+        native_calls: &'r dyn Fn(FuncId) -> bool,
         types: &'r crate::check::types::Types,
     ) -> Self {
         Compiler {
@@ -103,12 +102,11 @@ impl<'r> Compiler<'r> {
             max_temp: 0,
             ops: Vec::new(),
             regions: Vec::new(),
-            exits: Vec::new(),
             loops: Vec::new(),
             hdepth: 0,
             masters: 0,
             accepts: Vec::new(),
-            walker_calls,
+            native_calls,
             types,
             scalar: true,
             discrs: Vec::new(),
@@ -229,8 +227,6 @@ impl<'r> Compiler<'r> {
         self.ops = ops;
         self.regions
             .extend(part.regions.iter().map(|r| r.moved(by)));
-        self.exits
-            .extend(part.exits.into_iter().map(|(id, t, d)| (id, t + by, d)));
     }
 
     /// The compiled code; `scalar_params`: its parameters' types are
@@ -345,7 +341,6 @@ impl<'r> Compiler<'r> {
         // Exact sizes: the main body of a long program is compiled once.
         self.ops.shrink_to_fit();
         self.regions.shrink_to_fit();
-        self.exits.shrink_to_fit();
         Code {
             func,
             all_in,
@@ -355,7 +350,6 @@ impl<'r> Compiler<'r> {
             temps: self.max_temp,
             frame: self.own + self.max_temp,
             regions: self.regions,
-            exits: self.exits,
         }
     }
 }

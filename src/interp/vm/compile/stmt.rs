@@ -78,7 +78,7 @@ impl<'r> Compiler<'r> {
                 self.ops.push(Op::Poll(s.span));
                 self.loop_body(*id, body);
                 self.ops.push(Op::Jump(top));
-                self.end_loop(*id);
+                self.end_loop();
             }
             StmtKind::While { id, cond, body } => {
                 let top = self.here();
@@ -86,7 +86,7 @@ impl<'r> Compiler<'r> {
                 self.ops.push(Op::Poll(s.span));
                 self.loop_body(*id, body);
                 self.ops.push(Op::Jump(top));
-                let end = self.end_loop(*id);
+                let end = self.end_loop();
                 self.patch(j, end);
             }
             StmtKind::For(f) => {
@@ -99,7 +99,7 @@ impl<'r> Compiler<'r> {
                 self.loop_body(f.id, &f.body);
                 self.ops
                     .push(Op::ForNext(f.var, l, h, f.reverse, body_pc, s.span));
-                let end = self.end_loop(f.id);
+                let end = self.end_loop();
                 self.patch(start, end);
             }
             StmtKind::Exit(id, cond) => {
@@ -330,13 +330,12 @@ impl<'r> Compiler<'r> {
     }
 
     /// Ends the innermost loop: its exits jump here. Returns the target.
-    pub(in crate::interp::vm) fn end_loop(&mut self, id: u32) -> u32 {
+    pub(in crate::interp::vm) fn end_loop(&mut self) -> u32 {
         let end = self.here();
         let l = self.loops.pop().expect("a loop");
         for j in l.exits {
             self.patch(j, end);
         }
-        self.exits.push((id, end, l.hdepth));
         end
     }
 }
