@@ -7,13 +7,13 @@
 //! through handler regions and frames, with no Rust recursion, so that a
 //! task can be suspended between two instructions.
 //!
-//! Nodes without an instruction of their own (aggregates, allocators,
-//! raise, composite assignments, ...) are evaluated by the tree walker
-//! ([`Run::eval`], [`Run::exec`], [`Run::assign`]), which stays the
-//! reference engine: `Engine::Walker` runs a whole program in it, and the
-//! golden and GNAT tests run every program in both (differential testing).
-//! The compiled engine keeps every Ada check the walker makes; it calls the
-//! walker's own check functions.
+//! Every construct has instructions of its own; code that runs inside an
+//! instruction (a barrier, a default or a dynamic bound of the type table,
+//! a REPL expression) runs in a nested run of the same loop (`nested.rs`).
+//! The tree walker ([`Run::eval`], [`Run::exec`]) stays as the reference
+//! engine: `Engine::Walker` runs a whole program in it, and the golden and
+//! GNAT tests run every program without tasks in both (differential
+//! testing). Both engines call the same check functions.
 //!
 //! The parts:
 //! - `ops.rs`: the instruction set ([`Op`]) and its metadata (jump targets);
@@ -22,6 +22,8 @@
 //! - `code.rs`: a compiled body ([`Code`], its handler regions) and the
 //!   parts of a long body compiled as they are checked;
 //! - `frames.rs`: call frames and the saved registers of a waiting thread;
+//! - `nested.rs`: runs nested in an instruction (barriers, the type
+//!   table's expressions);
 //! - `run.rs`: compiling on first call and starting a run;
 //! - `exec.rs`: the execution loop and its slot helpers;
 //! - `fast.rs`: its inner loop, for runs of instructions over the running
