@@ -188,7 +188,7 @@ impl<'c> Run<'_, 'c> {
             self.m.discrs.pop();
             r?;
         }
-        Ok(Value::Rec(Rc::new(v)))
+        Ok(Value::record(v))
     }
 
     /// `new T'(v)` or `new T`: the designated object, with room for it.

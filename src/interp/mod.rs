@@ -587,9 +587,13 @@ fn deep_copy(
                 bytes => bytes.clone(),
             },
         })),
-        Value::Rec(r) => Value::Rec(Rc::new(
-            r.iter().map(|x| deep_copy(x, seen, todo)).collect(),
-        )),
+        v if v.is_record() => Value::record(
+            v.fields()
+                .unwrap_or_default()
+                .iter()
+                .map(|x| deep_copy(x, seen, todo))
+                .collect(),
+        ),
         Value::Ptr(Some(p)) => {
             if let Some(c) = seen.get(&Rc::as_ptr(p)) {
                 return Value::Ptr(Some(c.clone()));
@@ -1299,9 +1303,9 @@ impl<'c> Run<'_, 'c> {
                 let (l, h) = (self.eval(&lh[0])?.int(), self.eval(&lh[1])?.int());
                 self.slice_of(&base, l, h, e.span)?
             }
-            ExKind::Field(p, i) => match self.eval(p)? {
-                Value::Rec(r) => r[*i as usize].clone(),
-                _ => return Err(self.check_failed("discriminant check failed", e.span)),
+            ExKind::Field(p, i) => match self.eval(p)?.fields() {
+                Some(r) => r[*i as usize].clone(),
+                None => return Err(self.check_failed("discriminant check failed", e.span)),
             },
             ExKind::KeepDiscriminants(parts) => {
                 let [v, target, when] = &**parts;
@@ -1574,7 +1578,7 @@ impl<'c> Run<'_, 'c> {
     }
 
     fn range_check(&mut self, v: &Value, t: TypeId, span: Span) -> R<()> {
-        if let Value::Rec(r) = v {
+        if let Some(r) = v.fields() {
             return self.discriminant_check(r, t, span);
         }
         let info = self.c.types.get(t);
@@ -1634,7 +1638,7 @@ impl<'c> Run<'_, 'c> {
         span: Span,
     ) -> R<()> {
         match v {
-            Value::Rec(r) if value::variant_holds(r, conds) => Ok(()),
+            v if v.fields().is_some_and(|r| value::variant_holds(r, conds)) => Ok(()),
             _ => Err(self.check_failed("discriminant check failed", span)),
         }
     }
@@ -1643,8 +1647,8 @@ impl<'c> Run<'_, 'c> {
     /// value or by its actual: its `n` discriminants are the object's
     /// (RM 5.2(10)), else "discriminant check failed". Both engines call it.
     pub(crate) fn same_discriminants(&self, v: &Value, cur: &Value, n: usize, span: Span) -> R<()> {
-        match (v, cur) {
-            (Value::Rec(a), Value::Rec(b)) if a.get(..n) == b.get(..n) => Ok(()),
+        match (v.fields(), cur.fields()) {
+            (Some(a), Some(b)) if a.get(..n) == b.get(..n) => Ok(()),
             _ => Err(self.check_failed("discriminant check failed", span)),
         }
     }
@@ -1661,7 +1665,7 @@ impl<'c> Run<'_, 'c> {
     /// A record value of the subtype `t` (RM 3.7.1, 4.6(51)): its
     /// discriminants are those of `t`'s discriminant constraint, if it has
     /// one ("discriminant check failed").
-    fn discriminant_check(&mut self, r: &value::Fields, t: TypeId, span: Span) -> R<()> {
+    fn discriminant_check(&mut self, r: &[Value], t: TypeId, span: Span) -> R<()> {
         let types = self.c.types;
         let Some(want) = types.discriminant_constraint(t) else {
             return Ok(());
@@ -1777,7 +1781,7 @@ impl<'c> Run<'_, 'c> {
         })();
         self.m.discrs.pop();
         r?;
-        Ok(Value::Rec(Rc::new(v)))
+        Ok(Value::record(v))
     }
 
     pub fn default_value(&mut self, t: TypeId, span: Span) -> R<Value> {
@@ -1796,7 +1800,7 @@ impl<'c> Run<'_, 'c> {
                         None => self.default_value(f.ty, span)?,
                     });
                 }
-                Value::Rec(Rc::new(v))
+                Value::record(v)
             }
             TypeKind::Task(k) => self.create_task(*k, t, span)?,
             TypeKind::Protected(k) => self.create_protected(*k, t, span)?,
@@ -2253,7 +2257,7 @@ fn write_path(
             write_path(a.data.get_mut(o), rest, val, at)
         }
         Step::Field(i) => {
-            let Value::Rec(r) = root else {
+            let Some(r) = root.fields_mut() else {
                 return Err((
                     "discriminant check failed",
                     Span {
@@ -2263,13 +2267,18 @@ fn write_path(
                     },
                 ));
             };
-            let r = Rc::make_mut(r);
             write_path(&mut r[*i as usize], rest, val, at)
         }
-        Step::Variant(conds, sp) => match root {
-            Value::Rec(r) if value::variant_holds(r, conds) => write_path(root, rest, val, at),
-            _ => Err(("discriminant check failed", *sp)),
-        },
+        Step::Variant(conds, sp) => {
+            if root
+                .fields()
+                .is_some_and(|r| value::variant_holds(r, conds))
+            {
+                write_path(root, rest, val, at)
+            } else {
+                Err(("discriminant check failed", *sp))
+            }
+        }
         // A component or a slice of a slice (`Code (6 .. 8)(7)`, an element
         // of a renamed slice): of the sliced array, within the slice.
         Step::Slice(l, h, sp) if !rest.is_empty() => {
@@ -2357,7 +2366,6 @@ fn bool_array(like: &value::Array, bits: impl Iterator<Item = bool>) -> Value {
 #[cfg(test)]
 mod copy_tests {
     use super::{Machine, Obj, Value};
-    use std::rc::Rc;
 
     /// The rehearsal's copy of the program's data: a long list is copied
     /// in constant native stack (a 256 KiB thread), with aliasing and
@@ -2368,10 +2376,10 @@ mod copy_tests {
             .stack_size(256 * 1024)
             .spawn(|| {
                 let node = |v: i64, next: Value| {
-                    Value::Ptr(Some(Obj::new(Value::Rec(Rc::new(smallvec::smallvec![
+                    Value::Ptr(Some(Obj::new(Value::record(smallvec::smallvec![
                         Value::Int(v),
                         next
-                    ])))))
+                    ]))))
                 };
                 let last = node(0, Value::Ptr(None));
                 let mut head = last.clone();
@@ -2382,16 +2390,16 @@ mod copy_tests {
                 let (Value::Ptr(Some(l)), Value::Ptr(Some(h))) = (&last, &head) else {
                     panic!()
                 };
-                if let Value::Rec(r) = &mut *l.borrow_mut() {
-                    Rc::make_mut(r)[1] = Value::Ptr(Some(h.clone()));
+                if let Some(r) = l.borrow_mut().fields_mut() {
+                    r[1] = Value::Ptr(Some(h.clone()));
                 }
                 let mut m = Machine::new(Box::new(std::io::sink()));
                 m.stack = vec![head.clone(), last.clone()].into();
                 let copy = m.copy_globals();
                 let next = |p: &Value| match p {
-                    Value::Ptr(Some(o)) => match &*o.borrow() {
-                        Value::Rec(r) => (r[0].int(), r[1].clone()),
-                        _ => panic!(),
+                    Value::Ptr(Some(o)) => match o.borrow().fields() {
+                        Some(r) => (r[0].int(), r[1].clone()),
+                        None => panic!(),
                     },
                     _ => panic!(),
                 };
@@ -2410,9 +2418,9 @@ mod copy_tests {
                 // Break both cycles so that they can be freed.
                 for l in [&last, &copy[1]] {
                     if let Value::Ptr(Some(o)) = l
-                        && let Value::Rec(r) = &mut *o.borrow_mut()
+                        && let Some(r) = o.borrow_mut().fields_mut()
                     {
-                        Rc::make_mut(r)[1] = Value::Ptr(None);
+                        r[1] = Value::Ptr(None);
                     }
                 }
             })

@@ -8,16 +8,132 @@ use std::rc::Rc;
 /// A value. Discrete values (integers, enumerations, characters, Booleans)
 /// are `Int`; composites are reference-counted and copied on write, which
 /// gives Ada's value semantics without copying on every read.
-#[derive(Clone, Debug, Default)]
+///
+/// A record is one allocation holding its reference count and its
+/// components inline: `Rec1` .. `Rec8` by the number of components (a
+/// list node, a 3D point, a frame), `RecN` for none or more than eight
+/// (its components in a second allocation). Code reads a record through
+/// [`Value::fields`] and writes one through [`Value::fields_mut`] (copy on
+/// write) and builds one with [`Value::record`]; it never names the
+/// variants. The count is in the variant, not in a field, so `Value` stays
+/// 16 bytes and a match on it stays a plain jump on its tag (an enum of
+/// records nested in `Value` costs every match an offset computation).
+#[derive(Debug, Default)]
 pub enum Value {
     #[default]
     Undef,
     Int(i64),
     Real(f64),
     Arr(Rc<Array>),
-    Rec(Rc<Fields>),
     Ptr(Option<Obj>),
     Occ(Rc<Occurrence>),
+    Rec1(Rc<[Value; 1]>),
+    Rec2(Rc<[Value; 2]>),
+    Rec3(Rc<[Value; 3]>),
+    Rec4(Rc<[Value; 4]>),
+    Rec5(Rc<[Value; 5]>),
+    Rec6(Rc<[Value; 6]>),
+    Rec7(Rc<[Value; 7]>),
+    Rec8(Rc<[Value; 8]>),
+    RecN(Rc<Vec<Value>>),
+}
+
+/// `$body` for each record variant of `$v`, its `Rc` bound to `$r`;
+/// `$other` for any other value.
+macro_rules! each_record {
+    ($v:expr, $r:ident => $body:expr, _ => $other:expr) => {
+        match $v {
+            Value::Rec1($r) => $body,
+            Value::Rec2($r) => $body,
+            Value::Rec3($r) => $body,
+            Value::Rec4($r) => $body,
+            Value::Rec5($r) => $body,
+            Value::Rec6($r) => $body,
+            Value::Rec7($r) => $body,
+            Value::Rec8($r) => $body,
+            Value::RecN($r) => $body,
+            _ => $other,
+        }
+    };
+}
+
+impl Clone for Value {
+    /// Scalars, arrays and access values inline; a record's clone (one
+    /// reference count, whichever its variant) out of line, so that the
+    /// engine's every copy of a value stays small.
+    #[inline]
+    fn clone(&self) -> Value {
+        match self {
+            Value::Undef => Value::Undef,
+            Value::Int(i) => Value::Int(*i),
+            Value::Real(x) => Value::Real(*x),
+            Value::Arr(a) => Value::Arr(a.clone()),
+            Value::Ptr(p) => Value::Ptr(p.clone()),
+            _ => self.clone_other(),
+        }
+    }
+}
+
+impl Value {
+    #[inline(never)]
+    fn clone_other(&self) -> Value {
+        match self {
+            Value::Occ(o) => Value::Occ(o.clone()),
+            Value::Rec1(r) => Value::Rec1(r.clone()),
+            Value::Rec2(r) => Value::Rec2(r.clone()),
+            Value::Rec3(r) => Value::Rec3(r.clone()),
+            Value::Rec4(r) => Value::Rec4(r.clone()),
+            Value::Rec5(r) => Value::Rec5(r.clone()),
+            Value::Rec6(r) => Value::Rec6(r.clone()),
+            Value::Rec7(r) => Value::Rec7(r.clone()),
+            Value::Rec8(r) => Value::Rec8(r.clone()),
+            Value::RecN(r) => Value::RecN(r.clone()),
+            Value::Undef | Value::Int(_) | Value::Real(_) | Value::Arr(_) | Value::Ptr(_) => {
+                unreachable!("cloned inline")
+            }
+        }
+    }
+
+    /// A record value of `n` components, the `k`th `next(k)`, in order
+    /// (one allocation for up to eight; nothing built on the way).
+    #[inline]
+    pub fn record_of(n: usize, mut next: impl FnMut(usize) -> Value) -> Value {
+        use std::array::from_fn;
+        match n {
+            1 => Value::Rec1(Rc::new(from_fn(&mut next))),
+            2 => Value::Rec2(Rc::new(from_fn(&mut next))),
+            3 => Value::Rec3(Rc::new(from_fn(&mut next))),
+            4 => Value::Rec4(Rc::new(from_fn(&mut next))),
+            5 => Value::Rec5(Rc::new(from_fn(&mut next))),
+            6 => Value::Rec6(Rc::new(from_fn(&mut next))),
+            7 => Value::Rec7(Rc::new(from_fn(&mut next))),
+            8 => Value::Rec8(Rc::new(from_fn(&mut next))),
+            _ => Value::RecN(Rc::new((0..n).map(next).collect())),
+        }
+    }
+    /// A record value of these components (one allocation for up to
+    /// eight).
+    pub fn record(mut v: Fields) -> Value {
+        let n = v.len();
+        let mut parts = v.drain(..);
+        Value::record_of(n, |_| parts.next().unwrap_or_default())
+    }
+    /// A record's components, `None` for any other value.
+    #[inline]
+    pub fn fields(&self) -> Option<&[Value]> {
+        each_record!(self, r => Some(&r[..]), _ => None)
+    }
+    /// A record's components to write, copied first when the record is
+    /// shared (`Rc::make_mut`); `None` for any other value.
+    #[inline]
+    pub fn fields_mut(&mut self) -> Option<&mut [Value]> {
+        each_record!(self, r => Some(&mut Rc::make_mut(r)[..]), _ => None)
+    }
+    /// Whether this is a record value.
+    #[inline]
+    pub fn is_record(&self) -> bool {
+        self.fields().is_some()
+    }
 }
 
 /// `*slot = v` without a call of the drop glue when the old value owns
@@ -34,9 +150,9 @@ pub fn overwrite(slot: &mut Value, v: Value) {
     }
 }
 
-/// The components of a record value. Up to two are held in the record's
-/// own allocation (a list node is then two allocations, not three).
-pub type Fields = smallvec::SmallVec<[Value; 2]>;
+/// A record's components while it is built (on the native stack for up
+/// to eight), made a value by [`Value::record`].
+pub type Fields = smallvec::SmallVec<[Value; 8]>;
 
 pub use crate::check::types::Variant;
 
@@ -202,14 +318,16 @@ impl PartialEq for Value {
                     && (0..a.bounds.len()).all(|d| a.len(d) == b.len(d))
                     && a.data == b.data
             }
-            (Value::Rec(a), Value::Rec(b)) => a == b,
             (Value::Ptr(a), Value::Ptr(b)) => match (a, b) {
                 (None, None) => true,
                 (Some(x), Some(y)) => Rc::ptr_eq(&x.0, &y.0),
                 _ => false,
             },
             (Value::Undef, Value::Undef) => true,
-            _ => false,
+            (a, b) => match (a.fields(), b.fields()) {
+                (Some(a), Some(b)) => a == b,
+                _ => false,
+            },
         }
     }
 }
@@ -666,7 +784,6 @@ mod tests {
 #[cfg(test)]
 mod drop_tests {
     use super::{Obj, Value};
-    use std::rc::Rc;
 
     /// A list of many nodes (`type Node is record V : Integer; Next : Ptr;
     /// end record`) is freed in constant native stack: on a thread with
@@ -678,10 +795,10 @@ mod drop_tests {
             .spawn(|| {
                 let mut head = Value::Ptr(None);
                 for i in 0..300_000 {
-                    head = Value::Ptr(Some(Obj::new(Value::Rec(Rc::new(smallvec::smallvec![
+                    head = Value::Ptr(Some(Obj::new(Value::record(smallvec::smallvec![
                         Value::Int(i),
                         head,
-                    ])))));
+                    ]))));
                 }
                 // A second access to the fifth node keeps it and its tail.
                 let Value::Ptr(Some(first)) = &head else {
@@ -689,16 +806,16 @@ mod drop_tests {
                 };
                 let mut p = first.clone();
                 for _ in 0..4 {
-                    let next = match &*p.borrow() {
-                        Value::Rec(r) => r[1].clone(),
+                    let next = match p.borrow().fields() {
+                        Some(r) => r[1].clone(),
                         _ => panic!(),
                     };
                     let Value::Ptr(Some(n)) = next else { panic!() };
                     p = n;
                 }
                 drop(head);
-                let v = match &*p.borrow() {
-                    Value::Rec(r) => r[0].int(),
+                let v = match p.borrow().fields() {
+                    Some(r) => r[0].int(),
                     _ => panic!("the kept node lost its value"),
                 };
                 assert_eq!(v, 299_995);

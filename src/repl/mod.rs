@@ -872,7 +872,8 @@ impl Repl {
                     .collect();
                 format!("({})", items.join(", "))
             }
-            (Value::Rec(r), TypeKind::Record(fields)) => {
+            (v, TypeKind::Record(fields)) if v.is_record() => {
+                let r = v.fields().unwrap_or_default();
                 let mut s = String::new();
                 // Only the components of the variant the discriminants choose.
                 let present = fields.iter().zip(r.iter()).filter(|(f, _)| {

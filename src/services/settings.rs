@@ -146,7 +146,7 @@ pub(super) fn set_robot_config(
 }
 
 pub(super) fn set_tool(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {
-    let Value::Rec(rec) = &a[0] else {
+    let Some(rec) = a[0].fields() else {
         return Ok(None);
     };
     let trans = Pose::from_rows(frame_rows(&rec[0]));

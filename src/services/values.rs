@@ -45,7 +45,7 @@ pub fn grip_reading(st: &RobotState) -> crate::driver::GripperState {
 pub(super) fn tool_value(st: &RobotState) -> Value {
     let g = grip_reading(st);
 
-    Value::Rec(Rc::new(smallvec::smallvec![
+    Value::record(smallvec::smallvec![
         frame_value(&st.tool.trans),
         Value::Real(st.tool.force_min),
         Value::Real(st.tool.force_max),
@@ -53,7 +53,7 @@ pub(super) fn tool_value(st: &RobotState) -> Value {
         Value::Real(st.tool.dist_min),
         Value::Real(st.tool.dist_max),
         Value::Real(g.opening),
-    ]))
+    ])
 }
 
 pub(super) fn value_tool(cx: &mut Cx, st: &mut RobotState, a: &mut [Value]) -> R<Option<Value>> {

@@ -23,6 +23,17 @@ impl<'a, 'c> Run<'a, 'c> {
         std::mem::take(&mut self.m.stack[i])
     }
 
+    /// The value of a record aggregate of a type without discriminants,
+    /// its components taken from their slots straight into the record's
+    /// one allocation.
+    fn record_from_slots(&mut self, vars: &[Var]) -> Value {
+        let (stack, display) = (&mut self.m.stack, &self.m.display);
+        Value::record_of(vars.len(), |k| {
+            let v = vars[k];
+            std::mem::take(&mut stack[display[v.level as usize] + v.slot as usize])
+        })
+    }
+
     #[inline(always)]
     pub(super) fn sl(&self, v: Var) -> usize {
         self.m.display[v.level as usize] + v.slot as usize
@@ -501,10 +512,9 @@ impl<'a, 'c> Run<'a, 'c> {
                     store_index!(arr, idx, 2, src, span)
                 }
                 Op::Field(d, a, i, span) => {
-                    let got = match &self.m.stack[ix!(*a)] {
-                        Value::Rec(r) => Some(r[*i as usize].clone()),
-                        _ => None,
-                    };
+                    let got = self.m.stack[ix!(*a)]
+                        .fields()
+                        .map(|r| r[*i as usize].clone());
                     match got {
                         Some(v) => {
                             self.put_ix(ix!(*d), v);
@@ -515,9 +525,9 @@ impl<'a, 'c> Run<'a, 'c> {
                 }
                 Op::DerefField(d, a, i, at_deref, at_field) => {
                     let got = match &self.m.stack[ix!(*a)] {
-                        Value::Ptr(Some(o)) => match &*o.borrow() {
-                            Value::Rec(r) => Ok(r[*i as usize].clone()),
-                            _ => Err(("discriminant check failed", *at_field)),
+                        Value::Ptr(Some(o)) => match o.borrow().fields() {
+                            Some(r) => Ok(r[*i as usize].clone()),
+                            None => Err(("discriminant check failed", *at_field)),
                         },
                         _ => Err(("access check failed", *at_deref)),
                     };
@@ -997,17 +1007,14 @@ impl<'a, 'c> Run<'a, 'c> {
                     r.map(|v| self.put_ix(ix!(a.dst), v))
                 }
                 Op::Record(r) => {
-                    let mut fields = value::Fields::with_capacity(r.fields.len());
-                    for v in r.fields.iter() {
-                        let i = ix!(*v);
-                        fields.push(std::mem::take(&mut self.m.stack[i]));
-                    }
                     if r.plain {
                         // No discriminants: nothing to check or shape (as
                         // `record_agg` finds, without the type's lookup).
-                        self.put_ix(ix!(r.dst), Value::Rec(Rc::new(fields)));
+                        let v = self.record_from_slots(&r.fields);
+                        self.put_ix(ix!(r.dst), v);
                         continue;
                     }
+                    let fields = r.fields.iter().map(|v| self.take_slot(*v)).collect();
                     self.record_agg(r.ty, fields, r.span)
                         .map(|v| self.put_ix(ix!(r.dst), v))
                 }

@@ -292,10 +292,7 @@ pub(super) fn run(
             Op::DerefField(d, a, f, ..) => {
                 let got = match stack.get(at!(*a)) {
                     Some(Value::Ptr(Some(o))) => match o.try_borrow() {
-                        Ok(r) => match &*r {
-                            Value::Rec(r) => r.get(*f as usize).cloned(),
-                            _ => None,
-                        },
+                        Ok(r) => r.fields().and_then(|r| r.get(*f as usize).cloned()),
                         Err(_) => None,
                     },
                     _ => None,
