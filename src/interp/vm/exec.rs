@@ -108,19 +108,10 @@ impl<'a, 'c> Run<'a, 'c> {
         y: i64,
         span: impl FnOnce() -> Span,
     ) -> R<i64> {
-        // (The same values as `int_op`'s; anything else, and every
-        // result outside Integer's range, goes there for its checks.)
-        let quick = match o {
-            IntOp::Add => x.checked_add(y),
-            IntOp::Sub => x.checked_sub(y),
-            IntOp::Mul => x.checked_mul(y),
-            IntOp::Mod if y > 0 => Some(x.rem_euclid(y)),
-            IntOp::Rem if y > 0 => Some(x % y),
-            _ => None,
-        };
-        match quick {
-            Some(v) if (i32::MIN as i64..=i32::MAX as i64).contains(&v) => Ok(v),
-            _ => self.int_op(o, x, y, span()),
+        // (Anything `int_quick` leaves goes to `int_op` for its checks.)
+        match super::fast::int_quick(o, x, y) {
+            Some(v) => Ok(v),
+            None => self.int_op(o, x, y, span()),
         }
     }
 
@@ -138,19 +129,13 @@ impl<'a, 'c> Run<'a, 'c> {
     /// place (nothing to drop).
     #[inline(always)]
     pub(super) fn put_int_ix(&mut self, i: usize, x: i64) {
-        match &mut self.m.stack[i] {
-            Value::Int(y) => *y = x,
-            s => value::overwrite(s, Value::Int(x)),
-        }
+        put_int_in(&mut self.m.stack[i], x);
     }
 
     /// `put_ix` of a real, in place like [`Self::put_int`].
     #[inline(always)]
     pub(super) fn put_real_ix(&mut self, i: usize, x: f64) {
-        match &mut self.m.stack[i] {
-            Value::Real(y) => *y = x,
-            s => value::overwrite(s, Value::Real(x)),
-        }
+        put_real_in(&mut self.m.stack[i], x);
     }
 
     /// Runs level-0 code to its end.
@@ -1239,6 +1224,25 @@ impl<'a, 'c> Run<'a, 'c> {
             }
             reload!();
         }
+    }
+}
+
+/// `*slot = Int(x)`: a slot that holds an integer already is written in
+/// place (nothing to drop).
+#[inline(always)]
+pub(super) fn put_int_in(slot: &mut Value, x: i64) {
+    match slot {
+        Value::Int(y) => *y = x,
+        s => value::overwrite(s, Value::Int(x)),
+    }
+}
+
+/// `*slot = Real(x)`, in place like [`put_int_in`].
+#[inline(always)]
+pub(super) fn put_real_in(slot: &mut Value, x: f64) {
+    match slot {
+        Value::Real(y) => *y = x,
+        s => value::overwrite(s, Value::Real(x)),
     }
 }
 

@@ -19,7 +19,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// of `Run::int_op` for results in Integer's range (anything else: None,
 /// for the big loop to check).
 #[inline(always)]
-fn int_quick(o: IntOp, x: i64, y: i64) -> Option<i64> {
+pub(super) fn int_quick(o: IntOp, x: i64, y: i64) -> Option<i64> {
     let v = match o {
         IntOp::Add => x.checked_add(y),
         IntOp::Sub => x.checked_sub(y),
@@ -110,19 +110,13 @@ pub(super) fn run(
         macro_rules! put_int {
             ($i:expr, $x:expr) => {{
                 let x: i64 = $x;
-                match &mut stack[$i] {
-                    Value::Int(y) => *y = x,
-                    s => value::overwrite(s, Value::Int(x)),
-                }
+                super::exec::put_int_in(&mut stack[$i], x)
             }};
         }
         macro_rules! put_real {
             ($i:expr, $x:expr) => {{
                 let x: f64 = $x;
-                match &mut stack[$i] {
-                    Value::Real(y) => *y = x,
-                    s => value::overwrite(s, Value::Real(x)),
-                }
+                super::exec::put_real_in(&mut stack[$i], x)
             }};
         }
         macro_rules! stopped {
