@@ -167,7 +167,7 @@ fn main() -> ExitCode {
     };
     let color = color(&cli.globals.color);
     let _ = TEST_GLOBALS.set(TestGlobals::of(&cli));
-    // Deep recursion in user programs needs a big stack for the tree walker.
+    // Deeply nested text needs a big stack for the parser and the checker.
     let child = std::thread::Builder::new()
         .stack_size(512 << 20)
         .spawn(move || real_main(cli.command, color, devices));

@@ -11,19 +11,6 @@ use std::cell::Cell;
 thread_local! {
     static TICKS: Cell<u64> = const { Cell::new(0) };
     static TEXTS: Cell<u64> = const { Cell::new(0) };
-    static WALKED: Cell<u64> = const { Cell::new(0) };
-}
-
-/// Counts an expression or statement the reference tree walker ran.
-#[inline]
-pub fn walked() {
-    WALKED.with(|t| t.set(t.get().wrapping_add(1)));
-}
-
-/// The expressions and statements the tree walker ran on this thread: a
-/// run in the compiled engine runs none (`tests/one_engine.rs`).
-pub fn walker_steps() -> u64 {
-    WALKED.with(Cell::get)
 }
 
 /// Counts a text lexed and parsed (a file, a stdlib file, a REPL entry; a

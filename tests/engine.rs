@@ -2,23 +2,21 @@
 //! `src/interp/vm/`, which may not build a `Session`: the engine is a
 //! layer below it, tests/layering.rs): a long body compiled a part at a
 //! time as it is checked, frames freed as scalars, a fused argument's
-//! overflow, an exception's chain of calls; each compared with the
-//! reference walker where it runs the program too.
+//! overflow, an exception's chain of calls.
 
 use adair::diag::Diagnostic;
 use adair::golden::SharedBuf;
-use adair::interp::vm::Engine;
 use adair::session::{Outcome, Session};
 
 /// A long program (over `LAZY_FROM`, so its bodies are parsed a part
 /// at a time), with in each part: assignments, indexing, a call with an
 /// `in out` parameter, a declare block (slots declared in a late part),
 /// a loop left by `exit`, an exception handled inside the part, a call
-/// in an aggregate (which the walker evaluates: the function's body
-/// is not compiled as parts, only the main program's is); a nested
+/// in an aggregate (the function's body is not compiled as parts, only
+/// the main program's is); a nested
 /// recursive function, two mutually recursive ones and a procedure
 /// with a handler; a task (the body is a master, which a
-/// `return` leaves; the reference walker runs no task); and a `return`
+/// `return` leaves); and a `return`
 /// in the last part.
 fn long_program(task: bool) -> String {
     let mut t = String::from(
@@ -73,13 +71,11 @@ fn long_program(task: bool) -> String {
     t
 }
 
-/// Output and outcome of a run of `src`, compiled as checked or not, in
-/// the compiled engine or the reference walker; and whether the body
-/// of `Big` kept any checked assignment.
-fn run(src: &str, parts: bool, engine: Engine) -> (String, String, bool) {
+/// Output and outcome of a run of `src`, compiled as checked or not; and
+/// whether the body of `Big` kept any checked assignment.
+fn run(src: &str, parts: bool) -> (String, String, bool) {
     let buf = SharedBuf::default();
     let mut s = Session::new(Box::new(buf.clone()));
-    s.machine.engine = engine;
     if parts {
         s.compile_as_checked();
     }
@@ -102,32 +98,28 @@ fn run(src: &str, parts: bool, engine: Engine) -> (String, String, bool) {
 }
 
 /// A long body compiled a part at a time as it is checked (`adair run`)
-/// runs as the body compiled whole and as the reference walker runs
-/// it, and keeps none of its checked statements.
+/// runs as the body compiled whole, and keeps none of its checked
+/// statements.
 #[test]
 fn a_long_body_compiled_as_checked_runs_as_the_whole_body() {
     for task in [false, true] {
         let src = long_program(task);
         assert!(src.len() >= adair::syntax::LAZY_FROM, "{}", src.len());
-        let (whole, code, kept) = run(&src, false, Engine::Compiled);
+        let (whole, code, kept) = run(&src, false);
         assert!(kept, "the checked body is kept without parts");
         assert!(whole.contains("returning"), "{whole}");
         assert!(!whole.contains("not reached") && !whole.contains("unexpected"));
         let lines = 1 + task as usize + 2400 / 300;
         assert_eq!(whole.lines().count(), lines, "{whole}");
         assert_eq!(code, "0 ");
-        let (parts, code2, kept) = run(&src, true, Engine::Compiled);
+        let (parts, code2, kept) = run(&src, true);
         assert!(!kept, "no checked statement of the long body is kept");
         assert_eq!((&parts, &code2), (&whole, &code));
-        if !task {
-            let (walked, code3, _) = run(&src, true, Engine::Walker);
-            assert_eq!((&walked, &code3), (&whole, &code));
-        }
     }
 }
 
 /// A long library procedure in a file the program names (`with`) is not
-/// compiled as parts, though it is its unit's last: the walker runs it
+/// compiled as parts, though it is its unit's last: it is compiled whole
 /// when a function called in an aggregate calls it.
 #[test]
 fn a_named_units_long_body_is_not_compiled_as_parts() {
@@ -170,8 +162,8 @@ fn a_long_body_with_an_error_reports_it_and_compiles_nothing() {
         "return;\n   end if;",
         "return;\n   end if;\n   X := \"late\";",
     );
-    let (out, code, _) = run(&src, true, Engine::Compiled);
-    let (out2, code2, _) = run(&src, false, Engine::Compiled);
+    let (out, code, _) = run(&src, true);
+    let (out2, code2, _) = run(&src, false);
     assert!(
         out.is_empty() && code.starts_with("2 ") && code.contains("late"),
         "{code}"
@@ -181,8 +173,8 @@ fn a_long_body_with_an_error_reports_it_and_compiles_nothing() {
 
 /// Frames freed without looking at their slots (`Code::scalar`) hold
 /// only scalars: functions of scalar parameters whose frames also hold
-/// a string, a record, an access value, an exception occurrence or the
-/// walker's values are freed the long way. (A frame freed as scalars
+/// a string, a record, an access value or an exception occurrence are
+/// freed the long way. (A frame freed as scalars
 /// that holds anything else fails the debug assertion in
 /// `Stack::truncate_scalars`, on in test builds.)
 #[test]
@@ -226,8 +218,8 @@ fn frames_freed_as_scalars_hold_only_scalars() {
     assert_eq!(buf.take().trim(), "40764");
 }
 
-/// A fused argument that overflows is reported at the argument, as the
-/// reference walker reports it, not at the call.
+/// A fused argument that overflows is reported at the argument (line 10),
+/// not at the call (line 9).
 #[test]
 fn an_overflow_in_a_fused_argument_is_reported_at_the_argument() {
     let src = "with Ada.Text_IO; use Ada.Text_IO;\n\
@@ -238,74 +230,94 @@ fn an_overflow_in_a_fused_argument_is_reported_at_the_argument() {
         begin\n\
            Put_Line (Integer'Image (Twice\n     (X\n      + 1)));\n\
         end Loc;\n";
-    let mut said = Vec::new();
-    for engine in [Engine::Compiled, Engine::Walker] {
-        let buf = SharedBuf::default();
-        let mut s = Session::new(Box::new(buf.clone()));
-        s.machine.engine = engine;
-        match s.run_source("loc.adb", src) {
-            Outcome::Raised(d) => said.push(d.message),
-            other => panic!("{other:?}"),
-        }
-    }
-    assert!(
-        said[0].contains("loc.adb:10 overflow check failed"),
-        "{said:?}"
-    );
-    assert_eq!(said[0], said[1]);
-}
-
-/// The diagnostic of the exception that ends `src`, in `engine`.
-fn raised(src: &str, engine: Engine) -> Diagnostic {
     let buf = SharedBuf::default();
     let mut s = Session::new(Box::new(buf.clone()));
-    s.machine.engine = engine;
+    let said = match s.run_source("loc.adb", src) {
+        Outcome::Raised(d) => d.message,
+        other => panic!("{other:?}"),
+    };
+    assert!(said.contains("loc.adb:10 overflow check failed"), "{said}");
+}
+
+/// The diagnostic of the exception that ends `src`.
+fn raised(src: &str) -> Diagnostic {
+    let buf = SharedBuf::default();
+    let mut s = Session::new(Box::new(buf.clone()));
     match s.run_source("chain.adb", src) {
         Outcome::Raised(d) => d,
         other => panic!("{other:?}: {}", buf.take()),
     }
 }
 
+/// An occurrence's notes, innermost first, as "line: label".
+fn notes(src: &str, d: &Diagnostic) -> Vec<String> {
+    let line = |at: u32| src[..at as usize].matches('\n').count() + 1;
+    d.notes
+        .iter()
+        .map(|(sp, label)| format!("{}: {label}", line(sp.start)))
+        .collect()
+}
+
 /// The compiled engine keeps its calls in its frames, not in
-/// `Machine::calls`, and adds them to an occurrence's chain: the
-/// chain (the "called from here" notes) is the walker's, for an
-/// exception raised in compiled code, in a function the walker runs
-/// (in an aggregate) below compiled calls, and re-raised by a handler
-/// (added once).
+/// `Machine::calls`, and adds them to an occurrence's chain (the "called
+/// from here" notes): for an exception raised in compiled code below
+/// plain and fused calls, in a function called in an aggregate below a
+/// declaration's call, and re-raised by a handler in each of a recursion's
+/// frames (a recursion's calls from one place are one note, each
+/// re-raise is one).
 #[test]
-fn an_exceptions_calls_are_those_the_walker_reports() {
-    let programs = [
+fn an_exceptions_notes_name_each_call_once() {
+    const CALL: &str = "called from here";
+    const RERAISED: &str = "re-raised here by `raise;`";
+    let programs: [(&str, Vec<String>); 3] = [
         // Plain calls and a fused one (`Down (N - 1)`).
-        "procedure Chain is\n\
-           function Down (N : Integer) return Integer is\n\
-           begin\n   if N = 0 then raise Constraint_Error; end if;\n   return Down (N - 1) + 1;\nend Down;\n\
-           function Twice (N : Integer; M : Integer) return Integer is\n\
-           begin\n   return Down (N) + Down (M);\nend Twice;\n\
-           X : Integer;\n\
-        begin\n   X := Twice (3, 2);\nend Chain;\n",
-        // A function the walker runs, in an aggregate, under compiled calls.
-        "procedure Chain is\n\
-           type Pair is array (1 .. 2) of Integer;\n\
-           function Bad (N : Integer) return Integer is\n\
-           begin\n   if N > 1 then raise Program_Error; end if;\n   return N;\nend Bad;\n\
-           function Make (N : Integer) return Pair is\n\
-           begin\n   return (Bad (1), Bad (N));\nend Make;\n\
-           function Outer (N : Integer) return Integer is\n\
-              P : Pair := Make (N);\n\
-           begin\n   return P (1);\nend Outer;\n\
-           X : Integer;\n\
-        begin\n   X := Outer (2);\nend Chain;\n",
-        // Re-raised by a handler two calls down.
-        "procedure Chain is\n\
-           procedure Fail (N : Integer) is\n\
-           begin\n   if N = 0 then raise Tasking_Error; end if;\n   Fail (N - 1);\n\
-           exception\n   when Tasking_Error => raise;\nend Fail;\n\
-        begin\n   Fail (3);\nend Chain;\n",
+        (
+            "procedure Chain is\n\
+               function Down (N : Integer) return Integer is\n\
+               begin\n   if N = 0 then raise Constraint_Error; end if;\n   return Down (N - 1) + 1;\nend Down;\n\
+               function Twice (N : Integer; M : Integer) return Integer is\n\
+               begin\n   return Down (N) + Down (M);\nend Twice;\n\
+               X : Integer;\n\
+            begin\n   X := Twice (3, 2);\nend Chain;\n",
+            vec![
+                format!("5: {CALL} 3 times in a row"),
+                format!("9: {CALL}"),
+                format!("13: {CALL}"),
+            ],
+        ),
+        // A function called in an aggregate, below a declaration's call.
+        (
+            "procedure Chain is\n\
+               type Pair is array (1 .. 2) of Integer;\n\
+               function Bad (N : Integer) return Integer is\n\
+               begin\n   if N > 1 then raise Program_Error; end if;\n   return N;\nend Bad;\n\
+               function Make (N : Integer) return Pair is\n\
+               begin\n   return (Bad (1), Bad (N));\nend Make;\n\
+               function Outer (N : Integer) return Integer is\n\
+                  P : Pair := Make (N);\n\
+               begin\n   return P (1);\nend Outer;\n\
+               X : Integer;\n\
+            begin\n   X := Outer (2);\nend Chain;\n",
+            vec![
+                format!("10: {CALL}"),
+                format!("13: {CALL}"),
+                format!("19: {CALL}"),
+            ],
+        ),
+        // Re-raised by a handler in each of four frames.
+        (
+            "procedure Chain is\n\
+               procedure Fail (N : Integer) is\n\
+               begin\n   if N = 0 then raise Tasking_Error; end if;\n   Fail (N - 1);\n\
+               exception\n   when Tasking_Error => raise;\nend Fail;\n\
+            begin\n   Fail (3);\nend Chain;\n",
+            std::iter::repeat_n(format!("7: {RERAISED}"), 4)
+                .chain([format!("5: {CALL} 3 times in a row"), format!("10: {CALL}")])
+                .collect(),
+        ),
     ];
-    for src in programs {
-        let compiled = raised(src, Engine::Compiled);
-        let walked = raised(src, Engine::Walker);
-        assert!(compiled.notes.len() >= 3, "{compiled:?}");
-        assert_eq!(compiled, walked);
+    for (src, want) in programs {
+        let d = raised(src);
+        assert_eq!(notes(src, &d), want, "{d:?}");
     }
 }

@@ -1,6 +1,4 @@
-//! The GNAT comparison: every `tests/ada/X.adb` runs in adair (in the compiled
-//! engine and again in the reference tree walker, except programs with tasks,
-//! which run in the compiled engine only) and must print
+//! The GNAT comparison: every `tests/ada/X.adb` runs in adair and must print
 //! what GNAT printed and end with GNAT's exit status.
 //!
 //! GNAT's output is recorded beside the program in `tests/ada/X.gnat` (first
@@ -74,22 +72,11 @@ fn gnat_output(src: &Path, work: &Path) -> Result<Recorded, String> {
     })
 }
 
-fn adair_output(src: &Path, engine: adair::interp::vm::Engine) -> Recorded {
+fn adair_output(src: &Path) -> Recorded {
     let buf = adair::golden::SharedBuf::default();
     let mut s = adair::session::Session::new(Box::new(buf.clone()));
-    s.machine.engine = engine;
     let text = std::fs::read_to_string(src).unwrap_or_default();
-    let walked = adair::work::walker_steps();
     let outcome = s.run_source(&src.to_string_lossy(), &text);
-    // One engine (issue 32): a compiled run hands nothing to the tree
-    // walker, neither a statement nor an expression of the type table.
-    let steps = adair::work::walker_steps() - walked;
-    if engine == adair::interp::vm::Engine::Compiled && steps != 0 {
-        return Recorded {
-            stdout: format!("the compiled run made {steps} steps in the tree walker\n"),
-            code: -1,
-        };
-    }
     Recorded {
         stdout: buf.take(),
         code: outcome.exit_code(),
@@ -146,22 +133,7 @@ fn trial(path: &Path, work: &Path, mode: Mode) -> Result<(), Failed> {
             recorded
         }
     };
-    use adair::interp::vm::Engine;
-    compare(
-        "GNAT (-) against adair (+)",
-        &recorded,
-        &adair_output(path, Engine::Compiled),
-    )?;
-    // Tasks run in the compiled engine only: the walker cannot suspend one.
-    let text = std::fs::read_to_string(path).unwrap_or_default();
-    if adair::golden::uses_tasks(&text) {
-        return Ok(());
-    }
-    compare(
-        "GNAT (-) against adair's reference tree walker (+)",
-        &recorded,
-        &adair_output(path, Engine::Walker),
-    )
+    compare("GNAT (-) against adair (+)", &recorded, &adair_output(path))
 }
 
 fn main() {

@@ -1,10 +1,7 @@
 //! The golden corpus: every `.air` under `tests/golden/` and `examples/` is
 //! one named test, run as `adair test` runs it (a child process of the
-//! `adair` binary in the script's own folder, `X.in` as its input), in the
-//! compiled engine and again in the reference tree walker
-//! (`ADAIR_ENGINE=walker`): both must print the `.out` file (differential
-//! testing of the engines). Programs with tasks run in the compiled engine
-//! only.
+//! `adair` binary in the script's own folder, `X.in` as its input), and must
+//! print its `.out` file.
 //! `BLESS=1 cargo test --test golden` rewrites the `.out` files.
 #![allow(clippy::print_stdout, clippy::print_stderr)]
 
@@ -16,17 +13,12 @@ use std::path::{Path, PathBuf};
 /// `-- adair: --timeout` line still wins).
 const LIMIT: f64 = 300.0;
 
-fn runner(walker: bool) -> Isolated {
+fn runner() -> Isolated {
     Isolated {
         exe: PathBuf::from(env!("CARGO_BIN_EXE_adair")),
         global: Vec::new(),
         args: Vec::new(),
-        env: if walker {
-            vec![("ADAIR_ENGINE".into(), "walker".into())]
-        } else {
-            // Whatever the caller's environment says: the compiled engine.
-            vec![("ADAIR_ENGINE".into(), "compiled".into())]
-        },
+        env: Vec::new(),
         timeout: LIMIT,
     }
 }
@@ -45,9 +37,8 @@ fn main() {
         .into_iter()
         .map(|path| {
             let name = path.with_extension("").to_string_lossy().replace('/', "::");
-            Trial::test(name, move || match runner(false).check(&path, bless) {
-                Verdict::Pass => walker_agrees(&path),
-                Verdict::Blessed => Ok(()),
+            Trial::test(name, move || match runner().check(&path, bless) {
+                Verdict::Pass | Verdict::Blessed => Ok(()),
                 other => Err(failed(&path, &other)),
             })
         })
@@ -63,20 +54,4 @@ fn failed(path: &Path, v: &Verdict) -> Failed {
         seconds: 0.0,
     };
     Failed::from(golden::progress(&r, false))
-}
-
-/// The reference engine prints the `.out` file too (programs with tasks run
-/// in the compiled engine only: the walker cannot suspend a task).
-fn walker_agrees(path: &Path) -> Result<(), Failed> {
-    let text = std::fs::read_to_string(path).unwrap_or_default();
-    if golden::uses_tasks(&text) {
-        return Ok(());
-    }
-    match runner(true).check(path, false) {
-        Verdict::Pass => Ok(()),
-        other => Err(Failed::from(format!(
-            "the tree walker (reference engine) differs from the .out:\n{}",
-            failed(path, &other).message().unwrap_or_default()
-        ))),
-    }
 }

@@ -11,7 +11,6 @@ fn adair_env(args: &[&str], env: &[(&str, &str)], input: Option<&str>) -> (i32, 
     cmd.args(args)
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .env("NO_COLOR", "1")
-        .env_remove("ADAIR_ENGINE")
         .stdin(std::process::Stdio::piped())
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped());
@@ -73,17 +72,6 @@ fn a_rendezvous_passes_in_and_out_parameters() {
     let f = temp_file("server.adb", SERVER);
     let (code, out, err) = adair(&["run", &f]);
     assert_eq!((code, out.as_str()), (0, " 42\n"), "{err}");
-}
-
-#[test]
-fn the_reference_walker_refuses_tasks_with_a_clear_message() {
-    let f = temp_file("server_walker.adb", SERVER);
-    let (code, _, err) = adair_env(&["run", &f], &[("ADAIR_ENGINE", "walker")], None);
-    assert_eq!(code, 1, "{err}");
-    assert!(
-        err.contains("tasks run in the compiled engine only"),
-        "{err}"
-    );
 }
 
 #[test]

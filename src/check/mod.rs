@@ -28,6 +28,7 @@ pub use persist::{PMap, PVec};
 pub use scopes::edit_distance;
 use std::collections::HashMap;
 use std::rc::Rc;
+use tables::ProtMember;
 pub use tables::{Package, Tables};
 use types::*;
 
@@ -107,6 +108,18 @@ pub struct Options {
 /// The slots of an accept statement's parameters and their modes.
 type AcceptSlots = Vec<(Var, ast::Mode)>;
 
+/// An accept statement whose body encloses the statement being checked.
+#[derive(Clone)]
+struct Accepting {
+    /// The task type and its entry.
+    task: u32,
+    entry: u32,
+    /// Where the accept statement is.
+    at: Span,
+    /// Its parameters' slots.
+    slots: AcceptSlots,
+}
+
 /// Where the statement being checked stands among tasks, protected bodies
 /// and masters (tasks.md).
 #[derive(Clone, Default)]
@@ -116,7 +129,7 @@ struct TaskContext {
     /// The entries whose accept bodies enclose the statement being checked
     /// (an accept of one of them inside is illegal, RM 9.5.2(15)), and
     /// the slots of each accept's parameters (for `requeue`).
-    accepting: Vec<(u32, u32, Span, AcceptSlots)>,
+    accepting: Vec<Accepting>,
     /// The protected entry bodies being checked: the body, the protected
     /// type and the entry (for `requeue`).
     entry_bodies: Vec<(FuncId, u32, u32)>,
@@ -139,10 +152,8 @@ pub struct Checker {
     /// The run's modes: what the checked form is for.
     pub options: Options,
     /// The next subprogram body checked is the main program's, whose
-    /// statements are compiled a part at a time (see `compile_parts`): only
-    /// the compiled engine runs it (a subprogram that an expression the
-    /// walker evaluates calls is run by the walker, from its checked
-    /// statements).
+    /// statements are compiled a part at a time (see `compile_parts`); other
+    /// bodies are compiled whole on their first call.
     main_body: bool,
     /// The next block checked is the main program's own.
     parts_here: bool,
@@ -434,7 +445,7 @@ impl Checker {
             let unfinished = p.entries.iter().any(|e| e.body.is_none())
                 || self.tables.prot_members[k]
                     .iter()
-                    .any(|(_, _, real, _)| self.tables.funcs[*real as usize].body.is_none());
+                    .any(|m| self.tables.funcs[m.real as usize].body.is_none());
             if unfinished && !self.tables.prot_bodied.contains(&(k as u32)) {
                 missing.push(diagnostics::protected_without_body(p.span, &p.name));
             }

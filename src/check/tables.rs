@@ -46,9 +46,8 @@ pub struct Tables {
     /// Task types and protected types.
     pub tasks: PVec<TaskDef>,
     pub prots: PVec<ProtDef>,
-    /// Each protected type's subprograms: name, profile, real subprogram,
-    /// whether it is a function.
-    pub(super) prot_members: Vec<Vec<(String, FuncId, FuncId, bool)>>,
+    /// Each protected type's subprograms.
+    pub(super) prot_members: Vec<Vec<ProtMember>>,
     /// Profile -> real subprogram of protected operations.
     pub(super) prot_real: HashMap<FuncId, (FuncId, u32)>,
     /// The profiles of the operations declared in a protected type's
@@ -103,4 +102,15 @@ impl Checker {
             prots: &self.tables.prots,
         }
     }
+}
+
+/// A subprogram of a protected type.
+#[derive(Clone, Debug)]
+pub(super) struct ProtMember {
+    /// Its name's key.
+    pub(super) name: String,
+    /// The profile callers see (without the object).
+    pub(super) profile: FuncId,
+    /// The real subprogram (the object its first parameter).
+    pub(super) real: FuncId,
 }

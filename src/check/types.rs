@@ -282,7 +282,7 @@ impl Types {
         self.list[self.base(t) as usize].modulus
     }
     /// The last value of a modular type (`modulus - 1`, which fits a u32):
-    /// what the engines' [`modular`](crate::check::ir::modular) takes.
+    /// what the engine's [`modular`](crate::check::ir::modular) takes.
     pub fn modular_last(&self, t: TypeId) -> Option<u32> {
         self.modulus(t).map(|n| (n - 1) as u32)
     }

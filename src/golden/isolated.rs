@@ -35,7 +35,7 @@ pub struct Isolated {
     pub global: Vec<OsString>,
     /// Options of `test --child` (`--robot R`, `--trace`, `--port ...`).
     pub args: Vec<OsString>,
-    /// Environment of the child (`ADAIR_ENGINE=walker` in the project's tests).
+    /// Extra environment of the child.
     pub env: Vec<(OsString, OsString)>,
     /// The time limit of scripts that set none (seconds, wall clock; 0: none).
     pub timeout: f64,

@@ -126,9 +126,6 @@ pub fn run_case(path: &Path) -> String {
 pub struct Target {
     pub port: Option<crate::driver::serial::PortSettings>,
     pub rehearse: bool,
-    /// The engine to run in (None: the session's default, `ADAIR_ENGINE`
-    /// or the compiled one); the tests run every script in both.
-    pub engine: Option<crate::interp::vm::Engine>,
     /// The simulated devices (a script's `--devices` directive).
     pub devices: Option<crate::devices::Devices>,
     /// The robot of scripts that name none (`adair test --robot`; None: rv-m1).
@@ -249,17 +246,6 @@ pub fn run_case_checked(path: &Path, target: &Target) -> Result<String, String> 
     Ok(out)
 }
 
-/// Whether a program declares tasks or protected objects: those run in the
-/// compiled engine only (the reference walker cannot suspend a task), so the
-/// differential tests run them once.
-pub fn uses_tasks(text: &str) -> bool {
-    use crate::syntax::token::{Kw, Token};
-    crate::syntax::lexer::lex(text, 0)
-        .0
-        .iter()
-        .any(|t| matches!(t.0, Token::Kw(Kw::Task | Kw::Protected)))
-}
-
 /// What a run printed: the program's output (with the motion trace, if asked
 /// for, interleaved), the diagnostics without colour, and the exit status.
 pub struct RunText {
@@ -283,9 +269,6 @@ pub fn run_text_on(name: &str, text: &str, robot: &str, trace: bool, target: &Ta
     let mut s = Session::new(Box::new(buf.clone()));
     s.machine.input = Box::new(std::io::Cursor::new(target.input.clone()));
     s.machine.interrupted = target.interrupt.clone();
-    if let Some(e) = target.engine {
-        s.machine.engine = e;
-    }
     // The script runs once, as `adair run` runs it.
     s.compile_as_checked();
     let tracer = || trace.then(|| Box::new(buf.clone()) as Box<dyn Write>);

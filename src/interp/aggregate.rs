@@ -220,62 +220,6 @@ impl<'c> Run<'_, 'c> {
             )),
         }
     }
-
-    /// The walker's array aggregate: its parts in the order the compiled
-    /// engine evaluates them.
-    pub(super) fn array_agg(&mut self, agg: &ArrayAgg, span: Span) -> R<Value> {
-        let t = agg.ty;
-        match &agg.kind {
-            ArrayAggKind::Positional(items, others) => {
-                let mut vals = Vec::with_capacity(items.len());
-                for i in items {
-                    vals.push(self.eval(i)?);
-                }
-                let b = self.agg_bounds(t, vals.len(), None, others.is_some(), span)?;
-                let others = match others {
-                    Some(o) if b.others > 0 => Some(self.agg_part(o, b.others)?),
-                    _ => None,
-                };
-                self.positional_agg(t, &b, vals, others, span)
-            }
-            ArrayAggKind::Named(choices, others) => {
-                let mut ranges = Vec::with_capacity(choices.len());
-                for (rs, _) in choices {
-                    let mut r = Vec::with_capacity(rs.len());
-                    for (l, h) in rs {
-                        r.push((self.eval(l)?.int(), self.eval(h)?.int()));
-                    }
-                    ranges.push(r);
-                }
-                let flat: Vec<(i64, i64)> = ranges.iter().flatten().copied().collect();
-                let b = self.agg_bounds(t, 0, Some(&flat), others.is_some(), span)?;
-                let mut parts = Vec::with_capacity(choices.len());
-                for (rs, (_, v)) in ranges.into_iter().zip(choices) {
-                    let count = rs.iter().map(|(l, h)| (h - l + 1).max(0)).sum();
-                    let part = self.agg_part(v, count)?;
-                    parts.push((rs, part));
-                }
-                let others = match others {
-                    Some(o) if b.others > 0 => Some(self.agg_part(o, b.others)?),
-                    _ => None,
-                };
-                self.named_agg(t, &b, parts, others, span)
-            }
-        }
-    }
-
-    /// A choice's value for `count` components: once when that is the same
-    /// as once per component ([`repeatable`]).
-    fn agg_part(&mut self, e: &Ex, count: i64) -> R<AggPart> {
-        if repeatable(self.c.types, e) {
-            return Ok(AggPart::One(self.eval(e)?));
-        }
-        let mut vs = Vec::with_capacity(count.max(0) as usize);
-        for _ in 0..count {
-            vs.push(self.eval(e)?);
-        }
-        Ok(AggPart::Each(vs))
-    }
 }
 
 /// Whether evaluating `e` again gives an equal value and does nothing

@@ -209,9 +209,6 @@ pub struct Machine {
     current: Vec<Rc<Occurrence>>,
     /// Binds an imported subprogram by its import name.
     pub resolver: fn(&str) -> Option<Binding>,
-    /// The engine that runs programs (the compiled one unless the
-    /// reference walker is asked for).
-    pub engine: vm::Engine,
     /// The simulated devices (tasks.md): registers, belts, interrupts.
     pub world: Option<crate::devices::World>,
     /// Where `--trace` writes task switches, device events and interrupts.
@@ -256,7 +253,6 @@ impl Machine {
             interrupted: None,
             current: Vec::new(),
             resolver: |n| builtins::lookup(n).map(Binding::Native),
-            engine: vm::Engine::Compiled,
             world: Some(crate::devices::World::new(
                 crate::devices::Devices::default_set(),
             )),
@@ -331,25 +327,7 @@ impl Machine {
             svc,
             codes: vm::Codes::new(&arena),
         };
-        let compiled = run.m.engine == vm::Engine::Compiled;
-        let r = (|| -> R<()> {
-            if compiled {
-                return run.run_compiled(stmts, main);
-            }
-            run.exec_all(stmts)?;
-            if let Some(f) = main {
-                run.call(
-                    f,
-                    &[],
-                    Span {
-                        start: 0,
-                        end: 0,
-                        context: 0,
-                    },
-                )?;
-            }
-            Ok(())
-        })();
+        let r = run.run_compiled(stmts, main);
         let tasks = run.m.sched.active();
         let alive = run.m.sched.alive();
         // The user's stop in a program with tasks (see `poll`): where each
@@ -450,11 +428,9 @@ impl Machine {
     }
 
     /// What compiles a long body a part at a time as it is checked, for
-    /// a program this machine runs once in the compiled engine (none for
-    /// the reference walker, which runs the checked statements).
+    /// a program this machine runs once.
     pub fn part_compiler(&self) -> Option<crate::check::ir::PartCompiler> {
-        (self.engine == vm::Engine::Compiled)
-            .then_some(vm::compile_part as crate::check::ir::PartCompiler)
+        Some(vm::compile_part as crate::check::ir::PartCompiler)
     }
 
     /// Makes ready for a run at level 0: natives bound, the level-0 slots
@@ -696,172 +672,6 @@ impl<'c> Run<'_, 'c> {
             .unwrap_or(check::PROGRAM_ERROR)
     }
 
-    fn slot(&self, v: Var) -> usize {
-        self.m.display[v.level as usize] + v.slot as usize
-    }
-
-    fn exec_all(&mut self, ss: &[Stmt]) -> R<()> {
-        for s in ss {
-            self.exec(s)?;
-        }
-        Ok(())
-    }
-
-    fn exec(&mut self, s: &Stmt) -> R<()> {
-        crate::work::walked();
-        match &s.kind {
-            StmtKind::Null => Ok(()),
-            // Only the compiled engine runs a compiled part, once.
-            StmtKind::Compiled(_) => Err(self.raise(
-                check::PROGRAM_ERROR,
-                "this part of a long body was compiled for one run of the compiled engine",
-                s.span,
-            )),
-            StmtKind::Init(v, e) => {
-                let val = self.eval(e)?;
-                let i = self.slot(*v);
-                self.m.stack[i] = val;
-                Ok(())
-            }
-            StmtKind::Assign(t, e) => {
-                let val = self.eval(e)?;
-                self.assign(t, val)
-            }
-            StmtKind::Call(f, args) => {
-                self.call(*f, args, s.span)?;
-                Ok(())
-            }
-            StmtKind::If(arms, els) => {
-                for (c, body) in arms {
-                    if self.eval_int(c)? != 0 {
-                        return self.exec_all(body);
-                    }
-                }
-                self.exec_all(els)
-            }
-            StmtKind::Case(subj, arms, others) => {
-                let v = self.eval(subj)?.int();
-                for (ranges, body) in arms {
-                    if ranges.iter().any(|(l, h)| *l <= v && v <= *h) {
-                        return self.exec_all(body);
-                    }
-                }
-                match others {
-                    Some(b) => self.exec_all(b),
-                    None => Err(self.check_failed("case choice not covered", s.span)),
-                }
-            }
-            StmtKind::Loop { id, body } => loop {
-                self.poll(s.span)?;
-                match self.exec_all(body) {
-                    Ok(()) => {}
-                    Err(Flow::Exit(x)) if x == *id => return Ok(()),
-                    Err(e) => return Err(e),
-                }
-            },
-            StmtKind::While { id, cond, body } => {
-                while self.eval_int(cond)? != 0 {
-                    self.poll(s.span)?;
-                    match self.exec_all(body) {
-                        Ok(()) => {}
-                        Err(Flow::Exit(x)) if x == *id => return Ok(()),
-                        Err(e) => return Err(e),
-                    }
-                }
-                Ok(())
-            }
-            StmtKind::For(f) => {
-                let ForLoop {
-                    id,
-                    var,
-                    lo,
-                    hi,
-                    reverse,
-                    body,
-                } = &**f;
-                let (l, h) = (self.eval_int(lo)?, self.eval_int(hi)?);
-                if l > h {
-                    return Ok(());
-                }
-                let slot = self.slot(*var);
-                let mut i = if *reverse { h } else { l };
-                loop {
-                    self.m.stack[slot] = Value::Int(i);
-                    match self.exec_all(body) {
-                        Ok(()) => {}
-                        Err(Flow::Exit(x)) if x == *id => return Ok(()),
-                        Err(e) => return Err(e),
-                    }
-                    if *reverse {
-                        if i == l {
-                            break;
-                        }
-                        i -= 1;
-                    } else {
-                        if i == h {
-                            break;
-                        }
-                        i += 1;
-                    }
-                    self.poll(s.span)?;
-                }
-                Ok(())
-            }
-            StmtKind::Exit(id, cond) => {
-                if let Some(c) = cond
-                    && self.eval(c)?.int() == 0
-                {
-                    return Ok(());
-                }
-                Err(Flow::Exit(*id))
-            }
-            StmtKind::Return(v) => {
-                let val = match v {
-                    Some(e) => Some(self.eval(e)?),
-                    None => None,
-                };
-                Err(Flow::Return(val))
-            }
-            StmtKind::Block(b) => self.body(b),
-            StmtKind::Raise(e, msg) => {
-                let m = match msg {
-                    Some(x) => Some(self.eval(x)?),
-                    None => None,
-                };
-                Err(self.raise_stmt(*e, m, s.span))
-            }
-            StmtKind::Reraise => Err(self.reraise(s.span)),
-            StmtKind::Delay(until, d) => {
-                let x = self.eval(d)?.real();
-                // Duration is fixed point in Ada: no NaN, no infinity. A
-                // negative delay is no delay (RM 9.6).
-                if !x.is_finite() {
-                    return Err(self.check_failed("delay of a non-finite duration", s.span));
-                }
-                let secs = if *until { x - self.m.clock.now() } else { x };
-                if secs > 0.0 {
-                    self.advance_clock(secs);
-                    self.world_sync();
-                }
-                Ok(())
-            }
-            // The walker runs no tasks: a program with tasks is refused at
-            // the first task's creation; what is left has none.
-            StmtKind::Activate | StmtKind::Abort(_) | StmtKind::NoteMaster(_) => Ok(()),
-            StmtKind::Master(b) => self.body(b),
-            StmtKind::ProtCall(f, args) => self.call(*f, args, s.span).map(|_| ()),
-            StmtKind::Accept(_)
-            | StmtKind::EntryCall(_)
-            | StmtKind::Select(_)
-            | StmtKind::TimedCall(_)
-            | StmtKind::Requeue(_) => Err(self.raise(
-                check::PROGRAM_ERROR,
-                "tasks run in the compiled engine only (unset ADAIR_ENGINE)",
-                s.span,
-            )),
-        }
-    }
-
     /// Checks for a user interrupt (Ctrl-C in the REPL) at loop heads.
     fn poll(&mut self, span: Span) -> R<()> {
         // A plain load first: a swap on every loop step costs a locked
@@ -881,32 +691,6 @@ impl<'c> Run<'_, 'c> {
             return Err(self.raise(check::PROGRAM_ERROR, "interrupted (Ctrl-C)", span));
         }
         Ok(())
-    }
-
-    fn body(&mut self, b: &Body) -> R<()> {
-        match self.exec_all(&b.stmts) {
-            Err(Flow::Raise(occ)) if !b.handlers.is_empty() => {
-                for h in &b.handlers {
-                    let matches = match &h.choices {
-                        None => true,
-                        Some(list) => list.contains(&occ.exc),
-                    };
-                    if matches {
-                        let occ: Rc<Occurrence> = Rc::from(occ);
-                        if let Some(v) = h.occurrence {
-                            let i = self.slot(v);
-                            self.m.stack[i] = Value::Occ(occ.clone());
-                        }
-                        self.m.current.push(occ);
-                        let r = self.exec_all(&h.stmts);
-                        self.m.current.pop();
-                        return r;
-                    }
-                }
-                Err(Flow::Raise(occ))
-            }
-            r => r,
-        }
     }
 
     /// Hands a service call to the lent services with a narrow context.
@@ -1018,151 +802,7 @@ impl<'c> Run<'_, 'c> {
         Ok(())
     }
 
-    /// Calls a subprogram with copy-in/copy-out parameters.
-    pub fn call(&mut self, f: FuncId, args: &[Arg], span: Span) -> R<Option<Value>> {
-        let mut vals = Vec::with_capacity(args.len());
-        for a in args {
-            vals.push(self.eval(&a.value)?);
-        }
-        self.call_guard(span)?;
-        let sub = &self.c.funcs[f as usize];
-        let result = if let Some(binding) = self.m.natives.get(f as usize).copied().flatten() {
-            self.call_binding(binding, &mut vals, span)?
-        } else {
-            let Some(body) = sub.body.clone() else {
-                return Err(self.raise(
-                    check::PROGRAM_ERROR,
-                    format!("`{}` has no body", sub.name),
-                    span,
-                ));
-            };
-            let level = sub.level as usize;
-            let nslots = sub.nslots as usize;
-            let base = self.m.stack.len();
-            self.m.stack.extend(vals.iter().cloned());
-            self.m.stack.grow_to(base + nslots.max(vals.len()));
-            if self.m.display.len() <= level {
-                self.m.display.resize(level + 1, 0);
-            }
-            let saved = self.m.display[level];
-            self.m.display[level] = base;
-            self.m.depth += 1;
-            self.m.calls.push(span);
-            let r = self.body(&body);
-            self.m.calls.pop();
-            self.m.depth -= 1;
-            self.m.display[level] = saved;
-            // Copy-out values live in the frame.
-            for (i, a) in args.iter().enumerate() {
-                if a.mode != Mode::In {
-                    vals[i] = std::mem::take(&mut self.m.stack[base + i]);
-                }
-            }
-            self.m.stack.truncate(base);
-            match r {
-                Ok(()) => {
-                    if sub.ret.is_some() {
-                        return Err(self.raise(
-                            check::PROGRAM_ERROR,
-                            format!("{} missing return", self.m.location(sub.span)),
-                            sub.span,
-                        ));
-                    }
-                    None
-                }
-                Err(Flow::Return(v)) => v,
-                Err(e) => return Err(e),
-            }
-        };
-        for (a, v) in args.iter().zip(vals) {
-            if a.mode != Mode::In {
-                if let Some(t) = a.back_check {
-                    self.range_check(&v, t, a.value.span)?;
-                }
-                self.assign(&a.value, v)?;
-            }
-        }
-        Ok(result)
-    }
-
     // ---- places ----
-
-    fn assign(&mut self, target: &Ex, val: Value) -> R<()> {
-        match &target.kind {
-            ExKind::Var(v) => {
-                let i = self.slot(*v);
-                let val = keep_bounds(&self.m.stack[i], val)
-                    .map_err(|what| self.check_failed(what, target.span))?;
-                self.m.stack[i] = val;
-                return Ok(());
-            }
-            // Hot path: `A (I, J) := V` without building a path.
-            ExKind::Index(p, idx) if fast(p, idx) => {
-                let (slot, ix) = self.fast_index(p, idx)?;
-                let Value::Arr(a) = &mut self.m.stack[slot] else {
-                    return Err(self.check_failed("access check failed", target.span));
-                };
-                let a = Rc::make_mut(a);
-                return match a.offset(&ix[..idx.len()]) {
-                    Some(o) => match match a.data.val(o) {
-                        Some(old) => keep_bounds(old, val),
-                        None => Ok(val),
-                    } {
-                        Ok(val) => {
-                            a.data.set(o, val);
-                            Ok(())
-                        }
-                        Err(what) => Err(self.check_failed(what, target.span)),
-                    },
-                    None => Err(self.check_failed("index check failed", target.span)),
-                };
-            }
-            _ => {}
-        }
-        let mut steps = Vec::new();
-        let mut e = target;
-        loop {
-            match &e.kind {
-                ExKind::Var(v) => {
-                    steps.reverse();
-                    return self.store(Root::Slot(self.slot(*v)), &steps, val, target.span);
-                }
-                ExKind::Register(a) => {
-                    steps.reverse();
-                    return self.store(Root::Register(*a, e.ty, e.span), &steps, val, target.span);
-                }
-                ExKind::Index(p, idx) => {
-                    let mut ix = Vec::with_capacity(idx.len());
-                    for x in idx.iter() {
-                        ix.push(self.eval(x)?.int());
-                    }
-                    steps.push(Step::Index(ix, e.span));
-                    e = p;
-                }
-                ExKind::Field(p, i) => {
-                    steps.push(Step::Field(*i));
-                    e = p;
-                }
-                ExKind::Variant(p, i) => {
-                    if let Some(conds) = self.variant_of(p.ty, *i) {
-                        steps.push(Step::Variant(conds, e.span));
-                    }
-                    e = p;
-                }
-                ExKind::Slice(p, lh) => {
-                    let (l, h) = (self.eval(&lh[0])?.int(), self.eval(&lh[1])?.int());
-                    steps.push(Step::Slice(l, h, e.span));
-                    e = p;
-                }
-                ExKind::Deref(p) => {
-                    let ptr = self.eval(p)?;
-                    steps.reverse();
-                    return self.store(Root::Ptr(ptr, e.span), &steps, val, target.span);
-                }
-                _ => return self.store(Root::NotVariable(e.span), &[], val, target.span),
-            }
-        }
-    }
 
     /// Writes `val` to the part of `root` that `steps` lead to, with the
     /// checks of each step and of the value's bounds (what both engines
@@ -1191,308 +831,6 @@ impl<'c> Run<'_, 'c> {
     }
 
     // ---- expressions ----
-
-    /// The stack slot and index values of `Var (I, J, ...)` (see [`fast`]).
-    fn fast_index(&mut self, p: &Ex, idx: &[Ex]) -> R<(usize, [i64; 4])> {
-        let mut ix = [0i64; 4];
-        for (k, x) in idx.iter().take(4).enumerate() {
-            ix[k] = self.eval_int(x)?;
-        }
-        let slot = match p.kind {
-            ExKind::Var(v) => self.slot(v),
-            _ => 0,
-        };
-        Ok((slot, ix))
-    }
-
-    /// Evaluates a discrete expression without building a `Value`.
-    fn eval_int(&mut self, e: &Ex) -> R<i64> {
-        match &e.kind {
-            ExKind::Int(v) => Ok(*v),
-            ExKind::Var(v) => match &self.m.stack[self.slot(*v)] {
-                Value::Int(i) => Ok(*i),
-                other => Ok(other.int()),
-            },
-            ExKind::IntBin(op, a, b) => {
-                let x = self.eval_int(a)?;
-                let y = self.eval_int(b)?;
-                self.int_op(*op, x, y, e.span)
-            }
-            ExKind::ModBin(op, a, b) => {
-                let x = self.eval_int(a)?;
-                let y = self.eval_int(b)?;
-                self.mod_op(*op, x, y, e)
-            }
-            _ => Ok(self.eval(e)?.int()),
-        }
-    }
-
-    /// Evaluates a Float expression without building a `Value`.
-    fn eval_real(&mut self, e: &Ex) -> R<f64> {
-        match &e.kind {
-            ExKind::Real(v) => Ok(*v),
-            ExKind::Var(v) => Ok(self.m.stack[self.slot(*v)].real()),
-            ExKind::Index(p, idx) if fast(p, idx) => {
-                let (slot, ix) = self.fast_index(p, idx)?;
-                match &self.m.stack[slot] {
-                    Value::Arr(a) => match a.offset(&ix[..idx.len()]) {
-                        Some(o) => Ok(a.data.real(o)),
-                        None => Err(self.check_failed("index check failed", e.span)),
-                    },
-                    _ => Err(self.check_failed("access check failed", e.span)),
-                }
-            }
-            ExKind::FloatBin(op, a, b) if *op != FloatOp::PowI => {
-                let x = self.eval_real(a)?;
-                let y = self.eval_real(b)?;
-                Ok(value::float_op(*op, x, &Value::Real(y)))
-            }
-            _ => Ok(self.eval(e)?.real()),
-        }
-    }
-
-    pub fn eval(&mut self, e: &Ex) -> R<Value> {
-        crate::work::walked();
-        Ok(match &e.kind {
-            ExKind::Int(v) => Value::Int(*v),
-            ExKind::Real(v) => Value::Real(*v),
-            ExKind::Str(s) => Value::str(s),
-            ExKind::Null => Value::Ptr(None),
-            ExKind::Var(v) => self.m.stack[self.slot(*v)].clone(),
-            ExKind::Index(p, idx) if fast(p, idx) => {
-                // Hot path: index a variable in place, without touching its refcount.
-                let (slot, ix) = self.fast_index(p, idx)?;
-                match &self.m.stack[slot] {
-                    Value::Arr(a) => match a.offset(&ix[..idx.len()]) {
-                        Some(o) => a.data.get(o),
-                        None => return Err(self.check_failed("index check failed", e.span)),
-                    },
-                    _ => return Err(self.check_failed("access check failed", e.span)),
-                }
-            }
-            ExKind::Index(p, idx) => {
-                let base = self.eval(p)?;
-                let Value::Arr(a) = base else {
-                    return Err(self.check_failed("access check failed", e.span));
-                };
-                let mut ix = [0i64; 4];
-                let n = idx.len().min(4);
-                for (k, x) in idx.iter().take(4).enumerate() {
-                    ix[k] = self.eval(x)?.int();
-                }
-                match a.offset(&ix[..n]) {
-                    Some(o) => a.data.get(o),
-                    None => return Err(self.check_failed("index check failed", e.span)),
-                }
-            }
-            ExKind::FloatNeg(a)
-            | ExKind::IntAbs(a)
-            | ExKind::FloatAbs(a)
-            | ExKind::FloatToInt(a)
-            | ExKind::Deref(a)
-            | ExKind::ArrNot(a)
-            | ExKind::ArrayConvert(a, _) => {
-                let v = self.eval(a)?;
-                match UnOp::of(e) {
-                    Some((op, _)) => self.unary_of(op, v, e.span)?,
-                    None => unreachable!("a unary operation"),
-                }
-            }
-            ExKind::Slice(p, lh) => {
-                let base = self.eval(p)?;
-                let (l, h) = (self.eval(&lh[0])?.int(), self.eval(&lh[1])?.int());
-                self.slice_of(&base, l, h, e.span)?
-            }
-            ExKind::Field(p, i) => match self.eval(p)?.fields() {
-                Some(r) => r[*i as usize].clone(),
-                None => return Err(self.check_failed("discriminant check failed", e.span)),
-            },
-            ExKind::KeepDiscriminants(parts) => {
-                let [v, target, when] = &**parts;
-                let v = self.eval(v)?;
-                if self.eval_int(when)? != 0 {
-                    let cur = self.eval(target)?;
-                    let n = self.c.types.discriminants(target.ty).len();
-                    self.same_discriminants(&v, &cur, n, e.span)?;
-                }
-                v
-            }
-            ExKind::Variant(p, i) => {
-                let v = self.eval(p)?;
-                if let Some(conds) = self.variant_of(p.ty, *i) {
-                    self.variant_check(&v, &conds, e.span)?;
-                }
-                v
-            }
-            ExKind::Call(f, args) => match self.call(*f, args, e.span)? {
-                Some(v) => v,
-                None => Value::Undef,
-            },
-            ExKind::IntBin(op, a, b) => {
-                let x = self.eval_int(a)?;
-                let y = self.eval_int(b)?;
-                Value::Int(self.int_op(*op, x, y, e.span)?)
-            }
-            ExKind::ModBin(op, a, b) => {
-                let x = self.eval_int(a)?;
-                let y = self.eval_int(b)?;
-                Value::Int(self.mod_op(*op, x, y, e)?)
-            }
-            ExKind::FloatBin(op, a, b) => {
-                let x = self.eval_real(a)?;
-                if *op != FloatOp::PowI {
-                    let y = self.eval_real(b)?;
-                    return Ok(Value::Real(value::float_op(*op, x, &Value::Real(y))));
-                }
-                let yv = self.eval(b)?;
-                Value::Real(value::float_op(*op, x, &yv))
-            }
-            ExKind::Cmp(op, a, b) => {
-                let x = self.eval(a)?;
-                let y = self.eval(b)?;
-                let o = x.compare(&y);
-                use std::cmp::Ordering::*;
-                let r = match op {
-                    CmpOp::Lt => o == Less,
-                    CmpOp::Le => o != Greater,
-                    CmpOp::Gt => o == Greater,
-                    CmpOp::Ge => o != Less,
-                    CmpOp::Eq => o == Equal,
-                    CmpOp::Ne => o != Equal,
-                };
-                Value::Int(r as i64)
-            }
-            ExKind::Eq(ne, a, b) => {
-                let x = self.eval(a)?;
-                let y = self.eval(b)?;
-                Value::Int(((x == y) != *ne) as i64)
-            }
-            ExKind::Logic(op, a, b) => {
-                let x = self.eval(a)?.int() != 0;
-                let r = match op {
-                    LogicOp::AndThen => x && self.eval(b)?.int() != 0,
-                    LogicOp::OrElse => x || self.eval(b)?.int() != 0,
-                    LogicOp::And => {
-                        let y = self.eval(b)?.int() != 0;
-                        x && y
-                    }
-                    LogicOp::Or => {
-                        let y = self.eval(b)?.int() != 0;
-                        x || y
-                    }
-                    LogicOp::Xor => {
-                        let y = self.eval(b)?.int() != 0;
-                        x ^ y
-                    }
-                };
-                Value::Int(r as i64)
-            }
-            ExKind::Not(a) => Value::Int((self.eval(a)?.int() == 0) as i64),
-            ExKind::ArrLogic(op, a, b) => {
-                let (x, y) = (self.eval(a)?, self.eval(b)?);
-                self.arr_logic(*op, &x, &y, e.span)?
-            }
-            ExKind::IntNeg(a) => {
-                let x = self.eval(a)?.int();
-                Value::Int(self.int_op(IntOp::Sub, 0, x, e.span)?)
-            }
-            ExKind::Concat(a, b, ae, be) => {
-                let x = self.eval(a)?;
-                let y = self.eval(b)?;
-                self.concat(x, y, *ae, *be, e.ty, e.span)?
-            }
-            ExKind::IntToFloat(a) => Value::Real(self.eval(a)?.real()),
-            ExKind::RangeCheck(a, t) => {
-                let v = self.eval(a)?;
-                self.range_check(&v, *t, e.span)?;
-                v
-            }
-            ExKind::Attr(op, args) => self.attr(*op, args, e)?,
-            ExKind::TypeFirst(t) => self.type_bounds(*t)?.0,
-            ExKind::TypeLast(t) => self.type_bounds(*t)?.1,
-            ExKind::InRanges(s, ranges, neg) => {
-                let v = self.eval(s)?;
-                let mut inside = false;
-                // Each range as `V >= Lo and then V <= Hi`, in turn until
-                // one holds V: a bound is evaluated only when GNAT
-                // evaluates it (tests/ada/engine_unary_raise).
-                for (l, h) in ranges.iter() {
-                    let lo = self.eval(l)?;
-                    if v.compare(&lo) == std::cmp::Ordering::Less {
-                        continue;
-                    }
-                    let hi = self.eval(h)?;
-                    if v.compare(&hi) != std::cmp::Ordering::Greater {
-                        inside = true;
-                        break;
-                    }
-                }
-                Value::Int((inside != *neg) as i64)
-            }
-            ExKind::ArrayAgg(agg) => self.array_agg(agg, e.span)?,
-            ExKind::RecordAgg(fields) => {
-                let mut v = value::Fields::with_capacity(fields.len());
-                let nd = self.c.types.discriminants(e.ty).len();
-                for f in &fields[..nd] {
-                    v.push(self.eval(f)?);
-                }
-                // The other components see the discriminants (a component's
-                // default does).
-                if nd > 0 {
-                    self.m.discrs.push(v.to_vec());
-                }
-                let r = (|| {
-                    for f in &fields[nd..] {
-                        v.push(self.eval(f)?);
-                    }
-                    Ok(())
-                })();
-                if nd > 0 {
-                    self.m.discrs.pop();
-                }
-                r?;
-                self.record_agg(e.ty, v, e.span)?
-            }
-            ExKind::If(arms, els) => {
-                for (c, v) in arms.iter() {
-                    if self.eval_int(c)? != 0 {
-                        return self.eval(v);
-                    }
-                }
-                self.eval(els)?
-            }
-            ExKind::Case(c) => {
-                let (s, arms, others) = &**c;
-                let v = self.eval(s)?.int();
-                for (ranges, x) in arms {
-                    if ranges.iter().any(|(l, h)| *l <= v && v <= *h) {
-                        return self.eval(x);
-                    }
-                }
-                match others {
-                    Some(x) => self.eval(x)?,
-                    None => return Err(self.check_failed("case choice not covered", e.span)),
-                }
-            }
-            ExKind::Alloc(init, t) => {
-                let v = match init {
-                    Some(x) => self.eval(x)?,
-                    None => {
-                        let v = self.allocated_default(e.ty, *t, e.span)?;
-                        self.activate_allocated();
-                        v
-                    }
-                };
-                self.allocate(v, e.span)?
-            }
-            ExKind::Default(t) => self.default_value(*t, e.span)?,
-            ExKind::Discriminant(i) => self.discriminant(*i, e.span)?,
-            ExKind::Error => {
-                return Err(self.raise(check::PROGRAM_ERROR, "erroneous expression", e.span));
-            }
-            ExKind::Register(a) => self.read_register(*a, e.ty, e.span)?,
-        })
-    }
 
     fn int_op(&self, op: IntOp, x: i64, y: i64, span: Span) -> R<i64> {
         let r = match op {
@@ -1546,16 +884,6 @@ impl<'c> Run<'_, 'c> {
             return Err(self.check_failed("overflow check failed", span));
         }
         Ok(r)
-    }
-
-    /// `x op y` of the modular type of `e` (`ir::modular`, which the
-    /// compiled engine calls too); a division by zero raises.
-    fn mod_op(&self, op: ModOp, x: i64, y: i64, e: &Ex) -> R<i64> {
-        let last = self.c.types.modular_last(e.ty).unwrap_or(u32::MAX);
-        match crate::check::ir::modular(op, x, y, last) {
-            Some(v) => Ok(v),
-            None => Err(self.check_failed("divide by zero", e.span)),
-        }
     }
 
     /// Low and high bound of a scalar subtype.
@@ -1651,15 +979,6 @@ impl<'c> Run<'_, 'c> {
             (Some(a), Some(b)) if a.get(..n) == b.get(..n) => Ok(()),
             _ => Err(self.check_failed("discriminant check failed", span)),
         }
-    }
-
-    /// The variant component `i` of the record type `t` belongs to.
-    pub(crate) fn variant_of(&self, t: TypeId, i: u32) -> Option<value::Variant> {
-        self.c
-            .types
-            .fields(t)
-            .and_then(|f| f.get(i as usize))
-            .and_then(|f| f.variant.clone())
     }
 
     /// A record value of the subtype `t` (RM 3.7.1, 4.6(51)): its
@@ -2084,19 +1403,6 @@ impl<'c> Run<'_, 'c> {
         Ok(Value::Arr(Rc::new(Array::vector(l, data))))
     }
 
-    fn attr(&mut self, op: AttrOp, args: &[Ex], e: &Ex) -> R<Value> {
-        debug_assert!(args.len() <= 2, "an attribute has at most two arguments");
-        let a0 = match args.first() {
-            Some(a) => self.eval(a)?,
-            None => Value::Undef,
-        };
-        let a1 = match args.get(1) {
-            Some(a) => self.eval(a)?,
-            None => Value::Undef,
-        };
-        self.attr_of(op, a0, a1, e.ty, e.span)
-    }
-
     /// An attribute of its evaluated arguments (`a0`, `a1`: `Undef` when
     /// it has fewer; `ty` is the attribute's type): what both engines run.
     pub(crate) fn attr_of(
@@ -2199,11 +1505,6 @@ impl<'c> Run<'_, 'c> {
             AttrOp::Rounding => Value::Real(a0.real().round()),
         })
     }
-}
-
-/// Whether `P (I, ...)` indexes a variable directly (the hot path).
-fn fast(p: &Ex, idx: &[Ex]) -> bool {
-    idx.len() <= 4 && matches!(p.kind, ExKind::Var(_))
 }
 
 /// Writes `val` at the end of a path of steps into `root` (copy-on-write).

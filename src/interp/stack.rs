@@ -136,12 +136,6 @@ impl Stack {
         self.len += 1;
     }
 
-    pub fn extend(&mut self, xs: impl IntoIterator<Item = Value>) {
-        for x in xs {
-            self.push(x);
-        }
-    }
-
     pub fn get(&self, i: usize) -> Option<&Value> {
         self.data[..self.len].get(i)
     }

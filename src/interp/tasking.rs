@@ -496,13 +496,6 @@ impl<'c> Run<'_, 'c> {
     /// allocator): not activated; its master is the running thread's
     /// innermost master region.
     pub(crate) fn create_task(&mut self, k: u32, t: TypeId, span: Span) -> R<Value> {
-        if self.m.engine == vm::Engine::Walker {
-            return Err(self.raise(
-                check::PROGRAM_ERROR,
-                "tasks run in the compiled engine only (unset ADAIR_ENGINE)",
-                span,
-            ));
-        }
         self.tasking_on();
         let def = &self.c.tasks[k as usize];
         let Some(body) = def.body else {
@@ -596,18 +589,6 @@ impl<'c> Run<'_, 'c> {
         match self.m.sched.threads.get(me).map(|t| t.masters.len()) {
             Some(n) if n > 0 => ((me as i64) << 32) | (n as i64 - 1),
             _ => -1,
-        }
-    }
-
-    /// Tasks created by an allocator are activated by it.
-    pub(crate) fn activate_allocated(&mut self) {
-        if !self.m.sched.active() {
-            return;
-        }
-        let cur = self.m.sched.cur;
-        let new = std::mem::take(&mut self.m.sched.threads[cur].unactivated);
-        for t in new {
-            self.m.sched.make_ready(t);
         }
     }
 

@@ -400,8 +400,8 @@ pub struct Occurrence {
     /// Where a handler re-raised it (`raise;`), first first.
     pub reraised: Vec<Span>,
     /// `chain` is whole. An occurrence raised in code the compiled engine
-    /// runs holds only the walker's calls until the engine adds its own
-    /// frames' calls (it keeps them in its frames, not in `Machine::calls`).
+    /// runs holds only the calls of natives in progress until the engine
+    /// adds its frames' calls (it keeps them in its frames, not in `Machine::calls`).
     pub chained: bool,
     /// How the run ends if nothing handles it.
     pub ending: Ending,

@@ -308,9 +308,9 @@ impl Frontend {
                 self.checker.use_everywhere(p);
             }
         }
-        // Only the program being run is compiled as it is checked: the
-        // walker may run a unit it names (from an expression it evaluates),
-        // and the walker runs checked statements.
+        // Only the program being run is compiled as it is checked: a unit
+        // it names is compiled whole on its first call, from its checked
+        // statements.
         let parts = if library {
             self.checker.options.compile_parts.take()
         } else {

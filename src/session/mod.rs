@@ -227,9 +227,6 @@ impl Session {
     pub fn new(out: Box<dyn Write>) -> Session {
         let mut machine = Machine::new(out);
         machine.resolver = resolve;
-        // `ADAIR_ENGINE=walker`: the reference engine (the differential tests).
-        machine.engine =
-            crate::interp::vm::Engine::named(std::env::var("ADAIR_ENGINE").ok().as_deref());
         let mut robot = None;
         let front = Frontend::new(
             std::rc::Rc::new(Disk),

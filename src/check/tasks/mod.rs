@@ -399,7 +399,11 @@ impl Checker {
                     if private {
                         self.tables.prot_private.insert(profile);
                     }
-                    members.push((spec.name.key(), profile, real, ret.is_some()));
+                    members.push(ProtMember {
+                        name: spec.name.key(),
+                        profile,
+                        real,
+                    });
                 }
                 ast::ProtOp::Entry(e) => {
                     let family = e
@@ -461,8 +465,8 @@ impl Checker {
         self.scopes.push();
         // The operations are visible inside the body by their names.
         let members = self.tables.prot_members[k as usize].clone();
-        for (key, profile, _, _) in &members {
-            self.declare(key, Entity::Func(*profile));
+        for m in &members {
+            self.declare(&m.name, Entity::Func(m.profile));
         }
         for d in &b.decls {
             match &d.kind {
@@ -474,15 +478,14 @@ impl Checker {
         }
         self.scopes.pop();
         self.tasking.prot_ctx.pop();
-        for (key, profile, real, _) in &members {
-            if self.tables.funcs[*real as usize].body.is_none() {
-                let what = self.spelled(key);
+        for m in &members {
+            if self.tables.funcs[m.real as usize].body.is_none() {
+                let what = self.spelled(&m.name);
                 self.err(diagnostics::protected_body_lacks(
                     b.span,
                     &b.name.name,
                     &what,
                 ));
-                let _ = profile;
             }
         }
         for e in self.tables.prots[k as usize].entries.clone() {
@@ -502,10 +505,11 @@ impl Checker {
         let ret = b.spec.ret.as_ref().map(|r| self.type_mark(r));
         let found = self.tables.prot_members[k as usize]
             .iter()
-            .find(|(n, p, _, _)| {
-                *n == key && self.same_profile(&self.tables.funcs[*p as usize], &params, ret)
+            .find(|m| {
+                m.name == key
+                    && self.same_profile(&self.tables.funcs[m.profile as usize], &params, ret)
             })
-            .map(|(_, _, r, _)| *r);
+            .map(|m| m.real);
         let Some(real) = found else {
             self.err(diagnostics::not_in_protected_with_profile(
                 b.spec.span,
@@ -785,7 +789,7 @@ impl Checker {
                 p.entries
                     .iter()
                     .map(|e| (e.name.clone(), e.profile, true))
-                    .chain(subs.map(|(_, f, _, _)| (spelled(*f), *f, false)))
+                    .chain(subs.map(|m| (spelled(m.profile), m.profile, false)))
                     .filter(|(_, f, _)| !self.tables.prot_private.contains(f))
                     .collect()
             }

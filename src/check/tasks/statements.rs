@@ -135,8 +135,8 @@ impl Checker {
     ) -> Option<(FuncId, Vec<Arg>)> {
         let fs: Vec<FuncId> = self.tables.prot_members[k as usize]
             .iter()
-            .filter(|(n, ..)| **n == *id.key)
-            .map(|(_, p, _, _)| *p)
+            .filter(|m| *m.name == *id.key)
+            .map(|m| m.profile)
             .collect();
         if fs.is_empty() {
             self.err(diagnostics::not_a_protected_operation(
@@ -447,13 +447,13 @@ impl Checker {
             ));
             return None;
         };
-        if let Some((_, _, outer, _)) = self
+        if let Some(outer) = self
             .tasking
             .accepting
             .iter()
-            .find(|(t, e, ..)| *t == k && *e == i as u32)
+            .find(|a| a.task == k && a.entry == i as u32)
         {
-            self.err(diagnostics::nested_accept(sp, &entry.name, *outer));
+            self.err(diagnostics::nested_accept(sp, &entry.name, outer.at));
             return None;
         }
         let index = match (def.entries[i].family, index) {
@@ -535,9 +535,12 @@ impl Checker {
             }
             slots.push((var, p.mode));
         }
-        self.tasking
-            .accepting
-            .push((k, i as u32, sp, slots.clone()));
+        self.tasking.accepting.push(Accepting {
+            task: k,
+            entry: i as u32,
+            at: sp,
+            slots: slots.clone(),
+        });
         let body = body.map(|b| self.block(b));
         self.tasking.accepting.pop();
         self.scopes.pop();
@@ -566,7 +569,7 @@ impl Checker {
             .tasking
             .accepting
             .last()
-            .filter(|(k, ..)| here.is_some() && here == self.tables.tasks[*k as usize].body)
+            .filter(|a| here.is_some() && here == self.tables.tasks[a.task as usize].body)
             .cloned();
         let body = self
             .tasking
@@ -576,9 +579,9 @@ impl Checker {
             .copied();
         // The entry whose call is served, and where.
         let (served, own_task, own_prot) = match (&accept, body) {
-            (Some((k, i, ..)), _) => (
-                self.tables.tasks[*k as usize].entries[*i as usize].profile,
-                Some(*k),
+            (Some(a), _) => (
+                self.tables.tasks[a.task as usize].entries[a.entry as usize].profile,
+                Some(a.task),
                 None,
             ),
             (None, Some((_, k, i))) => (
@@ -788,7 +791,7 @@ impl Checker {
             index,
             abort,
             params,
-            accept: accept.map(|(.., slots)| slots),
+            accept: accept.map(|a| a.slots),
         })
     }
 

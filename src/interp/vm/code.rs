@@ -19,8 +19,8 @@ pub struct Part {
 /// made it (an [`crate::check::ir::PartCompiler`]), for `adair run`: the
 /// checked statements are dropped here, the instructions are added to the
 /// body's code so far (`into`), which waits for [`Compiler::splice`].
-/// Which calls the walker makes is decided now: those of an imported
-/// subprogram (a native, as [`Run::walker_call`] binds it). A subprogram
+/// Which calls go to a native is decided now: those of an imported
+/// subprogram (as [`Run::native_call`] says). A subprogram
 /// whose body is not checked yet (the body itself, when it calls itself;
 /// one declared before and completed later) gets a compiled call (one left
 /// without body raises when called, see `compile_first`).

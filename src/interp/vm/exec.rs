@@ -87,7 +87,7 @@ impl<'a, 'c> Run<'a, 'c> {
     }
 
     /// `dst := x op y` for integers: addition and subtraction inline, the
-    /// rest (and every overflow) through the walker's own checks.
+    /// rest (and every overflow) through `Run::int_op`'s checks.
     #[inline(always)]
     pub(super) fn int_arith(&mut self, o: IntOp, d: usize, x: i64, y: i64, span: Span) -> R<()> {
         self.int_value(o, x, y, span).map(|v| self.put_int_ix(d, v))
@@ -1182,7 +1182,7 @@ impl<'a, 'c> Run<'a, 'c> {
                         }
                         Flow::Raise(mut occ) => {
                             // The calls of the compiled frames, innermost
-                            // first, after the walker's (see `Occurrence::chained`).
+                            // first, after a native's (see `Occurrence::chained`).
                             if !occ.chained {
                                 occ.chain
                                     .extend(frames.iter().rev().map(|f| call_span(f.code, f.pc)));

@@ -10,10 +10,9 @@
 //! Every construct has instructions of its own; code that runs inside an
 //! instruction (a barrier, a default or a dynamic bound of the type table,
 //! a REPL expression) runs in a nested run of the same loop (`nested.rs`).
-//! The tree walker ([`Run::eval`], [`Run::exec`]) stays as the reference
-//! engine: `Engine::Walker` runs a whole program in it, and the golden and
-//! GNAT tests run every program without tasks in both (differential
-//! testing). Both engines call the same check functions.
+//! It is the only engine: nothing runs the checked tree. Its meaning is
+//! checked against GNAT-recorded programs (`tests/ada/`), the goldens and
+//! generated programs whose output the generator knows (`tests/run_props.rs`).
 //!
 //! The parts:
 //! - `ops.rs`: the instruction set ([`Op`]) and its metadata (jump targets);
@@ -54,28 +53,6 @@ use compile::*;
 use frames::*;
 pub(crate) use frames::{Codes, Frame, Regs};
 use ops::*;
-
-/// Which engine runs a program.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Engine {
-    /// Compiled instructions with explicit frames (the default).
-    #[default]
-    Compiled,
-    /// The tree walker over the checked program (the reference).
-    Walker,
-}
-
-impl Engine {
-    /// The engine a setting names: `walker` the reference engine; anything
-    /// else, or nothing, the compiled one (the session reads
-    /// `ADAIR_ENGINE`: the machine reads no environment).
-    pub fn named(setting: Option<&str>) -> Engine {
-        match setting {
-            Some("walker") => Engine::Walker,
-            _ => Engine::Compiled,
-        }
-    }
-}
 
 /// The label by which the end of a body is signalled inside the engine.
 const FALL_OFF: u32 = u32::MAX - 1;

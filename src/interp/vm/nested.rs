@@ -33,13 +33,11 @@ impl<'a, 'c> Run<'a, 'c> {
     }
 
     /// The value of an expression of the type table, by its compiled code
-    /// (compiled on its first use in the run). The reference walker
-    /// evaluates it itself.
+    /// (compiled on its first use in the run).
     pub(crate) fn eval_table(&mut self, e: &Ex) -> R<Value> {
         match e.kind {
             ExKind::Int(n) => return Ok(Value::Int(n)),
             ExKind::Real(x) => return Ok(Value::Real(x)),
-            _ if self.m.engine == Engine::Walker => return self.eval(e),
             _ => {}
         }
         // By where the expression is, and (against an address used again

@@ -1,118 +1,170 @@
 //! The instruction set: one [`Op`] per instruction, its operand structs,
-//! and per-instruction metadata (jump targets).
+//! and per-instruction metadata. Each instruction is declared once, in the
+//! table below, with what the compiler and the loader need to know of it:
+//! - `scalar`: whether it puts only scalars (`Int`, `Real`, `Undef`) in
+//!   its frame's slots, so that a frame whose code has only such
+//!   instructions is freed without looking at its slots (`Code::scalar`);
+//! - `jumps`: where its jump targets (and other positions in the code)
+//!   are; an instruction without the clause has none. `Op::targets_mut`
+//!   visits them to move a compiled part's code (`relocate`) and to patch
+//!   a forward jump (`Compiler::patch`).
+//!
+//! The table makes the enum and those functions: a new instruction cannot
+//! be left out of them.
 
 use super::*;
 
-/// One instruction. Operands are frame slots (`Var`); `Span`s are where a
-/// check that fails raises.
-#[derive(Debug)]
-pub(super) enum Op {
-    Int(Var, i64),
-    Real(Var, f64),
-    Move(Var, Var),
-    IntBin(IntOp, Var, Var, Var, Span),
+/// Declares [`Op`] from the instruction table, with its metadata functions.
+macro_rules! instructions {
+    ($(
+        $(#[$doc:meta])*
+        $name:ident $(( $($ty:ty),* $(,)? ))? $({ $($(#[$fdoc:meta])* $field:ident : $fty:ty),* $(,)? })?
+        => scalar: $scalar:literal
+        $(, jumps ($($pat:pat_param),*) $f:ident => $body:block)?
+        ;
+    )*) => {
+        /// One instruction. Operands are frame slots (`Var`); `Span`s are
+        /// where a check that fails raises.
+        #[derive(Debug)]
+        pub(super) enum Op {
+            $( $(#[$doc])* $name $(( $($ty),* ))? $({ $($(#[$fdoc])* $field : $fty),* })? ,)*
+        }
+
+        impl Op {
+            /// Whether it puts only scalars in its frame's slots (the
+            /// table's `scalar`).
+            pub(super) fn scalar(&self) -> bool {
+                match self {
+                    $( Op::$name { .. } => $scalar, )*
+                }
+            }
+
+            /// Calls `f` on each of its jump targets (the table's `jumps`).
+            pub(super) fn targets_mut(&mut self, f: &mut dyn FnMut(&mut u32)) {
+                match self {
+                    $( $( Op::$name($($pat),*) => {
+                        let $f = &mut *f;
+                        $body
+                    } )? )*
+                    _ => {}
+                }
+            }
+        }
+    };
+}
+
+instructions! {
+    Int(Var, i64) => scalar: true;
+    Real(Var, f64) => scalar: true;
+    Move(Var, Var) => scalar: true;
+    IntBin(IntOp, Var, Var, Var, Span) => scalar: true;
     /// `IntBin` with an integer literal on the right.
-    IntBinK(IntOp, Var, Var, i64, Span),
-    IntNeg(Var, Var, Span),
+    IntBinK(IntOp, Var, Var, i64, Span) => scalar: true;
+    IntNeg(Var, Var, Span) => scalar: true;
     /// An operation of a modular type whose values are `0 ..= last`
-    /// (`ir::modular`, which the walker calls too).
-    ModBin(ModOp, Var, Var, Var, u32, Span),
-    FloatBin(FloatOp, Var, Var, Var),
+    /// (`ir::modular`).
+    ModBin(ModOp, Var, Var, Var, u32, Span) => scalar: true;
+    FloatBin(FloatOp, Var, Var, Var) => scalar: true;
     /// `FloatBin` of `+`, `-`, `*`, `/` (IEEE, as `value::float_op`).
-    RealAdd(Var, Var, Var),
-    RealSub(Var, Var, Var),
-    RealMul(Var, Var, Var),
-    RealDiv(Var, Var, Var),
-    ToReal(Var, Var),
-    Cmp(CmpOp, Var, Var, Var),
+    RealAdd(Var, Var, Var) => scalar: true;
+    RealSub(Var, Var, Var) => scalar: true;
+    RealMul(Var, Var, Var) => scalar: true;
+    RealDiv(Var, Var, Var) => scalar: true;
+    ToReal(Var, Var) => scalar: true;
+    Cmp(CmpOp, Var, Var, Var) => scalar: true;
     /// `Cmp` of an integer with an integer literal.
-    CmpK(CmpOp, Var, Var, i64),
-    Eq(bool, Var, Var, Var),
-    Logic(LogicOp, Var, Var, Var),
-    Not(Var, Var),
-    RangeCheck(Var, TypeId, Span),
+    CmpK(CmpOp, Var, Var, i64) => scalar: true;
+    Eq(bool, Var, Var, Var) => scalar: true;
+    Logic(LogicOp, Var, Var, Var) => scalar: true;
+    Not(Var, Var) => scalar: true;
+    RangeCheck(Var, TypeId, Span) => scalar: true;
     /// The record in the slot has the variant of a component (a
     /// discriminant check, `Run::variant_check`).
-    Variant(Var, Variant, Span),
+    Variant(Var, Variant, Span) => scalar: true;
     /// The value in the first slot has the first `n` discriminants of the
     /// record in the second (`Run::same_discriminants`).
-    SameDiscriminants(Var, Var, u32, Span),
+    SameDiscriminants(Var, Var, u32, Span) => scalar: true;
     /// `dst := arr (ix...)` for an array held in a slot (three or four
     /// indices; one and two are `Index1`, `Index2`, without an allocation).
-    Index(Var, Var, Box<[Var]>, Span),
-    Index1(Var, Var, Var, Span),
-    Index2(Var, Var, [Var; 2], Span),
+    Index(Var, Var, Box<[Var]>, Span) => scalar: true;
+    Index1(Var, Var, Var, Span) => scalar: true;
+    Index2(Var, Var, [Var; 2], Span) => scalar: true;
     /// `arr (ix...) := src` (and with one or two indices).
-    StoreIndex(Var, Box<[Var]>, Var, Span),
-    StoreIndex1(Var, Var, Var, Span),
-    StoreIndex2(Var, [Var; 2], Var, Span),
-    Field(Var, Var, u32, Span),
+    StoreIndex(Var, Box<[Var]>, Var, Span) => scalar: true;
+    StoreIndex1(Var, Var, Var, Span) => scalar: true;
+    StoreIndex2(Var, [Var; 2], Var, Span) => scalar: true;
+    Field(Var, Var, u32, Span) => scalar: true;
     /// `dst := ptr.all.field` (a component of the record an access
     /// designates, not a copy of the record); where the access check and
     /// where the discriminant check fails.
-    DerefField(Var, Var, u32, Span, Span),
+    DerefField(Var, Var, u32, Span, Span) => scalar: true;
     /// `dst := null`.
-    Null(Var),
+    Null(Var) => scalar: true;
     /// `dst := "text"`: a string literal's value, made once when the code
     /// is compiled (a copy of it is one reference count: an assignment
     /// into it copies it first).
-    Str(Var, Value),
+    Str(Var, Value) => scalar: true;
     /// The value of a static aggregate (literal components, static
     /// bounds): once it is made, `dst := value` and a jump to `end`, past
     /// the instructions that make it; the first time, on to them.
-    Cached(Box<CachedOp>),
+    Cached(Box<CachedOp>) => scalar: false, jumps (c) f => { f(&mut c.end) };
     /// The end of a static aggregate's instructions: its value (in the
     /// slot) is kept by the `Cached` at this index.
-    CacheFill(u32, Var),
+    CacheFill(u32, Var) => scalar: false, jumps (at, _) f => { f(at) };
     /// `dst := x & y` (each an array or an element).
-    Concat(Box<ConcatOp>),
+    Concat(Box<ConcatOp>) => scalar: true;
     /// `dst := base (low .. high)`, and where its check fails.
-    Slice(Var, Var, [Var; 2], Span),
+    Slice(Var, Var, [Var; 2], Span) => scalar: true;
     /// `dst := P'Attr (args)`, the arguments in slots.
-    Attr(Box<AttrInstr>),
-    /// `dst := op x` (`Run::unary_of`, which the walker calls too).
-    Un(UnOp, Var, Var, Span),
+    Attr(Box<AttrInstr>) => scalar: true;
+    /// `dst := op x` (`Run::unary_of`).
+    Un(UnOp, Var, Var, Span) => scalar: true;
     /// `dst := x op y` of two Boolean arrays (`Run::arr_logic`).
-    ArrLogic(LogicOp, Var, Var, Var, Span),
+    ArrLogic(LogicOp, Var, Var, Var, Span) => scalar: true;
     /// `dst := T'First` (false) or `T'Last` (true) of a scalar subtype.
-    TypeBound(Var, TypeId, bool),
+    TypeBound(Var, TypeId, bool) => scalar: true;
     /// `dst :=` the default value of a type without tasks.
-    Default(Var, TypeId, Span),
+    Default(Var, TypeId, Span) => scalar: true;
     /// `dst :=` a device register's value (its address, the value's type).
-    Register(Var, u32, TypeId, Span),
+    Register(Var, u32, TypeId, Span) => scalar: true;
     /// An assignment to a component, an element, a slice, a whole array,
     /// through an access value or to a device register (`Run::store`).
-    Store(Box<StoreOp>),
+    Store(Box<StoreOp>) => scalar: false;
     /// `raise E [with msg];` (`Run::raise_stmt`).
-    Raise(ExcId, Option<Var>, Span),
+    Raise(ExcId, Option<Var>, Span) => scalar: true;
     /// `raise;` in a handler (`Run::reraise`).
-    Reraise(Span),
-    Jump(u32),
-    JumpIfNot(Var, u32),
+    Reraise(Span) => scalar: true;
+    Jump(u32) => scalar: true, jumps (t) f => { f(t) };
+    JumpIfNot(Var, u32) => scalar: true, jumps (_, t) f => { f(t) };
     /// `JumpIfNot` of a `CmpK`, in one instruction (`if N < 2 then`).
-    CmpKJumpNot(CmpOp, Var, i64, u32),
+    CmpKJumpNot(CmpOp, Var, i64, u32) => scalar: true, jumps (_, _, _, t) f => { f(t) };
     /// `JumpIfNot` of a `Cmp`.
-    CmpJumpNot(CmpOp, Var, Var, u32),
-    JumpIf(Var, u32),
+    CmpJumpNot(CmpOp, Var, Var, u32) => scalar: true, jumps (_, _, _, t) f => { f(t) };
+    JumpIf(Var, u32) => scalar: true, jumps (_, t) f => { f(t) };
     /// Case: the subject, (low, high, target) choices, the `others` target.
-    Case(Var, Box<[(i64, i64, u32)]>, Option<u32>, Span),
+    Case(Var, Box<[(i64, i64, u32)]>, Option<u32>, Span) => scalar: true,
+        jumps (_, table, other, _) f => {
+        table.iter_mut().for_each(|(_, _, t)| f(t));
+        other.iter_mut().for_each(f);
+    };
     /// First step of a `for` loop: the counter, low, high, reverse, the
     /// exit target (an empty range jumps there).
-    ForStart(Var, Var, Var, bool, u32),
+    ForStart(Var, Var, Var, bool, u32) => scalar: true, jumps (_, _, _, _, t) f => { f(t) };
     /// Next step: counter, low, high, reverse, the body's start.
-    ForNext(Var, Var, Var, bool, u32, Span),
-    Poll(Span),
+    ForNext(Var, Var, Var, bool, u32, Span) => scalar: true,
+        jumps (_, _, _, _, t, _) f => { f(t) };
+    Poll(Span) => scalar: true;
     /// A call of a subprogram with a body: whether it is a function, where
     /// its `out` and `in out` values go when it returns (the argument's
     /// position, the caller's slot: the instructions after the call check
     /// and store them into the actuals; None: all `in`, or none), its
     /// operands followed by the slot for a function's result. The list is
     /// boxed twice, a thin pointer: it keeps `Op` at 48 bytes.
-    Call(bool, FuncId, Option<Box<OutSlots>>, Box<[Var]>, Span),
+    Call(bool, FuncId, Option<Box<OutSlots>>, Box<[Var]>, Span) => scalar: true;
     /// A call of a native subprogram or a robot service, or of one without
     /// a body (Program_Error), its arguments in slots: as `Call`, the
     /// `out` values go to slots that the instructions after it store.
-    CallNative(Box<NativeOp>),
+    CallNative(Box<NativeOp>) => scalar: true;
     /// A call whose one argument, `in`, is `x op k` for integers: the
     /// operation goes straight into the callee's frame (`F (N - 1)`).
     /// Then a function's result slot (`NO_VAR`: a procedure), the call's
@@ -125,105 +177,117 @@ pub(super) enum Op {
         dst: Var,
         span: Span,
         arg_at: [u32; 2],
-    },
-    Return(Option<Var>),
+    } => scalar: true;
+    Return(Option<Var>) => scalar: true;
     /// `return x op y` for integers, the operation and the return in one
     /// instruction (`return F (N - 1) + F (N - 2);`).
-    ReturnIntBin(IntOp, Var, Var, Span),
+    ReturnIntBin(IntOp, Var, Var, Span) => scalar: true;
     /// The end of a body: a procedure returns, a function raises.
-    FallOff,
+    FallOff => scalar: true;
     /// Handler dispatch for the pending occurrence: the handlers, the
-    /// target of each, and the handler depth of the region.
-    Dispatch(Box<[Catch]>, u32),
+    /// target of each, and the handler depth of the region. (A handler
+    /// that names its occurrence puts it in a slot: the compiler marks
+    /// such code as not scalar itself, `Compiler::body`.)
+    Dispatch(Box<[Catch]>, u32) => scalar: true,
+        jumps (catches, _) f => { catches.iter_mut().for_each(|c| f(&mut c.target)) };
     /// Leaves a handler body: its occurrence is no longer current.
-    PopCurrent,
+    PopCurrent => scalar: true;
     /// Back to `frame's depth + n` current occurrences (an `exit` out of
     /// handler bodies).
-    TruncCurrent(u32),
+    TruncCurrent(u32) => scalar: true;
     // ---- tasking (see `tasking.rs`) ----
     /// `delay` (false) or `delay until` (true).
-    Delay(Var, bool, Span),
+    Delay(Var, bool, Span) => scalar: false;
     /// Activates the tasks created so far and waits for their activation.
-    Activate(Span),
+    Activate(Span) => scalar: false;
     /// A master region begins; its end waits for its tasks.
-    MasterEnter,
-    MasterLeave(Span),
+    MasterEnter => scalar: false;
+    MasterLeave(Span) => scalar: false;
     /// An exception leaves a master region: wait for its tasks, then
     /// propagate it.
-    MasterUnwind(Span),
+    MasterUnwind(Span) => scalar: false;
     /// Library-level tasks, at the end of the run: where the main program
     /// ended (a deadlock or a Ctrl-C there names it).
-    AwaitAll(Span),
+    AwaitAll(Span) => scalar: false;
     /// The end of a REPL entry while tasks live on: the ready tasks run
     /// until every one has blocked.
-    Settle,
+    Settle => scalar: false;
     /// `accept`: the entry, the member's index, the parameters' slots.
-    Accept(Box<AcceptOp>),
+    Accept(Box<AcceptOp>) => scalar: false;
     /// The end of a rendezvous: `out` values go to the caller.
-    AcceptEnd(Box<[(Var, Mode)]>),
+    AcceptEnd(Box<[(Var, Mode)]>) => scalar: false;
     /// An exception leaves an accept body: the caller gets it too.
-    AcceptFail,
+    AcceptFail => scalar: false;
     /// An entry call of a task.
-    EntryCall(Box<EntryOp>),
+    EntryCall(Box<EntryOp>) => scalar: false, jumps (e) f => { f(&mut e.other) };
     /// After an entry call: copy-out, the caller's exception, the jump to
     /// a timed call's delay (conditional call's else) statements, or to
     /// the call's `Requeued` when it was requeued.
-    EntryDone(Box<DoneOp>),
+    EntryDone(Box<DoneOp>) => scalar: false,
+        jumps (d) f => {
+        d.other.iter_mut().for_each(&mut *f);
+        f(&mut d.requeued);
+    };
     /// A protected entry call (its body's `out` values go to the
     /// operands, the `EntryDone` after it copies them out).
-    ProtEntry(Box<EntryOp>),
+    ProtEntry(Box<EntryOp>) => scalar: false, jumps (e) f => { f(&mut e.other) };
     /// After a protected action: the object's queues are served.
-    ProtDone(Var, Span),
-    Select(Box<SelectOp>),
+    ProtDone(Var, Span) => scalar: false;
+    Select(Box<SelectOp>) => scalar: false, jumps (sel) f => { sel.targets_mut(f) };
     /// `requeue`: the call being served goes on to another entry.
-    Requeue(Box<RequeueOp>),
+    Requeue(Box<RequeueOp>) => scalar: false;
     /// A requeued call, made again by its caller on the new entry (see
     /// `RequeuedOp`).
-    Requeued(Box<RequeuedOp>),
+    Requeued(Box<RequeuedOp>) => scalar: false,
+        jumps (r) f => {
+        r.other.iter_mut().for_each(&mut *f);
+        f(&mut r.end);
+        f(&mut r.twin);
+    };
     /// Never executed: the copy-back of the entry body that the
     /// `Requeued` after it calls (a frame's resume point reads the call
     /// before it, see `call_site`).
-    RequeueArgs(OutSlots, Span),
-    Abort(Box<[Var]>),
+    RequeueArgs(OutSlots, Span) => scalar: false;
+    Abort(Box<[Var]>) => scalar: false;
     /// `dst := new T` of an access type (the first type) to tasks or to
     /// a type with tasks (the second): the tasks are activated by the next
     /// instruction (`Activate`).
-    AllocTask(Var, TypeId, TypeId, Span),
+    AllocTask(Var, TypeId, TypeId, Span) => scalar: false;
     /// `dst := new T` of a type without tasks (`Run::allocated_default`).
-    AllocDefault(Var, TypeId, TypeId, Span),
+    AllocDefault(Var, TypeId, TypeId, Span) => scalar: false;
     /// `dst := new T'(src)` (`Run::allocate`).
-    Alloc(Var, Var, Span),
+    Alloc(Var, Var, Span) => scalar: false;
     /// The bounds of an array aggregate and how many components its
     /// `others` covers, into three slots (`Run::agg_bounds`).
-    AggBounds(Box<AggBoundsOp>),
+    AggBounds(Box<AggBoundsOp>) => scalar: false;
     /// An array aggregate's value from its parts (`Run::positional_agg`,
     /// `Run::named_agg`).
-    ArrayAgg(Box<ArrayAggOp>),
+    ArrayAgg(Box<ArrayAggOp>) => scalar: false;
     /// A record aggregate's value from its components in slots, the
     /// discriminants first (`Run::record_agg`).
-    Record(Box<RecordOp>),
+    Record(Box<RecordOp>) => scalar: false;
     /// `dst :=` an empty list, which `ListPush` grows: the values of an
     /// aggregate's choice evaluated once per component.
-    ListNew(Var),
+    ListNew(Var) => scalar: false;
     /// Appends the value of the second slot (a temporary, taken) to the
     /// list in the first.
-    ListPush(Var, Var),
+    ListPush(Var, Var) => scalar: false;
     /// `dst :=` the discriminant `i` of the record whose components are
     /// being made (`Run::discriminant`).
-    Discriminant(Var, u32, Span),
+    Discriminant(Var, u32, Span) => scalar: false;
     /// The discriminants of a record aggregate being built, in slots, are
     /// put in reach of the next instruction, which reads a subtype that
     /// depends on them; `PopDiscrs` after it takes them away (neither
     /// that instruction nor these can block, so no task runs between).
-    PushDiscrs(Box<[Var]>),
-    PopDiscrs,
+    PushDiscrs(Box<[Var]>) => scalar: false;
+    PopDiscrs => scalar: false;
     /// Program_Error, with its message: an expression the checker found
     /// erroneous, or code that cannot run here (a long body's part
     /// compiled once already, a `requeue` or `exit` whose statement is not
     /// in this code).
-    ProgramError(&'static str, Span),
+    ProgramError(&'static str, Span) => scalar: false;
     /// An access type to tasks is declared: note its master.
-    NoteMaster(Var),
+    NoteMaster(Var) => scalar: false;
 }
 
 /// An entry call: the task (or object), entry, arguments and their
@@ -487,131 +551,16 @@ pub(super) struct CachedOp {
 /// Moves `op`'s jump targets `by` instructions on (a compiled part
 /// spliced into its body's code).
 pub(super) fn relocate(op: &mut Op, by: u32) {
-    match op {
-        Op::Jump(t)
-        | Op::JumpIfNot(_, t)
-        | Op::JumpIf(_, t)
-        | Op::CmpKJumpNot(.., t)
-        | Op::CmpJumpNot(.., t)
-        | Op::ForStart(.., t)
-        | Op::ForNext(_, _, _, _, t, _) => *t += by,
-        Op::Case(_, table, other, _) => {
-            for (_, _, t) in table.iter_mut() {
-                *t += by;
-            }
-            if let Some(t) = other {
-                *t += by;
-            }
+    op.targets_mut(&mut |t| *t += by);
+}
+
+impl SelectOp {
+    /// Where its alternatives, its delay's and its `else` statements begin.
+    fn targets_mut(&mut self, f: &mut dyn FnMut(&mut u32)) {
+        self.alts.iter_mut().for_each(|a| f(&mut a.target));
+        if let Some(d) = &mut self.delay {
+            f(&mut d.target);
         }
-        Op::Dispatch(catches, _) => {
-            for c in catches.iter_mut() {
-                c.target += by;
-            }
-        }
-        Op::EntryDone(d) => {
-            if let Some(t) = &mut d.other {
-                *t += by;
-            }
-            d.requeued += by;
-        }
-        Op::Requeued(r) => {
-            if let Some(t) = &mut r.other {
-                *t += by;
-            }
-            r.end += by;
-            r.twin += by;
-        }
-        Op::EntryCall(e) | Op::ProtEntry(e) => e.other += by,
-        Op::Cached(c) => c.end += by,
-        Op::CacheFill(at, _) => *at += by,
-        Op::Select(sel) => {
-            for a in sel.alts.iter_mut() {
-                a.target += by;
-            }
-            if let Some(d) = &mut sel.delay {
-                d.target += by;
-            }
-            if let Some(t) = &mut sel.els {
-                *t += by;
-            }
-        }
-        Op::Int(..)
-        | Op::Real(..)
-        | Op::Move(..)
-        | Op::IntBin(..)
-        | Op::IntBinK(..)
-        | Op::IntNeg(..)
-        | Op::ModBin(..)
-        | Op::FloatBin(..)
-        | Op::RealAdd(..)
-        | Op::RealSub(..)
-        | Op::RealMul(..)
-        | Op::RealDiv(..)
-        | Op::ToReal(..)
-        | Op::Cmp(..)
-        | Op::CmpK(..)
-        | Op::Eq(..)
-        | Op::Logic(..)
-        | Op::Not(..)
-        | Op::RangeCheck(..)
-        | Op::Variant(..)
-        | Op::SameDiscriminants(..)
-        | Op::Index(..)
-        | Op::Index1(..)
-        | Op::Index2(..)
-        | Op::StoreIndex(..)
-        | Op::StoreIndex1(..)
-        | Op::StoreIndex2(..)
-        | Op::Field(..)
-        | Op::DerefField(..)
-        | Op::Null(..)
-        | Op::Str(..)
-        | Op::Slice(..)
-        | Op::Concat(..)
-        | Op::Attr(..)
-        | Op::Un(..)
-        | Op::ArrLogic(..)
-        | Op::TypeBound(..)
-        | Op::Default(..)
-        | Op::Register(..)
-        | Op::Raise(..)
-        | Op::Store(..)
-        | Op::Reraise(..)
-        | Op::Poll(..)
-        | Op::Call(..)
-        | Op::CallK { .. }
-        | Op::CallNative(..)
-        | Op::Return(..)
-        | Op::ReturnIntBin(..)
-        | Op::FallOff
-        | Op::PopCurrent
-        | Op::TruncCurrent(..)
-        | Op::Delay(..)
-        | Op::Activate(..)
-        | Op::MasterEnter
-        | Op::MasterLeave(..)
-        | Op::MasterUnwind(..)
-        | Op::AwaitAll(..)
-        | Op::Settle
-        | Op::Accept(..)
-        | Op::AcceptEnd(..)
-        | Op::AcceptFail
-        | Op::ProtDone(..)
-        | Op::Requeue(..)
-        | Op::RequeueArgs(..)
-        | Op::Abort(..)
-        | Op::AllocTask(..)
-        | Op::AllocDefault(..)
-        | Op::Alloc(..)
-        | Op::AggBounds(..)
-        | Op::ArrayAgg(..)
-        | Op::Record(..)
-        | Op::ListNew(..)
-        | Op::ListPush(..)
-        | Op::Discriminant(..)
-        | Op::PushDiscrs(..)
-        | Op::PopDiscrs
-        | Op::ProgramError(..)
-        | Op::NoteMaster(..) => {}
+        self.els.iter_mut().for_each(f);
     }
 }

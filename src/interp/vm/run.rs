@@ -3,7 +3,7 @@
 use super::*;
 
 impl<'a, 'c> Run<'a, 'c> {
-    /// Whether the walker makes the calls of `f` (a native or no body).
+    /// Whether the calls of `f` go to a native (bound to one, or no body).
     pub(super) fn native_call(&self, f: FuncId) -> bool {
         self.m.natives.get(f as usize).copied().flatten().is_some()
             || self.c.funcs[f as usize].body.is_none()
@@ -78,7 +78,7 @@ impl<'a, 'c> Run<'a, 'c> {
                     .alloc(self.compile(sub.level, own, Compiled::Body(body), Some(f)))
             }
             // A call compiled with a long body's part (see `compile_part`)
-            // of a subprogram that has no body: the walker raises.
+            // of a subprogram that has no body: `call_native` raises.
             None => self.codes.arena.alloc(Code {
                 func: Some(f),
                 all_in: true,

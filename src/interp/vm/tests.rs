@@ -122,7 +122,7 @@ mod compiled_tests {
 
     /// The instructions of the body of `name` in `src` that carry a
     /// checked tree (an expression or statement inside the instruction).
-    fn walker_ops(src: &str, name: &str) -> Vec<String> {
+    fn tree_ops(src: &str, name: &str) -> Vec<String> {
         let checked = crate::check::checked_for_tests(src);
         let prog = checked.program();
         let f = prog
@@ -177,7 +177,7 @@ mod compiled_tests {
                return A (3) + B (6) + G (2, 1) + R.Id + I.all;\n\
             end F;\n\
             begin\n   null;\nend P;\n";
-        let left = walker_ops(src, "F");
+        let left = tree_ops(src, "F");
         assert!(left.is_empty(), "{left:#?}");
         // The test sees a tree inside an instruction by its printed form.
         let checked = crate::check::checked_for_tests(src);
@@ -217,7 +217,7 @@ mod compiled_tests {
                when Jam => raise;\n\
             end F;\n\
             begin\n   null;\nend P;\n";
-        let left = walker_ops(src, "F");
+        let left = tree_ops(src, "F");
         assert!(left.is_empty(), "{left:#?}");
     }
 
@@ -255,7 +255,7 @@ mod compiled_tests {
                Fill (Line (1 .. Last));\n\
             end F;\n\
             begin\n   null;\nend P;\n";
-        let left = walker_ops(src, "F");
+        let left = tree_ops(src, "F");
         assert!(left.is_empty(), "{left:#?}");
     }
 }

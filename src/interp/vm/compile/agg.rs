@@ -1,6 +1,6 @@
 //! Compiling aggregates and allocators: each part is evaluated by
 //! instructions, into temporaries, and the value is built by the runtime
-//! functions the walker calls too (`interp/aggregate.rs`).
+//! value-level functions (`interp/aggregate.rs`).
 
 use super::*;
 use crate::check::types::Types;

@@ -163,7 +163,7 @@ impl<'r> Compiler<'r> {
                 self.ops.push(Op::Move(dst, x));
             }
             ExKind::Index(p, idx) => {
-                // The array is read before the indices, as the walker does.
+                // The array is read before the indices.
                 let arr = self.operand_before(p, idx.iter());
                 let mut ix = Vec::with_capacity(idx.len());
                 for (k, x) in idx.iter().enumerate() {
@@ -249,7 +249,7 @@ impl<'r> Compiler<'r> {
             ExKind::Str(s) => self.ops.push(Op::Str(dst, Value::str(s))),
             ExKind::Slice(p, lh) => {
                 let (l, h) = (&lh[0], &lh[1]);
-                // The base is read before the bounds, as the walker does.
+                // The base is read before the bounds.
                 let base = self.operand_before(p, [l, h]);
                 let lo = self.left(l, h);
                 let hi = self.expr(h);

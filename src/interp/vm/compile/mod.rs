@@ -35,7 +35,7 @@ pub(in crate::interp::vm) struct Compiler<'r> {
     /// the end of the accept statement, the handler depth and the master
     /// regions open at the accept.
     pub(in crate::interp::vm) accepts: Vec<(Vec<usize>, u32, u32)>,
-    /// Which subprograms the walker calls (bound to natives or without body).
+    /// Which subprograms are called as natives (bound to one, or without body).
     pub(in crate::interp::vm) native_calls: &'r dyn Fn(FuncId) -> bool,
     pub(in crate::interp::vm) types: &'r crate::check::types::Types,
     /// Every value this code puts in its frame is a scalar (`Undef`, `Int`,
@@ -160,17 +160,15 @@ impl<'r> Compiler<'r> {
         self.ops.len() as u32
     }
 
+    /// Sets the jump target of the instruction at `at`, an instruction
+    /// with one (a forward jump, emitted before its target was known).
     pub(in crate::interp::vm) fn patch(&mut self, at: usize, target: u32) {
-        match &mut self.ops[at] {
-            Op::Jump(t)
-            | Op::JumpIfNot(_, t)
-            | Op::JumpIf(_, t)
-            | Op::ForStart(.., t)
-            | Op::CmpKJumpNot(.., t)
-            | Op::CmpJumpNot(.., t) => *t = target,
-            Op::Cached(c) => c.end = target,
-            _ => unreachable!("only jumps are patched"),
-        }
+        let mut n = 0;
+        self.ops[at].targets_mut(&mut |t| {
+            *t = target;
+            n += 1;
+        });
+        debug_assert_eq!(n, 1, "only an instruction with one target is patched");
     }
 
     pub(in crate::interp::vm) fn body(&mut self, b: &Body) {
@@ -188,6 +186,8 @@ impl<'r> Compiler<'r> {
         self.ops.push(Op::Dispatch(Box::new([]), self.hdepth));
         let mut catches = Vec::with_capacity(b.handlers.len());
         for h in &b.handlers {
+            // A handler's occurrence is a value of its own in a slot.
+            self.scalar &= h.occurrence.is_none();
             catches.push(Catch {
                 choices: h.choices.as_deref().map(Box::from),
                 occurrence: h.occurrence,
@@ -238,106 +238,9 @@ impl<'r> Compiler<'r> {
         scalar_params: bool,
     ) -> Code {
         self.ops.push(Op::FallOff);
-        // Only what the engine itself puts in slots is known: the walker's
+        // Only what the engine itself puts in slots is known: natives
         // and the tasking instructions may put anything there.
-        let scalar = scalar_params
-            && self.scalar
-            && self.ops.iter().all(|op| match op {
-                Op::Dispatch(catches, _) => catches.iter().all(|c| c.occurrence.is_none()),
-                Op::Store(..)
-                | Op::Delay(..)
-                | Op::Activate(..)
-                | Op::MasterEnter
-                | Op::MasterLeave(..)
-                | Op::MasterUnwind(..)
-                | Op::AwaitAll(..)
-                | Op::Settle
-                | Op::Accept(..)
-                | Op::AcceptEnd(..)
-                | Op::AcceptFail
-                | Op::EntryCall(..)
-                | Op::EntryDone(..)
-                | Op::ProtEntry(..)
-                | Op::ProtDone(..)
-                | Op::Select(..)
-                | Op::Requeue(..)
-                | Op::Requeued(..)
-                | Op::RequeueArgs(..)
-                | Op::Abort(..)
-                | Op::AllocTask(..)
-                | Op::AllocDefault(..)
-                | Op::Alloc(..)
-                | Op::AggBounds(..)
-                | Op::ArrayAgg(..)
-                | Op::Record(..)
-                | Op::ListNew(..)
-                | Op::ListPush(..)
-                | Op::Discriminant(..)
-                | Op::PushDiscrs(..)
-                | Op::PopDiscrs
-                | Op::ProgramError(..)
-                | Op::Cached(..)
-                | Op::CacheFill(..)
-                | Op::NoteMaster(..) => false,
-                Op::Int(..)
-                | Op::Real(..)
-                | Op::Move(..)
-                | Op::IntBin(..)
-                | Op::IntBinK(..)
-                | Op::IntNeg(..)
-                | Op::ModBin(..)
-                | Op::FloatBin(..)
-                | Op::RealAdd(..)
-                | Op::RealSub(..)
-                | Op::RealMul(..)
-                | Op::RealDiv(..)
-                | Op::ToReal(..)
-                | Op::Cmp(..)
-                | Op::CmpK(..)
-                | Op::Eq(..)
-                | Op::Logic(..)
-                | Op::Not(..)
-                | Op::RangeCheck(..)
-                | Op::Variant(..)
-                | Op::SameDiscriminants(..)
-                | Op::Index(..)
-                | Op::Index1(..)
-                | Op::Index2(..)
-                | Op::StoreIndex(..)
-                | Op::StoreIndex1(..)
-                | Op::StoreIndex2(..)
-                | Op::Field(..)
-                | Op::DerefField(..)
-                | Op::Null(..)
-                | Op::Str(..)
-                | Op::Slice(..)
-                | Op::Concat(..)
-                | Op::Attr(..)
-                | Op::Un(..)
-                | Op::ArrLogic(..)
-                | Op::TypeBound(..)
-                | Op::Default(..)
-                | Op::Register(..)
-                | Op::Raise(..)
-                | Op::Reraise(..)
-                | Op::Jump(..)
-                | Op::JumpIfNot(..)
-                | Op::CmpKJumpNot(..)
-                | Op::CmpJumpNot(..)
-                | Op::JumpIf(..)
-                | Op::Case(..)
-                | Op::ForStart(..)
-                | Op::ForNext(..)
-                | Op::Poll(..)
-                | Op::Call(..)
-                | Op::CallK { .. }
-                | Op::CallNative(..)
-                | Op::Return(..)
-                | Op::ReturnIntBin(..)
-                | Op::FallOff
-                | Op::PopCurrent
-                | Op::TruncCurrent(..) => true,
-            });
+        let scalar = scalar_params && self.scalar && self.ops.iter().all(|op| op.scalar());
         // Exact sizes: the main body of a long program is compiled once.
         self.ops.shrink_to_fit();
         self.regions.shrink_to_fit();

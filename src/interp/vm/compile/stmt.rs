@@ -15,8 +15,8 @@ impl<'r> Compiler<'r> {
         match &s.kind {
             StmtKind::Null => {}
             StmtKind::Init(v, e) => self.expr_into(e, *v),
-            // An array target keeps its bounds (the walker's `assign`
-            // checks the length and slides).
+            // An array target keeps its bounds (`Run::store` checks the
+            // length and slides).
             StmtKind::Assign(t, e) => match &t.kind {
                 ExKind::Var(v) if !self.is_array(t.ty) => self.expr_into(e, *v),
                 ExKind::Index(p, idx)
@@ -190,7 +190,7 @@ impl<'r> Compiler<'r> {
             StmtKind::Compiled(p) => {
                 match p.take::<Part>() {
                     Some(part) => self.splice(part),
-                    // Compiled once already: the walker raises.
+                    // Compiled once already: it cannot run again.
                     None => self.ops.push(Op::ProgramError(
                         "this part of a long body was compiled for one run of the compiled engine",
                         s.span,
@@ -249,7 +249,7 @@ impl<'r> Compiler<'r> {
     /// `t := src` for a target with a path (components, elements,
     /// slices, `.all`, a register) or a whole array: the operands of the
     /// path are evaluated after the value, from the part written back to
-    /// the root (the walker's order), then `Run::store` writes.
+    /// the root (GNAT's order), then `Run::store` writes.
     pub(in crate::interp::vm) fn store(&mut self, t: &Ex, src: Var) {
         // The path, from the part written to the root.
         let mut path = Vec::new();
