@@ -321,3 +321,32 @@ fn an_exceptions_notes_name_each_call_once() {
         assert_eq!(notes(src, &d), want, "{d:?}");
     }
 }
+
+/// A recursion too deep raises Storage_Error at the same call in both
+/// engines, whether the compiled engine's inner loop makes the calls (a
+/// fused call `Down (N - 1)`, a call with two arguments `Walk (N - 1, M +
+/// 1)`) or not: the inner loop leaves a call past the depth limit to the
+/// big loop, which raises. Without that check, `Down (30_000)` returned.
+#[test]
+fn a_recursion_too_deep_raises_storage_error_in_quick_calls() {
+    let src = "with Ada.Text_IO; use Ada.Text_IO;\n\
+        procedure Deep is\n\
+           function Down (N : Integer) return Integer is\n\
+           begin\n   if N = 0 then\n      return 0;\n   end if;\n   return Down (N - 1) + 1;\nend Down;\n\
+           function Walk (N : Integer; M : Integer) return Integer is\n\
+           begin\n   if N = 0 then\n      return M;\n   end if;\n   return Walk (N - 1, M + 1);\nend Walk;\n\
+        begin\n\
+           Put_Line (Integer'Image (Down (1_000)) & Integer'Image (Walk (1_000, 0)));\n\
+           begin\n   Put_Line (Integer'Image (Down (30_000)));\n\
+           exception\n   when Storage_Error => Put_Line (\"too deep (Down)\");\nend;\n\
+           begin\n   Put_Line (Integer'Image (Walk (30_000, 0)));\n\
+           exception\n   when Storage_Error => Put_Line (\"too deep (Walk)\");\nend;\n\
+        end Deep;\n";
+    let (out, code, _) = run(src, false, Engine::Compiled);
+    assert_eq!(
+        out, " 1000 1000\ntoo deep (Down)\ntoo deep (Walk)\n",
+        "{code}"
+    );
+    let (walked, code2, _) = run(src, false, Engine::Walker);
+    assert_eq!((out, code), (walked, code2));
+}

@@ -313,3 +313,24 @@ fn a_second_sigint_ends_the_run_at_once_whatever_it_catches() {
     assert_eq!(code, Some(130), "{stderr}");
     assert!(took < Duration::from_secs(2), "took {took:?}");
 }
+
+/// A recursion of quick calls (calls and returns the engine's inner loop
+/// makes itself, see `vm/fast.rs`) polls no loop either: Ctrl-C is seen at
+/// a call, there too. Without the stop check of the inner loop's calls,
+/// `F (60)` ran on (for years).
+#[test]
+fn sigint_ends_a_recursion_of_quick_calls() {
+    let (code, _, stderr, took) = interrupt_times(
+        "quick_calls",
+        "function F (N : Integer) return Integer is\nbegin\n   if N < 2 then\n      return N;\n   \
+         end if;\n   return F (N - 1) + F (N - 2);\nend F;\n\
+         Put_Line (\"go\");\nPut_Line (Integer'Image (F (60)));\n",
+        &[300],
+    );
+    assert_eq!(code, Some(130), "{stderr}");
+    assert!(took < Duration::from_secs(5), "took {took:?}");
+    assert!(
+        stderr.contains("PROGRAM_ERROR : interrupted (Ctrl-C)"),
+        "{stderr}"
+    );
+}

@@ -198,19 +198,41 @@ impl<'a, 'c> Run<'a, 'c> {
                 push_frame!(entered, $dst);
                 lvl = cur.level;
                 fp = base;
+                fast!(true);
                 continue;
             }};
         }
-        // After a loop's step (a `for` loop's start and step, a jump):
-        // the inner loop runs what it can from `pc` on, often the whole
-        // loop; the instruction it stops at is this loop's (see
-        // `fast.rs`). Only there: for one instruction alone, the call
-        // would cost more than it saves.
+        // After a loop's step (a `for` loop's start and step, a jump) and
+        // a call: the inner loop runs what it can from `pc` on, often the
+        // whole loop or the whole call (and the calls it makes); the
+        // instruction it stops at is this loop's (see `fast.rs`). Only
+        // there, and only where it can run two instructions at least: for
+        // one instruction alone, the call would cost more than it saves.
         macro_rules! fast {
-            () => {{
-                let stop = self.m.interrupted.as_deref();
-                let stack = self.m.stack.as_mut_slice();
-                pc = fast::run(&cur.ops, pc as usize, lvl, fp, stack, stop) as u32;
+            (false) => {{
+                if fast::worth(&cur.ops, pc) {
+                    let stop = self.m.interrupted.as_deref();
+                    pc = fast::run(cur, pc as usize, lvl, fp, &mut self.m.stack, stop) as u32;
+                }
+            }};
+            (true) => {{
+                if fast::worth(&cur.ops, pc) {
+                    let mut cx = fast::Calls {
+                        frames: &mut frames,
+                        display: &mut self.m.display,
+                        depth: &mut self.m.depth,
+                        codes: &self.codes.by_func,
+                        current: self.m.current.len(),
+                        holes: !self.m.sched.holes.is_empty(),
+                        cur,
+                        lvl,
+                        fp,
+                        current_base,
+                    };
+                    let stop = self.m.interrupted.as_deref();
+                    pc = fast::run_calls(pc as usize, &mut self.m.stack, stop, &mut cx) as u32;
+                    (cur, lvl, fp, current_base) = (cx.cur, cx.lvl, cx.fp, cx.current_base);
+                }
             }};
         }
         macro_rules! reload {
@@ -637,7 +659,7 @@ impl<'a, 'c> Run<'a, 'c> {
                 Op::Reraise(span) => Err(self.reraise(*span)),
                 Op::Jump(t) => {
                     pc = *t;
-                    fast!();
+                    fast!(false);
                     continue;
                 }
                 Op::JumpIfNot(c, t) => {
@@ -689,7 +711,7 @@ impl<'a, 'c> Run<'a, 'c> {
                     } else {
                         self.put_int_ix(ix!(*v), if *rev { hi } else { lo });
                     }
-                    fast!();
+                    fast!(false);
                     continue;
                 }
                 Op::ForNext(v, l, h, rev, body, span) => {
@@ -706,7 +728,7 @@ impl<'a, 'c> Run<'a, 'c> {
                     pc = *body;
                     match self.poll(*span) {
                         Ok(()) => {
-                            fast!();
+                            fast!(false);
                             continue;
                         }
                         r => r,
@@ -1046,19 +1068,19 @@ impl<'a, 'c> Run<'a, 'c> {
             // The slow way: a thread switch, a frame to enter, a return,
             // an exit or an exception. Then the running code may differ.
             'slow: {
-                if self.m.sched.switch && nested {
-                    // A nested call (a barrier) cannot wait: no thread is
-                    // switched in the middle of the instruction that made it.
-                    self.m.sched.switch = false;
-                    let th = &mut self.m.sched.threads[self.m.sched.cur];
-                    th.reexec = false;
-                    return Err(self.raise(
-                        check::PROGRAM_ERROR,
-                        "potentially blocking operation in a barrier",
-                        crate::diag::span(0, 0, 0),
-                    ));
-                }
                 if self.m.sched.switch {
+                    if nested {
+                        // A nested call (a barrier) cannot wait: no thread is
+                        // switched in the middle of the instruction that made it.
+                        self.m.sched.switch = false;
+                        let th = &mut self.m.sched.threads[self.m.sched.cur];
+                        th.reexec = false;
+                        return Err(self.raise(
+                            check::PROGRAM_ERROR,
+                            "potentially blocking operation in a barrier",
+                            crate::diag::span(0, 0, 0),
+                        ));
+                    }
                     // The running thread blocked (or ended): save it, run the
                     // next ready one.
                     self.m.sched.switch = false;

@@ -13,6 +13,7 @@
 //! next instruction, and no exception is raised here.
 
 use super::*;
+use crate::interp::stack::Stack;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// `x op y` for integers when it needs no check that can fail: the values
@@ -50,24 +51,156 @@ fn elem(data: &value::Elems, o: usize) -> Option<Elem> {
     }
 }
 
-/// Runs the instructions of `ops` from `pc` while it can (see the module's
-/// comment); returns where it stopped: the first instruction it did not
-/// execute. `lvl` and `fp` are the running frame's level and first slot,
-/// `stack` the live slots, `stop` the user's stop request (a loop's step
-/// that would poll it stops here instead when it is set).
+/// What the inner loop needs to enter calls and return from them (see
+/// [`run_calls`]): the callers' frames, the display, the call depth and the
+/// compiled bodies, the number of current occurrences and whether the
+/// stack has holes (other tasks' frames freed below its top); and the
+/// running code's registers besides the program counter, in and out.
+pub(super) struct Calls<'x, 'c> {
+    pub(super) frames: &'x mut Vec<Frame<'c>>,
+    pub(super) display: &'x mut Vec<usize>,
+    pub(super) depth: &'x mut usize,
+    pub(super) codes: &'x [Option<&'c Code>],
+    pub(super) current: usize,
+    pub(super) holes: bool,
+    pub(super) cur: &'c Code,
+    pub(super) lvl: u16,
+    pub(super) fp: usize,
+    pub(super) current_base: usize,
+}
+
+/// Whether [`run`] is worth calling at `pc`: its call costs more than it
+/// saves unless it can run at least two instructions (a loop whose body
+/// begins with an entry call or an `accept` has nothing to run here).
+#[inline(always)]
+pub(super) fn worth(ops: &[Op], pc: u32) -> bool {
+    let pc = pc as usize;
+    ops.get(pc).is_some_and(takes) && ops.get(pc + 1).is_some_and(takes)
+}
+
+/// Whether [`run`] executes `op` (when its operands are as it needs).
+#[inline(always)]
+fn takes(op: &Op) -> bool {
+    matches!(
+        op,
+        Op::Int(..)
+            | Op::Real(..)
+            | Op::Move(..)
+            | Op::IntBin(..)
+            | Op::IntBinK(..)
+            | Op::CmpK(..)
+            | Op::Cmp(..)
+            | Op::Eq(..)
+            | Op::Logic(..)
+            | Op::Not(..)
+            | Op::RealAdd(..)
+            | Op::RealSub(..)
+            | Op::RealMul(..)
+            | Op::RealDiv(..)
+            | Op::ToReal(..)
+            | Op::Index1(..)
+            | Op::Index2(..)
+            | Op::StoreIndex1(..)
+            | Op::StoreIndex2(..)
+            | Op::DerefField(..)
+            | Op::Null(..)
+            | Op::Jump(..)
+            | Op::JumpIfNot(..)
+            | Op::JumpIf(..)
+            | Op::CmpKJumpNot(..)
+            | Op::CmpJumpNot(..)
+            | Op::ForStart(..)
+            | Op::ForNext(..)
+            | Op::Poll(..)
+            | Op::Call(..)
+            | Op::CallK { .. }
+            | Op::Return(..)
+            | Op::ReturnIntBin(..)
+    )
+}
+
+/// Runs the instructions of `cur` from `pc` while it can (see the
+/// module's comment); returns where it stopped: the first instruction it
+/// did not execute. `lvl` and `fp` are the running frame's level and first
+/// slot, `stop` the user's stop request (a loop's step that would poll it
+/// stops here instead when it is set). No call: this is the loops' copy,
+/// which keeps its few registers in registers.
 #[inline(never)]
 pub(super) fn run(
-    ops: &[Op],
-    mut pc: usize,
+    cur: &Code,
+    pc: usize,
     lvl: u16,
     fp: usize,
-    stack: &mut [Value],
+    st: &mut Stack,
     stop: Option<&AtomicBool>,
 ) -> usize {
+    // (Nothing of it is read: this copy enters no call.)
+    let (mut frames, mut display, mut depth) = (Vec::new(), Vec::new(), 0);
+    let mut cx = Calls {
+        frames: &mut frames,
+        display: &mut display,
+        depth: &mut depth,
+        codes: &[],
+        current: 0,
+        holes: false,
+        cur,
+        lvl,
+        fp,
+        current_base: 0,
+    };
+    steps::<false>(cur, pc, lvl, fp, st, stop, &mut cx)
+}
+
+/// [`run`] that also enters calls of compiled subprograms and returns from
+/// them (see `enter!` and `ret!`) when they need nothing the big loop does:
+/// the callee compiled already, scalar arguments, no Storage_Error, no stop
+/// request; a return of a scalar from a frame of scalars on top of the
+/// stack, with no `out` parameter and no occurrence to leave. Where it
+/// stopped is in the code then running, whose registers it leaves in `cx`.
+#[inline(never)]
+pub(super) fn run_calls<'c>(
+    pc: usize,
+    st: &mut Stack,
+    stop: Option<&AtomicBool>,
+    cx: &mut Calls<'_, 'c>,
+) -> usize {
+    steps::<true>(cx.cur, pc, cx.lvl, cx.fp, st, stop, cx)
+}
+
+#[inline(always)]
+fn steps<'c, const CALLS: bool>(
+    mut cur: &'c Code,
+    mut pc: usize,
+    mut lvl: u16,
+    mut fp: usize,
+    st: &mut Stack,
+    stop: Option<&AtomicBool>,
+    cx: &mut Calls<'_, 'c>,
+) -> usize {
+    let mut ops: &'c [Op] = &cur.ops;
+    let mut stack = st.as_mut_slice();
+    // The calls' registers, as locals (the depth too, written back).
+    let (frames, display, codes) = (&mut *cx.frames, &mut *cx.display, cx.codes);
+    let (current, holes) = (cx.current, cx.holes);
+    let mut depth = *cx.depth;
+    let mut current_base = cx.current_base;
+    // Where it stopped: the registers go back to the big loop.
+    macro_rules! stop_at {
+        ($pc:expr) => {{
+            if CALLS {
+                *cx.depth = depth;
+                cx.cur = cur;
+                cx.lvl = lvl;
+                cx.fp = fp;
+                cx.current_base = current_base;
+            }
+            return $pc;
+        }};
+    }
     loop {
         let here = pc;
         let Some(op) = ops.get(pc) else {
-            return here;
+            stop_at!(here);
         };
         pc += 1;
         // The slot of a local operand (another frame's: stop).
@@ -75,7 +208,7 @@ pub(super) fn run(
             ($v:expr) => {{
                 let v: Var = $v;
                 if v.level != lvl {
-                    return here;
+                    stop_at!(here);
                 }
                 fp + v.slot as usize
             }};
@@ -84,7 +217,7 @@ pub(super) fn run(
             ($v:expr) => {
                 match stack.get(at!($v)) {
                     Some(Value::Int(x)) => *x,
-                    _ => return here,
+                    _ => stop_at!(here),
                 }
             };
         }
@@ -93,7 +226,7 @@ pub(super) fn run(
                 match stack.get(at!($v)) {
                     Some(Value::Real(x)) => *x,
                     Some(Value::Int(x)) => *x as f64,
-                    _ => return here,
+                    _ => stop_at!(here),
                 }
             };
         }
@@ -102,7 +235,7 @@ pub(super) fn run(
             ($v:expr) => {{
                 let i = at!($v);
                 if i >= stack.len() {
-                    return here;
+                    stop_at!(here);
                 }
                 i
             }};
@@ -124,6 +257,88 @@ pub(super) fn run(
                 stop.is_some_and(|f| f.load(Ordering::Relaxed))
             };
         }
+        // A call's callee, when this loop can enter it: compiled already
+        // (else the big loop compiles it), its level in the display, and
+        // neither Storage_Error nor the user's stop at the call (the big
+        // loop raises them at the same instruction).
+        macro_rules! callee {
+            ($f:expr) => {
+                match codes.get($f as usize) {
+                    Some(Some(code))
+                        if depth < MAX_DEPTH
+                            && (code.level as usize) < display.len()
+                            && !stopped!() =>
+                    {
+                        *code
+                    }
+                    _ => stop_at!(here),
+                }
+            };
+        }
+        // Enters `code`, whose frame has been opened at `base`: what
+        // `push_call` and the big loop's `enter!` do.
+        macro_rules! enter {
+            ($code:expr, $base:expr, $dst:expr) => {{
+                let (code, base): (&'c Code, usize) = ($code, $base);
+                let saved = std::mem::replace(&mut display[code.level as usize], base);
+                depth += 1;
+                frames.push(Frame {
+                    code: cur,
+                    pc: pc as u32,
+                    current: current_base,
+                    base,
+                    saved,
+                    fp,
+                    dst: $dst,
+                });
+                current_base = current;
+                cur = code;
+                ops = &code.ops;
+                pc = 0;
+                lvl = code.level;
+                fp = base;
+                stack = st.as_mut_slice();
+            }};
+        }
+        // A return of the integer `$n` (None: of no value): what the big
+        // loop's `ret!` and `pop_frame` do for a frame of scalars on top of
+        // the stack, with nothing to copy back and no occurrence to leave.
+        macro_rules! ret {
+            ($n:expr) => {{
+                let n: Option<i64> = $n;
+                let Some(f) = frames.last() else {
+                    // The end of a nested run or of a task's body.
+                    stop_at!(here);
+                };
+                if !(cur.all_in && cur.scalar)
+                    || holes
+                    || f.base + (cur.frame as usize) < st.len()
+                    || current > current_base
+                    || (n.is_none() && f.dst != NO_DST)
+                {
+                    stop_at!(here);
+                }
+                let Some(f) = frames.pop() else {
+                    stop_at!(here);
+                };
+                st.truncate_scalars(f.base);
+                display[cur.level as usize] = f.saved;
+                depth -= 1;
+                cur = f.code;
+                ops = &cur.ops;
+                pc = f.pc as usize;
+                current_base = f.current;
+                lvl = cur.level;
+                fp = f.fp;
+                debug_assert_eq!(fp, display.get(lvl as usize).copied().unwrap_or(0));
+                stack = st.as_mut_slice();
+                if let Some(n) = n
+                    && f.dst != NO_DST
+                {
+                    put_int!(f.dst, n);
+                }
+            }};
+        }
         match op {
             Op::Int(d, v) => {
                 let i = dst!(*d);
@@ -136,7 +351,7 @@ pub(super) fn run(
             Op::Move(d, s) => {
                 let v = match stack.get(at!(*s)) {
                     Some(v) => v.clone(),
-                    None => return here,
+                    None => stop_at!(here),
                 };
                 let i = dst!(*d);
                 exec::set(&mut stack[i], v);
@@ -144,7 +359,7 @@ pub(super) fn run(
             Op::IntBin(o, d, a, b, _) => {
                 let (x, y) = (int!(*a), int!(*b));
                 let Some(v) = int_quick(*o, x, y) else {
-                    return here;
+                    stop_at!(here);
                 };
                 let i = dst!(*d);
                 put_int!(i, v);
@@ -152,7 +367,7 @@ pub(super) fn run(
             Op::IntBinK(o, d, a, y, _) => {
                 let x = int!(*a);
                 let Some(v) = int_quick(*o, x, *y) else {
-                    return here;
+                    stop_at!(here);
                 };
                 let i = dst!(*d);
                 put_int!(i, v);
@@ -168,7 +383,7 @@ pub(super) fn run(
                     (Some(Value::Real(x)), Some(Value::Real(y))) => {
                         x.partial_cmp(y).unwrap_or(std::cmp::Ordering::Equal)
                     }
-                    _ => return here,
+                    _ => stop_at!(here),
                 };
                 let r = exec::holds(*o, ord);
                 let i = dst!(*d);
@@ -178,7 +393,7 @@ pub(super) fn run(
                 let same = match (stack.get(at!(*a)), stack.get(at!(*b))) {
                     (Some(Value::Int(x)), Some(Value::Int(y))) => x == y,
                     (Some(x @ (Value::Real(_) | Value::Ptr(_))), Some(y)) => x == y,
-                    _ => return here,
+                    _ => stop_at!(here),
                 };
                 let i = dst!(*d);
                 put_int!(i, (same != *ne) as i64);
@@ -240,7 +455,7 @@ pub(super) fn run(
                 match got {
                     Some(Elem::Real(x)) => put_real!(i, x),
                     Some(Elem::Int(x)) => put_int!(i, x),
-                    None => return here,
+                    None => stop_at!(here),
                 }
             }
             Op::StoreIndex1(arr, x, src, _) | Op::StoreIndex2(arr, [x, _], src, _) => {
@@ -256,15 +471,15 @@ pub(super) fn run(
                 let val = match stack.get(at!(*src)) {
                     Some(Value::Real(x)) => Elem::Real(*x),
                     Some(Value::Int(x)) => Elem::Int(*x),
-                    _ => return here,
+                    _ => stop_at!(here),
                 };
                 let Some(Value::Arr(a)) = stack.get_mut(at!(*arr)) else {
-                    return here;
+                    stop_at!(here);
                 };
                 // The element's place and form first: nothing is written
                 // (nor the array copied) unless all of it can be done here.
                 let Some(o) = a.offset(&idx[..n]) else {
-                    return here;
+                    stop_at!(here);
                 };
                 let fits = match (&val, &a.data) {
                     (Elem::Real(_), value::Elems::Reals(r)) => o < r.len(),
@@ -273,7 +488,7 @@ pub(super) fn run(
                     _ => false,
                 };
                 if !fits {
-                    return here;
+                    stop_at!(here);
                 }
                 match (val, &mut Rc::make_mut(a).data) {
                     (Elem::Real(x), value::Elems::Reals(r)) => r[o] = x,
@@ -292,7 +507,7 @@ pub(super) fn run(
                     _ => None,
                 };
                 let Some(v) = got else {
-                    return here;
+                    stop_at!(here);
                 };
                 let i = dst!(*d);
                 exec::set(&mut stack[i], v);
@@ -323,7 +538,7 @@ pub(super) fn run(
                     (Some(Value::Real(x)), Some(Value::Real(y))) => {
                         x.partial_cmp(y).unwrap_or(std::cmp::Ordering::Equal)
                     }
-                    _ => return here,
+                    _ => stop_at!(here),
                 };
                 if !exec::holds(*o, ord) {
                     pc = *t as usize;
@@ -345,19 +560,109 @@ pub(super) fn run(
                     // The loop's step polls the user's stop: when it is
                     // set, the big loop's step raises.
                     if stopped!() {
-                        return here;
+                        stop_at!(here);
                     }
                     let s = dst!(*v);
                     put_int!(s, if *rev { i - 1 } else { i + 1 });
                     pc = *body as usize;
                 }
             }
+            Op::CallK {
+                f,
+                x,
+                op: o,
+                k,
+                dst,
+                ..
+            } => {
+                if !CALLS {
+                    stop_at!(here);
+                }
+                let x = int!(*x);
+                let Some(n) = int_quick(*o, x, *k as i64) else {
+                    stop_at!(here);
+                };
+                let dst = if dst.level == NO_VAR.level {
+                    NO_DST
+                } else {
+                    dst!(*dst)
+                };
+                let code = callee!(*f);
+                let base = st.len();
+                st.open_frame_int(n, (code.frame - code.temps) as usize, code.frame as usize);
+                enter!(code, base, dst);
+            }
+            Op::Call(func, f, _, args, _) => {
+                if !CALLS {
+                    stop_at!(here);
+                }
+                let (args, dst) = match (*func, args.split_last()) {
+                    (true, Some((d, args))) => (args, Some(*d)),
+                    _ => (&args[..], None),
+                };
+                // (The result's slot in the caller: a local one only.)
+                let dst = match dst {
+                    Some(d) => dst!(d),
+                    None => NO_DST,
+                };
+                let code = callee!(*f);
+                let base = st.len();
+                // The arguments straight into the new frame, scalars only
+                // (anything else: the frame goes again, for the big loop).
+                for v in args {
+                    let i = if v.level == lvl {
+                        fp + v.slot as usize
+                    } else {
+                        match display.get(v.level as usize) {
+                            Some(b) => b + v.slot as usize,
+                            None => usize::MAX,
+                        }
+                    };
+                    match st.get(i) {
+                        Some(Value::Int(n)) => {
+                            let n = *n;
+                            st.push_int(n)
+                        }
+                        Some(Value::Real(x)) => {
+                            let x = *x;
+                            st.push(Value::Real(x))
+                        }
+                        _ => {
+                            st.truncate_scalars(base);
+                            stop_at!(here);
+                        }
+                    }
+                }
+                let own = (code.frame - code.temps) as usize;
+                st.grow_to_clearing(base + own, base + code.frame as usize);
+                enter!(code, base, dst);
+            }
+            Op::Return(x) => {
+                if !CALLS {
+                    stop_at!(here);
+                }
+                let n = match x {
+                    Some(x) => Some(int!(*x)),
+                    None => None,
+                };
+                ret!(n);
+            }
+            Op::ReturnIntBin(o, a, b, _) => {
+                if !CALLS {
+                    stop_at!(here);
+                }
+                let (x, y) = (int!(*a), int!(*b));
+                let Some(n) = int_quick(*o, x, y) else {
+                    stop_at!(here);
+                };
+                ret!(Some(n));
+            }
             Op::Poll(_) => {
                 if stopped!() {
-                    return here;
+                    stop_at!(here);
                 }
             }
-            _ => return here,
+            _ => stop_at!(here),
         }
     }
 }

@@ -262,11 +262,41 @@ mod compiled_tests {
 
 #[cfg(test)]
 mod fast_tests {
-    use super::super::{Op, fast};
+    use super::super::{Code, Op, fast};
     use crate::check::ir::{IntOp, Var};
+    use crate::interp::stack::Stack;
     use crate::interp::value::{Array, Elems, Value};
     use std::rc::Rc;
     use std::sync::atomic::AtomicBool;
+
+    /// Level-1 code of `ops`.
+    fn code(ops: Vec<Op>) -> Code {
+        Code {
+            func: None,
+            all_in: true,
+            scalar: true,
+            level: 1,
+            ops,
+            temps: 0,
+            frame: 0,
+            regions: Vec::new(),
+        }
+    }
+
+    /// `fast::run` over slots held in a vector.
+    fn run(
+        code: &Code,
+        pc: usize,
+        lvl: u16,
+        fp: usize,
+        stack: &mut Vec<Value>,
+        stop: Option<&AtomicBool>,
+    ) -> usize {
+        let mut st = Stack::from(std::mem::take(stack));
+        let r = fast::run(code, pc, lvl, fp, &mut st, stop);
+        *stack = st.into_vec();
+        r
+    }
 
     fn v(slot: u32) -> Var {
         Var { level: 1, slot }
@@ -280,60 +310,60 @@ mod fast_tests {
     #[test]
     fn the_inner_loop_stops_before_what_it_cannot_finish() {
         let span = crate::diag::span(0, 0, 0);
-        let ops = vec![
+        let ops = code(vec![
             Op::Int(v(0), 7),
             Op::IntBinK(IntOp::Add, v(1), v(0), 5, span),
             Op::IntBinK(IntOp::Mul, v(2), v(1), i32::MAX as i64, span),
-        ];
+        ]);
         let mut stack = vec![Value::Undef; 4];
-        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, None), 2);
+        assert_eq!(run(&ops, 0, 1, 0, &mut stack, None), 2);
         assert_eq!(stack[1], Value::Int(12));
         assert_eq!(stack[2], Value::Undef);
         // `mod` of a negative divisor is the big loop's.
-        let ops = vec![Op::IntBinK(IntOp::Mod, v(2), v(1), -5, span)];
-        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, None), 0);
-        let ops = vec![Op::IntBinK(IntOp::Mod, v(2), v(0), 5, span)];
-        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, None), 1);
+        let ops = code(vec![Op::IntBinK(IntOp::Mod, v(2), v(1), -5, span)]);
+        assert_eq!(run(&ops, 0, 1, 0, &mut stack, None), 0);
+        let ops = code(vec![Op::IntBinK(IntOp::Mod, v(2), v(0), 5, span)]);
+        assert_eq!(run(&ops, 0, 1, 0, &mut stack, None), 1);
         assert_eq!(stack[2], Value::Int(2));
         // An operand of an enclosing frame.
-        let ops = vec![Op::Move(v(3), Var { level: 0, slot: 0 })];
-        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, None), 0);
+        let ops = code(vec![Op::Move(v(3), Var { level: 0, slot: 0 })]);
+        assert_eq!(run(&ops, 0, 1, 0, &mut stack, None), 0);
         assert_eq!(stack[3], Value::Undef);
         // A frame that begins further up the stack.
-        let ops = vec![Op::Move(v(1), v(0))];
-        assert_eq!(fast::run(&ops, 0, 1, 2, &mut stack, None), 1);
+        let ops = code(vec![Op::Move(v(1), v(0))]);
+        assert_eq!(run(&ops, 0, 1, 2, &mut stack, None), 1);
         assert_eq!(stack[3], Value::Int(2));
         // Elements: in range, then out of range (nothing written).
         let arr = Array::vector(1, Elems::Reals(vec![0.5, 1.5]));
         stack[3] = Value::Arr(Rc::new(arr));
         stack[0] = Value::Int(2);
-        let ops = vec![
+        let ops = code(vec![
             Op::Index1(v(2), v(3), v(0), span),
             Op::StoreIndex1(v(3), v(1), v(2), span),
-        ];
+        ]);
         stack[1] = Value::Int(3);
-        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, None), 1);
+        assert_eq!(run(&ops, 0, 1, 0, &mut stack, None), 1);
         assert_eq!(stack[2], Value::Real(1.5));
         stack[1] = Value::Int(1);
-        assert_eq!(fast::run(&ops, 1, 1, 0, &mut stack, None), 2);
+        assert_eq!(run(&ops, 1, 1, 0, &mut stack, None), 2);
         let Value::Arr(a) = &stack[3] else { panic!() };
         assert_eq!(a.data, Elems::Reals(vec![1.5, 1.5]));
         // A loop's step while the user's stop is set.
         let stop = AtomicBool::new(true);
-        let ops = vec![
+        let ops = code(vec![
             Op::Int(v(0), 1),
             Op::Int(v(1), 3),
             Op::ForNext(v(0), v(0), v(1), false, 0, span),
-        ];
-        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, Some(&stop)), 2);
+        ]);
+        assert_eq!(run(&ops, 0, 1, 0, &mut stack, Some(&stop)), 2);
         assert_eq!(stack[0], Value::Int(1));
         let go = AtomicBool::new(false);
-        let ops = vec![
+        let ops = code(vec![
             Op::Int(v(1), 3),
             Op::ForNext(v(0), v(0), v(1), false, 1, span),
-        ];
+        ]);
         stack[0] = Value::Int(1);
-        assert_eq!(fast::run(&ops, 0, 1, 0, &mut stack, Some(&go)), 2);
+        assert_eq!(run(&ops, 0, 1, 0, &mut stack, Some(&go)), 2);
         assert_eq!(stack[0], Value::Int(3));
     }
 }
