@@ -368,6 +368,7 @@ impl Checker {
                         self.common_type(&refs, INTEGER)
                     }
                 };
+                let t = self.dependent_type(t);
                 let mut out = Vec::new();
                 for (c, v) in arms {
                     let c = self.expr(c, Some(BOOLEAN));
@@ -397,6 +398,7 @@ impl Checker {
                         self.common_type(&refs, INTEGER)
                     }
                 };
+                let t = self.dependent_type(t);
                 let s = self.expr(subject, None);
                 let st = if self.tables.types.is_universal(s.ty) {
                     INTEGER
@@ -460,6 +462,20 @@ impl Checker {
 
     /// The subtype an allocator names: `new Station (Id => 9, Speed => 0)`
     /// with a discriminant constraint (RM 4.8(3)), else a type mark.
+    /// The type of the dependent expressions of an `if` or `case`
+    /// expression expected of type `t`: for a scalar, its base type. They
+    /// have the expression's type, not a subtype (RM 4.5.7), so
+    /// `(if B then -K else 0) < 0` is True for a `K` of subtype `1 .. 10`;
+    /// where the value goes to a constrained place, that place checks it.
+    fn dependent_type(&self, t: TypeId) -> TypeId {
+        let types = &self.tables.types;
+        if types.is_scalar(t) && !types.is_universal(t) {
+            types.base(t)
+        } else {
+            t
+        }
+    }
+
     fn allocated_subtype(&mut self, tm: &ast::Expr) -> TypeId {
         if let ExprKind::Apply(p, args) = &tm.kind
             && let ExprKind::Name(id) = &p.kind
