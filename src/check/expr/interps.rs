@@ -250,14 +250,36 @@ impl Checker {
                 out
             }
             ExprKind::Membership { .. } => vec![BOOLEAN],
-            ExprKind::If { arms, .. } => {
-                arms.first().map(|a| self.interps(&a.1)).unwrap_or_default()
+            ExprKind::If { arms, els } => {
+                let mut branches: Vec<&ast::Expr> = arms.iter().map(|a| &a.1).collect();
+                branches.extend(els.as_deref());
+                self.branch_interps(&branches)
             }
-            ExprKind::Case { arms, .. } => arms
-                .first()
-                .map(|a| self.interps(&a.body))
-                .unwrap_or_default(),
+            ExprKind::Case { arms, .. } => {
+                let branches: Vec<&ast::Expr> = arms.iter().map(|a| &a.body).collect();
+                self.branch_interps(&branches)
+            }
         }
+    }
+
+    /// The types an `if` or `case` expression may have: its first
+    /// branch's, unless that is a literal and another branch has a type
+    /// (`(if B then 70000 else J)` is an Integer, so `Word (...)` of it
+    /// checks the value).
+    fn branch_interps(&mut self, branches: &[&ast::Expr]) -> Vec<TypeId> {
+        let Some((first, rest)) = branches.split_first() else {
+            return Vec::new();
+        };
+        let first = self.interps(first);
+        if first.iter().all(|t| self.tables.types.is_universal(*t)) {
+            for b in rest {
+                let i = self.interps(b);
+                if i.iter().any(|t| !self.tables.types.is_universal(*t)) {
+                    return i;
+                }
+            }
+        }
+        first
     }
 
     /// Is `p` the prefix of an expanded name (a package, or an enclosing
