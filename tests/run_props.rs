@@ -155,7 +155,6 @@ fn the_generator_covers_what_it_claims() {
         normal >= 8 && raised >= 8,
         "ended normally {normal}, raised {raised}"
     );
-    eprintln!("STATS normal {normal} raised {raised} lines {lines} unknown {unknown}");
     assert!(lines >= 100, "only {lines} lines of output in 64 programs");
     assert!(
         unknown <= 64,
