@@ -326,8 +326,7 @@ fn an_exceptions_notes_name_each_call_once() {
 /// inner loop makes the calls (a fused call `Down (N - 1)`, a call with two
 /// arguments `Walk (N - 1, M + 1)`): the inner loop leaves a call past the
 /// depth limit to the big loop, which raises. Without that check,
-/// `Down (30_000)` returned. (The walker, which recurses natively, needs
-/// more than a test thread's stack for 20,000 calls.)
+/// `Down (30_000)` returned.
 #[test]
 fn a_recursion_too_deep_raises_storage_error_in_quick_calls() {
     let src = "with Ada.Text_IO; use Ada.Text_IO;\n\
@@ -343,7 +342,7 @@ fn a_recursion_too_deep_raises_storage_error_in_quick_calls() {
            begin\n   Put_Line (Integer'Image (Walk (30_000, 0)));\n\
            exception\n   when Storage_Error => Put_Line (\"too deep (Walk)\");\nend;\n\
         end Deep;\n";
-    let (out, code, _) = run(src, false, Engine::Compiled);
+    let (out, code, _) = run(src, false);
     assert_eq!(
         out, " 1000 1000\ntoo deep (Down)\ntoo deep (Walk)\n",
         "{code}"

@@ -746,7 +746,7 @@ impl Gen {
             }
             6 => Stmt::PutBool(self.boolean()),
             7 => {
-                let c = self.pick(&[b'a', b'Z', b' ']);
+                let c = self.pick(b"aZ ");
                 Stmt::SetChar(self.int(), c)
             }
             8 if self.below(2) == 0 => Stmt::PutBool(self.boolean()),
@@ -1651,10 +1651,10 @@ impl Machine<'_> {
                 for k in ks {
                     self.ints.insert(var.clone(), k);
                     self.exec_all(body)?;
-                    if let Some(c) = exit {
-                        if self.boolean(c)? {
-                            break;
-                        }
+                    if let Some(c) = exit
+                        && self.boolean(c)?
+                    {
+                        break;
                     }
                 }
             }
@@ -1681,7 +1681,7 @@ impl Machine<'_> {
                 oops,
                 others,
             } => {
-                let r = self.exec_all(body).and_then(|()| match raise {
+                let r = self.exec_all(body).and(match raise {
                     Some(e) => Err(Stop::Raise(*e)),
                     None => Ok(()),
                 });

@@ -920,7 +920,9 @@ impl Checker {
             )
         } else if ti
             && si
-            && !self.tables.types.is_universal(ex.ty)
+            // A static universal value is judged by `coerce`; any other
+            // (`Ring (Character'Pos (C))`) is checked like a typed one.
+            && (!self.tables.types.is_universal(ex.ty) || self.shallow_static(&ex).is_none())
             && self.tables.types.base(ex.ty) != self.tables.types.base(t)
         {
             self.int_conversion(ex, t, sp)
