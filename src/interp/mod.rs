@@ -21,7 +21,6 @@ use crate::check::ir::*;
 use crate::check::types::{Field, TypeId, TypeKind};
 use crate::diag::Span;
 use crate::syntax::ast::Mode;
-use std::cell::RefCell;
 use std::io::Write;
 use std::rc::Rc;
 pub use value::{Array, Ending, Obj, Occurrence, Value};
@@ -524,8 +523,8 @@ impl Machine {
         // Objects are filled in a loop, not by recursion along their
         // accesses (a long list would overflow the native stack).
         while let Some((from, to)) = todo.pop() {
-            let inner = deep_copy(&from.borrow(), &mut seen, &mut todo);
-            *to.borrow_mut() = inner;
+            let inner = deep_copy(&from.get(), &mut seen, &mut todo);
+            to.set(inner);
         }
         copy
     }
@@ -550,7 +549,7 @@ impl Machine {
 /// original, for the caller to fill.
 fn deep_copy(
     v: &Value,
-    seen: &mut std::collections::HashMap<*const RefCell<Value>, Obj>,
+    seen: &mut std::collections::HashMap<*const (), Obj>,
     todo: &mut Vec<(Obj, Obj)>,
 ) -> Value {
     match v {
@@ -571,11 +570,11 @@ fn deep_copy(
                 .collect(),
         ),
         Value::Ptr(Some(p)) => {
-            if let Some(c) = seen.get(&Rc::as_ptr(p)) {
+            if let Some(c) = seen.get(&p.addr()) {
                 return Value::Ptr(Some(c.clone()));
             }
             let c = Obj::new(Value::Undef);
-            seen.insert(Rc::as_ptr(p), c.clone());
+            seen.insert(p.addr(), c.clone());
             todo.push((p.clone(), c.clone()));
             Value::Ptr(Some(c))
         }
@@ -818,8 +817,8 @@ impl<'c> Run<'_, 'c> {
                 let Value::Ptr(Some(rc)) = ptr else {
                     return Err(self.check_failed("access check failed", sp));
                 };
-                let mut b = rc.borrow_mut();
-                write_path(&mut b, steps, val, at).map_err(|e| fail(self, e))
+                rc.update(|b| write_path(b, steps, val, at))
+                    .map_err(|e| fail(self, e))
             }
             Root::Register(a, ty, sp) => {
                 let mut word = self.read_register(a, ty, sp)?;
@@ -1316,7 +1315,7 @@ impl<'c> Run<'_, 'c> {
                 Value::Int(r as i64)
             }
             UnOp::Deref => match v {
-                Value::Ptr(Some(rc)) => rc.borrow().clone(),
+                Value::Ptr(Some(rc)) => rc.get(),
                 _ => return Err(self.check_failed("access check failed", span)),
             },
             UnOp::ArrNot => {
@@ -1691,14 +1690,12 @@ mod copy_tests {
                 let (Value::Ptr(Some(l)), Value::Ptr(Some(h))) = (&last, &head) else {
                     panic!()
                 };
-                if let Some(r) = l.borrow_mut().fields_mut() {
-                    r[1] = Value::Ptr(Some(h.clone()));
-                }
+                l.update(|v| v.fields_mut().unwrap()[1] = Value::Ptr(Some(h.clone())));
                 let mut m = Machine::new(Box::new(std::io::sink()));
                 m.stack = vec![head.clone(), last.clone()].into();
                 let copy = m.copy_globals();
                 let next = |p: &Value| match p {
-                    Value::Ptr(Some(o)) => match o.borrow().fields() {
+                    Value::Ptr(Some(o)) => match o.get().fields() {
                         Some(r) => (r[0].int(), r[1].clone()),
                         None => panic!(),
                     },
@@ -1718,10 +1715,8 @@ mod copy_tests {
                 );
                 // Break both cycles so that they can be freed.
                 for l in [&last, &copy[1]] {
-                    if let Value::Ptr(Some(o)) = l
-                        && let Some(r) = o.borrow_mut().fields_mut()
-                    {
-                        r[1] = Value::Ptr(None);
+                    if let Value::Ptr(Some(o)) = l {
+                        o.update(|v| v.fields_mut().unwrap()[1] = Value::Ptr(None));
                     }
                 }
             })

@@ -615,11 +615,11 @@ impl<'c> Run<'_, 'c> {
     /// The number of the protected object an object value designates.
     pub(crate) fn prot_id(v: &Value) -> usize {
         match v {
-            Value::Ptr(Some(p)) => p
-                .borrow()
-                .fields()
-                .and_then(|r| r.first())
-                .map_or(0, |x| x.int() as usize),
+            Value::Ptr(Some(p)) => p.with(|v| {
+                v.fields()
+                    .and_then(|r| r.first())
+                    .map_or(0, |x| x.int() as usize)
+            }),
             _ => 0,
         }
     }

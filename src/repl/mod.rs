@@ -897,7 +897,7 @@ impl Repl {
                 "access to ...".into()
             }
             (Value::Ptr(Some(p)), TypeKind::Access(d)) => {
-                format!("access to {}", self.show_in(&p.borrow(), *d, accesses + 1))
+                format!("access to {}", self.show_in(&p.get(), *d, accesses + 1))
             }
             (Value::Ptr(Some(_)), _) => "access".into(),
             (Value::Occ(o), _) => self.session.front.checker.tables.excs[o.exc as usize]

@@ -532,10 +532,10 @@ impl<'a, 'c> Run<'a, 'c> {
                 }
                 Op::DerefField(d, a, i, at_deref, at_field) => {
                     let got = match &self.m.stack[ix!(*a)] {
-                        Value::Ptr(Some(o)) => match o.borrow().fields() {
+                        Value::Ptr(Some(o)) => o.with(|v| match v.fields() {
                             Some(r) => Ok(r[*i as usize].clone()),
                             None => Err(("discriminant check failed", *at_field)),
-                        },
+                        }),
                         _ => Err(("access check failed", *at_deref)),
                     };
                     match got {

@@ -500,10 +500,9 @@ fn steps<'c, const CALLS: bool>(
             }
             Op::DerefField(d, a, f, ..) => {
                 let got = match stack.get(at!(*a)) {
-                    Some(Value::Ptr(Some(o))) => match o.try_borrow() {
-                        Ok(r) => r.fields().and_then(|r| r.get(*f as usize).cloned()),
-                        Err(_) => None,
-                    },
+                    Some(Value::Ptr(Some(o))) => {
+                        o.with(|v| v.fields().and_then(|r| r.get(*f as usize).cloned()))
+                    }
                     _ => None,
                 };
                 let Some(v) = got else {
