@@ -202,7 +202,14 @@ struct PutBack<'a>(&'a Cell<Value>, Value);
 impl Drop for PutBack<'_> {
     #[inline]
     fn drop(&mut self) {
-        self.0.set(std::mem::take(&mut self.1));
+        let held = self.0.replace(std::mem::take(&mut self.1));
+        // The object held `Undef` meanwhile: nothing to drop (no call of
+        // the drop glue, which the engine's reads would pay for).
+        if matches!(held, Value::Undef) {
+            std::mem::forget(held);
+        } else {
+            drop(held);
+        }
     }
 }
 
@@ -264,6 +271,8 @@ impl Drop for Obj {
         }
         let v = self.0.take();
         if matches!(v, Value::Undef | Value::Int(_) | Value::Real(_)) {
+            // Owns nothing.
+            std::mem::forget(v);
             return;
         }
         // Queued when a drop is under way (this object was reached from the
