@@ -195,24 +195,6 @@ pub fn variant_holds(fields: &[Value], conds: &[crate::check::types::Governs]) -
 #[derive(Clone)]
 pub struct Obj(Shared<Cell<Value>>);
 
-/// Puts a taken value back into its object, also when the function that
-/// had it unwinds.
-struct PutBack<'a>(&'a Cell<Value>, Value);
-
-impl Drop for PutBack<'_> {
-    #[inline]
-    fn drop(&mut self) {
-        let held = self.0.replace(std::mem::take(&mut self.1));
-        // The object held `Undef` meanwhile: nothing to drop (no call of
-        // the drop glue, which the engine's reads would pay for).
-        if matches!(held, Value::Undef) {
-            std::mem::forget(held);
-        } else {
-            drop(held);
-        }
-    }
-}
-
 impl Obj {
     pub fn new(v: Value) -> Obj {
         Obj(Shared::new(Cell::new(v)))
@@ -223,17 +205,35 @@ impl Obj {
         self.with(Value::clone)
     }
     /// `f` of the object's value (see the type's note: `f` must not reach
-    /// this object).
+    /// this object). Should `f` panic (an interpreter bug), the object is
+    /// left `Undef`.
     #[inline]
     pub fn with<R>(&self, f: impl FnOnce(&Value) -> R) -> R {
-        let held = PutBack(&self.0, self.0.take());
-        f(&held.1)
+        let v = self.0.take();
+        let r = f(&v);
+        self.put_back(v);
+        r
     }
-    /// `f` of the object's value to change in place (see the type's note).
+    /// `f` of the object's value to change in place (see [`Obj::with`]).
     #[inline]
     pub fn update<R>(&self, f: impl FnOnce(&mut Value) -> R) -> R {
-        let mut held = PutBack(&self.0, self.0.take());
-        f(&mut held.1)
+        let mut v = self.0.take();
+        let r = f(&mut v);
+        self.put_back(v);
+        r
+    }
+    /// Puts a taken value back. The object held `Undef` meanwhile: nothing
+    /// to drop, and no call of the drop glue (which the engine's reads
+    /// would pay for; a guard that put the value back on unwinding cost
+    /// one such call per read).
+    #[inline]
+    fn put_back(&self, v: Value) {
+        let held = self.0.replace(v);
+        if matches!(held, Value::Undef) {
+            std::mem::forget(held);
+        } else {
+            drop(held);
+        }
     }
     /// Makes `v` the object's value.
     #[inline]
