@@ -231,6 +231,19 @@ fn steps<'c, const CALLS: bool>(
             };
         }
         // The destination's slot, checked before anything is written.
+        // The order of two integers or two reals in slots (`Cmp`,
+        // `CmpJumpNot`); any other form stops before the instruction.
+        macro_rules! scalar_cmp {
+            ($a:expr, $b:expr) => {
+                match (stack.get(at!($a)), stack.get(at!($b))) {
+                    (Some(Value::Int(x)), Some(Value::Int(y))) => x.cmp(y),
+                    (Some(Value::Real(x)), Some(Value::Real(y))) => {
+                        x.partial_cmp(y).unwrap_or(std::cmp::Ordering::Equal)
+                    }
+                    _ => stop_at!(here),
+                }
+            };
+        }
         macro_rules! dst {
             ($v:expr) => {{
                 let i = at!($v);
@@ -378,13 +391,7 @@ fn steps<'c, const CALLS: bool>(
                 put_int!(i, r as i64);
             }
             Op::Cmp(o, d, a, b) => {
-                let ord = match (stack.get(at!(*a)), stack.get(at!(*b))) {
-                    (Some(Value::Int(x)), Some(Value::Int(y))) => x.cmp(y),
-                    (Some(Value::Real(x)), Some(Value::Real(y))) => {
-                        x.partial_cmp(y).unwrap_or(std::cmp::Ordering::Equal)
-                    }
-                    _ => stop_at!(here),
-                };
+                let ord = scalar_cmp!(*a, *b);
                 let r = exec::holds(*o, ord);
                 let i = dst!(*d);
                 put_int!(i, r as i64);
@@ -532,13 +539,7 @@ fn steps<'c, const CALLS: bool>(
                 }
             }
             Op::CmpJumpNot(o, a, b, t) => {
-                let ord = match (stack.get(at!(*a)), stack.get(at!(*b))) {
-                    (Some(Value::Int(x)), Some(Value::Int(y))) => x.cmp(y),
-                    (Some(Value::Real(x)), Some(Value::Real(y))) => {
-                        x.partial_cmp(y).unwrap_or(std::cmp::Ordering::Equal)
-                    }
-                    _ => stop_at!(here),
-                };
+                let ord = scalar_cmp!(*a, *b);
                 if !exec::holds(*o, ord) {
                     pc = *t as usize;
                 }
