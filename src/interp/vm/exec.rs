@@ -373,24 +373,36 @@ impl<'a, 'c> Run<'a, 'c> {
                     self.put_ix(ix!(*d), v);
                     continue;
                 }
-                Op::IntBin(o, d, a, b, span) => {
-                    let (x, y) = (self.int_ix(ix!(*a)), self.int_ix(ix!(*b)));
-                    match self.int_arith(*o, ix!(*d), x, y, *span) {
+                Op::IntBin {
+                    op,
+                    dst,
+                    x,
+                    y,
+                    span,
+                } => {
+                    let (x, y) = (self.int_ix(ix!(*x)), self.int_ix(ix!(*y)));
+                    match self.int_arith(*op, ix!(*dst), x, y, *span) {
                         Ok(()) => continue,
                         r => r,
                     }
                 }
-                Op::IntBinK(o, d, a, y, span) => {
-                    let x = self.int_ix(ix!(*a));
-                    match self.int_arith(*o, ix!(*d), x, *y, *span) {
+                Op::IntBinK {
+                    op,
+                    dst,
+                    x,
+                    k,
+                    span,
+                } => {
+                    let x = self.int_ix(ix!(*x));
+                    match self.int_arith(*op, ix!(*dst), x, *k, *span) {
                         Ok(()) => continue,
                         r => r,
                     }
                 }
-                Op::CmpK(o, d, a, k) => {
-                    let ord = self.order_k(ix!(*a), *k);
-                    let r = holds(*o, ord);
-                    self.put_int_ix(ix!(*d), r as i64);
+                Op::CmpK { op, dst, x, k } => {
+                    let ord = self.order_k(ix!(*x), *k);
+                    let r = holds(*op, ord);
+                    self.put_int_ix(ix!(*dst), r as i64);
                     continue;
                 }
                 Op::IntNeg(d, a, span) => {
@@ -398,21 +410,28 @@ impl<'a, 'c> Run<'a, 'c> {
                     self.int_op(IntOp::Sub, 0, x, *span)
                         .map(|v| self.put_ix(ix!(*d), Value::Int(v)))
                 }
-                Op::ModBin(o, d, a, b, last, span) => {
-                    let (x, y) = (self.int_ix(ix!(*a)), self.int_ix(ix!(*b)));
-                    match crate::check::ir::modular(*o, x, y, *last) {
+                Op::ModBin {
+                    op,
+                    dst,
+                    x,
+                    y,
+                    last,
+                    span,
+                } => {
+                    let (x, y) = (self.int_ix(ix!(*x)), self.int_ix(ix!(*y)));
+                    match crate::check::ir::modular(*op, x, y, *last) {
                         Some(v) => {
-                            self.put_int_ix(ix!(*d), v);
+                            self.put_int_ix(ix!(*dst), v);
                             continue;
                         }
                         None => Err(self.check_failed("divide by zero", *span)),
                     }
                 }
-                Op::FloatBin(o, d, a, b) => {
-                    let x = self.m.stack[ix!(*a)].real();
-                    let yv = &self.m.stack[ix!(*b)];
-                    let v = value::float_op(*o, x, yv);
-                    self.put_real_ix(ix!(*d), v);
+                Op::FloatBin { op, dst, x, y } => {
+                    let x = self.m.stack[ix!(*x)].real();
+                    let yv = &self.m.stack[ix!(*y)];
+                    let v = value::float_op(*op, x, yv);
+                    self.put_real_ix(ix!(*dst), v);
                     continue;
                 }
                 // `FloatBin` of the four plain operations, one instruction
@@ -442,25 +461,25 @@ impl<'a, 'c> Run<'a, 'c> {
                     self.put_real_ix(ix!(*d), x);
                     continue;
                 }
-                Op::Cmp(o, d, a, b) => {
-                    let ord = self.order_ix(ix!(*a), ix!(*b));
-                    let r = holds(*o, ord);
-                    self.put_int_ix(ix!(*d), r as i64);
+                Op::Cmp { op, dst, x, y } => {
+                    let ord = self.order_ix(ix!(*x), ix!(*y));
+                    let r = holds(*op, ord);
+                    self.put_int_ix(ix!(*dst), r as i64);
                     continue;
                 }
-                Op::Eq(ne, d, a, b) => {
-                    let same = self.m.stack[ix!(*a)] == self.m.stack[ix!(*b)];
-                    self.put_int_ix(ix!(*d), (same != *ne) as i64);
+                Op::Eq { ne, dst, x, y } => {
+                    let same = self.m.stack[ix!(*x)] == self.m.stack[ix!(*y)];
+                    self.put_int_ix(ix!(*dst), (same != *ne) as i64);
                     continue;
                 }
-                Op::Logic(o, d, a, b) => {
-                    let (x, y) = (self.int_ix(ix!(*a)) != 0, self.int_ix(ix!(*b)) != 0);
-                    let r = match o {
+                Op::Logic { op, dst, x, y } => {
+                    let (x, y) = (self.int_ix(ix!(*x)) != 0, self.int_ix(ix!(*y)) != 0);
+                    let r = match op {
                         LogicOp::And | LogicOp::AndThen => x && y,
                         LogicOp::Or | LogicOp::OrElse => x || y,
                         LogicOp::Xor => x ^ y,
                     };
-                    self.put_int_ix(ix!(*d), r as i64);
+                    self.put_int_ix(ix!(*dst), r as i64);
                     continue;
                 }
                 Op::Not(d, a) => {
@@ -468,8 +487,8 @@ impl<'a, 'c> Run<'a, 'c> {
                     self.put_int_ix(ix!(*d), x as i64);
                     continue;
                 }
-                Op::SameDiscriminants(a, b, n, span) => {
-                    let (x, y) = (&self.m.stack[ix!(*a)], &self.m.stack[ix!(*b)]);
+                Op::SameDiscriminants { x, record, n, span } => {
+                    let (x, y) = (&self.m.stack[ix!(*x)], &self.m.stack[ix!(*record)]);
                     match self.same_discriminants(x, y, *n as usize, *span) {
                         Ok(()) => continue,
                         r => r,
@@ -488,59 +507,80 @@ impl<'a, 'c> Run<'a, 'c> {
                         r => r,
                     }
                 }
-                Op::Index(d, arr, ix, span) => {
+                Op::Index { dst, arr, ix, span } => {
                     let mut idx = [0i64; 4];
                     for (k, v) in ix.iter().enumerate() {
                         idx[k] = self.int_ix(ix!(*v));
                     }
-                    load_index!(d, arr, idx, ix.len(), span)
+                    load_index!(dst, arr, idx, ix.len(), span)
                 }
-                Op::Index1(d, arr, i, span) => {
+                Op::Index1 { dst, arr, i, span } => {
                     let idx = [self.int_ix(ix!(*i))];
-                    load_index!(d, arr, idx, 1, span)
+                    load_index!(dst, arr, idx, 1, span)
                 }
-                Op::Index2(d, arr, [i, j], span) => {
+                Op::Index2 {
+                    dst,
+                    arr,
+                    ix: [i, j],
+                    span,
+                } => {
                     let idx = [self.int_ix(ix!(*i)), self.int_ix(ix!(*j))];
-                    load_index!(d, arr, idx, 2, span)
+                    load_index!(dst, arr, idx, 2, span)
                 }
-                Op::StoreIndex(arr, ix, src, span) => {
+                Op::StoreIndex { arr, ix, src, span } => {
                     let mut idx = [0i64; 4];
                     for (k, v) in ix.iter().enumerate() {
                         idx[k] = self.int_ix(ix!(*v));
                     }
                     store_index!(arr, idx, ix.len(), src, span)
                 }
-                Op::StoreIndex1(arr, i, src, span) => {
+                Op::StoreIndex1 { arr, i, src, span } => {
                     let idx = [self.int_ix(ix!(*i))];
                     store_index!(arr, idx, 1, src, span)
                 }
-                Op::StoreIndex2(arr, [i, j], src, span) => {
+                Op::StoreIndex2 {
+                    arr,
+                    ix: [i, j],
+                    src,
+                    span,
+                } => {
                     let idx = [self.int_ix(ix!(*i)), self.int_ix(ix!(*j))];
                     store_index!(arr, idx, 2, src, span)
                 }
-                Op::Field(d, a, i, span) => {
-                    let got = self.m.stack[ix!(*a)]
+                Op::Field {
+                    dst,
+                    record,
+                    field,
+                    span,
+                } => {
+                    let got = self.m.stack[ix!(*record)]
                         .fields()
-                        .map(|r| r[*i as usize].clone());
+                        .map(|r| r[*field as usize].clone());
                     match got {
                         Some(v) => {
-                            self.put_ix(ix!(*d), v);
+                            self.put_ix(ix!(*dst), v);
                             continue;
                         }
                         None => Err(self.check_failed("discriminant check failed", *span)),
                     }
                 }
-                Op::DerefField(d, a, i, at_deref, at_field) => {
-                    let got = match &self.m.stack[ix!(*a)] {
+                Op::DerefField {
+                    dst,
+                    ptr,
+                    field,
+                    at_deref,
+                    at_field,
+                } => {
+                    let got = match &self.m.stack[ix!(*ptr)] {
                         Value::Ptr(Some(o)) => o.with(|v| match v.fields() {
-                            Some(r) => Ok(r[*i as usize].clone()),
+                            Some(r) => Ok(r[*field as usize].clone()),
                             None => Err(("discriminant check failed", *at_field)),
                         }),
                         _ => Err(("access check failed", *at_deref)),
                     };
                     match got {
                         Ok(v) => {
-                            self.put_ix(ix!(*d), v);
+                            self.put_ix(ix!(*dst), v);
                             continue;
                         }
                         Err((what, span)) => Err(self.check_failed(what, span)),
@@ -550,13 +590,18 @@ impl<'a, 'c> Run<'a, 'c> {
                     self.put_ix(ix!(*d), Value::Ptr(None));
                     continue;
                 }
-                Op::Slice(d, b, [l, h], span) => {
+                Op::Slice {
+                    dst,
+                    base,
+                    bounds: [l, h],
+                    span,
+                } => {
                     let (l, h) = (self.int_ix(ix!(*l)), self.int_ix(ix!(*h)));
-                    let bi = ix!(*b);
+                    let bi = ix!(*base);
                     let base = std::mem::take(&mut self.m.stack[bi]);
                     let r = self.slice_of(&base, l, h, *span);
                     self.m.stack[bi] = base;
-                    r.map(|v| self.put_ix(ix!(*d), v))
+                    r.map(|v| self.put_ix(ix!(*dst), v))
                 }
                 Op::Str(d, v) => {
                     self.put_ix(ix!(*d), v.clone());
@@ -608,15 +653,21 @@ impl<'a, 'c> Run<'a, 'c> {
                     self.attr_of(a.op, a0, a1, a.ty, a.span)
                         .map(|v| self.put_ix(ix!(a.dst), v))
                 }
-                Op::Un(op, d, x, span) => {
+                Op::Un { op, dst, x, span } => {
                     let v = self.m.stack[ix!(*x)].clone();
                     self.unary_of(*op, v, *span)
-                        .map(|v| self.put_ix(ix!(*d), v))
+                        .map(|v| self.put_ix(ix!(*dst), v))
                 }
-                Op::ArrLogic(op, d, x, y, span) => {
+                Op::ArrLogic {
+                    op,
+                    dst,
+                    x,
+                    y,
+                    span,
+                } => {
                     let (xi, yi) = (ix!(*x), ix!(*y));
                     self.arr_logic(*op, &self.m.stack[xi], &self.m.stack[yi], *span)
-                        .map(|v| self.put_ix(ix!(*d), v))
+                        .map(|v| self.put_ix(ix!(*dst), v))
                 }
                 Op::TypeBound(d, t, last) => self.type_bounds(*t).map(|(l, h)| {
                     self.put_ix(ix!(*d), if *last { h } else { l });
@@ -624,9 +675,14 @@ impl<'a, 'c> Run<'a, 'c> {
                 Op::Default(d, t, span) => self
                     .default_value(*t, *span)
                     .map(|v| self.put_ix(ix!(*d), v)),
-                Op::Register(d, a, t, span) => self
-                    .read_register(*a, *t, *span)
-                    .map(|v| self.put_ix(ix!(*d), v)),
+                Op::Register {
+                    dst,
+                    addr,
+                    ty,
+                    span,
+                } => self
+                    .read_register(*addr, *ty, *span)
+                    .map(|v| self.put_ix(ix!(*dst), v)),
                 Op::Store(st) => {
                     let si = ix!(st.src);
                     let val = std::mem::take(&mut self.m.stack[si]);
@@ -668,17 +724,17 @@ impl<'a, 'c> Run<'a, 'c> {
                     }
                     continue;
                 }
-                Op::CmpKJumpNot(o, a, k, t) => {
-                    let ord = self.order_k(ix!(*a), *k);
-                    if !holds(*o, ord) {
-                        pc = *t;
+                Op::CmpKJumpNot { op, x, k, target } => {
+                    let ord = self.order_k(ix!(*x), *k);
+                    if !holds(*op, ord) {
+                        pc = *target;
                     }
                     continue;
                 }
-                Op::CmpJumpNot(o, a, b, t) => {
-                    let ord = self.order_ix(ix!(*a), ix!(*b));
-                    if !holds(*o, ord) {
-                        pc = *t;
+                Op::CmpJumpNot { op, x, y, target } => {
+                    let ord = self.order_ix(ix!(*x), ix!(*y));
+                    if !holds(*op, ord) {
+                        pc = *target;
                     }
                     continue;
                 }
@@ -688,7 +744,12 @@ impl<'a, 'c> Run<'a, 'c> {
                     }
                     continue;
                 }
-                Op::Case(x, table, others, span) => {
+                Op::Case {
+                    x,
+                    table,
+                    others,
+                    span,
+                } => {
                     let v = self.int_ix(ix!(*x));
                     match table.iter().find(|(l, h, _)| *l <= v && v <= *h) {
                         Some((_, _, t)) => {
@@ -704,27 +765,40 @@ impl<'a, 'c> Run<'a, 'c> {
                         },
                     }
                 }
-                Op::ForStart(v, l, h, rev, exit) => {
-                    let (lo, hi) = (self.int_ix(ix!(*l)), self.int_ix(ix!(*h)));
+                Op::ForStart {
+                    var,
+                    low,
+                    high,
+                    reverse,
+                    exit,
+                } => {
+                    let (lo, hi) = (self.int_ix(ix!(*low)), self.int_ix(ix!(*high)));
                     if lo > hi {
                         pc = *exit;
                     } else {
-                        self.put_int_ix(ix!(*v), if *rev { hi } else { lo });
+                        self.put_int_ix(ix!(*var), if *reverse { hi } else { lo });
                     }
                     fast!(false);
                     continue;
                 }
-                Op::ForNext(v, l, h, rev, body, span) => {
-                    let i = self.int_ix(ix!(*v));
-                    let last = if *rev {
-                        self.int_ix(ix!(*l))
+                Op::ForNext {
+                    var,
+                    low,
+                    high,
+                    reverse,
+                    body,
+                    span,
+                } => {
+                    let i = self.int_ix(ix!(*var));
+                    let last = if *reverse {
+                        self.int_ix(ix!(*low))
                     } else {
-                        self.int_ix(ix!(*h))
+                        self.int_ix(ix!(*high))
                     };
                     if i == last {
                         continue;
                     }
-                    self.put_int_ix(ix!(*v), if *rev { i - 1 } else { i + 1 });
+                    self.put_int_ix(ix!(*var), if *reverse { i - 1 } else { i + 1 });
                     pc = *body;
                     match self.poll(*span) {
                         Ok(()) => {
@@ -956,10 +1030,21 @@ impl<'a, 'c> Run<'a, 'c> {
                     Ok(None) => Ok(()),
                     Err(e) => Err(e),
                 },
-                Op::AllocTask(d, access, t, span) | Op::AllocDefault(d, access, t, span) => self
-                    .allocated_default(*access, *t, *span)
+                Op::AllocTask {
+                    dst,
+                    access,
+                    ty,
+                    span,
+                }
+                | Op::AllocDefault {
+                    dst,
+                    access,
+                    ty,
+                    span,
+                } => self
+                    .allocated_default(*access, *ty, *span)
                     .and_then(|v| self.allocate(v, *span))
-                    .map(|v| self.put_ix(ix!(*d), v)),
+                    .map(|v| self.put_ix(ix!(*dst), v)),
                 Op::Alloc(d, x, span) => {
                     let v = self.take_slot(*x);
                     self.allocate(v, *span).map(|v| self.put_ix(ix!(*d), v))

@@ -86,31 +86,31 @@ fn takes(op: &Op) -> bool {
         Op::Int(..)
             | Op::Real(..)
             | Op::Move(..)
-            | Op::IntBin(..)
-            | Op::IntBinK(..)
-            | Op::CmpK(..)
-            | Op::Cmp(..)
-            | Op::Eq(..)
-            | Op::Logic(..)
+            | Op::IntBin { .. }
+            | Op::IntBinK { .. }
+            | Op::CmpK { .. }
+            | Op::Cmp { .. }
+            | Op::Eq { .. }
+            | Op::Logic { .. }
             | Op::Not(..)
             | Op::RealAdd(..)
             | Op::RealSub(..)
             | Op::RealMul(..)
             | Op::RealDiv(..)
             | Op::ToReal(..)
-            | Op::Index1(..)
-            | Op::Index2(..)
-            | Op::StoreIndex1(..)
-            | Op::StoreIndex2(..)
-            | Op::DerefField(..)
+            | Op::Index1 { .. }
+            | Op::Index2 { .. }
+            | Op::StoreIndex1 { .. }
+            | Op::StoreIndex2 { .. }
+            | Op::DerefField { .. }
             | Op::Null(..)
             | Op::Jump(..)
             | Op::JumpIfNot(..)
             | Op::JumpIf(..)
-            | Op::CmpKJumpNot(..)
-            | Op::CmpJumpNot(..)
-            | Op::ForStart(..)
-            | Op::ForNext(..)
+            | Op::CmpKJumpNot { .. }
+            | Op::CmpJumpNot { .. }
+            | Op::ForStart { .. }
+            | Op::ForNext { .. }
             | Op::Poll(..)
             | Op::Call(..)
             | Op::CallK { .. }
@@ -369,50 +369,50 @@ fn steps<'c, const CALLS: bool>(
                 let i = dst!(*d);
                 exec::set(&mut stack[i], v);
             }
-            Op::IntBin(o, d, a, b, _) => {
-                let (x, y) = (int!(*a), int!(*b));
-                let Some(v) = int_quick(*o, x, y) else {
+            Op::IntBin { op, dst, x, y, .. } => {
+                let (x, y) = (int!(*x), int!(*y));
+                let Some(v) = int_quick(*op, x, y) else {
                     stop_at!(here);
                 };
-                let i = dst!(*d);
+                let i = dst!(*dst);
                 put_int!(i, v);
             }
-            Op::IntBinK(o, d, a, y, _) => {
-                let x = int!(*a);
-                let Some(v) = int_quick(*o, x, *y) else {
+            Op::IntBinK { op, dst, x, k, .. } => {
+                let x = int!(*x);
+                let Some(v) = int_quick(*op, x, *k) else {
                     stop_at!(here);
                 };
-                let i = dst!(*d);
+                let i = dst!(*dst);
                 put_int!(i, v);
             }
-            Op::CmpK(o, d, a, k) => {
-                let r = exec::holds(*o, int!(*a).cmp(k));
-                let i = dst!(*d);
+            Op::CmpK { op, dst, x, k } => {
+                let r = exec::holds(*op, int!(*x).cmp(k));
+                let i = dst!(*dst);
                 put_int!(i, r as i64);
             }
-            Op::Cmp(o, d, a, b) => {
-                let ord = scalar_cmp!(*a, *b);
-                let r = exec::holds(*o, ord);
-                let i = dst!(*d);
+            Op::Cmp { op, dst, x, y } => {
+                let ord = scalar_cmp!(*x, *y);
+                let r = exec::holds(*op, ord);
+                let i = dst!(*dst);
                 put_int!(i, r as i64);
             }
-            Op::Eq(ne, d, a, b) => {
-                let same = match (stack.get(at!(*a)), stack.get(at!(*b))) {
+            Op::Eq { ne, dst, x, y } => {
+                let same = match (stack.get(at!(*x)), stack.get(at!(*y))) {
                     (Some(Value::Int(x)), Some(Value::Int(y))) => x == y,
                     (Some(x @ (Value::Real(_) | Value::Ptr(_))), Some(y)) => x == y,
                     _ => stop_at!(here),
                 };
-                let i = dst!(*d);
+                let i = dst!(*dst);
                 put_int!(i, (same != *ne) as i64);
             }
-            Op::Logic(o, d, a, b) => {
-                let (x, y) = (int!(*a) != 0, int!(*b) != 0);
-                let r = match o {
+            Op::Logic { op, dst, x, y } => {
+                let (x, y) = (int!(*x) != 0, int!(*y) != 0);
+                let r = match op {
                     LogicOp::And | LogicOp::AndThen => x && y,
                     LogicOp::Or | LogicOp::OrElse => x || y,
                     LogicOp::Xor => x ^ y,
                 };
-                let i = dst!(*d);
+                let i = dst!(*dst);
                 put_int!(i, r as i64);
             }
             Op::Not(d, a) => {
@@ -445,12 +445,22 @@ fn steps<'c, const CALLS: bool>(
                 let i = dst!(*d);
                 put_real!(i, v);
             }
-            Op::Index1(d, arr, x, _) | Op::Index2(d, arr, [x, _], _) => {
+            Op::Index1 { dst, arr, i: x, .. }
+            | Op::Index2 {
+                dst,
+                arr,
+                ix: [x, _],
+                ..
+            } => {
                 let idx = match op {
-                    Op::Index2(_, _, [_, y], _) => [int!(*x), int!(*y)],
+                    Op::Index2 { ix: [_, y], .. } => [int!(*x), int!(*y)],
                     _ => [int!(*x), 0],
                 };
-                let n = if matches!(op, Op::Index2(..)) { 2 } else { 1 };
+                let n = if matches!(op, Op::Index2 { .. }) {
+                    2
+                } else {
+                    1
+                };
                 let got = match stack.get(at!(*arr)) {
                     Some(Value::Arr(a)) => match a.offset(&idx[..n]) {
                         Some(o) => elem(&a.data, o),
@@ -458,19 +468,25 @@ fn steps<'c, const CALLS: bool>(
                     },
                     _ => None,
                 };
-                let i = dst!(*d);
+                let i = dst!(*dst);
                 match got {
                     Some(Elem::Real(x)) => put_real!(i, x),
                     Some(Elem::Int(x)) => put_int!(i, x),
                     None => stop_at!(here),
                 }
             }
-            Op::StoreIndex1(arr, x, src, _) | Op::StoreIndex2(arr, [x, _], src, _) => {
+            Op::StoreIndex1 { arr, i: x, src, .. }
+            | Op::StoreIndex2 {
+                arr,
+                ix: [x, _],
+                src,
+                ..
+            } => {
                 let idx = match op {
-                    Op::StoreIndex2(_, [_, y], _, _) => [int!(*x), int!(*y)],
+                    Op::StoreIndex2 { ix: [_, y], .. } => [int!(*x), int!(*y)],
                     _ => [int!(*x), 0],
                 };
-                let n = if matches!(op, Op::StoreIndex2(..)) {
+                let n = if matches!(op, Op::StoreIndex2 { .. }) {
                     2
                 } else {
                     1
@@ -505,17 +521,19 @@ fn steps<'c, const CALLS: bool>(
                     _ => {}
                 }
             }
-            Op::DerefField(d, a, f, ..) => {
-                let got = match stack.get(at!(*a)) {
+            Op::DerefField {
+                dst, ptr, field, ..
+            } => {
+                let got = match stack.get(at!(*ptr)) {
                     Some(Value::Ptr(Some(o))) => {
-                        o.with(|v| v.fields().and_then(|r| r.get(*f as usize).cloned()))
+                        o.with(|v| v.fields().and_then(|r| r.get(*field as usize).cloned()))
                     }
                     _ => None,
                 };
                 let Some(v) = got else {
                     stop_at!(here);
                 };
-                let i = dst!(*d);
+                let i = dst!(*dst);
                 exec::set(&mut stack[i], v);
             }
             Op::Null(d) => {
@@ -533,37 +551,50 @@ fn steps<'c, const CALLS: bool>(
                     pc = *t as usize;
                 }
             }
-            Op::CmpKJumpNot(o, a, k, t) => {
-                if !exec::holds(*o, int!(*a).cmp(k)) {
-                    pc = *t as usize;
+            Op::CmpKJumpNot { op, x, k, target } => {
+                if !exec::holds(*op, int!(*x).cmp(k)) {
+                    pc = *target as usize;
                 }
             }
-            Op::CmpJumpNot(o, a, b, t) => {
-                let ord = scalar_cmp!(*a, *b);
-                if !exec::holds(*o, ord) {
-                    pc = *t as usize;
+            Op::CmpJumpNot { op, x, y, target } => {
+                let ord = scalar_cmp!(*x, *y);
+                if !exec::holds(*op, ord) {
+                    pc = *target as usize;
                 }
             }
-            Op::ForStart(v, l, h, rev, exit) => {
-                let (lo, hi) = (int!(*l), int!(*h));
-                let i = dst!(*v);
+            Op::ForStart {
+                var,
+                low,
+                high,
+                reverse,
+                exit,
+            } => {
+                let (lo, hi) = (int!(*low), int!(*high));
+                let i = dst!(*var);
                 if lo > hi {
                     pc = *exit as usize;
                 } else {
-                    put_int!(i, if *rev { hi } else { lo });
+                    put_int!(i, if *reverse { hi } else { lo });
                 }
             }
-            Op::ForNext(v, l, h, rev, body, _) => {
-                let i = int!(*v);
-                let last = if *rev { int!(*l) } else { int!(*h) };
+            Op::ForNext {
+                var,
+                low,
+                high,
+                reverse,
+                body,
+                ..
+            } => {
+                let i = int!(*var);
+                let last = if *reverse { int!(*low) } else { int!(*high) };
                 if i != last {
                     // The loop's step polls the user's stop: when it is
                     // set, the big loop's step raises.
                     if stopped!() {
                         stop_at!(here);
                     }
-                    let s = dst!(*v);
-                    put_int!(s, if *rev { i - 1 } else { i + 1 });
+                    let s = dst!(*var);
+                    put_int!(s, if *reverse { i - 1 } else { i + 1 });
                     pc = *body as usize;
                 }
             }

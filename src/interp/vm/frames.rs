@@ -114,8 +114,14 @@ pub(crate) struct Codes<'c> {
     pub(super) table: std::collections::HashMap<TableKey, &'c Code>,
 }
 
-/// The key of a type table expression's code (see `Run::eval_table`).
-pub(super) type TableKey = (*const Ex, u32, u32, u32);
+/// The key of a type table expression's code (see `Run::eval_table`):
+/// where the expression is, and (against an address used again by another
+/// expression) its place in the source.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub(super) struct TableKey {
+    pub(super) ex: *const Ex,
+    pub(super) span: Span,
+}
 
 impl<'c> Codes<'c> {
     pub(crate) fn new(arena: &'c typed_arena::Arena<Code>) -> Codes<'c> {

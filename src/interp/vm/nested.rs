@@ -42,7 +42,10 @@ impl<'a, 'c> Run<'a, 'c> {
         }
         // By where the expression is, and (against an address used again
         // by another expression) its place in the source.
-        let key = (e as *const Ex, e.span.start, e.span.end, e.span.context);
+        let key = TableKey {
+            ex: e as *const Ex,
+            span: e.span,
+        };
         let code = match self.codes.table.get(&key) {
             Some(code) => *code,
             None => {

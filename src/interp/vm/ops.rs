@@ -7,7 +7,13 @@
 //! - `jumps`: where its jump targets (and other positions in the code)
 //!   are; an instruction without the clause has none. `Op::targets_mut`
 //!   visits them to move a compiled part's code (`relocate`) and to patch
-//!   a forward jump (`Compiler::patch`).
+//!   a forward jump (`Compiler::patch`). The clause binds the operands
+//!   by the instruction's own form: `jumps (_, t) f => {...}` of a tuple,
+//!   `jumps { target, .. } f => {...}` of named fields.
+//!
+//! An instruction with four operands or more names them (`IntBin { op,
+//! dst, x, y, span }`); `dst` is the slot written, `x`, `y` the operands
+//! read, `k` a literal operand, `span` where a failed check raises.
 //!
 //! The table makes the enum and those functions: a new instruction cannot
 //! be left out of them.
@@ -20,7 +26,7 @@ macro_rules! instructions {
         $(#[$doc:meta])*
         $name:ident $(( $($ty:ty),* $(,)? ))? $({ $($(#[$fdoc:meta])* $field:ident : $fty:ty),* $(,)? })?
         => scalar: $scalar:literal
-        $(, jumps ($($pat:pat_param),*) $f:ident => $body:block)?
+        $(, jumps $pat:tt $f:ident => $body:block)?
         ;
     )*) => {
         /// One instruction. Operands are frame slots (`Var`); `Span`s are
@@ -42,7 +48,7 @@ macro_rules! instructions {
             /// Calls `f` on each of its jump targets (the table's `jumps`).
             pub(super) fn targets_mut(&mut self, f: &mut dyn FnMut(&mut u32)) {
                 match self {
-                    $( $( Op::$name($($pat),*) => {
+                    $( $( Op::$name $pat => {
                         let $f = &mut *f;
                         $body
                     } )? )*
@@ -57,47 +63,68 @@ instructions! {
     Int(Var, i64) => scalar: true;
     Real(Var, f64) => scalar: true;
     Move(Var, Var) => scalar: true;
-    IntBin(IntOp, Var, Var, Var, Span) => scalar: true;
+    /// `dst := x op y` of integers (where an overflow or a division by
+    /// zero raises: `span`).
+    IntBin { op: IntOp, dst: Var, x: Var, y: Var, span: Span } => scalar: true;
     /// `IntBin` with an integer literal on the right.
-    IntBinK(IntOp, Var, Var, i64, Span) => scalar: true;
+    IntBinK { op: IntOp, dst: Var, x: Var, k: i64, span: Span } => scalar: true;
     IntNeg(Var, Var, Span) => scalar: true;
     /// An operation of a modular type whose values are `0 ..= last`
     /// (`ir::modular`).
-    ModBin(ModOp, Var, Var, Var, u32, Span) => scalar: true;
-    FloatBin(FloatOp, Var, Var, Var) => scalar: true;
+    ModBin {
+        op: ModOp,
+        dst: Var,
+        x: Var,
+        y: Var,
+        /// The type's last value.
+        last: u32,
+        span: Span,
+    } => scalar: true;
+    FloatBin { op: FloatOp, dst: Var, x: Var, y: Var } => scalar: true;
     /// `FloatBin` of `+`, `-`, `*`, `/` (IEEE, as `value::float_op`).
     RealAdd(Var, Var, Var) => scalar: true;
     RealSub(Var, Var, Var) => scalar: true;
     RealMul(Var, Var, Var) => scalar: true;
     RealDiv(Var, Var, Var) => scalar: true;
     ToReal(Var, Var) => scalar: true;
-    Cmp(CmpOp, Var, Var, Var) => scalar: true;
+    /// `dst := x op y`, 1 for True and 0 for False.
+    Cmp { op: CmpOp, dst: Var, x: Var, y: Var } => scalar: true;
     /// `Cmp` of an integer with an integer literal.
-    CmpK(CmpOp, Var, Var, i64) => scalar: true;
-    Eq(bool, Var, Var, Var) => scalar: true;
-    Logic(LogicOp, Var, Var, Var) => scalar: true;
+    CmpK { op: CmpOp, dst: Var, x: Var, k: i64 } => scalar: true;
+    /// `dst := x = y` of any two values, or `x /= y` (`ne`).
+    Eq { ne: bool, dst: Var, x: Var, y: Var } => scalar: true;
+    /// `dst := x op y` of two Booleans (both already evaluated).
+    Logic { op: LogicOp, dst: Var, x: Var, y: Var } => scalar: true;
     Not(Var, Var) => scalar: true;
     RangeCheck(Var, TypeId, Span) => scalar: true;
     /// The record in the slot has the variant of a component (a
     /// discriminant check, `Run::variant_check`).
     Variant(Var, Variant, Span) => scalar: true;
-    /// The value in the first slot has the first `n` discriminants of the
-    /// record in the second (`Run::same_discriminants`).
-    SameDiscriminants(Var, Var, u32, Span) => scalar: true;
+    /// The value in `x` has the first `n` discriminants of the record in
+    /// `record` (`Run::same_discriminants`).
+    SameDiscriminants { x: Var, record: Var, n: u32, span: Span } => scalar: true;
     /// `dst := arr (ix...)` for an array held in a slot (three or four
     /// indices; one and two are `Index1`, `Index2`, without an allocation).
-    Index(Var, Var, Box<[Var]>, Span) => scalar: true;
-    Index1(Var, Var, Var, Span) => scalar: true;
-    Index2(Var, Var, [Var; 2], Span) => scalar: true;
+    Index { dst: Var, arr: Var, ix: Box<[Var]>, span: Span } => scalar: true;
+    Index1 { dst: Var, arr: Var, i: Var, span: Span } => scalar: true;
+    Index2 { dst: Var, arr: Var, ix: [Var; 2], span: Span } => scalar: true;
     /// `arr (ix...) := src` (and with one or two indices).
-    StoreIndex(Var, Box<[Var]>, Var, Span) => scalar: true;
-    StoreIndex1(Var, Var, Var, Span) => scalar: true;
-    StoreIndex2(Var, [Var; 2], Var, Span) => scalar: true;
-    Field(Var, Var, u32, Span) => scalar: true;
+    StoreIndex { arr: Var, ix: Box<[Var]>, src: Var, span: Span } => scalar: true;
+    StoreIndex1 { arr: Var, i: Var, src: Var, span: Span } => scalar: true;
+    StoreIndex2 { arr: Var, ix: [Var; 2], src: Var, span: Span } => scalar: true;
+    /// `dst := record.field` (the component's index), and where its
+    /// discriminant check fails.
+    Field { dst: Var, record: Var, field: u32, span: Span } => scalar: true;
     /// `dst := ptr.all.field` (a component of the record an access
     /// designates, not a copy of the record); where the access check and
     /// where the discriminant check fails.
-    DerefField(Var, Var, u32, Span, Span) => scalar: true;
+    DerefField {
+        dst: Var,
+        ptr: Var,
+        field: u32,
+        at_deref: Span,
+        at_field: Span,
+    } => scalar: true;
     /// `dst := null`.
     Null(Var) => scalar: true;
     /// `dst := "text"`: a string literal's value, made once when the code
@@ -114,19 +141,19 @@ instructions! {
     /// `dst := x & y` (each an array or an element).
     Concat(Box<ConcatOp>) => scalar: true;
     /// `dst := base (low .. high)`, and where its check fails.
-    Slice(Var, Var, [Var; 2], Span) => scalar: true;
+    Slice { dst: Var, base: Var, bounds: [Var; 2], span: Span } => scalar: true;
     /// `dst := P'Attr (args)`, the arguments in slots.
     Attr(Box<AttrInstr>) => scalar: true;
     /// `dst := op x` (`Run::unary_of`).
-    Un(UnOp, Var, Var, Span) => scalar: true;
+    Un { op: UnOp, dst: Var, x: Var, span: Span } => scalar: true;
     /// `dst := x op y` of two Boolean arrays (`Run::arr_logic`).
-    ArrLogic(LogicOp, Var, Var, Var, Span) => scalar: true;
+    ArrLogic { op: LogicOp, dst: Var, x: Var, y: Var, span: Span } => scalar: true;
     /// `dst := T'First` (false) or `T'Last` (true) of a scalar subtype.
     TypeBound(Var, TypeId, bool) => scalar: true;
     /// `dst :=` the default value of a type without tasks.
     Default(Var, TypeId, Span) => scalar: true;
     /// `dst :=` a device register's value (its address, the value's type).
-    Register(Var, u32, TypeId, Span) => scalar: true;
+    Register { dst: Var, addr: u32, ty: TypeId, span: Span } => scalar: true;
     /// An assignment to a component, an element, a slice, a whole array,
     /// through an access value or to a device register (`Run::store`).
     Store(Box<StoreOp>) => scalar: false;
@@ -137,22 +164,41 @@ instructions! {
     Jump(u32) => scalar: true, jumps (t) f => { f(t) };
     JumpIfNot(Var, u32) => scalar: true, jumps (_, t) f => { f(t) };
     /// `JumpIfNot` of a `CmpK`, in one instruction (`if N < 2 then`).
-    CmpKJumpNot(CmpOp, Var, i64, u32) => scalar: true, jumps (_, _, _, t) f => { f(t) };
+    CmpKJumpNot { op: CmpOp, x: Var, k: i64, target: u32 } => scalar: true,
+        jumps { target, .. } f => { f(target) };
     /// `JumpIfNot` of a `Cmp`.
-    CmpJumpNot(CmpOp, Var, Var, u32) => scalar: true, jumps (_, _, _, t) f => { f(t) };
+    CmpJumpNot { op: CmpOp, x: Var, y: Var, target: u32 } => scalar: true,
+        jumps { target, .. } f => { f(target) };
     JumpIf(Var, u32) => scalar: true, jumps (_, t) f => { f(t) };
-    /// Case: the subject, (low, high, target) choices, the `others` target.
-    Case(Var, Box<[(i64, i64, u32)]>, Option<u32>, Span) => scalar: true,
-        jumps (_, table, other, _) f => {
+    /// Case: the subject, its choices, the `others` target (None: a
+    /// value no choice covers fails the check at `span`).
+    Case {
+        x: Var,
+        /// (low, high, target) of each choice.
+        table: Box<[(i64, i64, u32)]>,
+        others: Option<u32>,
+        span: Span,
+    } => scalar: true,
+        jumps { table, others, .. } f => {
         table.iter_mut().for_each(|(_, _, t)| f(t));
-        other.iter_mut().for_each(f);
+        others.iter_mut().for_each(f);
     };
-    /// First step of a `for` loop: the counter, low, high, reverse, the
-    /// exit target (an empty range jumps there).
-    ForStart(Var, Var, Var, bool, u32) => scalar: true, jumps (_, _, _, _, t) f => { f(t) };
-    /// Next step: counter, low, high, reverse, the body's start.
-    ForNext(Var, Var, Var, bool, u32, Span) => scalar: true,
-        jumps (_, _, _, _, t, _) f => { f(t) };
+    /// First step of a `for` loop: the counter gets `low` (`high` in
+    /// `reverse`); an empty range jumps to `exit`.
+    ForStart { var: Var, low: Var, high: Var, reverse: bool, exit: u32 } => scalar: true,
+        jumps { exit, .. } f => { f(exit) };
+    /// Next step: the counter moves on and the loop goes back to `body`,
+    /// or it was the last and the loop goes on past this; a step back
+    /// polls (`Run::poll`, at `span`).
+    ForNext {
+        var: Var,
+        low: Var,
+        high: Var,
+        reverse: bool,
+        body: u32,
+        span: Span,
+    } => scalar: true,
+        jumps { body, .. } f => { f(body) };
     Poll(Span) => scalar: true;
     /// A call of a subprogram with a body: whether it is a function, where
     /// its `out` and `in out` values go when it returns (the argument's
@@ -249,12 +295,12 @@ instructions! {
     /// before it, see `call_site`).
     RequeueArgs(OutSlots, Span) => scalar: false;
     Abort(Box<[Var]>) => scalar: false;
-    /// `dst := new T` of an access type (the first type) to tasks or to
-    /// a type with tasks (the second): the tasks are activated by the next
-    /// instruction (`Activate`).
-    AllocTask(Var, TypeId, TypeId, Span) => scalar: false;
+    /// `dst := new T` of an access type (`access`) to tasks or to a type
+    /// with tasks (`ty`): the tasks are activated by the next instruction
+    /// (`Activate`).
+    AllocTask { dst: Var, access: TypeId, ty: TypeId, span: Span } => scalar: false;
     /// `dst := new T` of a type without tasks (`Run::allocated_default`).
-    AllocDefault(Var, TypeId, TypeId, Span) => scalar: false;
+    AllocDefault { dst: Var, access: TypeId, ty: TypeId, span: Span } => scalar: false;
     /// `dst := new T'(src)` (`Run::allocate`).
     Alloc(Var, Var, Span) => scalar: false;
     /// The bounds of an array aggregate and how many components its

@@ -312,17 +312,41 @@ mod fast_tests {
         let span = crate::diag::span(0, 0, 0);
         let ops = code(vec![
             Op::Int(v(0), 7),
-            Op::IntBinK(IntOp::Add, v(1), v(0), 5, span),
-            Op::IntBinK(IntOp::Mul, v(2), v(1), i32::MAX as i64, span),
+            Op::IntBinK {
+                op: IntOp::Add,
+                dst: v(1),
+                x: v(0),
+                k: 5,
+                span,
+            },
+            Op::IntBinK {
+                op: IntOp::Mul,
+                dst: v(2),
+                x: v(1),
+                k: i32::MAX as i64,
+                span,
+            },
         ]);
         let mut stack = vec![Value::Undef; 4];
         assert_eq!(run(&ops, 0, 1, 0, &mut stack, None), 2);
         assert_eq!(stack[1], Value::Int(12));
         assert_eq!(stack[2], Value::Undef);
         // `mod` of a negative divisor is the big loop's.
-        let ops = code(vec![Op::IntBinK(IntOp::Mod, v(2), v(1), -5, span)]);
+        let ops = code(vec![Op::IntBinK {
+            op: IntOp::Mod,
+            dst: v(2),
+            x: v(1),
+            k: -5,
+            span,
+        }]);
         assert_eq!(run(&ops, 0, 1, 0, &mut stack, None), 0);
-        let ops = code(vec![Op::IntBinK(IntOp::Mod, v(2), v(0), 5, span)]);
+        let ops = code(vec![Op::IntBinK {
+            op: IntOp::Mod,
+            dst: v(2),
+            x: v(0),
+            k: 5,
+            span,
+        }]);
         assert_eq!(run(&ops, 0, 1, 0, &mut stack, None), 1);
         assert_eq!(stack[2], Value::Int(2));
         // An operand of an enclosing frame.
@@ -338,8 +362,18 @@ mod fast_tests {
         stack[3] = Value::Arr(Rc::new(arr));
         stack[0] = Value::Int(2);
         let ops = code(vec![
-            Op::Index1(v(2), v(3), v(0), span),
-            Op::StoreIndex1(v(3), v(1), v(2), span),
+            Op::Index1 {
+                dst: v(2),
+                arr: v(3),
+                i: v(0),
+                span,
+            },
+            Op::StoreIndex1 {
+                arr: v(3),
+                i: v(1),
+                src: v(2),
+                span,
+            },
         ]);
         stack[1] = Value::Int(3);
         assert_eq!(run(&ops, 0, 1, 0, &mut stack, None), 1);
@@ -353,14 +387,28 @@ mod fast_tests {
         let ops = code(vec![
             Op::Int(v(0), 1),
             Op::Int(v(1), 3),
-            Op::ForNext(v(0), v(0), v(1), false, 0, span),
+            Op::ForNext {
+                var: v(0),
+                low: v(0),
+                high: v(1),
+                reverse: false,
+                body: 0,
+                span,
+            },
         ]);
         assert_eq!(run(&ops, 0, 1, 0, &mut stack, Some(&stop)), 2);
         assert_eq!(stack[0], Value::Int(1));
         let go = AtomicBool::new(false);
         let ops = code(vec![
             Op::Int(v(1), 3),
-            Op::ForNext(v(0), v(0), v(1), false, 1, span),
+            Op::ForNext {
+                var: v(0),
+                low: v(0),
+                high: v(1),
+                reverse: false,
+                body: 1,
+                span,
+            },
         ]);
         stack[0] = Value::Int(1);
         assert_eq!(run(&ops, 0, 1, 0, &mut stack, Some(&go)), 2);

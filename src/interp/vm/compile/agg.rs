@@ -84,7 +84,12 @@ impl<'r> Compiler<'r> {
         if repeatable(self.types, v) {
             let t = self.temp();
             let skip = count.map(|c| {
-                self.ops.push(Op::CmpKJumpNot(CmpOp::Gt, c, 0, 0));
+                self.ops.push(Op::CmpKJumpNot {
+                    op: CmpOp::Gt,
+                    x: c,
+                    k: 0,
+                    target: 0,
+                });
                 self.ops.len() - 1
             });
             self.expr_into(v, t);
@@ -99,12 +104,24 @@ impl<'r> Compiler<'r> {
         for &[l, h] in ranges {
             let counter = self.temp();
             let start = self.ops.len();
-            self.ops.push(Op::ForStart(counter, l, h, false, 0));
+            self.ops.push(Op::ForStart {
+                var: counter,
+                low: l,
+                high: h,
+                reverse: false,
+                exit: 0,
+            });
             let body = self.here();
             let x = self.fresh(v);
             self.ops.push(Op::ListPush(list, x));
-            self.ops
-                .push(Op::ForNext(counter, l, h, false, body, v.span));
+            self.ops.push(Op::ForNext {
+                var: counter,
+                low: l,
+                high: h,
+                reverse: false,
+                body,
+                span: v.span,
+            });
             let end = self.here();
             self.patch(start, end);
         }
@@ -158,11 +175,21 @@ impl<'r> Compiler<'r> {
             }
             None if self.has_task(e.ty) => {
                 let p = self.temp();
-                self.with_discrs(Op::AllocTask(p, e.ty, t, span));
+                self.with_discrs(Op::AllocTask {
+                    dst: p,
+                    access: e.ty,
+                    ty: t,
+                    span,
+                });
                 self.ops.push(Op::Activate(span));
                 self.ops.push(Op::Move(dst, p));
             }
-            None => self.with_discrs(Op::AllocDefault(dst, e.ty, t, span)),
+            None => self.with_discrs(Op::AllocDefault {
+                dst,
+                access: e.ty,
+                ty: t,
+                span,
+            }),
         }
     }
 

@@ -8,10 +8,20 @@ impl<'r> Compiler<'r> {
     pub(in crate::interp::vm) fn jump_unless(&mut self, c: &Ex) -> usize {
         let op = match &c.kind {
             ExKind::Cmp(op, a, b) => match b.kind {
-                ExKind::Int(k) => Op::CmpKJumpNot(*op, self.expr(a), k, 0),
+                ExKind::Int(k) => Op::CmpKJumpNot {
+                    op: *op,
+                    x: self.expr(a),
+                    k,
+                    target: 0,
+                },
                 _ => {
                     let x = self.left(a, b);
-                    Op::CmpJumpNot(*op, x, self.expr(b), 0)
+                    Op::CmpJumpNot {
+                        op: *op,
+                        x,
+                        y: self.expr(b),
+                        target: 0,
+                    }
                 }
             },
             _ => Op::JumpIfNot(self.expr(c), 0),
@@ -64,12 +74,24 @@ impl<'r> Compiler<'r> {
             ExKind::IntBin(op, a, b) => {
                 if let ExKind::Int(k) = b.kind {
                     let x = self.expr(a);
-                    self.ops.push(Op::IntBinK(*op, dst, x, k, span));
+                    self.ops.push(Op::IntBinK {
+                        op: *op,
+                        dst,
+                        x,
+                        k,
+                        span,
+                    });
                     return;
                 }
                 let x = self.left(a, b);
                 let y = self.expr(b);
-                self.ops.push(Op::IntBin(*op, dst, x, y, span));
+                self.ops.push(Op::IntBin {
+                    op: *op,
+                    dst,
+                    x,
+                    y,
+                    span,
+                });
             }
             ExKind::IntNeg(a) => {
                 let x = self.expr(a);
@@ -79,7 +101,14 @@ impl<'r> Compiler<'r> {
                 let last = self.types.modular_last(e.ty).unwrap_or(u32::MAX);
                 let x = self.left(a, b);
                 let y = self.expr(b);
-                self.ops.push(Op::ModBin(*op, dst, x, y, last, span));
+                self.ops.push(Op::ModBin {
+                    op: *op,
+                    dst,
+                    x,
+                    y,
+                    last,
+                    span,
+                });
             }
             ExKind::FloatBin(op, a, b) => {
                 let x = self.left(a, b);
@@ -89,7 +118,7 @@ impl<'r> Compiler<'r> {
                     FloatOp::Sub => Op::RealSub(dst, x, y),
                     FloatOp::Mul => Op::RealMul(dst, x, y),
                     FloatOp::Div => Op::RealDiv(dst, x, y),
-                    _ => Op::FloatBin(*op, dst, x, y),
+                    _ => Op::FloatBin { op: *op, dst, x, y },
                 });
             }
             ExKind::IntToFloat(a) => {
@@ -101,17 +130,17 @@ impl<'r> Compiler<'r> {
                     unreachable!()
                 };
                 let x = self.expr(a);
-                self.ops.push(Op::CmpK(*op, dst, x, k));
+                self.ops.push(Op::CmpK { op: *op, dst, x, k });
             }
             ExKind::Cmp(op, a, b) => {
                 let x = self.left(a, b);
                 let y = self.expr(b);
-                self.ops.push(Op::Cmp(*op, dst, x, y));
+                self.ops.push(Op::Cmp { op: *op, dst, x, y });
             }
             ExKind::Eq(ne, a, b) => {
                 let x = self.left(a, b);
                 let y = self.expr(b);
-                self.ops.push(Op::Eq(*ne, dst, x, y));
+                self.ops.push(Op::Eq { ne: *ne, dst, x, y });
             }
             ExKind::Logic(op @ (LogicOp::AndThen | LogicOp::OrElse), a, b) => {
                 // The result is built in a temporary: `dst` may be read by `b`.
@@ -131,7 +160,7 @@ impl<'r> Compiler<'r> {
             ExKind::Logic(op, a, b) => {
                 let x = self.left(a, b);
                 let y = self.expr(b);
-                self.ops.push(Op::Logic(*op, dst, x, y));
+                self.ops.push(Op::Logic { op: *op, dst, x, y });
             }
             ExKind::Not(a) => {
                 let x = self.expr(a);
@@ -145,7 +174,12 @@ impl<'r> Compiler<'r> {
                 self.ops.push(Op::JumpIfNot(w, 0));
                 let cur = self.expr(target);
                 let n = self.types.discriminants(target.ty).len() as u32;
-                self.ops.push(Op::SameDiscriminants(x, cur, n, span));
+                self.ops.push(Op::SameDiscriminants {
+                    x,
+                    record: cur,
+                    n,
+                    span,
+                });
                 let end = self.here();
                 self.patch(j, end);
                 self.ops.push(Op::Move(dst, x));
@@ -177,19 +211,40 @@ impl<'r> Compiler<'r> {
                     ix.push(v);
                 }
                 self.ops.push(match ix[..] {
-                    [i] => Op::Index1(dst, arr, i, span),
-                    [i, j] => Op::Index2(dst, arr, [i, j], span),
-                    _ => Op::Index(dst, arr, ix.into(), span),
+                    [i] => Op::Index1 { dst, arr, i, span },
+                    [i, j] => Op::Index2 {
+                        dst,
+                        arr,
+                        ix: [i, j],
+                        span,
+                    },
+                    _ => Op::Index {
+                        dst,
+                        arr,
+                        ix: ix.into(),
+                        span,
+                    },
                 });
             }
             ExKind::Field(p, i) => match &p.kind {
                 ExKind::Deref(a) => {
                     let x = self.expr(a);
-                    self.ops.push(Op::DerefField(dst, x, *i, p.span, span));
+                    self.ops.push(Op::DerefField {
+                        dst,
+                        ptr: x,
+                        field: *i,
+                        at_deref: p.span,
+                        at_field: span,
+                    });
                 }
                 _ => {
                     let x = self.expr(p);
-                    self.ops.push(Op::Field(dst, x, *i, span));
+                    self.ops.push(Op::Field {
+                        dst,
+                        record: x,
+                        field: *i,
+                        span,
+                    });
                 }
             },
             ExKind::Null => self.ops.push(Op::Null(dst)),
@@ -253,7 +308,12 @@ impl<'r> Compiler<'r> {
                 let base = self.operand_before(p, [l, h]);
                 let lo = self.left(l, h);
                 let hi = self.expr(h);
-                self.ops.push(Op::Slice(dst, base, [lo, hi], span));
+                self.ops.push(Op::Slice {
+                    dst,
+                    base,
+                    bounds: [lo, hi],
+                    span,
+                });
             }
             ExKind::Concat(a, b, xe, ye) => {
                 let x = self.left(a, b);
@@ -304,20 +364,31 @@ impl<'r> Compiler<'r> {
                 let (op, a) = UnOp::of(e).expect("a unary operation");
                 let x = self.expr(a);
                 if matches!(op, UnOp::ArrayConvert(_)) {
-                    self.with_discrs(Op::Un(op, dst, x, span));
+                    self.with_discrs(Op::Un { op, dst, x, span });
                 } else {
-                    self.ops.push(Op::Un(op, dst, x, span));
+                    self.ops.push(Op::Un { op, dst, x, span });
                 }
             }
             ExKind::ArrLogic(op, a, b) => {
                 let x = self.left(a, b);
                 let y = self.expr(b);
-                self.ops.push(Op::ArrLogic(*op, dst, x, y, span));
+                self.ops.push(Op::ArrLogic {
+                    op: *op,
+                    dst,
+                    x,
+                    y,
+                    span,
+                });
             }
             ExKind::TypeFirst(t) => self.ops.push(Op::TypeBound(dst, *t, false)),
             ExKind::TypeLast(t) => self.ops.push(Op::TypeBound(dst, *t, true)),
             ExKind::Default(t) => self.with_discrs(Op::Default(dst, *t, span)),
-            ExKind::Register(a) => self.ops.push(Op::Register(dst, *a, e.ty, span)),
+            ExKind::Register(a) => self.ops.push(Op::Register {
+                dst,
+                addr: *a,
+                ty: e.ty,
+                span,
+            }),
             ExKind::InRanges(s, ranges, neg) => {
                 // The value, then each range as `X >= Lo and then X <= Hi`
                 // in turn until one holds it, as GNAT evaluates it (a bound
@@ -330,9 +401,19 @@ impl<'r> Compiler<'r> {
                 for (l, h) in ranges.iter() {
                     let lo = self.expr(l);
                     let below = self.ops.len();
-                    self.ops.push(Op::CmpJumpNot(CmpOp::Ge, x, lo, 0));
+                    self.ops.push(Op::CmpJumpNot {
+                        op: CmpOp::Ge,
+                        x,
+                        y: lo,
+                        target: 0,
+                    });
                     let hi = self.expr(h);
-                    self.ops.push(Op::Cmp(CmpOp::Le, t, x, hi));
+                    self.ops.push(Op::Cmp {
+                        op: CmpOp::Le,
+                        dst: t,
+                        x,
+                        y: hi,
+                    });
                     ends.push(self.ops.len());
                     self.ops.push(Op::JumpIf(t, 0));
                     let next = self.here();

@@ -39,9 +39,24 @@ impl<'r> Compiler<'r> {
                     };
                     let ix: Vec<Var> = idx.iter().map(|x| self.expr(x)).collect();
                     self.ops.push(match ix[..] {
-                        [i] => Op::StoreIndex1(arr, i, src, t.span),
-                        [i, j] => Op::StoreIndex2(arr, [i, j], src, t.span),
-                        _ => Op::StoreIndex(arr, ix.into(), src, t.span),
+                        [i] => Op::StoreIndex1 {
+                            arr,
+                            i,
+                            src,
+                            span: t.span,
+                        },
+                        [i, j] => Op::StoreIndex2 {
+                            arr,
+                            ix: [i, j],
+                            src,
+                            span: t.span,
+                        },
+                        _ => Op::StoreIndex {
+                            arr,
+                            ix: ix.into(),
+                            src,
+                            span: t.span,
+                        },
                     });
                 }
                 _ => {
@@ -94,11 +109,23 @@ impl<'r> Compiler<'r> {
                 self.expr_into(&f.lo, l);
                 self.expr_into(&f.hi, h);
                 let start = self.ops.len();
-                self.ops.push(Op::ForStart(f.var, l, h, f.reverse, 0));
+                self.ops.push(Op::ForStart {
+                    var: f.var,
+                    low: l,
+                    high: h,
+                    reverse: f.reverse,
+                    exit: 0,
+                });
                 let body_pc = self.here();
                 self.loop_body(f.id, &f.body);
-                self.ops
-                    .push(Op::ForNext(f.var, l, h, f.reverse, body_pc, s.span));
+                self.ops.push(Op::ForNext {
+                    var: f.var,
+                    low: l,
+                    high: h,
+                    reverse: f.reverse,
+                    body: body_pc,
+                    span: s.span,
+                });
                 let end = self.end_loop();
                 self.patch(start, end);
             }
@@ -215,7 +242,12 @@ impl<'r> Compiler<'r> {
         mut each: impl FnMut(&mut Self, &T),
     ) {
         let at = self.ops.len();
-        self.ops.push(Op::Case(x, Box::new([]), None, span));
+        self.ops.push(Op::Case {
+            x,
+            table: Box::new([]),
+            others: None,
+            span,
+        });
         let mut table = Vec::new();
         let mut ends = Vec::new();
         for (ranges, alt) in arms {
@@ -234,7 +266,12 @@ impl<'r> Compiler<'r> {
         for j in ends {
             self.patch(j, end);
         }
-        self.ops[at] = Op::Case(x, table.into(), other, span);
+        self.ops[at] = Op::Case {
+            x,
+            table: table.into(),
+            others: other,
+            span,
+        };
     }
 
     /// `t := src`, `src` a temporary: a scalar or record variable is moved
