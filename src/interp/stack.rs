@@ -92,8 +92,10 @@ impl Stack {
     /// pass over the frame.
     #[inline(always)]
     pub fn open_frame_int(&mut self, n: i64, own: usize, size: usize) {
+        // (The argument is one of the frame's own slots.)
+        debug_assert!(own >= 1 && size >= own);
         let base = self.len;
-        let top = base + size.max(1);
+        let top = base + size;
         if top > self.data.len() {
             self.data.resize(top, Value::Undef);
         }

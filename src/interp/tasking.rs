@@ -26,6 +26,10 @@ pub(crate) type Tid = usize;
 /// The caller of an interrupt entry: the device, not a task.
 pub(crate) const INTERRUPT: Tid = usize::MAX;
 
+/// The entry queues an `accept` or `select` waits on (one or two held
+/// inline: an `accept` blocks without an allocation).
+pub(crate) type Queues = smallvec::SmallVec<[u32; 2]>;
+
 /// What a thread waits for.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) enum Wait {
@@ -46,7 +50,7 @@ pub(crate) enum Wait {
     Rendezvous(Tid),
     /// An `accept` or `select` waiting for a caller.
     Accept {
-        entries: Vec<u32>,
+        entries: Queues,
         deadline: Option<f64>,
         terminate: bool,
     },
@@ -304,7 +308,7 @@ impl Sched {
         self.threads
             .iter()
             .skip(1)
-            .any(|t| t.wait != Wait::Terminated)
+            .any(|t| !matches!(t.wait, Wait::Terminated))
     }
 
     pub fn me(&mut self) -> &mut Thread {
@@ -320,7 +324,7 @@ impl Sched {
     pub fn make_ready(&mut self, t: Tid) {
         let s = self.tick();
         let th = &mut self.threads[t];
-        if th.wait == Wait::Terminated {
+        if matches!(th.wait, Wait::Terminated) {
             return;
         }
         th.wait = Wait::Ready;
@@ -426,7 +430,7 @@ impl Sched {
         self.threads
             .iter()
             .enumerate()
-            .filter(|(_, t)| t.wait != Wait::Terminated)
+            .filter(|(_, t)| !matches!(t.wait, Wait::Terminated))
             .map(|(i, t)| {
                 let what = match &t.wait {
                     Wait::Running => "runs".to_string(),
@@ -670,7 +674,7 @@ impl<'c> Run<'_, 'c> {
                     .sched
                     .threads
                     .get(t)
-                    .is_none_or(|t| t.wait == Wait::Terminated))
+                    .is_none_or(|t| matches!(t.wait, Wait::Terminated)))
             }
             _ => Value::Undef,
         }
@@ -739,7 +743,7 @@ impl<'c> Run<'_, 'c> {
         }
         // The thread whose master waits for it (and its creator) look again.
         for p in waiting.into_iter().flatten() {
-            if self.m.sched.threads[p].wait == Wait::Dependents {
+            if matches!(self.m.sched.threads[p].wait, Wait::Dependents) {
                 self.m.sched.make_ready(p);
             }
         }
@@ -750,7 +754,7 @@ impl<'c> Run<'_, 'c> {
         let th = &mut self.m.sched.threads[a];
         th.activating = th.activating.saturating_sub(1);
         th.activation_failed |= failed;
-        if th.activating == 0 && th.wait == Wait::Activation {
+        if th.activating == 0 && matches!(th.wait, Wait::Activation) {
             self.m.sched.make_ready(a);
         }
     }
@@ -782,7 +786,7 @@ impl<'c> Run<'_, 'c> {
     pub(crate) fn idle(&mut self) -> bool {
         // Terminate alternatives.
         let waiting: Vec<Tid> = (0..self.m.sched.threads.len())
-            .filter(|t| self.m.sched.threads[*t].wait == Wait::Dependents)
+            .filter(|t| matches!(self.m.sched.threads[*t].wait, Wait::Dependents))
             .collect();
         let mut ended = false;
         for m in waiting {
@@ -860,7 +864,7 @@ impl<'c> Run<'_, 'c> {
 
     /// Ends a task waiting at `terminate`, and its dependents first.
     fn terminate_tree(&mut self, t: Tid) {
-        if self.m.sched.threads[t].wait == Wait::Terminated {
+        if matches!(self.m.sched.threads[t].wait, Wait::Terminated) {
             return;
         }
         let deps: Vec<Tid> = self.m.sched.threads[t]
@@ -887,7 +891,9 @@ impl<'c> Run<'_, 'c> {
 
     /// `abort T`: T and its dependents become not callable and end.
     pub(crate) fn abort_task(&mut self, t: Tid) {
-        if t >= self.m.sched.threads.len() || self.m.sched.threads[t].wait == Wait::Terminated {
+        if t >= self.m.sched.threads.len()
+            || matches!(self.m.sched.threads[t].wait, Wait::Terminated)
+        {
             return;
         }
         self.m.sched.threads[t].callable = false;
@@ -945,7 +951,7 @@ impl<'c> Run<'_, 'c> {
     pub(crate) fn deliver(&mut self, address: crate::devices::Address, time: f64) {
         let bound = (0..self.m.sched.threads.len()).find_map(|t| {
             let th = &self.m.sched.threads[t];
-            if th.wait == Wait::Terminated {
+            if matches!(th.wait, Wait::Terminated) {
                 return None;
             }
             let k = th.ttype?;
@@ -1178,7 +1184,7 @@ mod tests {
         let mut s = sched(&[15, 15, 15]);
         s.threads[0].wait = Wait::Delay(3.0);
         s.threads[1].wait = Wait::Accept {
-            entries: vec![0],
+            entries: vec![0].into(),
             deadline: Some(2.5),
             terminate: false,
         };
@@ -1194,7 +1200,7 @@ mod tests {
     fn a_task_at_terminate_with_dependents_waits_for_them_to_terminate_too() {
         let mut s = sched(&[15, 15]);
         s.threads[0].wait = Wait::Accept {
-            entries: vec![],
+            entries: Queues::new(),
             deadline: None,
             terminate: true,
         };

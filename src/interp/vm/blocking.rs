@@ -74,13 +74,13 @@ impl<'a, 'c> Run<'a, 'c> {
         // Tasks created but never activated (an exception before the
         // `begin`) are not waited for: they end now.
         for &t in &deps {
-            if self.m.sched.threads[t].wait == tasking::Wait::Unactivated {
+            if matches!(self.m.sched.threads[t].wait, tasking::Wait::Unactivated) {
                 self.end_thread(t, false);
             }
         }
         let done = deps
             .iter()
-            .all(|d| self.m.sched.threads[*d].wait == tasking::Wait::Terminated);
+            .all(|d| matches!(self.m.sched.threads[*d].wait, tasking::Wait::Terminated));
         if !done {
             self.m.sched.block(tasking::Wait::Dependents, true, span);
         }
@@ -113,7 +113,7 @@ impl<'a, 'c> Run<'a, 'c> {
         if c == tasking::INTERRUPT {
             return;
         }
-        if self.m.sched.threads[c].wait == tasking::Wait::Terminated {
+        if matches!(self.m.sched.threads[c].wait, tasking::Wait::Terminated) {
             // The caller was aborted during the rendezvous: its frames are
             // gone (their slots may be above the stack's top), nothing to
             // copy back or to wake.
@@ -184,7 +184,7 @@ impl<'a, 'c> Run<'a, 'c> {
             ));
         }
         let t = &self.m.sched.threads[s];
-        if !t.callable || t.wait == tasking::Wait::Terminated {
+        if !t.callable || matches!(t.wait, tasking::Wait::Terminated) {
             let name = t.name.clone();
             return Err(self.raise(
                 check::TASKING_ERROR,
@@ -202,7 +202,10 @@ impl<'a, 'c> Run<'a, 'c> {
         self.callable_task(s, ec.span)?;
         let index = self.index_value(ec.index);
         let q = self.task_queue_of(s, ec.entry, index.as_ref(), ec.span)?;
-        let slots: Vec<usize> = ec.ops.iter().map(|v| self.sl(*v)).collect();
+        // (Into the thread's list of the last call: no allocation.)
+        let mut slots = std::mem::take(&mut self.m.sched.threads[me].call);
+        slots.clear();
+        slots.extend(ec.ops.iter().map(|v| self.sl(*v)));
         let deadline = if ec.conditional {
             Some(f64::NEG_INFINITY)
         } else {
@@ -448,7 +451,7 @@ impl<'a, 'c> Run<'a, 'c> {
             Some(c) => self.begin_rendezvous(c, &a.params),
             None => self.m.sched.block(
                 tasking::Wait::Accept {
-                    entries: vec![q],
+                    entries: smallvec::smallvec![q],
                     deadline: None,
                     terminate: false,
                 },
@@ -513,7 +516,9 @@ impl<'a, 'c> Run<'a, 'c> {
         let Some(c) = self.m.sched.threads[me].rendezvous.pop() else {
             return Ok(());
         };
-        if c == tasking::INTERRUPT || self.m.sched.threads[c].wait == tasking::Wait::Terminated {
+        if c == tasking::INTERRUPT
+            || matches!(self.m.sched.threads[c].wait, tasking::Wait::Terminated)
+        {
             return Ok(());
         }
         for (i, (v, mode)) in params.iter().enumerate() {
@@ -727,7 +732,7 @@ impl<'a, 'c> Run<'a, 'c> {
         let open = |this: &Self, g: Option<Var>| g.is_none_or(|g| this.int_at(g) != 0);
         // The queues of the open alternatives (a family member's index is
         // checked when its alternative is open, RM 9.7.1(15)).
-        let mut entries: Vec<u32> = Vec::with_capacity(sel.alts.len());
+        let mut entries = tasking::Queues::with_capacity(sel.alts.len());
         for a in &sel.alts {
             if !open(self, a.guard) {
                 continue;

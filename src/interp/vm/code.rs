@@ -79,6 +79,10 @@ pub(crate) struct Code {
     /// puts anything else there): freeing the frame drops nothing, so it
     /// is freed without looking at its slots.
     pub(super) scalar: bool,
+    /// `all_in` and `scalar`: a return from it copies nothing back and
+    /// frees its frame without looking at it (one test for the inner
+    /// loop's quick return, `fast.rs`).
+    pub(super) quick: bool,
     /// The static level of its frame (its own slots are `Var`s of it).
     pub(super) level: u16,
     pub(super) ops: Vec<Op>,

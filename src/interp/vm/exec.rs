@@ -176,12 +176,11 @@ impl<'a, 'c> Run<'a, 'c> {
         // point, and the callee's code starts.
         macro_rules! push_frame {
             ($entered:expr, $dst:expr) => {
-                let (code, base, saved) = $entered;
+                let (code, _, saved) = $entered;
                 frames.push(Frame {
                     code: std::mem::replace(&mut cur, code),
                     pc,
                     current: current_base,
-                    base,
                     saved,
                     fp,
                     dst: $dst,
@@ -211,7 +210,7 @@ impl<'a, 'c> Run<'a, 'c> {
         macro_rules! fast {
             (false) => {{
                 if fast::worth(&cur.ops, pc) {
-                    let stop = self.m.interrupted.as_deref();
+                    let stop = self.m.interrupted.as_deref().unwrap_or(&fast::NEVER);
                     pc = fast::run(cur, pc as usize, lvl, fp, &mut self.m.stack, stop) as u32;
                 }
             }};
@@ -229,7 +228,7 @@ impl<'a, 'c> Run<'a, 'c> {
                         fp,
                         current_base,
                     };
-                    let stop = self.m.interrupted.as_deref();
+                    let stop = self.m.interrupted.as_deref().unwrap_or(&fast::NEVER);
                     pc = fast::run_calls(pc as usize, &mut self.m.stack, stop, &mut cx) as u32;
                     (cur, lvl, fp, current_base) = (cx.cur, cx.lvl, cx.fp, cx.current_base);
                 }
@@ -853,8 +852,7 @@ impl<'a, 'c> Run<'a, 'c> {
                 Op::CallK {
                     f,
                     x: a,
-                    op: o,
-                    k,
+                    add,
                     dst: d,
                     span,
                     arg_at: [start, end],
@@ -872,7 +870,7 @@ impl<'a, 'c> Run<'a, 'c> {
                         context: span.context,
                     };
                     let entered = self
-                        .int_value_at(*o, x, *k as i64, at)
+                        .int_value_at(IntOp::Add, x, *add as i64, at)
                         .and_then(|n| self.push_call(*f, Args::Int(n), (lvl, fp), *span));
                     match entered {
                         Ok(entered) => enter!(entered, dst),
@@ -1175,8 +1173,10 @@ impl<'a, 'c> Run<'a, 'c> {
                         th.rerun = true;
                     }
                     let me = self.m.sched.cur;
-                    let regs = save_regs(&mut frames, cur, pc, current_base, pending.take(), root);
-                    if self.m.sched.threads[me].wait == tasking::Wait::Terminated && me != 0 {
+                    let regs =
+                        self.save_regs(&mut frames, cur, pc, current_base, pending.take(), root);
+                    if matches!(self.m.sched.threads[me].wait, tasking::Wait::Terminated) && me != 0
+                    {
                         for (b, t) in regs.regions() {
                             self.free_frame(b, t);
                         }
@@ -1252,13 +1252,11 @@ impl<'a, 'c> Run<'a, 'c> {
                             };
                             let (back, dst) = call_site(frame.code, frame.pc);
                             // Copy-out values live in the frame.
+                            let base = self.frame_base(cur);
                             let slots: Vec<(Var, Value)> = back
                                 .iter()
                                 .map(|&(i, v)| {
-                                    (
-                                        v,
-                                        std::mem::take(&mut self.m.stack[frame.base + i as usize]),
-                                    )
+                                    (v, std::mem::take(&mut self.m.stack[base + i as usize]))
                                 })
                                 .collect();
                             let f = cur.func.expect("a called frame");

@@ -34,6 +34,10 @@ pub(super) fn int_quick(o: IntOp, x: i64, y: i64) -> Option<i64> {
         .then_some(v)
 }
 
+/// The stop request of a run that has none (`Machine::interrupted` is
+/// None): the loops test one flag either way.
+pub(super) static NEVER: AtomicBool = AtomicBool::new(false);
+
 /// An element read from an array of scalars.
 enum Elem {
     Real(f64),
@@ -132,7 +136,7 @@ pub(super) fn run(
     lvl: u16,
     fp: usize,
     st: &mut Stack,
-    stop: Option<&AtomicBool>,
+    stop: &AtomicBool,
 ) -> usize {
     // (Nothing of it is read: this copy enters no call.)
     let (mut frames, mut display, mut depth) = (Vec::new(), Vec::new(), 0);
@@ -161,7 +165,7 @@ pub(super) fn run(
 pub(super) fn run_calls<'c>(
     pc: usize,
     st: &mut Stack,
-    stop: Option<&AtomicBool>,
+    stop: &AtomicBool,
     cx: &mut Calls<'_, 'c>,
 ) -> usize {
     steps::<true>(cx.cur, pc, cx.lvl, cx.fp, st, stop, cx)
@@ -174,14 +178,18 @@ fn steps<'c, const CALLS: bool>(
     mut lvl: u16,
     mut fp: usize,
     st: &mut Stack,
-    stop: Option<&AtomicBool>,
+    stop: &AtomicBool,
     cx: &mut Calls<'_, 'c>,
 ) -> usize {
     let mut ops: &'c [Op] = &cur.ops;
     let mut stack = st.as_mut_slice();
     // The calls' registers, as locals (the depth too, written back).
     let (frames, display, codes) = (&mut *cx.frames, &mut *cx.display, cx.codes);
-    let (current, holes) = (cx.current, cx.holes);
+    let current = cx.current;
+    // A quick return needs a frame entered with the current occurrences
+    // it leaves (none of its own) and a stack without holes: one test,
+    // `entered > current_base` (holes: never quick).
+    let entered = if cx.holes { usize::MAX } else { current };
     let mut depth = *cx.depth;
     let mut current_base = cx.current_base;
     // Where it stopped: the registers go back to the big loop.
@@ -267,7 +275,7 @@ fn steps<'c, const CALLS: bool>(
         }
         macro_rules! stopped {
             () => {
-                stop.is_some_and(|f| f.load(Ordering::Relaxed))
+                stop.load(Ordering::Relaxed)
             };
         }
         // A call's callee, when this loop can enter it: compiled already
@@ -299,7 +307,6 @@ fn steps<'c, const CALLS: bool>(
                     code: cur,
                     pc: pc as u32,
                     current: current_base,
-                    base,
                     saved,
                     fp,
                     dst: $dst,
@@ -319,22 +326,19 @@ fn steps<'c, const CALLS: bool>(
         macro_rules! ret {
             ($n:expr) => {{
                 let n: Option<i64> = $n;
-                let Some(f) = frames.last() else {
-                    // The end of a nested run or of a task's body.
-                    stop_at!(here);
-                };
-                if !(cur.all_in && cur.scalar)
-                    || holes
-                    || f.base + (cur.frame as usize) < st.len()
-                    || current > current_base
-                    || (n.is_none() && f.dst != NO_DST)
-                {
+                // (The running frame begins at `fp`.)
+                if !cur.quick || fp + (cur.frame as usize) < st.len() || entered > current_base {
                     stop_at!(here);
                 }
                 let Some(f) = frames.pop() else {
+                    // The end of a nested run or of a task's body.
                     stop_at!(here);
                 };
-                st.truncate_scalars(f.base);
+                if n.is_none() && f.dst != NO_DST {
+                    frames.push(f);
+                    stop_at!(here);
+                }
+                st.truncate_scalars(fp);
                 display[cur.level as usize] = f.saved;
                 depth -= 1;
                 cur = f.code;
@@ -399,7 +403,13 @@ fn steps<'c, const CALLS: bool>(
             Op::Eq { ne, dst, x, y } => {
                 let same = match (stack.get(at!(*x)), stack.get(at!(*y))) {
                     (Some(Value::Int(x)), Some(Value::Int(y))) => x == y,
-                    (Some(x @ (Value::Real(_) | Value::Ptr(_))), Some(y)) => x == y,
+                    // (Access values here, without a call: `P /= null`.)
+                    (Some(Value::Ptr(x)), Some(Value::Ptr(y))) => match (x, y) {
+                        (None, None) => true,
+                        (Some(x), Some(y)) => x.same(y),
+                        _ => false,
+                    },
+                    (Some(x @ Value::Real(_)), Some(y)) => x == y,
                     _ => stop_at!(here),
                 };
                 let i = dst!(*dst);
@@ -598,21 +608,15 @@ fn steps<'c, const CALLS: bool>(
                     pc = *body as usize;
                 }
             }
-            Op::CallK {
-                f,
-                x,
-                op: o,
-                k,
-                dst,
-                ..
-            } => {
+            Op::CallK { f, x, add, dst, .. } => {
                 if !CALLS {
                     stop_at!(here);
                 }
-                let x = int!(*x);
-                let Some(n) = int_quick(*o, x, *k as i64) else {
+                // (Out of Integer's range: the big loop raises.)
+                let n = int!(*x) + *add as i64;
+                if n != n as i32 as i64 {
                     stop_at!(here);
-                };
+                }
                 let dst = if dst.level == NO_VAR.level {
                     NO_DST
                 } else {

@@ -71,9 +71,9 @@ pub(crate) struct Frame<'c> {
     pub(super) pc: u32,
     /// Current occurrences when the callee was entered.
     pub(super) current: usize,
-    /// Where the callee's frame begins, and the display entry of the
-    /// callee's level that the call replaced.
-    pub(super) base: usize,
+    /// The display entry of the callee's level that the call replaced.
+    /// (Where the callee's frame begins is not kept: it is the callee's
+    /// display entry while the callee runs, `Run::frame_base`.)
     pub(super) saved: usize,
     /// Where the caller's own frame begins, and the stack slot a
     /// function's result goes to (`NO_DST`: none, or the copy-back path):
@@ -112,6 +112,11 @@ pub(crate) struct Codes<'c> {
     /// The code of the type table's expressions (see `eval_table`), by
     /// where the expression is.
     pub(super) table: std::collections::HashMap<TableKey, &'c Code>,
+    /// Emptied lists of frames, live and saved, kept for the next switch
+    /// between threads (see [`Run::save_regs`]): a rendezvous allocates
+    /// no frame list.
+    pub(super) spare_frames: Vec<Frame<'c>>,
+    pub(super) spare_saved: Vec<SavedFrame>,
 }
 
 /// The key of a type table expression's code (see `Run::eval_table`):
@@ -129,6 +134,8 @@ impl<'c> Codes<'c> {
             arena,
             by_func: Vec::new(),
             table: std::collections::HashMap::new(),
+            spare_frames: Vec::new(),
+            spare_saved: Vec::new(),
         }
     }
 }
@@ -203,18 +210,20 @@ impl<'a, 'c> Run<'a, 'c> {
             Some(f) => this.code_of(f),
             None => level0,
         };
-        let mut frames = Vec::with_capacity(r.frames.len());
-        for sf in r.frames {
+        let mut frames = std::mem::take(&mut self.codes.spare_frames);
+        frames.clear();
+        let mut saved = r.frames;
+        for sf in saved.drain(..) {
             frames.push(Frame {
                 code: fetch(self, sf.func),
                 pc: sf.pc,
                 current: sf.current,
-                base: sf.base,
                 saved: sf.saved,
                 fp: sf.fp,
                 dst: sf.dst,
             });
         }
+        self.codes.spare_saved = saved;
         let cur = fetch(self, r.cur);
         Live {
             frames,
@@ -226,16 +235,72 @@ impl<'a, 'c> Run<'a, 'c> {
         }
     }
 
+    /// Saves the running thread's registers (see [`Regs`]); `frames` is
+    /// left empty. The lists are the spares of the last switch.
+    pub(super) fn save_regs(
+        &mut self,
+        frames: &mut Vec<Frame<'c>>,
+        cur: &Code,
+        pc: u32,
+        current_base: usize,
+        pending: Option<Box<Occurrence>>,
+        root: Option<(usize, usize)>,
+    ) -> Regs {
+        let mut saved = std::mem::take(&mut self.codes.spare_saved);
+        saved.clear();
+        // Each frame's callee is the next frame's code, whose frame begins
+        // where the next frame's caller's does; the last one's is the
+        // running code, whose frame its level's display entry gives.
+        let running = (
+            self.m.display.get(cur.level as usize).copied().unwrap_or(0),
+            cur.frame,
+        );
+        for (i, f) in frames.iter().enumerate() {
+            let (base, size) = frames
+                .get(i + 1)
+                .map_or(running, |next| (next.fp, next.code.frame));
+            saved.push(SavedFrame {
+                func: f.code.func,
+                pc: f.pc,
+                current: f.current,
+                base,
+                top: base + size as usize,
+                saved: f.saved,
+                fp: f.fp,
+                dst: f.dst,
+            });
+        }
+        frames.clear();
+        std::mem::swap(frames, &mut self.codes.spare_frames);
+        Regs {
+            frames: saved,
+            cur: cur.func,
+            pc,
+            current_base,
+            pending,
+            root,
+        }
+    }
+
+    /// Where the frame of `callee`, a called subprogram's code that is
+    /// running or was left by a raise, begins: its level's display entry,
+    /// which its call set and its return restores.
+    #[inline(always)]
+    pub(super) fn frame_base(&self, callee: &Code) -> usize {
+        self.m.display[callee.level as usize]
+    }
+
     /// Leaves the frame of a call to `callee`: its slots, display entry,
     /// depth, and the occurrences it made current (back to
     /// `entry`, their number when it was entered); no copy-out.
     #[inline(always)]
     pub(super) fn pop_frame(&mut self, f: &Frame<'_>, callee: &Code, entry: usize) {
-        let top = f.base + callee.frame as usize;
+        let base = self.frame_base(callee);
+        let top = base + callee.frame as usize;
         if callee.scalar && self.m.sched.holes.is_empty() && top >= self.m.stack.len() {
-            self.m.stack.truncate_scalars(f.base);
+            self.m.stack.truncate_scalars(base);
         } else {
-            self.free_frame(f.base, top);
+            self.free_frame(base, top);
         }
         self.m.display[callee.level as usize] = f.saved;
         self.m.depth -= 1;
@@ -243,46 +308,6 @@ impl<'a, 'c> Run<'a, 'c> {
         if self.m.current.len() > entry {
             self.m.current.truncate(entry);
         }
-    }
-}
-
-/// Saves the running thread's registers (see [`Regs`]).
-pub(super) fn save_regs(
-    frames: &mut Vec<Frame<'_>>,
-    cur: &Code,
-    pc: u32,
-    current_base: usize,
-    pending: Option<Box<Occurrence>>,
-    root: Option<(usize, usize)>,
-) -> Regs {
-    // Each frame's callee is the next frame's code, the last one's the
-    // running code.
-    let callees: Vec<u32> = frames
-        .iter()
-        .skip(1)
-        .map(|f| f.code.frame)
-        .chain([cur.frame])
-        .collect();
-    Regs {
-        frames: frames
-            .drain(..)
-            .zip(callees)
-            .map(|(f, size)| SavedFrame {
-                func: f.code.func,
-                pc: f.pc,
-                current: f.current,
-                base: f.base,
-                top: f.base + size as usize,
-                saved: f.saved,
-                fp: f.fp,
-                dst: f.dst,
-            })
-            .collect(),
-        cur: cur.func,
-        pc,
-        current_base,
-        pending,
-        root,
     }
 }
 

@@ -211,15 +211,15 @@ instructions! {
     /// a body (Program_Error), its arguments in slots: as `Call`, the
     /// `out` values go to slots that the instructions after it store.
     CallNative(Box<NativeOp>) => scalar: true;
-    /// A call whose one argument, `in`, is `x op k` for integers: the
-    /// operation goes straight into the callee's frame (`F (N - 1)`).
-    /// Then a function's result slot (`NO_VAR`: a procedure), the call's
-    /// place and the argument's (in the call's file).
+    /// A call whose one argument, `in`, is `x + k` or `x - k` for
+    /// integers: the sum `x + add` goes straight into the callee's frame
+    /// (`F (N - 1)`: `add` is -1). Then a function's result slot
+    /// (`NO_VAR`: a procedure), the call's place and the argument's (in
+    /// the call's file).
     CallK {
         f: FuncId,
         x: Var,
-        op: IntOp,
-        k: i32,
+        add: i32,
         dst: Var,
         span: Span,
         arg_at: [u32; 2],

@@ -83,6 +83,7 @@ impl<'a, 'c> Run<'a, 'c> {
                 func: Some(f),
                 all_in: true,
                 scalar: false,
+                quick: false,
                 level: sub.level,
                 ops: vec![
                     Op::CallNative(Box::new(NativeOp {
@@ -140,6 +141,7 @@ impl<'a, 'c> Run<'a, 'c> {
                 func: None,
                 all_in: true,
                 scalar: false,
+                quick: false,
                 level: 0,
                 ops: vec![last, Op::FallOff],
                 temps: 0,

@@ -275,6 +275,7 @@ mod fast_tests {
             func: None,
             all_in: true,
             scalar: true,
+            quick: true,
             level: 1,
             ops,
             temps: 0,
@@ -293,7 +294,7 @@ mod fast_tests {
         stop: Option<&AtomicBool>,
     ) -> usize {
         let mut st = Stack::from(std::mem::take(stack));
-        let r = fast::run(code, pc, lvl, fp, &mut st, stop);
+        let r = fast::run(code, pc, lvl, fp, &mut st, stop.unwrap_or(&fast::NEVER));
         *stack = st.into_vec();
         r
     }

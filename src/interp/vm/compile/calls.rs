@@ -27,9 +27,13 @@ impl<'r> Compiler<'r> {
         if let [a] = all
             && a.mode == Mode::In
             && a.value.span.context == span.context
-            && let ExKind::IntBin(op, x, k) = &a.value.kind
+            && let ExKind::IntBin(op @ (IntOp::Add | IntOp::Sub), x, k) = &a.value.kind
             && let ExKind::Int(k) = k.kind
-            && let Ok(k) = i32::try_from(k)
+            && let Ok(add) = i32::try_from(if *op == IntOp::Sub {
+                -(k as i128)
+            } else {
+                k as i128
+            })
         {
             let x = self.expr(x);
             let at = [a.value.span.start, a.value.span.end];
@@ -37,8 +41,7 @@ impl<'r> Compiler<'r> {
             self.ops.push(Op::CallK {
                 f,
                 x,
-                op: *op,
-                k,
+                add,
                 dst,
                 span,
                 arg_at: at,

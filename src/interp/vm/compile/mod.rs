@@ -248,6 +248,7 @@ impl<'r> Compiler<'r> {
             func,
             all_in,
             scalar,
+            quick: all_in && scalar,
             level: self.level,
             ops: self.ops,
             temps: self.max_temp,
