@@ -258,13 +258,12 @@ pub fn get_line(r: &mut Run, a: &mut [Value], span: Span) -> R<Option<Value>> {
     let Value::Arr(arr) = &mut a[0] else {
         return Ok(None);
     };
-    let arr = std::rc::Rc::make_mut(arr);
-    let first = arr.bounds[0].0;
-    let room = arr.data.len();
+    let first = arr.bounds()[0].0;
+    let room = arr.len_all();
     let chars: Vec<char> = l.chars().collect();
     let n = chars.len().min(room);
     for (k, c) in chars[..n].iter().enumerate() {
-        arr.data.set(k, Value::Int(*c as i64));
+        arr.set(k, Value::Int(*c as i64));
     }
     if chars.len() >= room {
         r.m.line_rest = Some(chars[n..].iter().collect());

@@ -553,15 +553,21 @@ fn deep_copy(
     todo: &mut Vec<(Obj, Obj)>,
 ) -> Value {
     match v {
-        Value::Arr(a) => Value::Arr(Rc::new(Array {
-            bounds: a.bounds.clone(),
-            data: match &a.data {
-                value::Elems::Vals(v) => {
-                    value::Elems::Vals(v.iter().map(|x| deep_copy(x, seen, todo)).collect())
+        Value::Arr(a) => Value::Arr(match a.data() {
+            value::Elems::Vals(v) => {
+                let mut c = Array::with_capacity(value::Form::Vals, v.len());
+                for x in v {
+                    c.push(deep_copy(x, seen, todo));
                 }
-                bytes => bytes.clone(),
-            },
-        })),
+                c.with_bounds(a.bounds())
+            }
+            // Scalars: a copy of the block.
+            _ => {
+                let mut c = a.clone();
+                c.make_mut();
+                c
+            }
+        }),
         v if v.is_record() => Value::record(
             v.fields()
                 .unwrap_or_default()
@@ -943,7 +949,7 @@ impl<'c> Run<'_, 'c> {
             return Ok(v);
         };
         let Value::Arr(mut a) = v else { return Ok(v) };
-        if a.bounds == bounds {
+        if a.bounds() == &bounds[..] {
             return Ok(Value::Arr(a));
         }
         for (d, (l, h)) in bounds.iter().enumerate() {
@@ -951,7 +957,7 @@ impl<'c> Run<'_, 'c> {
                 return Err(self.check_failed("length check failed", span));
             }
         }
-        Rc::make_mut(&mut a).bounds = bounds;
+        a.set_bounds(&bounds);
         Ok(Value::Arr(a))
     }
 
@@ -1144,12 +1150,12 @@ impl<'c> Run<'_, 'c> {
                     for _ in 0..n {
                         v.push(self.default_value(elem, span)?);
                     }
-                    value::Elems::from_vals(v)
+                    Array::from_vals(v).with_bounds(&bounds)
                 } else {
                     let d = self.default_value(elem, span)?;
-                    value::Elems::repeat(d, n as usize)
+                    Array::repeat_in(d, n as usize, &bounds)
                 };
-                Value::Arr(Rc::new(Array { bounds, data }))
+                Value::Arr(data)
             }
             TypeKind::Access(_) => Value::Ptr(None),
             TypeKind::Time => Value::Real(0.0),
@@ -1180,46 +1186,44 @@ impl<'c> Run<'_, 'c> {
                 .unwrap_or(1)
         };
         let len = |v: &Value, elem: bool| match (v, elem) {
-            (Value::Arr(a), false) => a.data.len() as i64,
+            (Value::Arr(a), false) => a.len_all() as i64,
             _ => 1,
         };
         let n = len(&x, xe) + len(&y, ye);
         self.reserve(n, span)?;
         let (mut data, lo) = match (x, xe) {
-            (v, true) => (value::Elems::from_vals(vec![v]), first_of_index()),
+            (v, true) => (Array::from_vals(vec![v]), first_of_index()),
             (Value::Arr(a), false) => {
-                if a.data.is_empty() {
+                if a.len_all() == 0 {
                     // An empty left operand: the result is the right operand.
                     return Ok(match (y, ye) {
                         (v, true) => {
-                            let one = value::Elems::from_vals(vec![v]);
-                            Value::Arr(Rc::new(Array::vector(first_of_index(), one)))
+                            let one = Array::from_vals(vec![v]);
+                            Value::Arr(Array::vector(first_of_index(), one))
                         }
                         (v, false) => v,
                     });
                 }
-                let lo = a.bounds[0].0;
-                // The left operand's components, moved when no one else
-                // holds them, with room for the right one's.
-                let mut data = match Rc::try_unwrap(a) {
-                    Ok(a) => a.data,
-                    Err(a) => a.data.clone(),
-                };
-                data.reserve((n as usize).saturating_sub(data.len()));
+                let lo = a.bounds()[0].0;
+                // The left operand's components, kept in place when no
+                // one else holds them (else copied), with room for the
+                // right one's.
+                let mut data = a;
+                data.reserve((n as usize).saturating_sub(data.len_all()));
                 (data, lo)
             }
-            _ => (value::Elems::default(), 1),
+            _ => (Array::default(), 1),
         };
         match (y, ye) {
             (v, true) => data.push(v),
-            (Value::Arr(b), false) => data.extend_from(&b.data),
+            (Value::Arr(b), false) => data.extend_from(b.data()),
             _ => {}
         }
-        let hi = lo + data.len() as i64 - 1;
+        let hi = lo + data.len_all() as i64 - 1;
         if hi > i32::MAX as i64 {
             return Err(self.check_failed("range check failed", span));
         }
-        Ok(Value::Arr(Rc::new(Array::vector(lo, data))))
+        Ok(Value::Arr(Array::vector(lo, data)))
     }
 
     /// Whether a value of `t` by default can be computed once and copied
@@ -1248,25 +1252,30 @@ impl<'c> Run<'_, 'c> {
         let multi = fixed.as_ref().map(|b| b.len() > 1).unwrap_or(false)
             || matches!(vals.first(), Some(Value::Arr(_))) && dims > 1;
         if !multi {
-            return Ok(Value::Arr(Rc::new(Array {
-                bounds: smallvec::smallvec![first],
-                data: value::Elems::from_vals(vals),
-            })));
+            return Ok(Value::Arr(Array::from_vals(vals).with_bounds(&[first])));
         }
         let mut bounds: value::Bounds = smallvec::smallvec![first];
         // Every row as long as the first (checked below).
         let row_len = match vals.first() {
-            Some(Value::Arr(r)) => r.data.len(),
+            Some(Value::Arr(r)) => r.len_all(),
             _ => 0,
         };
+        // The bounds' number known before the components go in (setting
+        // the bounds then moves nothing).
+        let dims = match (&fixed, vals.first()) {
+            (Some(f), _) => f.len(),
+            (None, Some(Value::Arr(r))) => r.bounds().len() + 1,
+            _ => 1,
+        };
         let mut data = match vals.first() {
-            Some(Value::Arr(r)) => value::Elems::with_capacity_like(
-                &r.data,
+            Some(Value::Arr(r)) => Array::with_capacity_dims(
+                r.form(),
+                dims,
                 vals.len()
                     .saturating_mul(row_len)
                     .min(MAX_ELEMENTS as usize),
             ),
-            _ => value::Elems::default(),
+            _ => Array::default(),
         };
         let mut inner: Option<value::Bounds> = None;
         for v in vals {
@@ -1274,24 +1283,24 @@ impl<'c> Run<'_, 'c> {
                 return Err(self.check_failed("length check failed", span));
             };
             match &inner {
-                None => inner = Some(row.bounds.clone()),
+                None => inner = Some(row.bounds().iter().copied().collect()),
                 Some(b) => {
                     if b.iter()
-                        .zip(&row.bounds)
+                        .zip(row.bounds())
                         .any(|(x, y)| x.1 - x.0 != y.1 - y.0)
                     {
                         return Err(self.check_failed("length check failed", span));
                     }
                 }
             }
-            data.extend_from(&row.data);
+            data.extend_from(row.data());
         }
         let inner = match fixed {
             Some(f) => f[1..].iter().copied().collect(),
             None => inner.unwrap_or_default(),
         };
         bounds.extend(inner);
-        Ok(Value::Arr(Rc::new(Array { bounds, data })))
+        Ok(Value::Arr(data.with_bounds(&bounds)))
     }
 
     /// A unary operation on a value (what both engines run).
@@ -1322,7 +1331,7 @@ impl<'c> Run<'_, 'c> {
                 let Value::Arr(x) = v else {
                     return Err(self.check_failed("access check failed", span));
                 };
-                bool_array(&x, x.data.iter().map(|p| p.int() == 0))
+                bool_array(&x, x.data().iter().map(|p| p.int() == 0))
             }
             UnOp::ArrayConvert(t) => self.array_convert(v, t, span)?,
         })
@@ -1333,12 +1342,12 @@ impl<'c> Run<'_, 'c> {
         let (Value::Arr(x), Value::Arr(y)) = (x, y) else {
             return Err(self.check_failed("access check failed", span));
         };
-        if x.data.len() != y.data.len() {
+        if x.len_all() != y.len_all() {
             return Err(self.check_failed("length check failed", span));
         }
         Ok(bool_array(
             x,
-            x.data.iter().zip(y.data.iter()).map(|(p, q)| {
+            x.data().iter().zip(y.data().iter()).map(|(p, q)| {
                 let (p, q) = (p.int() != 0, q.int() != 0);
                 match op {
                     LogicOp::Or | LogicOp::OrElse => p || q,
@@ -1388,18 +1397,17 @@ impl<'c> Run<'_, 'c> {
             return Err(self.check_failed("access check failed", span));
         };
         if l > h {
-            return Ok(Value::Arr(Rc::new(Array {
-                bounds: smallvec::smallvec![(l, h)],
-                data: value::Elems::with_capacity_like(&a.data, 0),
-            })));
+            return Ok(Value::Arr(
+                Array::with_capacity(a.form(), 0).with_bounds(&[(l, h)]),
+            ));
         }
-        let (lo, hi) = a.bounds[0];
+        let (lo, hi) = a.bounds()[0];
         if l < lo || h > hi {
             return Err(self.check_failed("range check failed", span));
         }
         self.reserve(h - l + 1, span)?;
-        let data = a.data.slice((l - lo) as usize..(h - lo + 1) as usize);
-        Ok(Value::Arr(Rc::new(Array::vector(l, data))))
+        let data = a.data().slice((l - lo) as usize..(h - lo + 1) as usize);
+        Ok(Value::Arr(Array::from_elems(l, data)))
     }
 
     /// An attribute of its evaluated arguments (`a0`, `a1`: `Undef` when
@@ -1424,15 +1432,15 @@ impl<'c> Run<'_, 'c> {
                 };
                 let d = d as usize - 1;
                 match op {
-                    AttrOp::ArrFirst(_) => Value::Int(a.bounds[d].0),
-                    AttrOp::ArrLast(_) => Value::Int(a.bounds[d].1),
+                    AttrOp::ArrFirst(_) => Value::Int(a.bounds()[d].0),
+                    AttrOp::ArrLast(_) => Value::Int(a.bounds()[d].1),
                     _ => Value::Int(a.len(d)),
                 }
             }
-            AttrOp::ImageInt => Value::Arr(Rc::new(Array::vector(
+            AttrOp::ImageInt => Value::Arr(Array::from_elems(
                 1,
-                value::Elems::Bytes(value::image_int_bytes(a0.int())),
-            ))),
+                value::Elems::Bytes(&value::image_int_bytes(a0.int())),
+            )),
             AttrOp::ImageFloat(d) => Value::string(value::image_float_digits(a0.real(), d as u32)),
             AttrOp::ImageDuration => Value::string(value::image_duration(a0.real())),
             AttrOp::ImageChar => {
@@ -1515,15 +1523,14 @@ fn keep_bounds(old: &Value, val: Value) -> Result<Value, &'static str> {
         return Ok(val);
     };
     let n = match val {
-        Value::Arr(n) if n.bounds != o.bounds => n,
+        Value::Arr(n) if n.bounds() != o.bounds() => n,
         other => return Ok(other),
     };
-    if o.bounds.len() != n.bounds.len() || (0..o.bounds.len()).any(|d| o.len(d) != n.len(d)) {
+    let dims = o.bounds().len();
+    if dims != n.bounds().len() || (0..dims).any(|d| o.len(d) != n.len(d)) {
         return Err("length check failed");
     }
-    let mut slid = Rc::unwrap_or_clone(n);
-    slid.bounds = o.bounds.clone();
-    Ok(Value::Arr(Rc::new(slid)))
+    Ok(Value::Arr(n.with_bounds(o.bounds())))
 }
 
 fn write_path(
@@ -1541,20 +1548,20 @@ fn write_path(
             let Value::Arr(a) = root else {
                 return Err(("access check failed", *sp));
             };
-            let a = Rc::make_mut(a);
+            let a = a.make_mut();
             let Some(o) = a.offset(ix) else {
                 return Err(("index check failed", *sp));
             };
             if rest.is_empty()
-                && a.data
+                && a.data()
                     .val(o)
                     .is_none_or(|old| !matches!(old, Value::Arr(_)))
             {
                 // A component that is no array: no bounds to keep.
-                a.data.set(o, val);
+                a.set(o, val);
                 return Ok(());
             }
-            write_path(a.data.get_mut(o), rest, val, at)
+            write_path(a.get_mut(o), rest, val, at)
         }
         Step::Field(i) => {
             let Some(r) = root.fields_mut() else {
@@ -1585,7 +1592,7 @@ fn write_path(
             let Value::Arr(a) = root else {
                 return Err(("access check failed", *sp));
             };
-            let (lo, hi) = a.bounds[0];
+            let (lo, hi) = a.bounds()[0];
             if l <= h && (*l < lo || *h > hi) {
                 return Err(("range check failed", *sp));
             }
@@ -1603,22 +1610,21 @@ fn write_path(
             let Value::Arr(a) = root else {
                 return Err(("access check failed", *sp));
             };
-            let a = Rc::make_mut(a);
             let Value::Arr(src) = val else {
                 return Err(("length check failed", *sp));
             };
             let n = (h - l + 1).max(0) as usize;
-            if src.data.len() != n {
+            if src.len_all() != n {
                 return Err(("length check failed", *sp));
             }
             if n == 0 {
                 return Ok(());
             }
-            let (lo, hi) = a.bounds[0];
+            let (lo, hi) = a.bounds()[0];
             if *l < lo || *h > hi {
                 return Err(("range check failed", *sp));
             }
-            a.data.copy_from((*l - lo) as usize, &src.data);
+            a.copy_from((*l - lo) as usize, src.data());
             Ok(())
         }
     }
@@ -1657,10 +1663,10 @@ impl UnOp {
 
 /// A Boolean array with the bounds of `like` and the components `bits`.
 fn bool_array(like: &value::Array, bits: impl Iterator<Item = bool>) -> Value {
-    Value::Arr(Rc::new(value::Array {
-        bounds: like.bounds.clone(),
-        data: value::Elems::Bytes(bits.map(u8::from).collect()),
-    }))
+    let bits: value::ByteVec = bits.map(u8::from).collect();
+    let mut a = value::Array::from_elems(1, value::Elems::Bytes(&bits));
+    a.set_bounds(like.bounds());
+    Value::Arr(a)
 }
 
 #[cfg(test)]

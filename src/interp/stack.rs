@@ -187,21 +187,20 @@ impl std::ops::IndexMut<usize> for Stack {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::rc::Rc;
 
     #[test]
     fn a_frame_taken_off_drops_what_it_owns_and_a_new_one_is_undef() {
-        let shared = Rc::new(super::super::value::Array::string("ab"));
+        let shared = super::super::value::Array::string("ab");
         let mut s = Stack::default();
         s.grow_to(1);
         s.push(Value::Arr(shared.clone()));
         s.push(Value::Int(7));
         s.push(Value::Real(1.5));
-        assert_eq!(Rc::strong_count(&shared), 2);
+        assert_eq!(shared.ref_count(), 2);
         s.truncate(1);
         assert_eq!(s.len(), 1);
         // The array went with its frame.
-        assert_eq!(Rc::strong_count(&shared), 1);
+        assert_eq!(shared.ref_count(), 1);
         s.grow_to(4);
         assert!(s.as_slice().iter().all(|v| matches!(v, Value::Undef)));
         assert_eq!(s.get(4), None);

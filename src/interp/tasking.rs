@@ -1013,7 +1013,7 @@ impl<'c> Run<'_, 'c> {
                 let data = (lo..=hi)
                     .map(|i| Value::Int(((v >> ((i - lo) & 15)) & 1) as i64))
                     .collect();
-                Value::Arr(Rc::new(Array::vector(lo, data)))
+                Value::Arr(Array::vector(lo, data))
             }
             None => {
                 // The register's 16 bits read as a value of the object's
@@ -1030,7 +1030,7 @@ impl<'c> Run<'_, 'c> {
         self.world_sync();
         let word: u16 = match v {
             Value::Arr(arr) => arr
-                .data
+                .data()
                 .iter()
                 .enumerate()
                 .take(16)

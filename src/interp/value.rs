@@ -32,7 +32,7 @@ pub enum Value {
     Undef,
     Int(i64),
     Real(f64),
-    Arr(Rc<Array>),
+    Arr(Array),
     Ptr(Option<Obj>),
     Occ(Rc<Occurrence>),
     Rec1(Shared<[Value; 1]>),
@@ -302,77 +302,10 @@ impl Drop for Obj {
     }
 }
 
-#[derive(Clone, Debug, PartialEq)]
-pub struct Array {
-    pub bounds: Bounds,
-    pub data: Elems,
-}
+pub use super::elems::{Array, Bound, ByteVec, Elems, ElemsMut, Form};
 
-/// An array's bounds, one pair per dimension (one dimension held inline).
-pub type Bounds = smallvec::SmallVec<[(i64, i64); 1]>;
-
-pub use super::elems::{ByteVec, Elems};
-
-impl Array {
-    pub fn len(&self, dim: usize) -> i64 {
-        let (l, h) = self.bounds[dim];
-        (h - l + 1).max(0)
-    }
-    /// Offset of an index tuple, or `None` when out of bounds.
-    #[inline]
-    pub fn offset(&self, idx: &[i64]) -> Option<usize> {
-        // The two common shapes first, without the loop.
-        match (idx, &self.bounds[..]) {
-            (&[i], &[(l, h)]) => {
-                return (l <= i && i <= h).then_some((i - l) as usize);
-            }
-            (&[i, j], &[(l0, h0), (l1, h1)]) => {
-                return (l0 <= i && i <= h0 && l1 <= j && j <= h1)
-                    .then_some(((i - l0) * (h1 - l1 + 1) + (j - l1)) as usize);
-            }
-            _ => {}
-        }
-        let mut off = 0i64;
-        for (d, &i) in idx.iter().enumerate() {
-            let (l, h) = *self.bounds.get(d)?;
-            if i < l || i > h {
-                return None;
-            }
-            off = off * self.len(d) + (i - l);
-        }
-        Some(off as usize)
-    }
-    pub fn string(s: &str) -> Array {
-        let data: Elems = if s.is_ascii() {
-            Elems::Bytes(ByteVec::from_slice(s.as_bytes()))
-        } else {
-            s.chars().map(|c| Value::Int(c as i64)).collect()
-        };
-        Array {
-            bounds: smallvec::smallvec![(1, data.len() as i64)],
-            data,
-        }
-    }
-    /// A one-dimensional array of these components, from `first` on.
-    pub fn vector(first: i64, data: Elems) -> Array {
-        Array {
-            bounds: smallvec::smallvec![(first, first + data.len() as i64 - 1)],
-            data,
-        }
-    }
-    pub fn to_string_lossy(&self) -> String {
-        match &self.data {
-            Elems::Bytes(b) => b.iter().map(|&c| c as char).collect(),
-            other => other
-                .iter()
-                .map(|v| match v {
-                    Value::Int(c) => char::from_u32(c as u32).unwrap_or('?'),
-                    _ => '?',
-                })
-                .collect(),
-        }
-    }
-}
+/// An array's bounds while they are computed, one pair per dimension.
+pub type Bounds = smallvec::SmallVec<[Bound; 1]>;
 
 impl PartialEq for Value {
     fn eq(&self, other: &Value) -> bool {
@@ -381,9 +314,9 @@ impl PartialEq for Value {
             (Value::Real(a), Value::Real(b)) => a == b,
             (Value::Arr(a), Value::Arr(b)) => {
                 // Ada: arrays are equal when lengths and components match (bounds may differ).
-                a.data.len() == b.data.len()
-                    && (0..a.bounds.len()).all(|d| a.len(d) == b.len(d))
-                    && a.data == b.data
+                a.len_all() == b.len_all()
+                    && (0..a.bounds().len()).all(|d| a.len(d) == b.len(d))
+                    && a.data() == b.data()
             }
             (Value::Ptr(a), Value::Ptr(b)) => match (a, b) {
                 (None, None) => true,
@@ -401,17 +334,11 @@ impl PartialEq for Value {
 
 impl Value {
     pub fn str(s: &str) -> Value {
-        Value::Arr(Rc::new(Array::string(s)))
+        Value::Arr(Array::string(s))
     }
-    /// A `String` value of this text, its bytes taken over when it is ASCII.
+    /// A `String` value of this text.
     pub fn string(s: String) -> Value {
-        if !s.is_ascii() {
-            return Value::str(&s);
-        }
-        Value::Arr(Rc::new(Array::vector(
-            1,
-            Elems::Bytes(ByteVec::from_vec(s.into_bytes())),
-        )))
+        Value::str(&s)
     }
     pub fn int(&self) -> i64 {
         match self {
@@ -440,16 +367,16 @@ impl Value {
             (Value::Int(a), Value::Int(b)) => a.cmp(b),
             (Value::Real(a), Value::Real(b)) => a.partial_cmp(b).unwrap_or(Ordering::Equal),
             (Value::Arr(a), Value::Arr(b)) => {
-                if let (Some(x), Some(y)) = (a.data.bytes(), b.data.bytes()) {
+                if let (Some(x), Some(y)) = (a.data().bytes(), b.data().bytes()) {
                     return x.cmp(y);
                 }
-                for (x, y) in a.data.iter().zip(b.data.iter()) {
+                for (x, y) in a.data().iter().zip(b.data().iter()) {
                     let c = x.compare(&y);
                     if c != Ordering::Equal {
                         return c;
                     }
                 }
-                a.data.len().cmp(&b.data.len())
+                a.len_all().cmp(&b.len_all())
             }
             _ => Ordering::Equal,
         }

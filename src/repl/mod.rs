@@ -840,7 +840,7 @@ impl Repl {
                 }
                 if name == "axesvector" {
                     let mut s = String::new();
-                    for (k, x) in a.data.iter().enumerate() {
+                    for (k, x) in a.data().iter().enumerate() {
                         let r = x.real();
                         s.push_str(&format!(
                             "J{} = {r:9.4} rad {:9.3} deg\n",
@@ -851,9 +851,9 @@ impl Repl {
                     s.pop();
                     return s;
                 }
-                if a.bounds.len() == 2 {
+                if a.bounds().len() == 2 {
                     let cols = a.len(1) as usize;
-                    let all: Vec<Value> = a.data.iter().collect();
+                    let all: Vec<Value> = a.data().iter().collect();
                     let rows: Vec<String> = all
                         .chunks(cols.max(1))
                         .map(|row| {
@@ -866,7 +866,7 @@ impl Repl {
                     return rows.join("\n");
                 }
                 let items: Vec<String> = a
-                    .data
+                    .data()
                     .iter()
                     .map(|x| self.show_in(&x, *elem, accesses))
                     .collect();

@@ -107,16 +107,13 @@ pub fn frame_value(p: &Pose) -> Value {
         .iter()
         .flat_map(|row| row.iter().map(|x| Value::Real(*x)))
         .collect();
-    Value::Arr(Rc::new(Array {
-        bounds: smallvec::smallvec![(1, 3), (1, 4)],
-        data,
-    }))
+    Value::Arr(Array::from_vals(data).with_bounds(&[(1, 3), (1, 4)]))
 }
 
 pub fn frame_rows(v: &Value) -> [[f64; 4]; 3] {
     let mut rows = [[0.0; 4]; 3];
     if let Value::Arr(a) = v {
-        for (k, x) in a.data.iter().enumerate().take(12) {
+        for (k, x) in a.data().iter().enumerate().take(12) {
             rows[k / 4][k % 4] = x.real();
         }
     }
@@ -124,16 +121,13 @@ pub fn frame_rows(v: &Value) -> [[f64; 4]; 3] {
 }
 
 pub(super) fn axes_value(j: &Joints) -> Value {
-    Value::Arr(Rc::new(Array::vector(
-        1,
-        j.iter().map(|x| Value::Real(*x)).collect(),
-    )))
+    Value::Arr(j.iter().map(|x| Value::Real(*x)).collect())
 }
 
 pub(super) fn axes_of(v: &Value) -> Joints {
     let mut j = [0.0; 5];
     if let Value::Arr(a) = v {
-        for (k, x) in a.data.iter().enumerate().take(5) {
+        for (k, x) in a.data().iter().enumerate().take(5) {
             j[k] = x.real();
         }
     }

@@ -9,9 +9,7 @@ impl<'a, 'c> Run<'a, 'c> {
         match *p {
             PartOp::One(v) => AggPart::One(self.take_slot(v)),
             PartOp::Each(v) => AggPart::Each(match self.take_slot(v) {
-                Value::Arr(a) => Rc::try_unwrap(a)
-                    .map_or_else(|a| a.data.clone(), |a| a.data)
-                    .into_vals(),
+                Value::Arr(a) => a.into_vals(),
                 _ => Vec::new(),
             }),
         }
@@ -251,14 +249,15 @@ impl<'a, 'c> Run<'a, 'c> {
                 let got = match &self.m.stack[ix!(*$arr)] {
                     Value::Arr(a) => match a.offset(&$idx[..$n]) {
                         Some(o) => {
-                            if let value::Elems::Reals(r) = &a.data {
+                            let data = a.data();
+                            if let value::Elems::Reals(r) = data {
                                 Got::Real(r[o])
-                            } else if let value::Elems::Ints(v) = &a.data {
+                            } else if let value::Elems::Ints(v) = data {
                                 Got::Int(v[o])
-                            } else if let value::Elems::Bytes(b) = &a.data {
+                            } else if let value::Elems::Bytes(b) = data {
                                 Got::Int(b[o] as i64)
                             } else {
-                                elem_slow(&a.data, o)
+                                elem_slow(data, o)
                             }
                         }
                         None => Got::Fail("index check failed"),
@@ -295,20 +294,19 @@ impl<'a, 'c> Run<'a, 'c> {
                 let slot = ix!(*$arr);
                 let r = match &mut self.m.stack[slot] {
                     Value::Arr(a) => {
-                        let a = Rc::make_mut(a);
                         match a.offset(&$idx[..$n]) {
                             Some(o) => {
                                 // The compact forms one by one (see
                                 // `load_index`).
-                                match (val, &mut a.data) {
-                                    (Got::Real(x), value::Elems::Reals(r)) => r[o] = x,
-                                    (Got::Int(x), value::Elems::Ints(v)) => v[o] = x,
-                                    (Got::Int(x), value::Elems::Bytes(b))
+                                match (val, a.data_mut()) {
+                                    (Got::Real(x), value::ElemsMut::Reals(r)) => r[o] = x,
+                                    (Got::Int(x), value::ElemsMut::Ints(v)) => v[o] = x,
+                                    (Got::Int(x), value::ElemsMut::Bytes(b))
                                         if (0..=255).contains(&x) =>
                                     {
                                         b[o] = x as u8
                                     }
-                                    (val, d) => store_slow(d, o, val),
+                                    (val, _) => store_slow(a, o, val),
                                 }
                                 Ok(())
                             }
@@ -1109,8 +1107,7 @@ impl<'a, 'c> Run<'a, 'c> {
                         .map(|v| self.put_ix(ix!(r.dst), v))
                 }
                 Op::ListNew(d) => {
-                    let empty =
-                        Value::Arr(Rc::new(Array::vector(1, value::Elems::Vals(Vec::new()))));
+                    let empty = Value::Arr(Array::with_capacity(value::Form::Vals, 0));
                     self.put_ix(ix!(*d), empty);
                     Ok(())
                 }
@@ -1118,7 +1115,7 @@ impl<'a, 'c> Run<'a, 'c> {
                     let v = self.take_slot(*x);
                     let li = ix!(*l);
                     if let Value::Arr(a) = &mut self.m.stack[li] {
-                        Rc::make_mut(a).data.push(v);
+                        a.push(v);
                     }
                     Ok(())
                 }
@@ -1371,7 +1368,7 @@ enum Got {
 
 /// Element `o` of an array held as general values.
 #[inline(never)]
-fn elem_slow(data: &value::Elems, o: usize) -> Got {
+fn elem_slow(data: value::Elems, o: usize) -> Got {
     match data {
         value::Elems::Reals(r) => Got::Real(r[o]),
         value::Elems::Ints(v) => Got::Int(v[o]),
@@ -1388,16 +1385,16 @@ fn elem_slow(data: &value::Elems, o: usize) -> Got {
 /// temporary), for the forms `store_index` does not write inline: a
 /// compact array of another form widens if it must.
 #[inline(never)]
-fn store_slow(d: &mut value::Elems, o: usize, val: Got) {
+fn store_slow(d: &mut Array, o: usize, val: Got) {
     let v = match val {
         Got::Real(x) => Value::Real(x),
         Got::Int(x) => Value::Int(x),
         Got::Val(v) => v,
         Got::Fail(_) => return,
     };
-    match d {
-        value::Elems::Vals(vs) => set(&mut vs[o], v),
-        d => d.set(o, v),
+    match d.data_mut() {
+        value::ElemsMut::Vals(vs) => set(&mut vs[o], v),
+        _ => d.set(o, v),
     }
 }
 

@@ -46,7 +46,7 @@ enum Elem {
 
 /// Element `o` of a compact array of scalars (None: general values).
 #[inline(always)]
-fn elem(data: &value::Elems, o: usize) -> Option<Elem> {
+fn elem(data: value::Elems, o: usize) -> Option<Elem> {
     match data {
         value::Elems::Reals(r) => r.get(o).map(|x| Elem::Real(*x)),
         value::Elems::Ints(v) => v.get(o).map(|x| Elem::Int(*x)),
@@ -473,7 +473,7 @@ fn steps<'c, const CALLS: bool>(
                 };
                 let got = match stack.get(at!(*arr)) {
                     Some(Value::Arr(a)) => match a.offset(&idx[..n]) {
-                        Some(o) => elem(&a.data, o),
+                        Some(o) => elem(a.data(), o),
                         None => None,
                     },
                     _ => None,
@@ -514,7 +514,7 @@ fn steps<'c, const CALLS: bool>(
                 let Some(o) = a.offset(&idx[..n]) else {
                     stop_at!(here);
                 };
-                let fits = match (&val, &a.data) {
+                let fits = match (&val, a.data()) {
                     (Elem::Real(_), value::Elems::Reals(r)) => o < r.len(),
                     (Elem::Int(_), value::Elems::Ints(v)) => o < v.len(),
                     (Elem::Int(x), value::Elems::Bytes(b)) => (0..=255).contains(x) && o < b.len(),
@@ -523,10 +523,10 @@ fn steps<'c, const CALLS: bool>(
                 if !fits {
                     stop_at!(here);
                 }
-                match (val, &mut Rc::make_mut(a).data) {
-                    (Elem::Real(x), value::Elems::Reals(r)) => r[o] = x,
-                    (Elem::Int(x), value::Elems::Ints(v)) => v[o] = x,
-                    (Elem::Int(x), value::Elems::Bytes(b)) => b[o] = x as u8,
+                match (val, a.data_mut()) {
+                    (Elem::Real(x), value::ElemsMut::Reals(r)) => r[o] = x,
+                    (Elem::Int(x), value::ElemsMut::Ints(v)) => v[o] = x,
+                    (Elem::Int(x), value::ElemsMut::Bytes(b)) => b[o] = x as u8,
                     // (Excluded by `fits`: a copy keeps its form.)
                     _ => {}
                 }

@@ -266,7 +266,6 @@ mod fast_tests {
     use crate::check::ir::{IntOp, Var};
     use crate::interp::stack::Stack;
     use crate::interp::value::{Array, Elems, Value};
-    use std::rc::Rc;
     use std::sync::atomic::AtomicBool;
 
     /// Level-1 code of `ops`.
@@ -359,8 +358,8 @@ mod fast_tests {
         assert_eq!(run(&ops, 0, 1, 2, &mut stack, None), 1);
         assert_eq!(stack[3], Value::Int(2));
         // Elements: in range, then out of range (nothing written).
-        let arr = Array::vector(1, Elems::Reals(vec![0.5, 1.5]));
-        stack[3] = Value::Arr(Rc::new(arr));
+        let arr = Array::from_elems(1, Elems::Reals(&[0.5, 1.5]));
+        stack[3] = Value::Arr(arr);
         stack[0] = Value::Int(2);
         let ops = code(vec![
             Op::Index1 {
@@ -382,7 +381,7 @@ mod fast_tests {
         stack[1] = Value::Int(1);
         assert_eq!(run(&ops, 1, 1, 0, &mut stack, None), 2);
         let Value::Arr(a) = &stack[3] else { panic!() };
-        assert_eq!(a.data, Elems::Reals(vec![1.5, 1.5]));
+        assert_eq!(a.data(), Elems::Reals(&[1.5, 1.5]));
         // A loop's step while the user's stop is set.
         let stop = AtomicBool::new(true);
         let ops = code(vec![
