@@ -594,13 +594,21 @@ impl<V: Component> Array<V> {
         let form = Form::of(&v);
         let mut a = Array::alloc(form, bounds.len(), n);
         let p = a.elems_ptr();
-        // SAFETY: room for `n` of `form`, which holds `v`.
+        // SAFETY: room for `n` of `form`. The writes follow `form`, not a
+        // second answer of `v.scalar()` (a safe trait: two answers may
+        // differ, and reals written into bytes would pass the block's end).
         unsafe {
-            match v.scalar() {
-                Scalar::Int(i) if form == Form::Bytes => ptr::write_bytes(p, i as u8, n),
-                Scalar::Int(i) => (0..n).for_each(|k| p.cast::<i64>().add(k).write(i)),
-                Scalar::Real(x) => (0..n).for_each(|k| p.cast::<f64>().add(k).write(x)),
-                Scalar::Other => {
+            match form {
+                Form::Bytes => ptr::write_bytes(p, v.as_int() as u8, n),
+                Form::Ints => {
+                    let i = v.as_int();
+                    (0..n).for_each(|k| p.cast::<i64>().add(k).write(i))
+                }
+                Form::Reals => {
+                    let x = v.as_real();
+                    (0..n).for_each(|k| p.cast::<f64>().add(k).write(x))
+                }
+                Form::Vals => {
                     for k in 0..n {
                         p.cast::<V>().add(k).write(v.clone());
                         a.head_mut().len = k + 1;
@@ -915,3 +923,6 @@ impl<V: Component> PartialEq for Elems<'_, V> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;
