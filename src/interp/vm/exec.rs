@@ -836,9 +836,15 @@ impl<'a, 'c> Run<'a, 'c> {
                         }
                     })
                 }
-                Op::Call(func, f, _, ops, span) => {
+                Op::Call {
+                    function,
+                    f,
+                    ops,
+                    span,
+                    ..
+                } => {
                     // (The result slot before the call: it changes the display.)
-                    let (args, dst) = match (*func, ops.split_last()) {
+                    let (args, dst) = match (*function, ops.split_last()) {
                         (true, Some((d, args))) => (args, ix!(*d)),
                         _ => (&ops[..], NO_DST),
                     };
@@ -887,9 +893,9 @@ impl<'a, 'c> Run<'a, 'c> {
                     };
                     ret!(value)
                 }
-                Op::ReturnIntBin(o, a, b, span) => {
-                    let (x, y) = (self.int_ix(ix!(*a)), self.int_ix(ix!(*b)));
-                    match self.int_value(*o, x, y, *span) {
+                Op::ReturnIntBin { op, x, y, span } => {
+                    let (x, y) = (self.int_ix(ix!(*x)), self.int_ix(ix!(*y)));
+                    match self.int_value(*op, x, y, *span) {
                         Ok(n) => ret!(Ok(n)),
                         Err(e) => Err(e),
                     }

@@ -116,10 +116,10 @@ fn takes(op: &Op) -> bool {
             | Op::ForStart { .. }
             | Op::ForNext { .. }
             | Op::Poll(..)
-            | Op::Call(..)
+            | Op::Call { .. }
             | Op::CallK { .. }
             | Op::Return(..)
-            | Op::ReturnIntBin(..)
+            | Op::ReturnIntBin { .. }
     )
 }
 
@@ -627,11 +627,16 @@ fn steps<'c, const CALLS: bool>(
                 st.open_frame_int(n, (code.frame - code.temps) as usize, code.frame as usize);
                 enter!(code, base, dst);
             }
-            Op::Call(func, f, _, args, _) => {
+            Op::Call {
+                function,
+                f,
+                ops: args,
+                ..
+            } => {
                 if !CALLS {
                     stop_at!(here);
                 }
-                let (args, dst) = match (*func, args.split_last()) {
+                let (args, dst) = match (*function, args.split_last()) {
                     (true, Some((d, args))) => (args, Some(*d)),
                     _ => (&args[..], None),
                 };
@@ -682,12 +687,12 @@ fn steps<'c, const CALLS: bool>(
                 };
                 ret!(n);
             }
-            Op::ReturnIntBin(o, a, b, _) => {
+            Op::ReturnIntBin { op, x, y, .. } => {
                 if !CALLS {
                     stop_at!(here);
                 }
-                let (x, y) = (int!(*a), int!(*b));
-                let Some(n) = int_quick(*o, x, y) else {
+                let (x, y) = (int!(*x), int!(*y));
+                let Some(n) = int_quick(*op, x, y) else {
                     stop_at!(here);
                 };
                 ret!(Some(n));

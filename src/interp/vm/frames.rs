@@ -314,7 +314,7 @@ impl<'a, 'c> Run<'a, 'c> {
 /// Where the call before `pc` (a frame's resume point) is.
 pub(super) fn call_span(code: &Code, pc: u32) -> Span {
     match code.ops.get(pc as usize - 1) {
-        Some(Op::Call(.., span) | Op::CallK { span, .. }) => *span,
+        Some(Op::Call { span, .. } | Op::CallK { span, .. }) => *span,
         Some(Op::ProtEntry(e)) => e.span,
         Some(Op::RequeueArgs(_, span)) => *span,
         _ => crate::diag::span(0, 0, 0),
@@ -327,8 +327,13 @@ pub(super) fn call_span(code: &Code, pc: u32) -> Span {
 pub(super) fn call_site(code: &Code, pc: u32) -> (&[(u32, Var)], Option<Var>) {
     match code.ops.get(pc as usize - 1) {
         Some(Op::CallK { dst, .. }) => (&[], Some(*dst).filter(|d| *d != NO_VAR)),
-        Some(Op::Call(func, _, outs, ops, _)) => {
-            let dst = if *func { ops.last().copied() } else { None };
+        Some(Op::Call {
+            function,
+            outs,
+            ops,
+            ..
+        }) => {
+            let dst = if *function { ops.last().copied() } else { None };
             (outs.as_deref().map_or(&[], |a| a), dst)
         }
         Some(Op::ProtEntry(e)) => (&e.back, None),

@@ -200,13 +200,20 @@ instructions! {
     } => scalar: true,
         jumps { body, .. } f => { f(body) };
     Poll(Span) => scalar: true;
-    /// A call of a subprogram with a body: whether it is a function, where
-    /// its `out` and `in out` values go when it returns (the argument's
-    /// position, the caller's slot: the instructions after the call check
-    /// and store them into the actuals; None: all `in`, or none), its
-    /// operands followed by the slot for a function's result. The list is
-    /// boxed twice, a thin pointer: it keeps `Op` at 48 bytes.
-    Call(bool, FuncId, Option<Box<OutSlots>>, Box<[Var]>, Span) => scalar: true;
+    /// A call of a subprogram with a body.
+    Call {
+        /// Whether it is a function (its result's slot is the last operand).
+        function: bool,
+        f: FuncId,
+        /// Where its `out` and `in out` values go when it returns (the
+        /// argument's position, the caller's slot: the instructions after
+        /// the call check and store them into the actuals; None: all `in`,
+        /// or none). Boxed twice, a thin pointer: it keeps `Op` at 48 bytes.
+        outs: Option<Box<OutSlots>>,
+        /// The arguments' slots, then the slot of a function's result.
+        ops: Box<[Var]>,
+        span: Span,
+    } => scalar: true;
     /// A call of a native subprogram or a robot service, or of one without
     /// a body (Program_Error), its arguments in slots: as `Call`, the
     /// `out` values go to slots that the instructions after it store.
@@ -227,7 +234,7 @@ instructions! {
     Return(Option<Var>) => scalar: true;
     /// `return x op y` for integers, the operation and the return in one
     /// instruction (`return F (N - 1) + F (N - 2);`).
-    ReturnIntBin(IntOp, Var, Var, Span) => scalar: true;
+    ReturnIntBin { op: IntOp, x: Var, y: Var, span: Span } => scalar: true;
     /// The end of a body: a procedure returns, a function raises.
     FallOff => scalar: true;
     /// Handler dispatch for the pending occurrence: the handlers, the

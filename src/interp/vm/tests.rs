@@ -35,8 +35,8 @@ mod fused_tests {
             .iter()
             .map(|op| match op {
                 Op::CallK { .. } => "CallK".to_string(),
-                Op::ReturnIntBin(..) => "ReturnIntBin".to_string(),
-                Op::Call(..) => "Call".to_string(),
+                Op::ReturnIntBin { .. } => "ReturnIntBin".to_string(),
+                Op::Call { .. } => "Call".to_string(),
                 other => format!("{other:?}"),
             })
             .collect()

@@ -52,8 +52,13 @@ impl<'r> Compiler<'r> {
         ops.extend(dst);
         let outs = self.out_slots(all);
         let back = (!outs.is_empty()).then(|| Box::new(Box::from(&outs[..])));
-        self.ops
-            .push(Op::Call(dst.is_some(), f, back, ops.into(), span));
+        self.ops.push(Op::Call {
+            function: dst.is_some(),
+            f,
+            outs: back,
+            ops: ops.into(),
+            span,
+        });
         self.copy_back(all, &outs);
     }
 

@@ -157,7 +157,12 @@ impl<'r> Compiler<'r> {
                 let (op, a, b) = int_bin(e).expect("an integer operation");
                 let x = self.left(a, b);
                 let y = self.expr(b);
-                self.ops.push(Op::ReturnIntBin(op, x, y, e.span));
+                self.ops.push(Op::ReturnIntBin {
+                    op,
+                    x,
+                    y,
+                    span: e.span,
+                });
             }
             StmtKind::Return(v) => {
                 let x = v.as_ref().map(|e| self.expr(e));
