@@ -307,6 +307,17 @@ pub use super::elems::{Array, Bound, ByteVec, Elems, ElemsMut, Form};
 /// An array's bounds while they are computed, one pair per dimension.
 pub type Bounds = smallvec::SmallVec<[Bound; 1]>;
 
+/// Whether two access values are equal: both null, or designating the
+/// same object (`Value`'s `==`, and the inner loop's `P /= null`).
+#[inline(always)]
+pub fn same_access(a: &Option<Obj>, b: &Option<Obj>) -> bool {
+    match (a, b) {
+        (None, None) => true,
+        (Some(x), Some(y)) => x.same(y),
+        _ => false,
+    }
+}
+
 impl PartialEq for Value {
     fn eq(&self, other: &Value) -> bool {
         match (self, other) {
@@ -318,11 +329,7 @@ impl PartialEq for Value {
                     && (0..a.bounds().len()).all(|d| a.len(d) == b.len(d))
                     && a.data() == b.data()
             }
-            (Value::Ptr(a), Value::Ptr(b)) => match (a, b) {
-                (None, None) => true,
-                (Some(x), Some(y)) => x.same(y),
-                _ => false,
-            },
+            (Value::Ptr(a), Value::Ptr(b)) => same_access(a, b),
             (Value::Undef, Value::Undef) => true,
             (a, b) => match (a.fields(), b.fields()) {
                 (Some(a), Some(b)) => a == b,

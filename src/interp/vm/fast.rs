@@ -404,11 +404,7 @@ fn steps<'c, const CALLS: bool>(
                 let same = match (stack.get(at!(*x)), stack.get(at!(*y))) {
                     (Some(Value::Int(x)), Some(Value::Int(y))) => x == y,
                     // (Access values here, without a call: `P /= null`.)
-                    (Some(Value::Ptr(x)), Some(Value::Ptr(y))) => match (x, y) {
-                        (None, None) => true,
-                        (Some(x), Some(y)) => x.same(y),
-                        _ => false,
-                    },
+                    (Some(Value::Ptr(x)), Some(Value::Ptr(y))) => value::same_access(x, y),
                     (Some(x @ Value::Real(_)), Some(y)) => x == y,
                     _ => stop_at!(here),
                 };
